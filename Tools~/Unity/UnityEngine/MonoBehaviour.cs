@@ -1,0 +1,7 @@
+namespace UnityEngine
+{
+    /// <summary>Shim of UnityEngine.MonoBehaviour.</summary>
+    public class MonoBehaviour : Behaviour
+    {
+    }
+}
