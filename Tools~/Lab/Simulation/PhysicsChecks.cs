@@ -138,17 +138,23 @@ namespace HookeRope.Lab.Simulation
                     });
                     break;
                 case "static-hang":
+                {
+                    // Mean over the last whole periods of the residual axial oscillation (its centre is the static answer).
+                    int whole = WholePeriods(r, HeavyRopePeriod(load, mr, length, ea), r.Steps / 2);
                     list.Add(new CheckResult
                     {
-                        Quantity = "static elongation", Unit = "m", Measured = FinalElongation(r), Tolerance = 0.02,
+                        Quantity = "static elongation", Unit = "m", Tolerance = 0.02,
+                        Measured = Mean(r.ElongationSeries, r.ElongationSeries.Length - whole),
                         Expected = StaticElongation(load, mr, g, length, ea), Formula = "(M + m/2)·g·L/(E·A)",
                     });
                     list.Add(new CheckResult
                     {
-                        Quantity = "top tension", Unit = "N", Measured = Norm(r.StartPinForce), Tolerance = 0.02,
+                        Quantity = "top tension", Unit = "N", Tolerance = 0.02,
+                        Measured = Mean(r.TopTensionSeries, r.TopTensionSeries.Length - whole),
                         Expected = (load + mr) * g, Formula = "(M + m)·g",
                     });
                     break;
+                }
                 case "period":
                 {
                     double expected = HeavyRopePeriod(load, mr, length, ea);
@@ -158,7 +164,7 @@ namespace HookeRope.Lab.Simulation
                         Measured = Period(r.LoadDrop, r.HostStep),
                         Formula = mr / load < 0.01 ? "2π·sqrt(M·L/(E·A))" : "2π·L/(β·c), β·tan β = m/M, c = sqrt(E·A/μ)",
                     });
-                    int whole = WholePeriods(r, expected);
+                    int whole = WholePeriods(r, expected, r.Steps);
                     list.Add(new CheckResult
                     {
                         Quantity = "mean elongation", Unit = "m", Tolerance = 0.03,
@@ -220,11 +226,18 @@ namespace HookeRope.Lab.Simulation
                         Quantity = "deepest penetration", Unit = "m", Absolute = true, Tolerance = 2e-3, Expected = 0,
                         Measured = Math.Max(0, Penetration(r)), Formula = "no particle inside the collider",
                     });
+                    double path = WrappedPathLength(s);
                     list.Add(new CheckResult
                     {
-                        Quantity = "force on each load", Unit = "N", Tolerance = 0.05, Expected = load * g,
-                        Measured = Norm(r.EndLoadForce),
-                        Formula = "M·g",
+                        Quantity = "rope length over the bar", Unit = "m", Tolerance = 0.01,
+                        Expected = path, Measured = length + FinalElongation(r),
+                        Formula = "tangent + arc + tangent around radius R + r",
+                    });
+                    list.Add(new CheckResult
+                    {
+                        Quantity = "reported tension", Unit = "N", Tolerance = 0.03,
+                        Expected = ea * FinalElongation(r) / length, Measured = MeanTension(r),
+                        Formula = "E·A·strain of the same rope",
                     });
                     break;
                 }
@@ -232,9 +245,10 @@ namespace HookeRope.Lab.Simulation
             return list;
         }
 
-        static int WholePeriods(RunResult r, double period)
+        /// <summary>Number of trailing samples spanning a whole number of periods, at most <paramref name="limit"/>.</summary>
+        static int WholePeriods(RunResult r, double period, int limit)
         {
-            int n = r.ElongationSeries.Length;
+            int n = Math.Min(r.ElongationSeries.Length, Math.Max(limit, 1));
             double periods = Math.Floor(n * r.HostStep / period);
             if (periods < 1 || !double.IsFinite(periods)) return n;
             return Math.Min(n, (int)Math.Round(periods * period / r.HostStep));
@@ -243,6 +257,41 @@ namespace HookeRope.Lab.Simulation
         /// <summary>Final length of the intact rope minus its rest length, m.</summary>
         public static double FinalElongation(RunResult r) =>
             r.ElongationSeries.Length > 0 ? r.ElongationSeries[r.ElongationSeries.Length - 1] : 0;
+
+        static double MeanTension(RunResult r)
+        {
+            double sum = 0;
+            foreach (var t in r.FinalTensions) sum += t;
+            return sum / r.FinalTensions.Length;
+        }
+
+        /// <summary>
+        /// Length (m) of the shortest path from the final start anchor to the final end anchor around the
+        /// first collider (sphere or capsule cross-section, radius + rope radius): tangent, arc, tangent.
+        /// </summary>
+        public static double WrappedPathLength(Scenario s)
+        {
+            var a = s.Start.PositionAt(s.Duration);
+            var b = s.End.PositionAt(s.Duration);
+            var c = s.Colliders[0].Kind == ColliderKind.Capsule
+                ? HookeRope.Mathematics.Float3.Lerp(s.Colliders[0].Center, s.Colliders[0].PointB, 0.5f)
+                : s.Colliders[0].Center;
+            double radius = s.Colliders[0].Radius + s.Rope.Radius;
+            var ex = (b - a).NormalizedOr(new HookeRope.Mathematics.Float3(1f, 0f, 0f));
+            var up = -Geometry.DownDirection(s.Gravity);
+            var ey = (up - ex * HookeRope.Mathematics.Float3.Dot(up, ex)).NormalizedOr(new HookeRope.Mathematics.Float3(0f, 1f, 0f));
+            double ax = HookeRope.Mathematics.Float3.Dot(a - c, ex), ay = HookeRope.Mathematics.Float3.Dot(a - c, ey);
+            double bx = HookeRope.Mathematics.Float3.Dot(b - c, ex), by = HookeRope.Mathematics.Float3.Dot(b - c, ey);
+            double da = Math.Sqrt(ax * ax + ay * ay), db = Math.Sqrt(bx * bx + by * by);
+            double tangentA = Math.Acos(radius / da), tangentB = Math.Acos(radius / db);
+            double angleA = Math.Atan2(ay, ax);               // A on the left: measure its angle in [0, 2π)
+            if (angleA < 0) angleA += 2 * Math.PI;
+            angleA -= tangentA;                                // upper tangent point seen from A
+            double angleB = Math.Atan2(by, bx) + tangentB;
+            double arc = angleA - angleB;
+            if (arc <= 0) return Math.Sqrt((bx - ax) * (bx - ax) + (by - ay) * (by - ay));
+            return Math.Sqrt(da * da - radius * radius) + Math.Sqrt(db * db - radius * radius) + radius * arc;
+        }
 
         static double Norm(double[] v) => Math.Sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
 

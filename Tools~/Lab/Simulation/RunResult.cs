@@ -95,6 +95,8 @@ namespace HookeRope.Lab.Simulation
         public double[] FinalTensions;
         /// <summary>Drop of the end particle along gravity since release after each host step, m.</summary>
         public double[] LoadDrop;
+        /// <summary>Tension of the first segment after each host step, N.</summary>
+        public double[] TopTensionSeries;
         /// <summary>Elongation after each host step, m.</summary>
         public double[] ElongationSeries;
         /// <summary>Host step in s (series index k is time (k + 1)·HostStep).</summary>

@@ -85,11 +85,11 @@ namespace HookeRope.Lab.Simulation
             float friction = (float)c.Friction;
             switch (c.Kind)
             {
-                case ColliderKind.Plane:
+                case Scenarios.ColliderKind.Plane:
                     return ColliderShape.Plane(c.Center, c.Normal, friction);
-                case ColliderKind.Sphere:
+                case Scenarios.ColliderKind.Sphere:
                     return ColliderShape.Sphere(c.Center, (float)c.Radius, friction);
-                case ColliderKind.Capsule:
+                case Scenarios.ColliderKind.Capsule:
                     var axis = c.PointB - c.Center;
                     var rotation = axis.Length > 1e-6f ? Quat.FromToRotation(new Float3(0f, 1f, 0f), axis) : Quat.Identity;
                     return ColliderShape.Capsule(Float3.Lerp(c.Center, c.PointB, 0.5f), rotation, (float)c.Radius, axis.Length / 2, friction);
@@ -138,6 +138,7 @@ namespace HookeRope.Lab.Simulation
             result.HostStep = dt;
             result.LoadDrop = new double[steps];
             result.ElongationSeries = new double[steps];
+            result.TopTensionSeries = new double[steps];
             double sampleInterval = s.Outputs.SampleRate > 0 ? 1.0 / s.Outputs.SampleRate : 0;
             double nextSample = 0;
             int nextProfile = 0, nextMesh = 0;
@@ -174,6 +175,7 @@ namespace HookeRope.Lab.Simulation
                 double drop = Float3.Dot(load - releasePosition, down);
                 result.LoadDrop[k] = drop;
                 result.ElongationSeries[k] = elongation;
+                result.TopTensionSeries[k] = top;
                 if (drop > lowest) lowest = drop;
                 if (double.IsNaN(tautDrop) && bottom > Math.Max(0.1 * weight, 1e-6) && k > 0)
                 {
@@ -212,6 +214,7 @@ namespace HookeRope.Lab.Simulation
             {
                 Array.Resize(ref result.LoadDrop, result.Steps);
                 Array.Resize(ref result.ElongationSeries, result.Steps);
+                Array.Resize(ref result.TopTensionSeries, result.Steps);
             }
             if (options.Captures)
                 while (nextProfile < profileTimes.Length && profileTimes[nextProfile] <= 1e-9)
