@@ -13,7 +13,7 @@ namespace HookeRope.Lab.Tests
         [Test]
         public void CatenaryParameterSatisfiesItsLengthEquation()
         {
-            double a = Geometry.CatenaryParameter(8, 10);
+            double a = ScenarioGeometry.CatenaryParameter(8, 10);
             Assert.That(2 * a * Math.Sinh(8 / (2 * a)), Is.EqualTo(10).Within(1e-9));
         }
 
@@ -22,22 +22,22 @@ namespace HookeRope.Lab.Tests
         {
             var s = BuiltInScenarios.Load("catenary");
             var p = new Float3[s.Rope.Segments + 1];
-            Geometry.InitialPositions(s, p);
+            ScenarioGeometry.InitialPositions(s, p);
             double length = 0, sag = 0;
             for (int i = 1; i < p.Length; i++) length += (p[i] - p[i - 1]).Length;
             foreach (var q in p) sag = Math.Max(sag, -q.Y);
             Assert.That(length, Is.EqualTo(10).Within(0.01));  // chords of the arc: slightly shorter
-            Assert.That(sag, Is.EqualTo(Geometry.CatenarySag(8, 10)).Within(1e-3));
+            Assert.That(sag, Is.EqualTo(ScenarioGeometry.CatenarySag(8, 10)).Within(1e-3));
         }
 
         [Test]
         public void FallHeightRaisesTheLoadAboveTheAnchor()
         {
             var s = BuiltInScenarios.Load("fall-arrest");
-            var end = Geometry.EndPosition(s);
+            var end = ScenarioGeometry.EndPosition(s);
             Assert.That(end.Y, Is.EqualTo(4.0 - 2.0).Within(1e-6));
             var p = new Float3[s.Rope.Segments + 1];
-            Geometry.InitialPositions(s, p);
+            ScenarioGeometry.InitialPositions(s, p);
             for (int i = 1; i < p.Length; i++) Assert.That((p[i] - p[i - 1]).Length, Is.EqualTo(0.1).Within(1e-5));
         }
 
@@ -46,7 +46,7 @@ namespace HookeRope.Lab.Tests
         {
             var s = ScenarioParser.Parse("{\"rope\":{\"restLength\":2,\"segments\":10},\"end\":{\"type\":\"fixed\",\"position\":[1,0,0]},\"initial\":{\"shape\":\"slack\"}}");
             var p = new Float3[11];
-            Geometry.InitialPositions(s, p);
+            ScenarioGeometry.InitialPositions(s, p);
             double length = 0;
             for (int i = 1; i < p.Length; i++) length += (p[i] - p[i - 1]).Length;
             Assert.That(length, Is.EqualTo(2).Within(1e-5));

@@ -82,15 +82,15 @@ namespace HookeRope.Lab.Scenarios
         public double PoissonRatio = 0.5;
         /// <summary>Neck onset radius r_min as a fraction of R (0 = no necking).</summary>
         public double RMinFraction = 0.0;
-        /// <summary>Neck shape model.</summary>
-        public string NeckMode = "hyperbola";
+        /// <summary>Neck model: "none", "paper" (one hyperbola over the rope) or "zone" (a short neck zone at the defect).</summary>
+        public string NeckMode = "zone";
         /// <summary>Weak spot where the neck starts, or null.</summary>
         public DefectSpec Defect;
         /// <summary>Strain l/L − 1 at which a segment breaks (+∞ = never).</summary>
         public double BreakStrain = double.PositiveInfinity;
         /// <summary>Vertices around the tube mesh.</summary>
         public int RadialSegments = 8;
-        /// <summary>Seed for the random parts (defect placement when not given).</summary>
+        /// <summary>Seed of the random parts (burr strands of broken ends).</summary>
         public int Seed = 1;
 
         /// <summary>Cross-section area πR² in m².</summary>
@@ -103,13 +103,11 @@ namespace HookeRope.Lab.Scenarios
         public double Mass => ResolvedLinearDensity * RestLength;
     }
 
-    /// <summary>rope.defect {…}: a locally thinner spot.</summary>
+    /// <summary>rope.defect {…}: the weak spot where the neck forms and the rope breaks.</summary>
     public sealed class DefectSpec
     {
-        /// <summary>Position along the rope as a fraction of its length, 0…1.</summary>
+        /// <summary>Position along the rope as a fraction of its rest length, 0…1.</summary>
         public double Position = 0.5;
-        /// <summary>Local radius factor, (0, 1].</summary>
-        public double RadiusFactor = 0.95;
     }
 
     /// <summary>How an end of the rope is held.</summary>

@@ -124,14 +124,13 @@ namespace HookeRope.Lab.Scenarios
                 throw new ScenarioException(f.Child("density"), "give either linearDensity or density, not both");
             r.PoissonRatio = f.Number("poissonRatio", r.PoissonRatio, -1, 0.5);
             r.RMinFraction = f.Number("rMinFraction", r.RMinFraction, 0, 0.99);
-            r.NeckMode = f.Choice("neckMode", r.NeckMode, "none", "hyperbola");
+            r.NeckMode = f.Choice("neckMode", r.NeckMode, "none", "paper", "zone");
             var defect = f.Object("defect");
             if (defect != null)
             {
                 r.Defect = new DefectSpec
                 {
                     Position = defect.Number("position", 0.5, 0, 1),
-                    RadiusFactor = defect.Number("radiusFactor", 0.95, 0, 1, minExclusive: true),
                 };
                 defect.RejectUnknown();
             }
@@ -269,7 +268,7 @@ namespace HookeRope.Lab.Scenarios
                 var chord = s.End.Position.Value - s.Start.Position.Value;
                 if (chord.Length >= s.Rope.RestLength)
                     throw new ScenarioException("$.initial.shape", "catenary needs a span shorter than rope.restLength");
-                var down = Geometry.DownDirection(s.Gravity);
+                var down = ScenarioGeometry.DownDirection(s.Gravity);
                 if (Math.Abs(Float3.Dot(chord, down)) > 1e-4 * s.Rope.RestLength)
                     throw new ScenarioException("$.initial.shape", "catenary needs both ends at the same height");
             }

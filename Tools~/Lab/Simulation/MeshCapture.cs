@@ -1,17 +1,46 @@
-#if HOOKEROPE_SOLVER
+using HookeRope.Geometry;
 using HookeRope.Lab.Scenarios;
 
 namespace HookeRope.Lab.Simulation
 {
-    /// <summary>Captures the tube mesh of a rope (radius branch's TubeMeshBuilder).</summary>
+    /// <summary>Captures the tube mesh of a rope with the core's <see cref="TubeMeshBuilder"/> (broken ends included).</summary>
     public static class MeshCapture
     {
-        /// <summary>The tube mesh at time t, or null when the mesh builder is not available.</summary>
+        /// <summary>The tube mesh at time t in world metres.</summary>
         public static MeshSnapshot Capture(RopeSetup setup, Scenario s, double t)
         {
-            // TODO(radius): build with HookeRope.Geometry.TubeMeshBuilder once merged.
-            return null;
+            var rope = setup.Rope;
+            var settings = new TubeMeshSettings { RadialSegments = s.Rope.RadialSegments };
+            settings.Burr.Seed = (uint)s.Rope.Seed;
+            var builder = new TubeMeshBuilder(settings, rope.SegmentCount);
+            for (int j = 0; j < setup.BrokenFlags.Length; j++) setup.BrokenFlags[j] = rope.IsSegmentBroken(j);
+            var vertices = new TubeVertex[builder.GetVertexCount(setup.BrokenFlags)];
+            var indices = new int[builder.GetIndexCount(setup.BrokenFlags)];
+            var radii = new float[rope.SegmentCount];
+            if (setup.Radius != null) setup.Radius.SegmentRadii.CopyTo(radii);
+            else System.Array.Fill(radii, (float)s.Rope.Radius);
+            var update = builder.Build(rope.PositionX, rope.PositionY, rope.PositionZ, rope.RestLengths, radii, setup.BrokenFlags, vertices, indices);
+            var origin = update.Origin + rope.Origin;
+            var snapshot = new MeshSnapshot { Time = t, Vertices = new float[update.VertexCount * 12], Indices = new int[update.IndexCount] };
+            for (int i = 0; i < update.VertexCount; i++)
+            {
+                var v = vertices[i];
+                int o = 12 * i;
+                snapshot.Vertices[o] = v.PX + origin.X;
+                snapshot.Vertices[o + 1] = v.PY + origin.Y;
+                snapshot.Vertices[o + 2] = v.PZ + origin.Z;
+                snapshot.Vertices[o + 3] = v.NX;
+                snapshot.Vertices[o + 4] = v.NY;
+                snapshot.Vertices[o + 5] = v.NZ;
+                snapshot.Vertices[o + 6] = v.TX;
+                snapshot.Vertices[o + 7] = v.TY;
+                snapshot.Vertices[o + 8] = v.TZ;
+                snapshot.Vertices[o + 9] = v.TW;
+                snapshot.Vertices[o + 10] = v.U;
+                snapshot.Vertices[o + 11] = v.V;
+            }
+            System.Array.Copy(indices, snapshot.Indices, update.IndexCount);
+            return snapshot;
         }
     }
 }
-#endif

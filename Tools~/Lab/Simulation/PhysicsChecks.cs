@@ -175,14 +175,14 @@ namespace HookeRope.Lab.Simulation
                 }
                 case "catenary":
                 {
-                    var start = Geometry.StartPosition(s);
-                    var end = Geometry.EndPosition(s);
+                    var start = ScenarioGeometry.StartPosition(s);
+                    var end = ScenarioGeometry.EndPosition(s);
                     double span = (end - start).Length;
-                    double a = Geometry.CatenaryParameter(span, length);
+                    double a = ScenarioGeometry.CatenaryParameter(span, length);
                     list.Add(new CheckResult
                     {
                         Quantity = "sag", Unit = "m", Measured = Sag(r), Tolerance = 0.01,
-                        Expected = Geometry.CatenarySag(span, length), Formula = "a·cosh(D/2a) − a, 2a·sinh(D/2a) = S",
+                        Expected = ScenarioGeometry.CatenarySag(span, length), Formula = "a·cosh(D/2a) − a, 2a·sinh(D/2a) = S",
                     });
                     list.Add(new CheckResult
                     {
@@ -205,10 +205,22 @@ namespace HookeRope.Lab.Simulation
                 case "neck":
                 {
                     double rMin = rope.RMinFraction * rope.Radius;
+                    double strain = FinalElongation(r) / length;
                     list.Add(new CheckResult
                     {
-                        Quantity = "neck below onset radius", Unit = "m", Absolute = true, Tolerance = 0,
-                        Expected = 0, Measured = Math.Max(0, LastNeckRadius(r) - rMin), Formula = "r_neck ≤ r_min",
+                        Quantity = "neck radius below r_min", Unit = "m", Absolute = true, Tolerance = 0,
+                        Expected = 0, Measured = Math.Max(0, LastNeckRadius(r) - rMin), Formula = "r_neck ≤ r_min once r < r_min",
+                    });
+                    list.Add(new CheckResult
+                    {
+                        Quantity = "thinnest point (fraction of L)", Unit = "", Absolute = true, Tolerance = 1.5 / rope.Segments,
+                        Expected = rope.Defect?.Position ?? 0.5, Measured = ThinnestFraction(r), Formula = "at the defect",
+                    });
+                    list.Add(new CheckResult
+                    {
+                        Quantity = "radius ratio away from the neck", Unit = "", Tolerance = 0.02,
+                        Expected = PoissonRadiusRatio(rope.PoissonRatio, strain), Measured = FarRadius(r) / rope.Radius,
+                        Formula = "sqrt(1 + 2ν(L/l − 1))",
                     });
                     break;
                 }
@@ -278,7 +290,7 @@ namespace HookeRope.Lab.Simulation
                 : s.Colliders[0].Center;
             double radius = s.Colliders[0].Radius + s.Rope.Radius;
             var ex = (b - a).NormalizedOr(new HookeRope.Mathematics.Float3(1f, 0f, 0f));
-            var up = -Geometry.DownDirection(s.Gravity);
+            var up = -ScenarioGeometry.DownDirection(s.Gravity);
             var ey = (up - ex * HookeRope.Mathematics.Float3.Dot(up, ex)).NormalizedOr(new HookeRope.Mathematics.Float3(0f, 1f, 0f));
             double ax = HookeRope.Mathematics.Float3.Dot(a - c, ex), ay = HookeRope.Mathematics.Float3.Dot(a - c, ey);
             double bx = HookeRope.Mathematics.Float3.Dot(b - c, ex), by = HookeRope.Mathematics.Float3.Dot(b - c, ey);
@@ -297,7 +309,7 @@ namespace HookeRope.Lab.Simulation
 
         static double Horizontal(double[] force, Scenario s)
         {
-            var down = Geometry.DownDirection(s.Gravity);
+            var down = ScenarioGeometry.DownDirection(s.Gravity);
             double along = force[0] * down.X + force[1] * down.Y + force[2] * down.Z;
             double total = Norm(force);
             return Math.Sqrt(Math.Max(0, total * total - along * along));
@@ -305,8 +317,8 @@ namespace HookeRope.Lab.Simulation
 
         static double Sag(RunResult r)
         {
-            var down = Geometry.DownDirection(r.Scenario.Gravity);
-            var start = Geometry.StartPosition(r.Scenario);
+            var down = ScenarioGeometry.DownDirection(r.Scenario.Gravity);
+            var start = ScenarioGeometry.StartPosition(r.Scenario);
             double sag = 0;
             var p = r.FinalPositions;
             for (int i = 0; i < p.Length / 3; i++)
@@ -322,6 +334,25 @@ namespace HookeRope.Lab.Simulation
             if (r.Profiles.Count == 0) return double.NaN;
             var radius = r.Profiles[r.Profiles.Count - 1].Radius;
             return radius[radius.Length / 2];
+        }
+
+        static double ThinnestFraction(RunResult r)
+        {
+            if (r.Profiles.Count == 0) return double.NaN;
+            var p = r.Profiles[r.Profiles.Count - 1];
+            int best = 0;
+            for (int i = 1; i < p.Radius.Length; i++) if (p.Radius[i] < p.Radius[best]) best = i;
+            return p.Arc[best] / r.Scenario.Rope.RestLength;
+        }
+
+        /// <summary>Particle radius at the end of the rope farthest from the defect (last profile), m.</summary>
+        static double FarRadius(RunResult r)
+        {
+            if (r.Profiles.Count == 0) return double.NaN;
+            var radius = r.Profiles[r.Profiles.Count - 1].Radius;
+            double defect = r.Scenario.Rope.Defect?.Position ?? 0.5;
+            int i = defect < 0.5 ? (int)(radius.Length * 0.9) : (int)(radius.Length * 0.1);
+            return radius[i];
         }
 
         static double LastNeckRadius(RunResult r) => r.Samples.Count > 0 ? r.Samples[r.Samples.Count - 1].NeckRadius : double.NaN;

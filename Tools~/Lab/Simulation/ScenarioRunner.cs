@@ -3,6 +3,7 @@ using System;
 using System.Diagnostics;
 using HookeRope.Lab.Scenarios;
 using HookeRope.Mathematics;
+using HookeRope.Radius;
 using HookeRope.Solver;
 
 namespace HookeRope.Lab.Simulation
@@ -16,6 +17,8 @@ namespace HookeRope.Lab.Simulation
         public bool TrackEnergy = true;
         /// <summary>Capture radius profiles and meshes at the scenario's instants.</summary>
         public bool Captures = true;
+        /// <summary>Run the radius model (Poisson thinning, neck, neck break) after every step.</summary>
+        public bool Radius = true;
         /// <summary>Called after every host step with the step index (progress bars).</summary>
         public Action<int> Progress;
 
@@ -49,17 +52,36 @@ namespace HookeRope.Lab.Simulation
         }
 
         /// <summary>The rope of a scenario in its initial state, with pins, loads and colliders.</summary>
-        public static RopeSetup Build(Scenario s)
+        public static RopeSetup Build(Scenario s, bool withRadius = true)
         {
-            var rope = new Rope(Settings(s), Geometry.StartPosition(s), Geometry.EndPosition(s));
+            var rope = new Rope(Settings(s), ScenarioGeometry.StartPosition(s), ScenarioGeometry.EndPosition(s));
             var positions = new Float3[rope.ParticleCount];
-            Geometry.InitialPositions(s, positions);
+            ScenarioGeometry.InitialPositions(s, positions);
             for (int i = 0; i < positions.Length; i++) rope.SetPosition(i, positions[i]);
             var setup = new RopeSetup { Rope = rope };
             setup.StartPin = Attach(rope, s.Start, 0, positions[0], out setup.StartLoad);
             setup.EndPin = Attach(rope, s.End, rope.ParticleCount - 1, positions[positions.Length - 1], out setup.EndLoad);
             foreach (var c in s.Colliders) rope.AddCollider(Shape(c));
+            setup.BrokenFlags = new bool[rope.SegmentCount];
+            if (withRadius)
+            {
+                setup.Radius = new RadiusModel(RadiusSettings(s), (float)s.Rope.Radius, rope.RestLengths);
+                setup.DefectParticle = -1;
+            }
             return setup;
+        }
+
+        /// <summary>Radius-model settings of a scenario (Poisson ratio, neck onset and mode, defect).</summary>
+        public static RadiusSettings RadiusSettings(Scenario s)
+        {
+            var r = s.Rope;
+            var settings = new RadiusSettings();
+            settings.PoissonRatio = (float)r.PoissonRatio;
+            bool neck = r.RMinFraction > 0 && r.NeckMode != "none";
+            settings.NeckMode = !neck ? NeckMode.Off : r.NeckMode == "paper" ? NeckMode.Paper : NeckMode.Zone;
+            if (neck) settings.RMinFraction = (float)r.RMinFraction;
+            if (r.Defect != null) settings.DefectPosition = (float)r.Defect.Position;
+            return settings;
         }
 
         static int Attach(Rope rope, AttachmentSpec a, int particle, Float3 position, out int load)
@@ -112,13 +134,13 @@ namespace HookeRope.Lab.Simulation
         public static RunResult Run(Scenario s, RunOptions options = null)
         {
             options = options ?? new RunOptions();
-            var setup = Build(s);
+            var setup = Build(s, options.Radius);
             var rope = setup.Rope;
             var result = new RunResult { Scenario = s };
             int n = rope.SegmentCount;
             int last = rope.ParticleCount - 1;
             double weight = (s.End.Kind == AttachmentKind.Body ? s.End.Mass : 0) * s.Gravity.Length;
-            var down = Geometry.DownDirection(s.Gravity);
+            var down = ScenarioGeometry.DownDirection(s.Gravity);
             var releasePosition = rope.GetPosition(last);
             double lowest = 0, tautDrop = double.NaN;
             bool broken = false;
@@ -153,6 +175,7 @@ namespace HookeRope.Lab.Simulation
                 if (s.Start.Kind == AttachmentKind.Keyframes) rope.SetPinTarget(setup.StartPin, s.Start.PositionAt(t));
                 if (s.End.Kind == AttachmentKind.Keyframes) rope.SetPinTarget(setup.EndPin, s.End.PositionAt(t));
                 var report = rope.Step((float)dt);
+                setup.AfterStep();
                 result.Steps = k + 1;
                 if (report.Residual > result.MaxResidual) result.MaxResidual = report.Residual;
                 var load = rope.GetPosition(last);
@@ -198,7 +221,7 @@ namespace HookeRope.Lab.Simulation
                 {
                     while (nextProfile < profileTimes.Length && t >= profileTimes[nextProfile] - dt / 2)
                     {
-                        result.Profiles.Add(Profile(rope, t));
+                        result.Profiles.Add(Profile(setup, t));
                         nextProfile++;
                     }
                     while (nextMesh < meshTimes.Length && t >= meshTimes[nextMesh] - dt / 2)
@@ -261,9 +284,7 @@ namespace HookeRope.Lab.Simulation
             var p = rope.GetPosition(last);
             var v = rope.GetVelocity(last);
             energy = options.TrackEnergy ? rope.TotalEnergy() : 0;
-            var radius = rope.ParticleRadius;
-            double min = double.MaxValue;
-            for (int i = 0; i < radius.Length; i++) if (radius[i] < min) min = radius[i];
+            double min = setup.MinRadius();
             return new Sample
             {
                 Time = t,
@@ -280,18 +301,39 @@ namespace HookeRope.Lab.Simulation
             };
         }
 
-        static RadiusProfile Profile(Rope rope, double t)
+        static RadiusProfile Profile(RopeSetup setup, double t)
         {
-            var radius = rope.ParticleRadius;
+            var rope = setup.Rope;
             var rest = rope.RestLengths;
-            var profile = new RadiusProfile { Time = t, Arc = new double[radius.Length], Radius = new double[radius.Length] };
-            double arc = 0;
-            for (int i = 0; i < radius.Length; i++)
+            const int perSegment = 8;
+            if (setup.Radius == null)
             {
-                profile.Arc[i] = arc;
-                profile.Radius[i] = radius[i];
-                if (i < rest.Length) arc += rest[i];
+                var radius = rope.ParticleRadius;
+                var plain = new RadiusProfile { Time = t, Arc = new double[radius.Length], Radius = new double[radius.Length] };
+                double arc = 0;
+                for (int i = 0; i < radius.Length; i++)
+                {
+                    plain.Arc[i] = arc;
+                    plain.Radius[i] = radius[i];
+                    if (i < rest.Length) arc += rest[i];
+                }
+                return plain;
             }
+            int n = rope.SegmentCount;
+            var profile = new RadiusProfile { Time = t, Arc = new double[n * perSegment + 1], Radius = new double[n * perSegment + 1] };
+            double start = 0;
+            for (int j = 0; j < n; j++)
+            {
+                for (int k = 0; k < perSegment; k++)
+                {
+                    float f = (float)k / perSegment;
+                    profile.Arc[j * perSegment + k] = start + rest[j] * f;
+                    profile.Radius[j * perSegment + k] = setup.Radius.RadiusAt(j, f);
+                }
+                start += rest[j];
+            }
+            profile.Arc[n * perSegment] = start;
+            profile.Radius[n * perSegment] = setup.Radius.RadiusAt(n - 1, 1f);
             return profile;
         }
 
@@ -337,12 +379,37 @@ namespace HookeRope.Lab.Simulation
         public int EndLoad = -1;
         /// <summary>Particle at the rope's defect, or −1 (neck radius column).</summary>
         public int DefectParticle = -1;
+        /// <summary>The radius model (null when the run has it off).</summary>
+        public RadiusModel Radius;
+        /// <summary>Broken flag per segment, refreshed after every step.</summary>
+        public bool[] BrokenFlags;
 
-        /// <summary>Radius at the defect particle, or the minimum radius, m.</summary>
-        public double NeckRadius()
+        /// <summary>
+        /// Host-side glue after <see cref="HookeRope.Solver.Rope.Step"/>: updates the radius model from the
+        /// segment lengths, copies the particle radii to the solver (collision radius) and breaks the rope at
+        /// the defect when the model asks. TODO(radius): use the HookeRope.RopeSimulation facade once merged.
+        /// </summary>
+        public void AfterStep()
         {
+            if (Radius == null || !Radius.IsActive) return;
+            for (int j = 0; j < BrokenFlags.Length; j++) BrokenFlags[j] = Rope.IsSegmentBroken(j);
+            Radius.Update(Rope.SegmentLengths, BrokenFlags);
+            Radius.ParticleRadii.CopyTo(Rope.ParticleRadius);
+            if (Radius.ShouldBreak && !Radius.IsBroken)
+            {
+                if (!Rope.IsSegmentBroken(Radius.DefectSegment)) Rope.BreakSegment(Radius.DefectSegment);
+                Radius.MarkBroken();
+            }
+        }
+
+        /// <summary>Radius at the defect (neck included), or the smallest particle radius without a radius model, m.</summary>
+        public double NeckRadius() => Radius != null ? Radius.NeckRadius : MinRadius();
+
+        /// <summary>Smallest radius along the rope (neck waist included), m.</summary>
+        public double MinRadius()
+        {
+            if (Radius != null) return Radius.MinRadius;
             var radius = Rope.ParticleRadius;
-            if (DefectParticle >= 0) return radius[DefectParticle];
             double min = double.MaxValue;
             for (int i = 0; i < radius.Length; i++) if (radius[i] < min) min = radius[i];
             return min;

@@ -4,7 +4,7 @@ using HookeRope.Mathematics;
 namespace HookeRope.Lab.Scenarios
 {
     /// <summary>Initial rope shapes and the end positions a scenario implies (metres).</summary>
-    public static class Geometry
+    public static class ScenarioGeometry
     {
         /// <summary>Unit vector along gravity, or −Y when gravity is zero.</summary>
         public static Float3 DownDirection(Float3 gravity) => gravity.NormalizedOr(new Float3(0f, -1f, 0f));
