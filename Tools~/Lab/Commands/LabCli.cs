@@ -104,6 +104,11 @@ namespace HookeRope.Lab.Commands
                 error.WriteLine("error: " + e.Message);
                 return 1;
             }
+            catch (Exception e) when (Environment.GetEnvironmentVariable("HOOKEROPE_LAB_TRACE") == null)
+            {
+                error.WriteLine("internal error: " + e.GetType().Name + ": " + e.Message + " (set HOOKEROPE_LAB_TRACE=1 for the stack trace)");
+                return 1;
+            }
         }
 
         /// <summary>Parses and runs <paramref name="args"/>; returns the exit code.</summary>

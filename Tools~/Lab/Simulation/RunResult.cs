@@ -85,12 +85,20 @@ namespace HookeRope.Lab.Simulation
         public bool NonFinite;
         /// <summary>Energy at the start and the largest energy seen, J.</summary>
         public double InitialEnergy, MaxEnergy;
+        /// <summary>Largest energy over the second half of the run, J (a lasting rise, not a transient).</summary>
+        public double LateMaxEnergy = double.NegativeInfinity;
+        /// <summary>Largest energy over the first half of the run, J.</summary>
+        public double EarlyMaxEnergy = double.NegativeInfinity;
         /// <summary>Wall-clock time of the stepping loop in s.</summary>
         public double WallSeconds;
         /// <summary>Host steps taken.</summary>
         public int Steps;
         /// <summary>Final particle positions in m (x, y, z per particle).</summary>
         public double[] FinalPositions;
+        /// <summary>Largest particle speed after the last step, m/s.</summary>
+        public double FinalMaxSpeed;
+        /// <summary>Largest distance of any particle from the start anchor during the run, m.</summary>
+        public double MaxExtent;
         /// <summary>Final segment tensions in N.</summary>
         public double[] FinalTensions;
         /// <summary>Drop of the end particle along gravity since release after each host step, m.</summary>

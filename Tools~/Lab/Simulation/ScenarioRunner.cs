@@ -184,6 +184,8 @@ namespace HookeRope.Lab.Simulation
                     result.NonFinite = true;
                     break;
                 }
+                double extent = (load - releasePosition).Length;
+                if (extent > result.MaxExtent) result.MaxExtent = extent;
                 double top = rope.IsSegmentBroken(0) ? 0 : rope.Tensions[0];
                 double bottom = rope.IsSegmentBroken(n - 1) ? 0 : rope.Tensions[n - 1];
                 if (top > result.PeakTopForce) result.PeakTopForce = top;
@@ -209,6 +211,8 @@ namespace HookeRope.Lab.Simulation
                 {
                     double energy = rope.TotalEnergy();
                     if (energy > result.MaxEnergy) result.MaxEnergy = energy;
+                    if (k >= steps / 2) { if (energy > result.LateMaxEnergy) result.LateMaxEnergy = energy; }
+                    else if (energy > result.EarlyMaxEnergy) result.EarlyMaxEnergy = energy;
                 }
                 options.Progress?.Invoke(k);
                 if (options.RecordSamples && t >= nextSample - 1e-9)
@@ -348,6 +352,8 @@ namespace HookeRope.Lab.Simulation
                 result.FinalPositions[3 * i + 1] = p.Y;
                 result.FinalPositions[3 * i + 2] = p.Z;
             }
+            for (int i = 0; i < rope.ParticleCount; i++)
+                result.FinalMaxSpeed = Math.Max(result.FinalMaxSpeed, rope.GetVelocity(i).Length);
             result.FinalTensions = new double[rope.SegmentCount];
             for (int j = 0; j < rope.SegmentCount; j++) result.FinalTensions[j] = rope.Tensions[j];
             if (setup.StartPin >= 0) Copy(rope.GetPinForce(setup.StartPin), result.StartPinForce);

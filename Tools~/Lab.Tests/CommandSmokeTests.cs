@@ -1,0 +1,91 @@
+using System.IO;
+using HookeRope.Lab.Commands;
+using HookeRope.Lab.Report;
+using HookeRope.Lab.Scenarios;
+using HookeRope.Lab.Stability;
+using NUnit.Framework;
+
+namespace HookeRope.Lab.Tests
+{
+    /// <summary>Smoke runs of report and stability on their reduced sets (no timing assertions).</summary>
+    [TestFixture]
+    public sealed class CommandSmokeTests
+    {
+        string dir;
+
+        [SetUp]
+        public void CreateFolder()
+        {
+            dir = Path.Combine(Path.GetTempPath(), "hookerope-lab-" + System.Guid.NewGuid().ToString("N"));
+            Directory.CreateDirectory(dir);
+        }
+
+        [TearDown]
+        public void DeleteFolder()
+        {
+            if (Directory.Exists(dir)) Directory.Delete(dir, true);
+        }
+
+        [Test]
+        public void QuickReportWritesMarkdownAndParetoPlotAndTheExactSolveWins()
+        {
+            var output = new StringWriter();
+            int code = ReportCommand.Execute(LabConsole.Plain(output), dir, true, 1);
+            Assert.That(code, Is.EqualTo(0));
+            string md = File.ReadAllText(Path.Combine(dir, "report.md"));
+            Assert.That(md, Does.Contain("Machine:"));
+            Assert.That(md, Does.Contain("Pareto-optimal"));
+            Assert.That(md, Does.Contain("Recommended defaults"));
+            Assert.That(new FileInfo(Path.Combine(dir, "report-pareto.png")).Length, Is.GreaterThan(1000));
+
+            // The physics the report rests on: at a mass ratio of 10⁵ the exact chain solve lands within
+            // 1 % of (M + m/2)·g·L/(E·A) with 4 substeps, where Gauss–Seidel with the same budget is far off.
+            var result = ErrorReport.Measure(true, 1, null);
+            int heavy = result.Scenarios.IndexOf("heavy-mass-ratio");
+            int exact = -1, gs = -1;
+            for (int i = 0; i < result.Configs.Count; i++)
+            {
+                var c = result.Configs[i];
+                if (c.Substeps == 4 && c.Iterations == 1 && c.Method == SolverMethod.ExactChain) exact = i;
+                if (c.Substeps == 4 && c.Iterations == 4 && c.Method == SolverMethod.GaussSeidel) gs = i;
+            }
+            Assert.That(result.Cells[exact][heavy].Error, Is.LessThan(0.01));
+            Assert.That(result.Cells[gs][heavy].Error, Is.GreaterThan(0.5));
+        }
+
+        [Test]
+        public void QuickStabilitySweepPassesAndWritesItsTable()
+        {
+            var output = new StringWriter();
+            int code = StabilityCommand.Execute(LabConsole.Plain(output), dir, true);
+            Assert.That(code, Is.EqualTo(0), output.ToString());
+            string md = File.ReadAllText(Path.Combine(dir, "stability-quick.md"));
+            Assert.That(md, Does.Contain("mass ratio"));
+            Assert.That(md, Does.Contain("10× length"));
+            Assert.That(md, Does.Contain("teleported"));
+        }
+
+        [Test]
+        public void StabilityFlagsANonFiniteRunAsAFailure()
+        {
+            // A planted defect: a case whose outcome is NaN must fail the sweep (exit code logic).
+            var c = new StabilityCase { Name = "planted", Scenario = StabilitySweep.Base(SolverMethod.ExactChain, 0.1) };
+            var outcome = new StabilityOutcome { Case = c, NonFinite = true };
+            Assert.That(outcome.Failed, Is.True);
+            var real = StabilitySweep.Run(c);
+            Assert.That(real.Failed, Is.False);
+            Assert.That(real.NonFinite, Is.False);
+            Assert.That(real.MaxConstraintError, Is.LessThan(1e-3));
+        }
+    
+        [Test]
+        public void SteppingWithTheRadiusModelAllocatesNothing()
+        {
+            var setup = HookeRope.Lab.Simulation.ScenarioRunner.Build(BuiltInScenarios.Load("necking"), true);
+            for (int i = 0; i < 20; i++) { setup.Rope.Step(1f / 90f); setup.AfterStep(); }
+            long before = System.GC.GetAllocatedBytesForCurrentThread();
+            for (int i = 0; i < 200; i++) { setup.Rope.Step(1f / 90f); setup.AfterStep(); }
+            Assert.That(System.GC.GetAllocatedBytesForCurrentThread() - before, Is.EqualTo(0));
+        }
+    }
+}
