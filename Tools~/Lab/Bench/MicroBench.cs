@@ -57,7 +57,9 @@ namespace HookeRope.Lab.Bench
         /// <summary>Median wall time in ns of <paramref name="steps"/> calls of <paramref name="step"/> over 5 repeats (after a warm-up).</summary>
         static double TimeNs(Action step, int steps)
         {
-            for (int i = 0; i < Math.Min(steps, 50); i++) step();
+            // Warm-up long enough for tiered JIT to install optimised code (≥ 0.25 s or 20 000 calls).
+            var warm = Stopwatch.StartNew();
+            for (int i = 0; i < 20000 && warm.ElapsedMilliseconds < 250; i++) step();
             var samples = new List<double>();
             for (int r = 0; r < 5; r++)
             {

@@ -42,7 +42,7 @@ namespace HookeRope.Lab.Commands
 
             var reportOut = OutOption();
             var reportQuick = new Option<bool>("--quick") { Description = "Reduced grid and one repeat (a smoke run, not for numbers)." };
-            var repeats = new Option<int>("--repeats") { Description = "Timed repeats per configuration (median is reported).", DefaultValueFactory = _ => 3 };
+            var repeats = new Option<int>("--repeats") { Description = "Timed repeats per configuration (median is reported).", DefaultValueFactory = _ => 5 };
             var report = new Command("report", "Error against run time for reference scenarios and solver configurations: Markdown + Pareto plot.")
             {
                 reportOut, reportQuick, repeats,

@@ -1,11 +1,9 @@
 using System.IO;
 using Spectre.Console;
-#if HOOKEROPE_SOLVER
 using System.Collections.Generic;
 using HookeRope.Lab.Output;
 using HookeRope.Lab.Report;
 using HookeRope.Lab.Scenarios;
-#endif
 
 namespace HookeRope.Lab.Commands
 {
@@ -17,7 +15,6 @@ namespace HookeRope.Lab.Commands
         {
             if (repeats < 1 || repeats > 50) throw new System.ArgumentOutOfRangeException(nameof(repeats), repeats, "--repeats must be in [1, 50]");
             Directory.CreateDirectory(outDir);
-#if HOOKEROPE_SOLVER
             console.MarkupLine("[bold]HookeRope lab · report[/]  " + Markup.Escape(MachineInfo.Describe()));
             ReportResult result = null;
             int total = ErrorReport.Grid(quick).Count * ErrorReport.ReferenceScenarios.Length;
@@ -74,10 +71,6 @@ namespace HookeRope.Lab.Commands
             console.MarkupLine("[grey]wrote[/] " + Markup.Escape(md));
             console.MarkupLine("[grey]wrote[/] " + Markup.Escape(plot));
             return 0;
-#else
-            console.MarkupLine("[red]The solver (HookeRope.Solver.Rope) is not in this tree yet: merge the solver branch.[/]");
-            return 5;
-#endif
         }
     }
 }

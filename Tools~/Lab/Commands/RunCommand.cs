@@ -16,7 +16,6 @@ namespace HookeRope.Lab.Commands
         {
             var spec = BuiltInScenarios.Resolve(scenario);
             Directory.CreateDirectory(outDir);
-#if HOOKEROPE_SOLVER
             RunResult result = null;
             var options = new RunOptions();
             if (console.Profile.Capabilities.Interactive && spec.StepCount > 2000)
@@ -62,10 +61,6 @@ namespace HookeRope.Lab.Commands
                 foreach (var check in checks)
                     if (!check.Passed) return 4;
             return 0;
-#else
-            console.MarkupLine("[red]The solver (HookeRope.Solver.Rope) is not in this tree yet: merge the solver branch.[/]");
-            return 5;
-#endif
         }
     }
 }

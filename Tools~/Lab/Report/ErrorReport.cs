@@ -1,4 +1,3 @@
-#if HOOKEROPE_SOLVER
 using System;
 using System.Collections.Generic;
 using System.Globalization;
@@ -232,4 +231,3 @@ namespace HookeRope.Lab.Report
         }
     }
 }
-#endif

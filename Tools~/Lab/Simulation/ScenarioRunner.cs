@@ -1,4 +1,3 @@
-#if HOOKEROPE_SOLVER
 using System;
 using System.Diagnostics;
 using HookeRope.Lab.Scenarios;
@@ -422,4 +421,3 @@ namespace HookeRope.Lab.Simulation
         }
     }
 }
-#endif
