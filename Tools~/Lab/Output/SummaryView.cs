@@ -54,7 +54,7 @@ namespace HookeRope.Lab.Output
                     Markup.Escape(Num(check.Expected) + (check.Unit.Length > 0 ? " " + check.Unit : "")),
                     Markup.Escape(check.Absolute ? "" : string.Format(Invariant, "error {0:P2}", check.Error)),
                     Markup.Escape(check.Formula));
-                table.AddRow(Markup.Escape(check.Quantity), value, reference);
+                table.AddRow("check: " + Markup.Escape(check.Quantity), value, reference);
             }
             table.AddRow("solver residual (max)", Num(result.MaxResidual), result.NonFinite ? "[red]NaN/∞ in positions[/]" : "finite");
             table.AddRow("wall time", Num(result.WallSeconds * 1000) + " ms",
