@@ -91,5 +91,22 @@ namespace HookeRope.Lab.Tests
             long a2 = System.GC.GetAllocatedBytesForCurrentThread();
             Assert.That(a2 - a0, Is.EqualTo(0), $"Rope.Step: {a1 - a0} B, radius glue: {a2 - a1} B over 400 steps");
         }
+    
+        [Test]
+        public void QuickBenchMeasuresEverySizeWithoutAllocating()
+        {
+            // Smoke run only: timings are printed, never asserted.
+            var sizes = HookeRope.Lab.Bench.MicroBench.Scaling(true, null);
+            Assert.That(sizes.Count, Is.EqualTo(3));
+            foreach (var s in sizes)
+            {
+                Assert.That(s.NsPerProjection, Is.GreaterThan(0));
+                Assert.That(s.NsPerSegmentIteration, Is.GreaterThan(0));
+                Assert.That(s.NsPerVertex, Is.GreaterThan(0));
+                Assert.That(s.BytesPerStep, Is.EqualTo(0), s.Segments + " segments: bytes allocated per step");
+            }
+            Assert.That(double.IsFinite(HookeRope.Lab.Bench.MicroBench.ScalingExponent(sizes)), Is.True);
+            Assert.That(HookeRope.Lab.Bench.MicroBench.Features(true).Count, Is.EqualTo(6));
+        }
     }
 }
