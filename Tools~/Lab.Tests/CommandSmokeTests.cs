@@ -83,11 +83,11 @@ namespace HookeRope.Lab.Tests
         public void SteppingWithTheRadiusModelAllocatesNothing()  // fully optimised: no on-stack-replacement allocations in the loops
         {
             var setup = HookeRope.Lab.Simulation.ScenarioRunner.Build(BuiltInScenarios.Load("necking"), true);
-            for (int i = 0; i < 300; i++) { setup.Rope.Step(1f / 90f); setup.AfterStep(); }
+            for (int i = 0; i < 300; i++) setup.Step(1f / 90f);
             long a0 = System.GC.GetAllocatedBytesForCurrentThread();
             for (int i = 0; i < 400; i++) setup.Rope.Step(1f / 90f);
             long a1 = System.GC.GetAllocatedBytesForCurrentThread();
-            for (int i = 0; i < 400; i++) setup.AfterStep();
+            for (int i = 0; i < 400; i++) setup.UpdateRadii();
             long a2 = System.GC.GetAllocatedBytesForCurrentThread();
             Assert.That(a2 - a0, Is.EqualTo(0), $"Rope.Step: {a1 - a0} B, radius glue: {a2 - a1} B over 400 steps");
         }

@@ -115,9 +115,9 @@ namespace HookeRope.Lab.Bench
         static double BytesPerStep(RopeSetup setup, float dt, int steps)
         {
             // Fully optimised at once: a tier-0 loop would allocate for on-stack replacement.
-            for (int i = 0; i < 20; i++) { setup.Rope.Step(dt); setup.AfterStep(); }
+            for (int i = 0; i < 20; i++) setup.Step(dt);
             long before = GC.GetAllocatedBytesForCurrentThread();
-            for (int i = 0; i < steps; i++) { setup.Rope.Step(dt); setup.AfterStep(); }
+            for (int i = 0; i < steps; i++) setup.Step(dt);
             return (GC.GetAllocatedBytesForCurrentThread() - before) / (double)steps;
         }
 
@@ -153,31 +153,27 @@ namespace HookeRope.Lab.Bench
             radiusOff.Radius.Settings.PoissonEnabled = false;
             radiusOff.Radius.Settings.NeckMode = HookeRope.Radius.NeckMode.Off;
             radiusOff.Radius.Settings.BreakEnabled = false;
-            list.Add(new FeatureResult { Name = "radius model present, all parts off", MicrosecondsPerStep = TimeNs(() => { radiusOff.Rope.Step(dt); radiusOff.AfterStep(); }, steps) / 1000 });
+            list.Add(new FeatureResult { Name = "radius model present, all parts off", MicrosecondsPerStep = TimeNs(() => radiusOff.Step(dt), steps) / 1000 });
 
             var poisson = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), true);
             poisson.Radius.Settings.NeckMode = HookeRope.Radius.NeckMode.Off;
-            list.Add(new FeatureResult { Name = "radius on (Poisson thinning + break test)", MicrosecondsPerStep = TimeNs(() => { poisson.Rope.Step(dt); poisson.AfterStep(); }, steps) / 1000 });
+            list.Add(new FeatureResult { Name = "radius on (Poisson thinning + break test)", MicrosecondsPerStep = TimeNs(() => poisson.Step(dt), steps) / 1000 });
 
             var necking = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), true);
             necking.Radius.Settings.NeckMode = HookeRope.Radius.NeckMode.Zone;
             necking.Radius.Settings.RMinFraction = 0.999f;
-            list.Add(new FeatureResult { Name = "radius + necking (zone neck active)", MicrosecondsPerStep = TimeNs(() => { necking.Rope.Step(dt); necking.AfterStep(); }, steps) / 1000 });
+            list.Add(new FeatureResult { Name = "radius + necking (zone neck active)", MicrosecondsPerStep = TimeNs(() => necking.Step(dt), steps) / 1000 });
 
             var meshed = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), true);
-            var builder = new TubeMeshBuilder(new TubeMeshSettings { RadialSegments = 8 }, n);
-            var broken = new bool[n];
-            var vertices = new TubeVertex[builder.GetVertexCount(broken)];
-            var indices = new int[builder.GetIndexCount(broken)];
+            var vertices = new TubeVertex[meshed.Simulation.GetVertexCount()];
+            var indices = new int[meshed.Simulation.GetIndexCount()];
             list.Add(new FeatureResult
             {
-                Name = "radius + tube mesh rebuilt every step (8 sides)",
+                Name = "radius + tube mesh filled every step (RopeSimulation.FillMesh)",
                 MicrosecondsPerStep = TimeNs(() =>
                 {
-                    meshed.Rope.Step(dt);
-                    meshed.AfterStep();
-                    builder.Build(meshed.Rope.PositionX, meshed.Rope.PositionY, meshed.Rope.PositionZ, meshed.Rope.RestLengths,
-                        meshed.Radius.SegmentRadii, broken, vertices, indices);
+                    meshed.Step(dt);
+                    meshed.Simulation.FillMesh(vertices, indices);
                 }, steps) / 1000,
             });
             return list;

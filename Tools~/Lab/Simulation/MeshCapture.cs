@@ -3,24 +3,17 @@ using HookeRope.Lab.Scenarios;
 
 namespace HookeRope.Lab.Simulation
 {
-    /// <summary>Captures the tube mesh of a rope with the core's <see cref="TubeMeshBuilder"/> (broken ends included).</summary>
+    /// <summary>Captures the tube mesh of a rope through the core's RopeSimulation facade (broken ends included).</summary>
     public static class MeshCapture
     {
         /// <summary>The tube mesh at time t in world metres.</summary>
         public static MeshSnapshot Capture(RopeSetup setup, Scenario s, double t)
         {
-            var rope = setup.Rope;
-            var settings = new TubeMeshSettings { RadialSegments = s.Rope.RadialSegments };
-            settings.Burr.Seed = (uint)s.Rope.Seed;
-            var builder = new TubeMeshBuilder(settings, rope.SegmentCount);
-            for (int j = 0; j < setup.BrokenFlags.Length; j++) setup.BrokenFlags[j] = rope.IsSegmentBroken(j);
-            var vertices = new TubeVertex[builder.GetVertexCount(setup.BrokenFlags)];
-            var indices = new int[builder.GetIndexCount(setup.BrokenFlags)];
-            var radii = new float[rope.SegmentCount];
-            if (setup.Radius != null) setup.Radius.SegmentRadii.CopyTo(radii);
-            else System.Array.Fill(radii, (float)s.Rope.Radius);
-            var update = builder.Build(rope.PositionX, rope.PositionY, rope.PositionZ, rope.RestLengths, radii, setup.BrokenFlags, vertices, indices);
-            var origin = update.Origin + rope.Origin;
+            var sim = setup.Simulation;
+            var vertices = new TubeVertex[sim.GetVertexCount()];
+            var indices = new int[sim.GetIndexCount()];
+            var update = sim.FillMesh(vertices, indices);
+            var origin = update.Origin;  // world position of the first particle; vertices are relative to it
             var snapshot = new MeshSnapshot { Time = t, Vertices = new float[update.VertexCount * 12], Indices = new int[update.IndexCount] };
             for (int i = 0; i < update.VertexCount; i++)
             {

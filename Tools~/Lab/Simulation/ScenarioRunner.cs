@@ -1,6 +1,7 @@
 using System;
 using System.Diagnostics;
 using HookeRope.Lab.Scenarios;
+using HookeRope.Geometry;
 using HookeRope.Mathematics;
 using HookeRope.Radius;
 using HookeRope.Solver;
@@ -61,12 +62,9 @@ namespace HookeRope.Lab.Simulation
             setup.StartPin = Attach(rope, s.Start, 0, positions[0], out setup.StartLoad);
             setup.EndPin = Attach(rope, s.End, rope.ParticleCount - 1, positions[positions.Length - 1], out setup.EndLoad);
             foreach (var c in s.Colliders) rope.AddCollider(Shape(c));
-            setup.BrokenFlags = new bool[rope.SegmentCount];
-            if (withRadius)
-            {
-                setup.Radius = new RadiusModel(RadiusSettings(s), (float)s.Rope.Radius, rope.RestLengths);
-                setup.DefectParticle = -1;
-            }
+            var mesh = new TubeMeshSettings { RadialSegments = s.Rope.RadialSegments };
+            mesh.Burr.Seed = (uint)s.Rope.Seed;
+            setup.Simulation = new RopeSimulation(rope, withRadius ? RadiusSettings(s) : null, mesh);
             return setup;
         }
 
@@ -173,8 +171,7 @@ namespace HookeRope.Lab.Simulation
                 double t = (k + 1) * dt;
                 if (s.Start.Kind == AttachmentKind.Keyframes) rope.SetPinTarget(setup.StartPin, s.Start.PositionAt(t));
                 if (s.End.Kind == AttachmentKind.Keyframes) rope.SetPinTarget(setup.EndPin, s.End.PositionAt(t));
-                var report = rope.Step((float)dt);
-                setup.AfterStep();
+                var report = setup.Step((float)dt);
                 result.Steps = k + 1;
                 if (report.Residual > result.MaxResidual) result.MaxResidual = report.Residual;
                 var load = rope.GetPosition(last);
@@ -382,42 +379,22 @@ namespace HookeRope.Lab.Simulation
         public int StartLoad = -1;
         /// <summary>Load on the last particle, or −1.</summary>
         public int EndLoad = -1;
-        /// <summary>Particle at the rope's defect, or −1 (neck radius column).</summary>
-        public int DefectParticle = -1;
-        /// <summary>The radius model (null when the run has it off).</summary>
-        public RadiusModel Radius;
-        /// <summary>Broken flag per segment, refreshed after every step.</summary>
-        public bool[] BrokenFlags;
+        /// <summary>The core facade: solver + radius model + tube mesh.</summary>
+        public RopeSimulation Simulation;
 
-        /// <summary>
-        /// Host-side glue after <see cref="HookeRope.Solver.Rope.Step"/>: updates the radius model from the
-        /// segment lengths, copies the particle radii to the solver (collision radius) and breaks the rope at
-        /// the defect when the model asks. TODO(radius): use the HookeRope.RopeSimulation facade once merged.
-        /// </summary>
-        public void AfterStep()
-        {
-            if (Radius == null || !Radius.IsActive) return;
-            for (int j = 0; j < BrokenFlags.Length; j++) BrokenFlags[j] = Rope.IsSegmentBroken(j);
-            Radius.Update(Rope.SegmentLengths, BrokenFlags);
-            Radius.ParticleRadii.CopyTo(Rope.ParticleRadius);
-            if (Radius.ShouldBreak && !Radius.IsBroken)
-            {
-                if (!Rope.IsSegmentBroken(Radius.DefectSegment)) Rope.BreakSegment(Radius.DefectSegment);
-                Radius.MarkBroken();
-            }
-        }
+        /// <summary>The radius model, or null when the run has it off.</summary>
+        public RadiusModel Radius => Simulation.RadiusModel;
+
+        /// <summary>One host step of the facade (solver, then radii, neck break), s.</summary>
+        public StepReport Step(float hostDeltaTime) => Simulation.Step(hostDeltaTime);
+
+        /// <summary>The radius half of <see cref="Step"/> alone (used to measure its allocations).</summary>
+        public void UpdateRadii() => Simulation.UpdateRadii();
 
         /// <summary>Radius at the defect (neck included), or the smallest particle radius without a radius model, m.</summary>
-        public double NeckRadius() => Radius != null ? Radius.NeckRadius : MinRadius();
+        public double NeckRadius() => Simulation.NeckRadius;
 
         /// <summary>Smallest radius along the rope (neck waist included), m.</summary>
-        public double MinRadius()
-        {
-            if (Radius != null) return Radius.MinRadius;
-            var radius = Rope.ParticleRadius;
-            double min = double.MaxValue;
-            for (int i = 0; i < radius.Length; i++) if (radius[i] < min) min = radius[i];
-            return min;
-        }
+        public double MinRadius() => Simulation.MinRadius;
     }
 }
