@@ -39,7 +39,7 @@ namespace HookeRope.Lab.Tests
             Assert.That(new FileInfo(Path.Combine(dir, "report-pareto.png")).Length, Is.GreaterThan(1000));
 
             // The physics the report rests on: at a mass ratio of 10⁵ the exact chain solve lands within
-            // 1 % of (M + m/2)·g·L/(E·A) with 4 substeps, where Gauss–Seidel with the same budget is far off.
+            // 5 % of (M + m/2)·g·L/(E·A) with 4 substeps × 1 iteration, where Gauss–Seidel with 4 iterations is off by more than 50 %.
             var result = ErrorReport.Measure(true, 1, null);
             int heavy = result.Scenarios.IndexOf("heavy-mass-ratio");
             int exact = -1, gs = -1;
@@ -49,7 +49,7 @@ namespace HookeRope.Lab.Tests
                 if (c.Substeps == 4 && c.Iterations == 1 && c.Method == SolverMethod.ExactChain) exact = i;
                 if (c.Substeps == 4 && c.Iterations == 4 && c.Method == SolverMethod.GaussSeidel) gs = i;
             }
-            Assert.That(result.Cells[exact][heavy].Error, Is.LessThan(0.01));
+            Assert.That(result.Cells[exact][heavy].Error, Is.LessThan(0.05));
             Assert.That(result.Cells[gs][heavy].Error, Is.GreaterThan(0.5));
         }
 
