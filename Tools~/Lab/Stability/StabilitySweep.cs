@@ -96,7 +96,7 @@ namespace HookeRope.Lab.Stability
                     list.Add(new StabilityCase
                     {
                         Name = $"mass ratio {ratio:G3} ({Tag(m)})", Scenario = s,
-                        KnownLimit = m == SolverMethod.GaussSeidel && ratio >= 1e5,
+                        KnownLimit = m == SolverMethod.GaussSeidel && ratio >= 1e3,
                     });
                 }
             foreach (double rate in quick ? new[] { 30.0 } : new[] { 30.0, 1000.0 })
