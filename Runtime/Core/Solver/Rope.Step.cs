@@ -48,8 +48,10 @@ namespace HookeRope.Solver
                 for (int it = 0; it < iterations; it++)
                 {
                     bool softPins = compliantPins > 0 && ProjectCompliantPins(hd, t);
-                    if (exact) ExactChainSolver.Iterate(chain, hd, beta, tensionOnly);
-                    GaussSeidelSolver.Iterate(chain, hd, beta, tensionOnly);
+                    // Gauss–Seidel is the solver itself, or a polish sweep after an exact solve whose
+                    // linearisation was poor somewhere (a fold); on a taut chain the sweep would change nothing
+                    bool sweep = !exact || ExactChainSolver.Iterate(chain, hd, beta, tensionOnly);
+                    if (sweep) GaussSeidelSolver.Iterate(chain, hd, beta, tensionOnly);
                     if (softPins) ReleaseCompliantPins(hd, t);
                     if (hasColliders) colliders.Project(chain, h, it == iterations - 1);
                 }
