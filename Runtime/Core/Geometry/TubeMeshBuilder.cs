@@ -378,8 +378,13 @@ namespace HookeRope.Geometry
                 vertex.TX = around.X; vertex.TY = around.Y; vertex.TZ = around.Z; vertex.TW = 1f;
                 vertex.U = (float)i / radial;
                 vertex.V = v;
-                bounds.Add(p);
             }
+            // The ring lies on the circle of radius r around c in the plane normal to t: per axis c ± r·sqrt(1 − t²).
+            float ex = r * MathF.Sqrt(MathF.Max(0f, 1f - t.X * t.X)) * 1.000001f;
+            float ey = r * MathF.Sqrt(MathF.Max(0f, 1f - t.Y * t.Y)) * 1.000001f;
+            float ez = r * MathF.Sqrt(MathF.Max(0f, 1f - t.Z * t.Z)) * 1.000001f;
+            bounds.Add(new Float3(c.X - ex, c.Y - ey, c.Z - ez));
+            bounds.Add(new Float3(c.X + ex, c.Y + ey, c.Z + ez));
         }
 
         private void WriteCap(int k, bool atEnd, TubeVertex[] vertices, int[] indices, bool writeIndices,
