@@ -34,7 +34,7 @@ namespace HookeRope.Solver
                 c.Length[j] = len;
                 double alpha = c.Compliance[j];
                 double alphaTilde = alpha * invH2;
-                double g = alpha * beta / h;
+                double g = alpha > 0.0 ? beta / h : 0.0; // γ = α̃·β̃/h with β̃ = h²·β·k, k = 1/α
                 double rel = 0.0;
                 if (g > 0.0)
                 {

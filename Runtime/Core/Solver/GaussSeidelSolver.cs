@@ -20,7 +20,7 @@ namespace HookeRope.Solver
                 if (wSum == 0.0 && alpha == 0.0) continue;
                 float len = c.Direction(j, out float nx, out float ny, out float nz);
                 double alphaTilde = alpha * invH2;
-                double g = alpha * beta / h;
+                double g = alpha > 0.0 ? beta / h : 0.0; // γ = α̃·β̃/h with β̃ = h²·β·k, k = 1/α
                 double rel = 0.0;
                 if (g > 0.0)
                 {
