@@ -467,9 +467,9 @@ namespace HookeRope.Geometry
             Float3 edge = p1 - p0;
             Float3 normal = Float3.Cross(edge, tip - p0).NormalizedOr(fallback);
             Float3 tangent = edge.NormalizedOr(FrameTransport.Perpendicular(fallback, normal));
-            SetVertex(vertices, v, p0, normal, tangent, 0f, 0f);
-            SetVertex(vertices, v + 1, p1, normal, tangent, 1f, 0f);
-            SetVertex(vertices, v + 2, tip, normal, tangent, 0.5f, 1f);
+            SetVertex(vertices, v, p0, normal, tangent, 0f, 1f);
+            SetVertex(vertices, v + 1, p1, normal, tangent, 1f, 1f);
+            SetVertex(vertices, v + 2, tip, normal, tangent, 0.5f, 0f);
             bounds.Add(tip);
         }
 
