@@ -6,7 +6,7 @@ using HookeRope.Fracture;
 using HookeRope.Geometry;
 using HookeRope.Radius;
 
-namespace HookeRope.Bench
+namespace HookeRope.MeshTools
 {
     /// <summary>Entry point: "mesh" prints ns per vertex of the tube mesh build; "texture" bakes the burr texture to a PNG.</summary>
     internal static class Program

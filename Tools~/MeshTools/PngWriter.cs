@@ -2,7 +2,7 @@ using System;
 using System.IO;
 using System.IO.Compression;
 
-namespace HookeRope.Bench
+namespace HookeRope.MeshTools
 {
     /// <summary>Minimal RGBA8 PNG encoder (zlib stream via DeflateStream, CRC-32 and Adler-32 computed here).</summary>
     internal static class PngWriter
