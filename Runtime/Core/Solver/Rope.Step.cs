@@ -48,14 +48,16 @@ namespace HookeRope.Solver
                 for (int it = 0; it < iterations; it++)
                 {
                     bool softPins = compliantPins > 0 && ProjectCompliantPins(hd, t);
-                    if (exact) ExactChainSolver.Iterate(chain, hd, beta, tensionOnly);
-                    GaussSeidelSolver.Iterate(chain, hd, beta, tensionOnly);
+                    // Gauss–Seidel is the solver itself, or a polish sweep after an exact solve whose
+                    // linearisation was poor somewhere (a fold); on a taut chain the sweep would change nothing
+                    bool sweep = !exact || ExactChainSolver.Iterate(chain, hd, beta, tensionOnly);
+                    if (sweep) GaussSeidelSolver.Iterate(chain, hd, beta, tensionOnly);
                     if (softPins) ReleaseCompliantPins(hd, t);
                     if (hasColliders) colliders.Project(chain, h, it == iterations - 1);
                 }
                 UpdateVelocities(h);
                 time += hd;
-                UpdateTensions(hd);
+                UpdateTensions(hd, k == substeps - 1 || !float.IsPositiveInfinity(settings.BreakStrain));
                 if (pinCount > 0) UpdatePinForces(hd, g);
                 CheckStrainBreaks();
             }
@@ -186,15 +188,26 @@ namespace HookeRope.Solver
             }
         }
 
-        private void UpdateTensions(double h)
+        /// <summary>Tensions from the multipliers; current lengths too when asked (last substep, or strain breaks on).</summary>
+        private void UpdateTensions(double h, bool lengths)
         {
             double invH2 = 1.0 / (h * h);
-            for (int j = 0; j < chain.SegmentCount; j++)
+            int s = chain.SegmentCount;
+            double[] lambda = chain.Lambda;
+            float[] tension = chain.Tension;
+            bool[] broken = chain.Broken;
+            for (int j = 0; j < s; j++)
             {
-                float dx = chain.X[j + 1] - chain.X[j], dy = chain.Y[j + 1] - chain.Y[j], dz = chain.Z[j + 1] - chain.Z[j];
-                chain.Length[j] = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
-                double tension = chain.Broken[j] ? 0.0 : -chain.Lambda[j] * invH2;
-                chain.Tension[j] = float.IsFinite((float)tension) ? (float)tension : float.MaxValue;
+                double t = broken[j] ? 0.0 : -lambda[j] * invH2;
+                float value = (float)t;
+                tension[j] = float.IsFinite(value) ? value : float.MaxValue;
+            }
+            if (!lengths) return;
+            float[] x = chain.X, y = chain.Y, z = chain.Z, length = chain.Length;
+            for (int j = 0; j < s; j++)
+            {
+                float dx = x[j + 1] - x[j], dy = y[j + 1] - y[j], dz = z[j + 1] - z[j];
+                length[j] = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
             }
         }
 
