@@ -174,11 +174,13 @@ namespace HookeRope.Radius
         }
 
         /// <summary>
-        /// Radius in metres at fraction <paramref name="t"/> ∈ [0, 1] of segment <paramref name="segment"/>:
-        /// the particle radii interpolated linearly, times the neck profile where it applies.
+        /// Radius in metres at fraction <paramref name="t"/> ∈ [0, 1] (clamped) of segment <paramref name="segment"/>
+        /// (0 … SegmentCount − 1): the particle radii interpolated linearly, times the neck profile where it applies.
         /// </summary>
         public float RadiusAt(int segment, float t)
         {
+            if ((uint)segment >= (uint)segmentRadii.Length)
+                throw new ArgumentOutOfRangeException(nameof(segment), segment, "segment must be in [0, SegmentCount - 1].");
             if (t < 0f) t = 0f; else if (t > 1f) t = 1f;
             float baseRadius = baseParticleRadii[segment] + (baseParticleRadii[segment + 1] - baseParticleRadii[segment]) * t;
             if (neckDepth <= 0f) return baseRadius;

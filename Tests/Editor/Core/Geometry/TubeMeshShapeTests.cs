@@ -133,6 +133,35 @@ namespace HookeRope.Tests.Core.Geometry
         }
 
         [Test]
+        public void NonFiniteInputsNeverReachTheMesh()
+        {
+            var shape = RopeShape.Helix(12, 0.05f, 0.1f, 0.05f);
+            shape.X[4] = float.NaN;
+            shape.Y[7] = float.PositiveInfinity;
+            var builder = new TubeMeshBuilder(new TubeMeshSettings { RadialSegments = 8 }, 12);
+            var radii = new float[12];
+            Array.Fill(radii, R);
+            radii[2] = float.NaN;
+            radii[9] = -1f;
+            var broken = new bool[12];
+            broken[10] = true;
+            var vertices = new TubeVertex[builder.GetVertexCount(broken)];
+            var indices = new int[builder.GetIndexCount(broken)];
+            var update = builder.Build(shape.X, shape.Y, shape.Z, shape.Rest, radii, broken, vertices, indices);
+            Assert.That(MeshChecks.AllFiniteAndUnit(vertices, update.VertexCount), Is.True);
+            Assert.That(float.IsFinite(update.BoundsMin.X) && float.IsFinite(update.BoundsMax.Y), Is.True);
+
+            var model = new RadiusModel(new RadiusSettings(), R, shape.Rest);
+            var lengths = new float[12];
+            Array.Fill(lengths, 0.06f);
+            lengths[3] = float.NaN;
+            lengths[5] = float.PositiveInfinity;
+            model.Update(lengths, ReadOnlySpan<bool>.Empty);
+            for (int i = 0; i <= 12; i++) Assert.That(float.IsFinite(model.ParticleRadii[i]) && model.ParticleRadii[i] > 0f, Is.True, "particle " + i);
+            Assert.That(model.SegmentRadii[3], Is.EqualTo(R)); // a non-finite length counts as unstretched
+        }
+
+        [Test]
         public void ParallelTransportDoesNotTwist()
         {
             var builder = new TubeMeshBuilder(new TubeMeshSettings { RadialSegments = 8, RingsPerSegment = 4 }, 30);
