@@ -1,0 +1,280 @@
+using System;
+using HookeRope.Mathematics;
+
+namespace HookeRope.Solver
+{
+    public sealed partial class Rope
+    {
+        /// <summary>Largest host step in seconds that <see cref="Step"/> accepts.</summary>
+        public const float MaxHostDeltaTime = 1f;
+
+        /// <summary>
+        /// Advances the rope by one host step (s, in (0, 1]): <see cref="RopeSettings.Substeps"/> substeps of
+        /// h = Δt/substeps, each predicting with gravity, running <see cref="RopeSettings.Iterations"/>
+        /// constraint iterations (chain, compliant pins, colliders), then deriving velocities, tensions,
+        /// pin forces and breaks. Allocation-free.
+        /// </summary>
+        public StepReport Step(float hostDeltaTime)
+        {
+            if (!(hostDeltaTime > 0f && hostDeltaTime <= MaxHostDeltaTime))
+                throw new ArgumentOutOfRangeException(nameof(hostDeltaTime), hostDeltaTime, "hostDeltaTime must be in (0, 1] s");
+            if (settings.Version != appliedVersion) ApplySettings();
+
+            int substeps = settings.Substeps;
+            int iterations = settings.Iterations;
+            float h = hostDeltaTime / substeps;
+            double hd = (double)hostDeltaTime / substeps;
+            double beta = settings.Damping;
+            bool tensionOnly = settings.Tension == TensionModel.TensionOnly;
+            bool exact = settings.Solver == ConstraintSolverKind.ExactChain;
+            Float3 g = settings.Gravity;
+            bool hasColliders = colliders.Count > 0;
+            int compliantPins = CountCompliantPins();
+
+            for (int l = 0; l < loadCount; l++)
+            {
+                int i = loadParticle[l];
+                loadStartVelocity[l] = new Float3(chain.VelX[i], chain.VelY[i], chain.VelZ[i]);
+            }
+
+            for (int k = 0; k < substeps; k++)
+            {
+                float t = (float)(k + 1) / substeps;
+                if (hasColliders) colliders.PrepareSubstep(t, hostDeltaTime);
+                Predict(h, g);
+                MovePins(t);
+                Array.Clear(chain.Lambda, 0, chain.SegmentCount);
+                if (pinCount > 0) Array.Clear(pinLambda, 0, pinCount * 3);
+                for (int it = 0; it < iterations; it++)
+                {
+                    bool softPins = compliantPins > 0 && ProjectCompliantPins(hd, t);
+                    // Gauss–Seidel is the solver itself, or a polish sweep after an exact solve whose
+                    // linearisation was poor somewhere (a fold); on a taut chain the sweep would change nothing
+                    bool sweep = !exact || ExactChainSolver.Iterate(chain, hd, beta, tensionOnly);
+                    if (sweep) GaussSeidelSolver.Iterate(chain, hd, beta, tensionOnly);
+                    if (softPins) ReleaseCompliantPins(hd, t);
+                    if (hasColliders) colliders.Project(chain, h, it == iterations - 1);
+                }
+                UpdateVelocities(h);
+                time += hd;
+                UpdateTensions(hd, k == substeps - 1 || !float.IsPositiveInfinity(settings.BreakStrain));
+                if (pinCount > 0) UpdatePinForces(hd, g);
+                CheckStrainBreaks();
+            }
+            if (hasColliders) colliders.EndStep();
+            for (int p = 0; p < pinCount; p++) pinStart[p] = pinEnd[p];
+
+            lastStepTime = hostDeltaTime;
+            float invDt = 1f / hostDeltaTime;
+            for (int l = 0; l < loadCount; l++)
+            {
+                int i = loadParticle[l];
+                var v = new Float3(chain.VelX[i], chain.VelY[i], chain.VelZ[i]);
+                loadForce[l] = ((v - loadStartVelocity[l]) * invDt - g) * loadMass[l];
+            }
+
+            return new StepReport { Residual = ComputeResidual(), Iterations = iterations, Substeps = substeps };
+        }
+
+        private void Predict(float h, Float3 g)
+        {
+            int n = chain.ParticleCount;
+            float gx = g.X * h, gy = g.Y * h, gz = g.Z * h;
+            float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
+            float[] vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ;
+            bool[] kinematic = chain.Kinematic;
+            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
+            for (int i = 0; i < n; i++)
+            {
+                px[i] = x[i]; py[i] = y[i]; pz[i] = z[i];
+                if (kinematic[i]) { dx[i] = 0f; dy[i] = 0f; dz[i] = 0f; continue; }
+                vx[i] += gx; vy[i] += gy; vz[i] += gz;
+                dx[i] = vx[i] * h; dy[i] = vy[i] * h; dz[i] = vz[i] * h;
+            }
+        }
+
+        private void MovePins(float t)
+        {
+            for (int p = 0; p < pinCount; p++)
+            {
+                if (pinBroken[p] || pinCompliance[p] != 0f) continue;
+                int i = pinParticle[p];
+                Float3 target = Float3.Lerp(pinStart[p], pinEnd[p], t);
+                chain.DX[i] = target.X - chain.PrevX[i];
+                chain.DY[i] = target.Y - chain.PrevY[i];
+                chain.DZ[i] = target.Z - chain.PrevZ[i];
+            }
+        }
+
+        private int CountCompliantPins()
+        {
+            int count = 0;
+            for (int p = 0; p < pinCount; p++) if (!pinBroken[p] && pinCompliance[p] != 0f) count++;
+            return count;
+        }
+
+        /// <summary>
+        /// Compliant pins are zero-length linear springs, so they can be folded into the chain solve exactly:
+        /// project each pin alone (XPBD Gauss–Seidel step), then give its particle the effective inverse mass
+        /// w·α̃/(w + α̃) — the particle's mass plus the spring's implicit mass 1/α̃ — for the chain solve.
+        /// <see cref="ReleaseCompliantPins"/> restores the masses and reads the pin multipliers back.
+        /// Returns true when some pin was folded in.
+        /// </summary>
+        private bool ProjectCompliantPins(double h, float t)
+        {
+            double invH2 = 1.0 / (h * h);
+            bool any = false;
+            for (int p = 0; p < pinCount; p++)
+            {
+                if (pinBroken[p] || pinCompliance[p] == 0f) continue;
+                int i = pinParticle[p];
+                double w = chain.InverseMass[i];
+                if (w == 0.0) continue;
+                double alphaTilde = pinCompliance[p] * invH2;
+                double denominator = w + alphaTilde;
+                Float3 target = Float3.Lerp(pinStart[p], pinEnd[p], t);
+                int b = 3 * p;
+                double dx = (-((double)chain.PrevX[i] - target.X + chain.DX[i]) - alphaTilde * pinLambda[b]) / denominator;
+                double dy = (-((double)chain.PrevY[i] - target.Y + chain.DY[i]) - alphaTilde * pinLambda[b + 1]) / denominator;
+                double dz = (-((double)chain.PrevZ[i] - target.Z + chain.DZ[i]) - alphaTilde * pinLambda[b + 2]) / denominator;
+                chain.DX[i] += (float)(w * dx); chain.DY[i] += (float)(w * dy); chain.DZ[i] += (float)(w * dz);
+                chain.InverseMass[i] = (float)(w * alphaTilde / denominator);
+                any = true;
+            }
+            return any;
+        }
+
+        private void ReleaseCompliantPins(double h, float t)
+        {
+            double invH2 = 1.0 / (h * h);
+            for (int p = 0; p < pinCount; p++)
+            {
+                if (pinBroken[p] || pinCompliance[p] == 0f) continue;
+                int i = pinParticle[p];
+                if (chain.Kinematic[i]) continue;
+                chain.InverseMass[i] = 1f / chain.Mass[i];
+                double alphaTilde = pinCompliance[p] * invH2;
+                Float3 target = Float3.Lerp(pinStart[p], pinEnd[p], t);
+                int b = 3 * p;
+                // compliance-consistent multiplier: C + α̃·λ = 0
+                pinLambda[b] = -((double)chain.PrevX[i] - target.X + chain.DX[i]) / alphaTilde;
+                pinLambda[b + 1] = -((double)chain.PrevY[i] - target.Y + chain.DY[i]) / alphaTilde;
+                pinLambda[b + 2] = -((double)chain.PrevZ[i] - target.Z + chain.DZ[i]) / alphaTilde;
+            }
+        }
+
+        private void UpdateVelocities(float h)
+        {
+            int n = chain.ParticleCount;
+            float invH = 1f / h;
+            float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
+            float[] vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ;
+            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
+            for (int i = 0; i < n; i++)
+            {
+                float ux = dx[i] * invH, uy = dy[i] * invH, uz = dz[i] * invH;
+                float nx = px[i] + dx[i], ny = py[i] + dy[i], nz = pz[i] + dz[i];
+                if (float.IsFinite(ux + uy + uz) && float.IsFinite(nx + ny + nz))
+                {
+                    x[i] = nx; y[i] = ny; z[i] = nz;
+                    vx[i] = ux; vy[i] = uy; vz[i] = uz;
+                }
+                else
+                {
+                    // never let a non-finite value into the state: fall back to the last good position at rest
+                    x[i] = px[i]; y[i] = py[i]; z[i] = pz[i];
+                    vx[i] = 0f; vy[i] = 0f; vz[i] = 0f;
+                }
+            }
+        }
+
+        /// <summary>Tensions from the multipliers; current lengths too when asked (last substep, or strain breaks on).</summary>
+        private void UpdateTensions(double h, bool lengths)
+        {
+            double invH2 = 1.0 / (h * h);
+            int s = chain.SegmentCount;
+            double[] lambda = chain.Lambda;
+            float[] tension = chain.Tension;
+            bool[] broken = chain.Broken;
+            for (int j = 0; j < s; j++)
+            {
+                double t = broken[j] ? 0.0 : -lambda[j] * invH2;
+                float value = (float)t;
+                tension[j] = float.IsFinite(value) ? value : float.MaxValue;
+            }
+            if (!lengths) return;
+            float[] x = chain.X, y = chain.Y, z = chain.Z, length = chain.Length;
+            for (int j = 0; j < s; j++)
+            {
+                float dx = x[j + 1] - x[j], dy = y[j + 1] - y[j], dz = z[j + 1] - z[j];
+                length[j] = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
+            }
+        }
+
+        private void UpdatePinForces(double h, Float3 g)
+        {
+            double invH2 = 1.0 / (h * h);
+            bool released = false;
+            for (int p = 0; p < pinCount; p++)
+            {
+                if (pinBroken[p]) continue;
+                int i = pinParticle[p];
+                Float3 force;
+                if (pinCompliance[p] != 0f)
+                {
+                    int b = 3 * p;
+                    force = new Float3((float)(-pinLambda[b] * invH2), (float)(-pinLambda[b + 1] * invH2), (float)(-pinLambda[b + 2] * invH2));
+                }
+                else
+                {
+                    force = g * (chain.Mass[i]);
+                    if (i < chain.SegmentCount && !chain.Broken[i])
+                        force += new Float3(chain.DirX[i], chain.DirY[i], chain.DirZ[i]) * chain.Tension[i];
+                    if (i > 0 && !chain.Broken[i - 1])
+                        force -= new Float3(chain.DirX[i - 1], chain.DirY[i - 1], chain.DirZ[i - 1]) * chain.Tension[i - 1];
+                }
+                pinForce[p] = force;
+                if (force.Length > pinBreakForce[p])
+                {
+                    pinBroken[p] = true;
+                    pinForce[p] = Float3.Zero;
+                    released = true;
+                }
+            }
+            if (released) RefreshKinematic();
+        }
+
+        /// <summary>Breaks the most strained segment past the limit, one per substep: once it fails the others unload.</summary>
+        private void CheckStrainBreaks()
+        {
+            float limit = settings.BreakStrain;
+            if (float.IsPositiveInfinity(limit)) return;
+            int worst = -1;
+            float worstStrain = limit;
+            for (int j = 0; j < chain.SegmentCount; j++)
+            {
+                if (chain.Broken[j]) continue;
+                float strain = chain.Length[j] / chain.RestLength[j] - 1f;
+                if (strain > worstStrain) { worstStrain = strain; worst = j; }
+            }
+            if (worst >= 0) BreakSegment(worst);
+        }
+
+        private float ComputeResidual()
+        {
+            double worst = 0.0;
+            bool tensionOnly = settings.Tension == TensionModel.TensionOnly;
+            for (int j = 0; j < chain.SegmentCount; j++)
+            {
+                if (chain.Broken[j]) continue;
+                double rest = chain.RestLength[j];
+                double c = chain.Length[j] - rest;
+                double tension = chain.Tension[j];
+                if (tensionOnly && tension <= 0.0 && c <= 0.0) continue; // slack: no constraint to meet
+                double error = Math.Abs(c - chain.Compliance[j] * tension) / rest;
+                if (error > worst) worst = error;
+            }
+            return (float)worst;
+        }
+    }
+}

@@ -1,0 +1,29 @@
+using BenchmarkDotNet.Configs;
+using BenchmarkDotNet.Diagnosers;
+using BenchmarkDotNet.Jobs;
+using BenchmarkDotNet.Running;
+using BenchmarkDotNet.Toolchains.InProcess.Emit;
+
+namespace HookeRope.Bench
+{
+    /// <summary>Entry point: a short in-process job so the whole suite runs in a few minutes.</summary>
+    public static class Program
+    {
+        public static void Main(string[] args)
+        {
+            var job = Job.Default
+                .WithToolchain(InProcessEmitToolchain.Instance)
+                .WithWarmupCount(2)
+                .WithIterationCount(5)
+                .WithLaunchCount(1)
+                .WithId("Short");
+            var config = DefaultConfig.Instance
+                .AddJob(job)
+                .AddDiagnoser(MemoryDiagnoser.Default)
+                .AddColumn(new PerUnitColumn())
+                .WithOptions(ConfigOptions.DisableOptimizationsValidator)
+                .WithArtifactsPath(System.IO.Path.Combine(System.IO.Path.GetTempPath(), "HookeRope.Bench"));
+            BenchmarkSwitcher.FromAssembly(typeof(Program).Assembly).Run(args, config);
+        }
+    }
+}

@@ -1,0 +1,94 @@
+using System.Collections.Generic;
+using HookeRope.Lab.Scenarios;
+using HookeRope.Lab.Simulation;
+using NUnit.Framework;
+
+namespace HookeRope.Lab.Tests
+{
+    /// <summary>Every built-in scenario, run on the real solver, against its analytic formula.</summary>
+    [TestFixture]
+    public sealed class ScenarioPhysicsTests
+    {
+        static RunResult Run(Scenario s) => ScenarioRunner.Run(s, new RunOptions { TrackEnergy = false });
+
+        static void AssertChecks(RunResult r, int count)
+        {
+            Assert.That(r.NonFinite, Is.False, r.Scenario.Name + ": NaN or ∞ in positions");
+            List<CheckResult> checks = PhysicsChecks.Evaluate(r);
+            Assert.That(checks.Count, Is.GreaterThanOrEqualTo(count), r.Scenario.Name + ": checks");
+            for (int i = 0; i < count; i++)
+            {
+                var c = checks[i];
+                Assert.That(c.Passed, Is.True,
+                    $"{r.Scenario.Name}: {c.Quantity} = {c.Measured:G6} {c.Unit}, expected {c.Expected:G6} ({c.Formula}), error {c.Error:G3} > {c.Tolerance:G3}");
+            }
+        }
+
+        [Test]
+        public void FallArrestPeakForceMatchesTheEnergyBalance()
+        {
+            var r = Run(BuiltInScenarios.Load("fall-arrest"));
+            // F = Mg + sqrt((Mg)² + 2Mgkh) = 5518 N for 100 kg, k = 2500 N/m, h = 4 m: within 5 %.
+            Assert.That(r.PeakTopForce, Is.EqualTo(PhysicsChecks.FallArrestForce(100, 9.81, 2500, 4)).Within(5).Percent);
+            Assert.That(r.TautTime, Is.EqualTo(System.Math.Sqrt(2 * 4 / 9.81)).Within(0.05));
+            AssertChecks(r, 1);
+        }
+
+        [Test]
+        public void StaticHangElongationAndTopTension() => AssertChecks(Run(BuiltInScenarios.Load("static-hang")), 2);
+
+        [Test]
+        public void SpringOscillatorPeriod() => AssertChecks(Run(BuiltInScenarios.Load("spring-oscillator")), 2);
+
+        [Test]
+        public void HeavyMassRatioHangsAtTheStaticElongation() => AssertChecks(Run(BuiltInScenarios.Load("heavy-mass-ratio")), 2);
+
+        [Test]
+        public void SteelCableFundamentalAndMeanElongation() => AssertChecks(Run(BuiltInScenarios.Load("steel-cable")), 2);
+
+        [TestCase(0.0)]
+        [TestCase(0.25)]
+        [TestCase(0.5)]
+        public void PoissonSweepRadiusFollowsTheVolumeLaw(double nu)
+        {
+            var s = BuiltInScenarios.Load("poisson-sweep");
+            s.Rope.PoissonRatio = nu;
+            var r = Run(s);
+            AssertChecks(r, 1);
+            double strain = PhysicsChecks.FinalElongation(r) / s.Rope.RestLength;
+            Assert.That(strain, Is.EqualTo(1.0).Within(0.02), "the end keyframe doubles the length");
+        }
+
+        [Test]
+        public void NeckingFormsAtTheDefectBelowTheOnsetRadius() => AssertChecks(Run(BuiltInScenarios.Load("necking")), 3);
+
+        [Test]
+        public void FractureBreaksAtTheBreakStrainTension()
+        {
+            var r = Run(BuiltInScenarios.Load("fracture"));
+            Assert.That(double.IsNaN(r.BreakTime), Is.False, "the cord must break");
+            // The end moves at 0.5 m/s from 1 m: 50 % strain is reached at t ≈ 1 s.
+            Assert.That(r.BreakTime, Is.EqualTo(1.0).Within(0.05));
+            AssertChecks(r, 1);
+        }
+
+        [Test]
+        [Ignore("Solver contact handling: on solver bf3c29f particles sit 2.5 mm inside the bar and reported tensions are 88 % below E·A·strain (d7785d5 pulled the cord through the bar). See Documentation~/lab.md, known issues.")]
+        public void CollisionBendWrapsTheBarWithoutPenetrating()
+        {
+            // No penetration, length = tangent + arc + tangent, reported tension = E·A·strain.
+            AssertChecks(Run(BuiltInScenarios.Load("collision-bend")), 3);
+        }
+
+        [Test]
+        public void CatenarySagAndHorizontalTension() => AssertChecks(Run(BuiltInScenarios.Load("catenary")), 2);
+
+        [Test]
+        public void EveryBuiltInScenarioHasAPhysicsTest()
+        {
+            var covered = new[] { "fall-arrest", "static-hang", "spring-oscillator", "heavy-mass-ratio", "steel-cable",
+                "poisson-sweep", "necking", "fracture", "collision-bend", "catenary" };
+            Assert.That(BuiltInScenarios.Names, Is.EquivalentTo(covered));
+        }
+    }
+}

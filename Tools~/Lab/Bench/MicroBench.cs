@@ -1,0 +1,182 @@
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using HookeRope.Geometry;
+using HookeRope.Lab.Report;
+using HookeRope.Lab.Scenarios;
+using HookeRope.Lab.Simulation;
+using HookeRope.Mathematics;
+using HookeRope.Solver;
+
+namespace HookeRope.Lab.Bench
+{
+    /// <summary>One size of the scaling benchmark.</summary>
+    public sealed class SizeResult
+    {
+        /// <summary>Segments.</summary>
+        public int Segments;
+        /// <summary>Gauss–Seidel: ns per constraint projection.</summary>
+        public double NsPerProjection;
+        /// <summary>Exact chain: ns per segment and iteration.</summary>
+        public double NsPerSegmentIteration;
+        /// <summary>Exact chain: µs per host step (4 substeps × 1 iteration).</summary>
+        public double MicrosecondsPerStep;
+        /// <summary>Tube mesh: ns per vertex.</summary>
+        public double NsPerVertex;
+        /// <summary>Managed bytes allocated per host step (exact chain, radius model on).</summary>
+        public double BytesPerStep;
+    }
+
+    /// <summary>Cost of one optional feature at a fixed size.</summary>
+    public sealed class FeatureResult
+    {
+        /// <summary>Feature and state.</summary>
+        public string Name;
+        /// <summary>µs per host step.</summary>
+        public double MicrosecondsPerStep;
+    }
+
+    /// <summary>Stopwatch micro-benchmarks of the core: solver, radius model and tube mesh.</summary>
+    public static class MicroBench
+    {
+        /// <summary>Segment counts measured.</summary>
+        public static int[] Sizes(bool quick) => quick ? new[] { 16, 256, 1024 } : new[] { 16, 64, 256, 1024, 4096, 10000 };
+
+        static Scenario Hanging(int segments, SolverMethod method, int substeps, int iterations)
+        {
+            var s = StabilitySweep_Base();
+            s.Rope.Segments = segments;
+            s.Solver.Method = method;
+            s.Solver.Substeps = substeps;
+            s.Solver.Iterations = iterations;
+            return s;
+        }
+
+        static Scenario StabilitySweep_Base() => HookeRope.Lab.Stability.StabilitySweep.Base(SolverMethod.ExactChain, 1.0);
+
+        /// <summary>Median wall time in ns of <paramref name="steps"/> calls of <paramref name="step"/> over 5 repeats (after a warm-up).</summary>
+        static double TimeNs(Action step, int steps)
+        {
+            // Warm-up long enough for tiered JIT to install optimised code (≥ 0.25 s or 20 000 calls).
+            var warm = Stopwatch.StartNew();
+            for (int i = 0; i < 20000 && warm.ElapsedMilliseconds < 250; i++) step();
+            var samples = new List<double>();
+            for (int r = 0; r < 5; r++)
+            {
+                var watch = Stopwatch.StartNew();
+                for (int i = 0; i < steps; i++) step();
+                samples.Add(watch.Elapsed.TotalMilliseconds * 1e6 / steps);
+            }
+            return Stats.Median(samples);
+        }
+
+        static int StepsFor(int segments, int work, bool quick) =>
+            Math.Max(20, (int)((quick ? 2e5 : 2e6) / ((double)segments * work)));
+
+        /// <summary>Measures every size.</summary>
+        public static List<SizeResult> Scaling(bool quick, Action<string> progress)
+        {
+            var list = new List<SizeResult>();
+            float dt = 1f / 90f;
+            foreach (int n in Sizes(quick))
+            {
+                var result = new SizeResult { Segments = n };
+                const int gsIterations = 4;
+                var gs = ScenarioRunner.Build(Hanging(n, SolverMethod.GaussSeidel, 1, gsIterations), false).Rope;
+                result.NsPerProjection = TimeNs(() => gs.Step(dt), StepsFor(n, gsIterations, quick)) / (n * gsIterations);
+
+                var exactSetup = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), true);
+                var exact = exactSetup.Rope;
+                double stepNs = TimeNs(() => exact.Step(dt), StepsFor(n, 4, quick));
+                result.MicrosecondsPerStep = stepNs / 1000;
+                result.NsPerSegmentIteration = stepNs / (n * 4);
+
+                result.BytesPerStep = BytesPerStep(exactSetup, dt, 200);
+
+                var settings = new TubeMeshSettings { RadialSegments = 8 };
+                var builder = new TubeMeshBuilder(settings, n);
+                var broken = new bool[n];
+                var vertices = new TubeVertex[builder.GetVertexCount(broken)];
+                var indices = new int[builder.GetIndexCount(broken)];
+                var radii = new float[n];
+                Array.Fill(radii, 0.005f);
+                int count = builder.Build(exact.PositionX, exact.PositionY, exact.PositionZ, exact.RestLengths, radii, broken, vertices, indices).VertexCount;
+                double meshNs = TimeNs(() => builder.Build(exact.PositionX, exact.PositionY, exact.PositionZ, exact.RestLengths, radii, broken, vertices, indices),
+                    Math.Max(20, (int)((quick ? 2e5 : 2e6) / Math.Max(count, 1))));
+                result.NsPerVertex = meshNs / Math.Max(count, 1);
+                list.Add(result);
+                progress?.Invoke(n + " segments");
+            }
+            return list;
+        }
+
+        /// <summary>Managed bytes allocated per host step (solver + radius glue), after a warm-up.</summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveOptimization)]
+        static double BytesPerStep(RopeSetup setup, float dt, int steps)
+        {
+            // Fully optimised at once: a tier-0 loop would allocate for on-stack replacement.
+            for (int i = 0; i < 20; i++) setup.Step(dt);
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            for (int i = 0; i < steps; i++) setup.Step(dt);
+            return (GC.GetAllocatedBytesForCurrentThread() - before) / (double)steps;
+        }
+
+        /// <summary>Fitted exponent p of time per step ∝ segments^p (exact chain).</summary>
+        public static double ScalingExponent(List<SizeResult> sizes)
+        {
+            var x = new List<double>();
+            var y = new List<double>();
+            foreach (var s in sizes)
+            {
+                x.Add(s.Segments);
+                y.Add(s.MicrosecondsPerStep);
+            }
+            return Stats.LogLogSlope(x, y);
+        }
+
+        /// <summary>Cost per host step of each optional feature, on and off, at 256 segments.</summary>
+        public static List<FeatureResult> Features(bool quick)
+        {
+            const int n = 256;
+            float dt = 1f / 90f;
+            int steps = quick ? 100 : 600;
+            var list = new List<FeatureResult>();
+
+            var baseline = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), false);
+            list.Add(new FeatureResult { Name = "baseline: exact chain, 4 substeps, nothing optional", MicrosecondsPerStep = TimeNs(() => baseline.Rope.Step(dt), steps) / 1000 });
+
+            var collider = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), false);
+            collider.Rope.AddCollider(ColliderShape.Plane(new Float3(0f, -100f, 0f), new Float3(0f, 1f, 0f)));
+            list.Add(new FeatureResult { Name = "collisions on (one plane, never touched)", MicrosecondsPerStep = TimeNs(() => collider.Rope.Step(dt), steps) / 1000 });
+
+            var radiusOff = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), true);
+            radiusOff.Radius.Settings.PoissonEnabled = false;
+            radiusOff.Radius.Settings.NeckMode = HookeRope.Radius.NeckMode.Off;
+            radiusOff.Radius.Settings.BreakEnabled = false;
+            list.Add(new FeatureResult { Name = "radius model present, all parts off", MicrosecondsPerStep = TimeNs(() => radiusOff.Step(dt), steps) / 1000 });
+
+            var poisson = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), true);
+            poisson.Radius.Settings.NeckMode = HookeRope.Radius.NeckMode.Off;
+            list.Add(new FeatureResult { Name = "radius on (Poisson thinning + break test)", MicrosecondsPerStep = TimeNs(() => poisson.Step(dt), steps) / 1000 });
+
+            var necking = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), true);
+            necking.Radius.Settings.NeckMode = HookeRope.Radius.NeckMode.Zone;
+            necking.Radius.Settings.RMinFraction = 0.999f;
+            list.Add(new FeatureResult { Name = "radius + necking (zone neck active)", MicrosecondsPerStep = TimeNs(() => necking.Step(dt), steps) / 1000 });
+
+            var meshed = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), true);
+            var vertices = new TubeVertex[meshed.Simulation.GetVertexCount()];
+            var indices = new int[meshed.Simulation.GetIndexCount()];
+            list.Add(new FeatureResult
+            {
+                Name = "radius + tube mesh filled every step (RopeSimulation.FillMesh)",
+                MicrosecondsPerStep = TimeNs(() =>
+                {
+                    meshed.Step(dt);
+                    meshed.Simulation.FillMesh(vertices, indices);
+                }, steps) / 1000,
+            });
+            return list;
+        }
+    }
+}

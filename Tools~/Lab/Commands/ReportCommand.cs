@@ -1,0 +1,76 @@
+using System.IO;
+using Spectre.Console;
+using System.Collections.Generic;
+using HookeRope.Lab.Output;
+using HookeRope.Lab.Report;
+using HookeRope.Lab.Scenarios;
+
+namespace HookeRope.Lab.Commands
+{
+    /// <summary><c>report</c>: error against run time, Markdown + log–log Pareto plot + recommended defaults.</summary>
+    public static class ReportCommand
+    {
+        /// <summary>Runs the grid and writes report.md and report-pareto.png to <paramref name="outDir"/>.</summary>
+        public static int Execute(IAnsiConsole console, string outDir, bool quick, int repeats)
+        {
+            if (repeats < 1 || repeats > 50) throw new System.ArgumentOutOfRangeException(nameof(repeats), repeats, "--repeats must be in [1, 50]");
+            Directory.CreateDirectory(outDir);
+            console.MarkupLine("[bold]HookeRope lab · report[/]  " + Markup.Escape(MachineInfo.Describe()));
+            ReportResult result = null;
+            int total = ErrorReport.Grid(quick).Count * ErrorReport.ReferenceScenarios.Length;
+            if (console.Profile.Capabilities.Interactive)
+            {
+                console.Progress().Start(ctx =>
+                {
+                    var task = ctx.AddTask("configurations × scenarios", maxValue: total);
+                    result = ErrorReport.Measure(quick, quick ? 1 : repeats, _ => task.Increment(1));
+                });
+            }
+            else
+            {
+                result = ErrorReport.Measure(quick, quick ? 1 : repeats, null);
+            }
+            var series = new List<Plots.Series>();
+            var byFamily = new Dictionary<string, Plots.Series>();
+            for (int i = 0; i < result.Configs.Count; i++)
+            {
+                var c = result.Configs[i];
+                string family = c.Method == SolverMethod.GaussSeidel ? $"Gauss–Seidel, {c.Iterations} iteration(s)" : $"exact chain, {c.Iterations} iteration(s)";
+                if (!byFamily.TryGetValue(family, out var s))
+                {
+                    s = new Plots.Series { Label = family };
+                    byFamily.Add(family, s);
+                    series.Add(s);
+                }
+                double error = result.WorstError(i);
+                s.Cost.Add(result.MeanCost(i));
+                s.Error.Add(double.IsFinite(error) ? error : 10);
+            }
+            string plot = Path.Combine(outDir, "report-pareto.png");
+            Plots.Pareto("worst relative error over the reference scenarios against run time (substeps vary along each family)", series, plot);
+            string md = Path.Combine(outDir, "report.md");
+            File.WriteAllText(md, ErrorReport.Markdown(result, "report-pareto.png"));
+
+            var table = new Table().Border(TableBorder.Rounded).Title("Pareto-optimal configurations");
+            table.AddColumn("configuration");
+            foreach (var s in result.Scenarios) table.AddColumn(new TableColumn(Markup.Escape(s)).RightAligned());
+            table.AddColumn(new TableColumn("ms / sim s").RightAligned());
+            int rec = result.Recommended();
+            foreach (int i in result.ParetoFront())
+            {
+                var row = new List<string> { Markup.Escape(result.Configs[i].Label) + (i == rec ? " [green](recommended)[/]" : "") };
+                foreach (var cell in result.Cells[i])
+                    row.Add(double.IsFinite(cell.Error) ? (cell.Error * 100).ToString("G3", System.Globalization.CultureInfo.InvariantCulture) + " %" : "NaN");
+                row.Add(result.MeanCost(i).ToString("F2", System.Globalization.CultureInfo.InvariantCulture));
+                table.AddRow(row.ToArray());
+            }
+            console.Write(table);
+            console.MarkupLine(rec >= 0
+                ? "recommended default: [green]" + Markup.Escape(result.Configs[rec].Label) + "[/] (cheapest within 1 % on every reference scenario)"
+                : "[yellow]no configuration within 1 % on every reference scenario[/]");
+            console.MarkupLine("[grey]wrote[/] " + Markup.Escape(md));
+            console.MarkupLine("[grey]wrote[/] " + Markup.Escape(plot));
+            return 0;
+        }
+    }
+}

@@ -1,0 +1,66 @@
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using HookeRope.Lab.Output;
+using HookeRope.Lab.Scenarios;
+using HookeRope.Lab.Simulation;
+using Spectre.Console;
+
+namespace HookeRope.Lab.Commands
+{
+    /// <summary><c>run [scenario|file.json]</c>: CSV, force plot, radius plot, optional glTF, summary.</summary>
+    public static class RunCommand
+    {
+        /// <summary>Runs the scenario and writes its outputs to <paramref name="outDir"/>; returns the exit code.</summary>
+        public static int Execute(IAnsiConsole console, string scenario, string outDir, bool svg, bool gltf, bool strict)
+        {
+            var spec = BuiltInScenarios.Resolve(scenario);
+            Directory.CreateDirectory(outDir);
+            RunResult result = null;
+            var options = new RunOptions();
+            if (console.Profile.Capabilities.Interactive && spec.StepCount > 2000)
+            {
+                console.Progress().Start(ctx =>
+                {
+                    var task = ctx.AddTask(spec.Name, maxValue: spec.StepCount);
+                    options.Progress = k => { if ((k & 63) == 0) task.Value = k; };
+                    result = ScenarioRunner.Run(spec, options);
+                    task.Value = spec.StepCount;
+                });
+            }
+            else
+            {
+                result = ScenarioRunner.Run(spec, options);
+            }
+            var files = new List<string>();
+            string stem = Path.Combine(outDir, spec.Name);
+            CsvWriter.Write(result, stem + ".csv");
+            files.Add(stem + ".csv");
+            Plots.Force(result, stem + "-force.png", svg ? stem + "-force.svg" : null);
+            files.Add(stem + "-force.png");
+            if (result.Profiles.Count > 0)
+            {
+                Plots.RadiusProfiles(result, stem + "-radius.png", svg ? stem + "-radius.svg" : null);
+                files.Add(stem + "-radius.png");
+            }
+            if (gltf)
+            {
+                foreach (var mesh in result.Meshes)
+                {
+                    string path = stem + "-t" + mesh.Time.ToString("F3", CultureInfo.InvariantCulture) + ".glb";
+                    GltfExport.Write(mesh, spec.Name, path);
+                    files.Add(path);
+                }
+                if (result.Meshes.Count == 0)
+                    console.MarkupLine("[yellow]no mesh captured: set outputs.gltfTimes in the scenario (or the mesh builder is not available)[/]");
+            }
+            var checks = PhysicsChecks.Evaluate(result);
+            SummaryView.Print(console, result, checks, files);
+            if (result.NonFinite) return 3;
+            if (strict)
+                foreach (var check in checks)
+                    if (!check.Passed) return 4;
+            return 0;
+        }
+    }
+}

@@ -1,0 +1,53 @@
+using System.Globalization;
+using System.IO;
+using System.Text;
+using HookeRope.Lab.Simulation;
+
+namespace HookeRope.Lab.Output
+{
+    /// <summary>Writes a run's time series as CSV (invariant culture, SI units in the header).</summary>
+    public static class CsvWriter
+    {
+        /// <summary>Header line: one column per <see cref="Sample"/> field, unit as suffix.</summary>
+        public const string Header =
+            "time_s,load_x_m,load_y_m,load_z_m,load_vx_mps,load_vy_mps,load_vz_mps," +
+            "top_tension_N,bottom_tension_N,elongation_m,min_radius_m,neck_radius_m,broken,residual,energy_J";
+
+        /// <summary>Writes <paramref name="result"/> to <paramref name="path"/>.</summary>
+        public static void Write(RunResult result, string path)
+        {
+            using (var writer = new StreamWriter(path, false, new UTF8Encoding(false)))
+                Write(result, writer);
+        }
+
+        /// <summary>Writes <paramref name="result"/> to a text writer.</summary>
+        public static void Write(RunResult result, TextWriter writer)
+        {
+            writer.WriteLine(Header);
+            var line = new StringBuilder(256);
+            foreach (var s in result.Samples)
+            {
+                line.Clear();
+                Append(line, s.Time).Append(',');
+                Append(line, s.X).Append(',');
+                Append(line, s.Y).Append(',');
+                Append(line, s.Z).Append(',');
+                Append(line, s.VX).Append(',');
+                Append(line, s.VY).Append(',');
+                Append(line, s.VZ).Append(',');
+                Append(line, s.TopTension).Append(',');
+                Append(line, s.BottomTension).Append(',');
+                Append(line, s.Elongation).Append(',');
+                Append(line, s.MinRadius).Append(',');
+                Append(line, s.NeckRadius).Append(',');
+                line.Append(s.Broken ? '1' : '0').Append(',');
+                Append(line, s.Residual).Append(',');
+                Append(line, s.Energy);
+                writer.WriteLine(line.ToString());
+            }
+        }
+
+        static StringBuilder Append(StringBuilder line, double value) =>
+            line.Append(value.ToString("G9", CultureInfo.InvariantCulture));
+    }
+}

@@ -1,0 +1,82 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using HookeRope.Lab.Scenarios;
+using HookeRope.Lab.Simulation;
+using Spectre.Console;
+
+namespace HookeRope.Lab.Output
+{
+    /// <summary>The one-screen summary of a run (Spectre.Console table).</summary>
+    public static class SummaryView
+    {
+        static readonly CultureInfo Invariant = CultureInfo.InvariantCulture;
+
+        /// <summary>Prints the summary of <paramref name="result"/> and the files written.</summary>
+        public static void Print(IAnsiConsole console, RunResult result, IList<CheckResult> checks, IList<string> files)
+        {
+            var s = result.Scenario;
+            console.Write(new Rule($"[bold]HookeRope lab · {Markup.Escape(s.Name)}[/]").LeftJustified());
+            if (s.Description.Length > 0) console.MarkupLine("[grey]" + Markup.Escape(s.Description) + "[/]");
+            console.MarkupLine(Markup.Escape(string.Format(Invariant,
+                "{0} · {1} segments · E·A {2} · μ {3} kg/m · {4} substeps × {5} iterations · host step {6:G4} ms · {7:G4} s simulated",
+                s.Solver.Method == SolverMethod.ExactChain ? "exact chain" : "Gauss–Seidel", s.Rope.Segments,
+                Force(s.Rope.ResolvedAxialStiffness), Num(s.Rope.ResolvedLinearDensity), s.Solver.Substeps, s.Solver.Iterations,
+                s.HostStep * 1000, s.Duration)));
+
+            var table = new Table().Border(TableBorder.Rounded);
+            table.AddColumn("quantity");
+            table.AddColumn(new TableColumn("value").RightAligned());
+            table.AddColumn("reference");
+            table.AddRow("peak anchor force", Force(result.PeakTopForce), Limits(result.PeakTopForce));
+            table.AddRow("peak force on the load", Force(result.PeakLoadForce), "");
+            if (!double.IsNaN(result.TautTime))
+            {
+                table.AddRow("rope taut at", Num(result.TautTime) + " s", "");
+                table.AddRow("free fall before taut", Num(result.TotalDrop - result.ArrestDistance) + " m", "");
+                table.AddRow("arrest distance (taut → lowest)", Num(result.ArrestDistance) + " m",
+                    result.ArrestDistance <= 1.07 ? "[green]≤ 1.07 m OSHA deceleration distance[/]" : "[yellow]> 1.07 m OSHA deceleration distance[/]");
+            }
+            table.AddRow("max elongation", Num(result.MaxElongation) + " m",
+                Markup.Escape(string.Format(Invariant, "strain {0:P1}", result.MaxElongation / s.Rope.RestLength)));
+            if (result.Samples.Count > 0)
+            {
+                double minRadius = double.MaxValue;
+                foreach (var sample in result.Samples) minRadius = Math.Min(minRadius, sample.MinRadius);
+                table.AddRow("min radius", Num(minRadius * 1000) + " mm", Markup.Escape(string.Format(Invariant, "rest radius {0:G4} mm", s.Rope.Radius * 1000)));
+            }
+            table.AddRow("broken", double.IsNaN(result.BreakTime) ? "no" : "[red]yes[/]",
+                double.IsNaN(result.BreakTime) ? "" : Markup.Escape(string.Format(Invariant, "at {0:G4} s, tension {1} before", result.BreakTime, Force(result.BreakTension))));
+            foreach (var check in checks)
+            {
+                string value = check.Unit.Length > 0 ? Num(check.Measured) + " " + check.Unit : Num(check.Measured);
+                string reference = string.Format(Invariant, "{0} {1} {2} ({3})", check.Passed ? "[green]✓[/]" : "[red]✗[/]",
+                    Markup.Escape(Num(check.Expected) + (check.Unit.Length > 0 ? " " + check.Unit : "")),
+                    Markup.Escape(check.Absolute ? "" : string.Format(Invariant, "error {0:P2}", check.Error)),
+                    Markup.Escape(check.Formula));
+                table.AddRow("check: " + Markup.Escape(check.Quantity), value, reference);
+            }
+            table.AddRow("solver residual (max)", Num(result.MaxResidual), result.NonFinite ? "[red]NaN/∞ in positions[/]" : "finite");
+            table.AddRow("wall time", Num(result.WallSeconds * 1000) + " ms",
+                Markup.Escape(string.Format(Invariant, "{0} host steps, {1:G3}× real time", result.Steps,
+                    result.Steps * s.HostStep / Math.Max(result.WallSeconds, 1e-9))));
+            console.Write(table);
+            foreach (var file in files) console.MarkupLine("[grey]wrote[/] " + Markup.Escape(file));
+        }
+
+        static string Limits(double force)
+        {
+            string en = force <= Plots.En355Limit ? "[green]≤ 6 kN EN 355[/]" : "[red]> 6 kN EN 355[/]";
+            string osha = force <= Plots.OshaLimit ? "[green]≤ 8 kN ANSI/OSHA[/]" : "[red]> 8 kN ANSI/OSHA[/]";
+            return en + " · " + osha;
+        }
+
+        /// <summary>A force in N or kN with 3–4 significant digits.</summary>
+        public static string Force(double newtons) => Math.Abs(newtons) >= 1000
+            ? (newtons / 1000).ToString("G4", Invariant) + " kN"
+            : newtons.ToString("G4", Invariant) + " N";
+
+        /// <summary>A number with 4 significant digits, invariant culture.</summary>
+        public static string Num(double value) => value.ToString("G4", Invariant);
+    }
+}

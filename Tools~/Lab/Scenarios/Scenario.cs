@@ -1,0 +1,245 @@
+using System.Collections.Generic;
+using HookeRope.Mathematics;
+
+namespace HookeRope.Lab.Scenarios
+{
+    /// <summary>One lab experiment as read from JSON (see Documentation~/lab.md). SI units throughout.</summary>
+    public sealed class Scenario
+    {
+        /// <summary>Short identifier, used for output file names.</summary>
+        public string Name = "scenario";
+        /// <summary>Free text shown in the summary.</summary>
+        public string Description = "";
+        /// <summary>Gravity in m/s².</summary>
+        public Float3 Gravity = new Float3(0f, -9.81f, 0f);
+        /// <summary>Simulated time in s.</summary>
+        public double Duration = 5.0;
+        /// <summary>Host step (one Rope.Step call) in s.</summary>
+        public double HostStep = 1.0 / 90.0;
+        /// <summary>Solver configuration.</summary>
+        public SolverSpec Solver = new SolverSpec();
+        /// <summary>Rope material and discretisation.</summary>
+        public RopeSpec Rope = new RopeSpec();
+        /// <summary>What holds particle 0.</summary>
+        public AttachmentSpec Start = AttachmentSpec.FixedAt(Float3.Zero);
+        /// <summary>What holds the last particle.</summary>
+        public AttachmentSpec End = new AttachmentSpec { Kind = AttachmentKind.Free };
+        /// <summary>Initial shape of the rope.</summary>
+        public InitialSpec Initial = new InitialSpec();
+        /// <summary>Static or kinematic colliders.</summary>
+        public List<ColliderSpec> Colliders = new List<ColliderSpec>();
+        /// <summary>Sampling and export settings.</summary>
+        public OutputSpec Outputs = new OutputSpec();
+        /// <summary>Which physics check the lab applies to the run (set by built-in scenarios).</summary>
+        public ExpectationSpec Expect = new ExpectationSpec();
+
+        /// <summary>Number of host steps to cover <see cref="Duration"/>.</summary>
+        public int StepCount => (int)System.Math.Ceiling(Duration / HostStep - 1e-9);
+    }
+
+    /// <summary>Constraint solver choice.</summary>
+    public enum SolverMethod
+    {
+        /// <summary>XPBD Gauss–Seidel projections.</summary>
+        GaussSeidel,
+        /// <summary>Exact tridiagonal solve of the whole chain per iteration.</summary>
+        ExactChain,
+    }
+
+    /// <summary>solver {…} block.</summary>
+    public sealed class SolverSpec
+    {
+        /// <summary>Constraint solver.</summary>
+        public SolverMethod Method = SolverMethod.ExactChain;
+        /// <summary>Substeps per host step (1…1000).</summary>
+        public int Substeps = 4;
+        /// <summary>Iterations per substep (1…1000).</summary>
+        public int Iterations = 1;
+        /// <summary>XPBD constraint damping β in s.</summary>
+        public double Damping = 0.0;
+        /// <summary>True: rope (pulls only); false: rod (bilateral).</summary>
+        public bool TensionOnly = true;
+    }
+
+    /// <summary>rope {…} block.</summary>
+    public sealed class RopeSpec
+    {
+        /// <summary>Rest length in m.</summary>
+        public double RestLength = 2.0;
+        /// <summary>Number of segments.</summary>
+        public int Segments = 20;
+        /// <summary>Rest radius R in m.</summary>
+        public double Radius = 0.006;
+        /// <summary>Young's modulus in Pa (null when axialStiffness is given).</summary>
+        public double? YoungsModulus;
+        /// <summary>Axial stiffness E·A in N (null when youngsModulus is given).</summary>
+        public double? AxialStiffness;
+        /// <summary>Linear density in kg/m (null when density is given).</summary>
+        public double? LinearDensity;
+        /// <summary>Density in kg/m³ (null when linearDensity is given).</summary>
+        public double? Density;
+        /// <summary>Poisson ratio ν in [−1, 0.5].</summary>
+        public double PoissonRatio = 0.5;
+        /// <summary>Neck onset radius r_min as a fraction of R (0 = no necking).</summary>
+        public double RMinFraction = 0.0;
+        /// <summary>Neck model: "none", "paper" (one hyperbola over the rope) or "zone" (a short neck zone at the defect).</summary>
+        public string NeckMode = "zone";
+        /// <summary>Weak spot where the neck starts, or null.</summary>
+        public DefectSpec Defect;
+        /// <summary>Strain l/L − 1 at which a segment breaks (+∞ = never).</summary>
+        public double BreakStrain = double.PositiveInfinity;
+        /// <summary>Vertices around the tube mesh.</summary>
+        public int RadialSegments = 8;
+        /// <summary>Seed of the random parts (burr strands of broken ends).</summary>
+        public int Seed = 1;
+
+        /// <summary>Cross-section area πR² in m².</summary>
+        public double Area => System.Math.PI * Radius * Radius;
+        /// <summary>E·A in N, from whichever of the two was given.</summary>
+        public double ResolvedAxialStiffness => AxialStiffness ?? (YoungsModulus ?? 1e9) * Area;
+        /// <summary>μ in kg/m, from whichever of the two was given.</summary>
+        public double ResolvedLinearDensity => LinearDensity ?? (Density ?? 1140.0) * Area;
+        /// <summary>Total rope mass in kg.</summary>
+        public double Mass => ResolvedLinearDensity * RestLength;
+    }
+
+    /// <summary>rope.defect {…}: the weak spot where the neck forms and the rope breaks.</summary>
+    public sealed class DefectSpec
+    {
+        /// <summary>Position along the rope as a fraction of its rest length, 0…1.</summary>
+        public double Position = 0.5;
+    }
+
+    /// <summary>How an end of the rope is held.</summary>
+    public enum AttachmentKind
+    {
+        /// <summary>Nothing holds it.</summary>
+        Free,
+        /// <summary>Pinned at a point.</summary>
+        Fixed,
+        /// <summary>Pinned to a point moving through keyframes.</summary>
+        Keyframes,
+        /// <summary>A point mass (worker, weight) attached to the end particle.</summary>
+        Body,
+    }
+
+    /// <summary>One keyframe of a moving anchor.</summary>
+    public struct Keyframe
+    {
+        /// <summary>Time in s.</summary>
+        public double Time;
+        /// <summary>Position in m.</summary>
+        public Float3 Position;
+    }
+
+    /// <summary>start/end {…}.</summary>
+    public sealed class AttachmentSpec
+    {
+        /// <summary>Kind of attachment.</summary>
+        public AttachmentKind Kind = AttachmentKind.Fixed;
+        /// <summary>Position in m (fixed, body; null = derived from the other end).</summary>
+        public Float3? Position;
+        /// <summary>Keyframes (moving anchors), sorted by time.</summary>
+        public List<Keyframe> Keys = new List<Keyframe>();
+        /// <summary>Body mass in kg.</summary>
+        public double Mass;
+        /// <summary>Body initial velocity in m/s.</summary>
+        public Float3 Velocity;
+        /// <summary>Pin compliance in m/N (0 = rigid).</summary>
+        public double Compliance;
+
+        /// <summary>A fixed anchor.</summary>
+        public static AttachmentSpec FixedAt(Float3 p) => new AttachmentSpec { Kind = AttachmentKind.Fixed, Position = p };
+
+        /// <summary>Anchor position at time t (keyframes interpolated linearly, held outside).</summary>
+        public Float3 PositionAt(double t)
+        {
+            if (Kind != AttachmentKind.Keyframes) return Position ?? Float3.Zero;
+            if (t <= Keys[0].Time) return Keys[0].Position;
+            for (int i = 1; i < Keys.Count; i++)
+            {
+                if (t <= Keys[i].Time)
+                {
+                    double span = Keys[i].Time - Keys[i - 1].Time;
+                    float f = span <= 0 ? 1f : (float)((t - Keys[i - 1].Time) / span);
+                    return Float3.Lerp(Keys[i - 1].Position, Keys[i].Position, f);
+                }
+            }
+            return Keys[Keys.Count - 1].Position;
+        }
+    }
+
+    /// <summary>Initial shape.</summary>
+    public enum InitialShape
+    {
+        /// <summary>Straight from start to end, stretched by <see cref="InitialSpec.Stretch"/>.</summary>
+        Straight,
+        /// <summary>Unstretched, folded into a V when the ends are closer than the rest length.</summary>
+        Slack,
+        /// <summary>The inextensible catenary through both ends (same height).</summary>
+        Catenary,
+    }
+
+    /// <summary>initial {…}.</summary>
+    public sealed class InitialSpec
+    {
+        /// <summary>Shape.</summary>
+        public InitialShape Shape = InitialShape.Straight;
+        /// <summary>Initial strain for a straight rope whose end is not given (end = start + down·L(1+stretch)).</summary>
+        public double Stretch;
+        /// <summary>Free-fall height in m before the rope goes taut (raises the end body), or null.</summary>
+        public double? FallHeight;
+    }
+
+    /// <summary>Collider kind.</summary>
+    public enum ColliderKind
+    {
+        /// <summary>Half-space.</summary>
+        Plane,
+        /// <summary>Sphere.</summary>
+        Sphere,
+        /// <summary>Capsule between two points.</summary>
+        Capsule,
+        /// <summary>Oriented box.</summary>
+        Box,
+    }
+
+    /// <summary>colliders[i] {…}.</summary>
+    public sealed class ColliderSpec
+    {
+        /// <summary>Kind.</summary>
+        public ColliderKind Kind;
+        /// <summary>Centre (sphere, box), a point on the plane, or capsule end A, in m.</summary>
+        public Float3 Center;
+        /// <summary>Plane normal (unit after parsing).</summary>
+        public Float3 Normal = new Float3(0f, 1f, 0f);
+        /// <summary>Capsule end B in m.</summary>
+        public Float3 PointB;
+        /// <summary>Radius in m (sphere, capsule).</summary>
+        public double Radius = 0.1;
+        /// <summary>Box half extents in m.</summary>
+        public Float3 HalfExtents = new Float3(0.5f, 0.5f, 0.5f);
+        /// <summary>Box rotation as Euler angles in degrees (applied Z, X, Y like Unity).</summary>
+        public Float3 EulerDegrees;
+        /// <summary>Coulomb friction coefficient.</summary>
+        public double Friction;
+    }
+
+    /// <summary>outputs {…}.</summary>
+    public sealed class OutputSpec
+    {
+        /// <summary>CSV rows per simulated second (0 = every host step).</summary>
+        public double SampleRate = 200.0;
+        /// <summary>Instants (s) of the radius-profile plot.</summary>
+        public List<double> ProfileTimes = new List<double>();
+        /// <summary>Instants (s) at which the tube mesh is exported to glTF (empty = none).</summary>
+        public List<double> GltfTimes = new List<double>();
+    }
+
+    /// <summary>What the built-in scenario checks (read by tests and the summary). Optional in user files.</summary>
+    public sealed class ExpectationSpec
+    {
+        /// <summary>Analytic check: "none", "fall-arrest", "static-hang", "period", "catenary", "poisson", "neck", "fracture", "collision".</summary>
+        public string Check = "none";
+    }
+}

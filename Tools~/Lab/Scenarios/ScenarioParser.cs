@@ -1,0 +1,281 @@
+using System;
+using System.Collections.Generic;
+using System.Text.Json;
+using HookeRope.Mathematics;
+
+namespace HookeRope.Lab.Scenarios
+{
+    /// <summary>
+    /// Reads a scenario from JSON with strict validation: unknown fields, wrong types, out-of-range
+    /// values and oversized arrays throw a <see cref="ScenarioException"/> naming the JSON path.
+    /// The accepted format is documented field by field in Documentation~/lab.md.
+    /// </summary>
+    public static class ScenarioParser
+    {
+        /// <summary>Largest accepted document in bytes.</summary>
+        public const int MaxDocumentBytes = 4 * 1024 * 1024;
+        /// <summary>Most colliders in one scenario.</summary>
+        public const int MaxColliders = 64;
+        /// <summary>Most keyframes of one moving anchor.</summary>
+        public const int MaxKeyframes = 10000;
+        /// <summary>Most instants in outputs.profileTimes / outputs.gltfTimes.</summary>
+        public const int MaxInstants = 32;
+        /// <summary>Most CSV rows one run may write.</summary>
+        public const double MaxRows = 2e6;
+        /// <summary>Most host steps one run may take.</summary>
+        public const double MaxSteps = 2e7;
+
+        /// <summary>Parses and validates a scenario document.</summary>
+        public static Scenario Parse(string json)
+        {
+            if (json == null) throw new ScenarioException("$", "empty document");
+            if (json.Length > MaxDocumentBytes)
+                throw new ScenarioException("$", $"document too large ({json.Length} characters, at most {MaxDocumentBytes})");
+            JsonDocument document;
+            try
+            {
+                document = JsonDocument.Parse(json, new JsonDocumentOptions
+                {
+                    CommentHandling = JsonCommentHandling.Skip,
+                    AllowTrailingCommas = false,
+                    MaxDepth = 16,
+                });
+            }
+            catch (JsonException e)
+            {
+                string where = e.LineNumber.HasValue
+                    ? $" at line {e.LineNumber + 1}, column {e.BytePositionInLine + 1}"
+                    : "";
+                throw new ScenarioException("$", "not valid JSON" + where);
+            }
+            using (document)
+            {
+                return Read(new JsonFields(document.RootElement, "$"));
+            }
+        }
+
+        static Scenario Read(JsonFields root)
+        {
+            var s = new Scenario();
+            s.Name = root.String("name", s.Name, 64);
+            foreach (char c in s.Name)
+                if (!(char.IsLetterOrDigit(c) || c == '-' || c == '_'))
+                    throw new ScenarioException("$.name", "use only letters, digits, '-' and '_' (it names output files)");
+            if (s.Name.Length == 0) throw new ScenarioException("$.name", "must not be empty");
+            s.Description = root.String("description", s.Description, 500);
+            s.Gravity = root.Vector("gravity", s.Gravity, 1000);
+            s.Duration = root.Number("duration", s.Duration, 0, 600, minExclusive: true);
+            bool hasStep = root.Has("hostStep"), hasRate = root.Has("frameRate");
+            if (hasStep && hasRate)
+                throw new ScenarioException("$.frameRate", "give either hostStep or frameRate, not both");
+            if (hasStep) s.HostStep = root.Number("hostStep", s.HostStep, 0, 0.1, minExclusive: true);
+            if (hasRate) s.HostStep = 1.0 / root.Number("frameRate", 90, 10, 100000);
+            if (s.Duration / s.HostStep > MaxSteps)
+                throw new ScenarioException("$.duration", $"duration / hostStep exceeds {MaxSteps:G3} host steps");
+
+            var solver = root.Object("solver");
+            if (solver != null) ReadSolver(solver, s.Solver);
+            var rope = root.Object("rope");
+            if (rope != null) ReadRope(rope, s.Rope);
+            s.Start = ReadAttachment(root.Object("start"), "$.start", s.Start, s.Duration);
+            s.End = ReadAttachment(root.Object("end"), "$.end", s.End, s.Duration);
+            var initial = root.Object("initial");
+            if (initial != null) ReadInitial(initial, s.Initial);
+            var colliders = root.Array("colliders", MaxColliders);
+            for (int i = 0; i < colliders.Count; i++)
+                s.Colliders.Add(ReadCollider(new JsonFields(colliders[i], $"$.colliders[{i}]")));
+            var outputs = root.Object("outputs");
+            if (outputs != null) ReadOutputs(outputs, s.Outputs, s.Duration);
+            var expect = root.Object("expect");
+            if (expect != null)
+            {
+                s.Expect.Check = expect.Choice("check", "none", "none", "fall-arrest", "static-hang", "period",
+                    "catenary", "poisson", "neck", "fracture", "collision");
+                expect.RejectUnknown();
+            }
+            root.RejectUnknown();
+            CrossCheck(s);
+            return s;
+        }
+
+        static void ReadSolver(JsonFields f, SolverSpec spec)
+        {
+            spec.Method = f.Choice("method", "exact-chain", "gauss-seidel", "exact-chain") == "gauss-seidel"
+                ? SolverMethod.GaussSeidel : SolverMethod.ExactChain;
+            spec.Substeps = f.Integer("substeps", spec.Substeps, 1, 1000);
+            spec.Iterations = f.Integer("iterations", spec.Iterations, 1, 1000);
+            spec.Damping = f.Number("damping", spec.Damping, 0, 10);
+            spec.TensionOnly = f.Choice("tension", "tension-only", "tension-only", "bilateral") == "tension-only";
+            f.RejectUnknown();
+        }
+
+        static void ReadRope(JsonFields f, RopeSpec r)
+        {
+            r.RestLength = f.Number("restLength", r.RestLength, 0, 10000, minExclusive: true);
+            r.Segments = f.Integer("segments", r.Segments, 1, 10000);
+            r.Radius = f.Number("radius", r.Radius, 0, 1, minExclusive: true);
+            r.YoungsModulus = f.OptionalNumber("youngsModulus", 0, 1e13, minExclusive: true);
+            r.AxialStiffness = f.OptionalNumber("axialStiffness", 0, 1e12, minExclusive: true);
+            if (r.YoungsModulus.HasValue && r.AxialStiffness.HasValue)
+                throw new ScenarioException(f.Child("axialStiffness"), "give either youngsModulus or axialStiffness, not both");
+            r.LinearDensity = f.OptionalNumber("linearDensity", 0, 1e4, minExclusive: true);
+            r.Density = f.OptionalNumber("density", 0, 1e5, minExclusive: true);
+            if (r.LinearDensity.HasValue && r.Density.HasValue)
+                throw new ScenarioException(f.Child("density"), "give either linearDensity or density, not both");
+            r.PoissonRatio = f.Number("poissonRatio", r.PoissonRatio, -1, 0.5);
+            r.RMinFraction = f.Number("rMinFraction", r.RMinFraction, 0, 0.99);
+            r.NeckMode = f.Choice("neckMode", r.NeckMode, "none", "paper", "zone");
+            var defect = f.Object("defect");
+            if (defect != null)
+            {
+                r.Defect = new DefectSpec
+                {
+                    Position = defect.Number("position", 0.5, 0, 1),
+                };
+                defect.RejectUnknown();
+            }
+            r.BreakStrain = f.Number("breakStrain", r.BreakStrain, 0, 1000, minExclusive: true);
+            r.RadialSegments = f.Integer("radialSegments", r.RadialSegments, 3, 64);
+            r.Seed = f.Integer("seed", r.Seed, 0, int.MaxValue);
+            f.RejectUnknown();
+        }
+
+        static AttachmentSpec ReadAttachment(JsonFields f, string path, AttachmentSpec fallback, double duration)
+        {
+            if (f == null) return fallback;
+            var a = new AttachmentSpec();
+            string type = f.Choice("type", "fixed", "fixed", "keyframes", "body", "free");
+            switch (type)
+            {
+                case "fixed":
+                    a.Kind = AttachmentKind.Fixed;
+                    a.Position = f.OptionalVector("position");
+                    a.Compliance = f.Number("compliance", 0, 0, 1);
+                    break;
+                case "keyframes":
+                    a.Kind = AttachmentKind.Keyframes;
+                    a.Compliance = f.Number("compliance", 0, 0, 1);
+                    var keys = f.Array("keys", MaxKeyframes);
+                    if (keys.Count == 0) throw new ScenarioException(f.Child("keys"), "needs at least one keyframe");
+                    for (int i = 0; i < keys.Count; i++)
+                    {
+                        var k = new JsonFields(keys[i], $"{f.Child("keys")}[{i}]");
+                        var key = new Keyframe
+                        {
+                            Time = k.Number("time", double.NaN, 0, 1e5),
+                            Position = k.Vector("position", new Float3(float.NaN, 0, 0)),
+                        };
+                        if (double.IsNaN(key.Time)) throw new ScenarioException(k.Child("time"), "required");
+                        if (float.IsNaN(key.Position.X)) throw new ScenarioException(k.Child("position"), "required");
+                        if (i > 0 && key.Time < a.Keys[i - 1].Time)
+                            throw new ScenarioException(k.Child("time"), "keyframe times must not decrease");
+                        k.RejectUnknown();
+                        a.Keys.Add(key);
+                    }
+                    a.Position = a.Keys[0].Position;
+                    break;
+                case "body":
+                    a.Kind = AttachmentKind.Body;
+                    if (!f.Has("mass")) throw new ScenarioException(f.Child("mass"), "required for a body (kg)");
+                    a.Mass = f.Number("mass", 0, 0, 1e7, minExclusive: true);
+                    a.Position = f.OptionalVector("position");
+                    a.Velocity = f.Vector("velocity", Float3.Zero, 1e4);
+                    break;
+                default:
+                    a.Kind = AttachmentKind.Free;
+                    a.Position = f.OptionalVector("position");
+                    break;
+            }
+            f.RejectUnknown();
+            return a;
+        }
+
+        static void ReadInitial(JsonFields f, InitialSpec spec)
+        {
+            string shape = f.Choice("shape", "straight", "straight", "slack", "catenary");
+            spec.Shape = shape == "slack" ? InitialShape.Slack : shape == "catenary" ? InitialShape.Catenary : InitialShape.Straight;
+            spec.Stretch = f.Number("stretch", 0, 0, 10);
+            spec.FallHeight = f.OptionalNumber("fallHeight", 0, 1000, minExclusive: true);
+            f.RejectUnknown();
+        }
+
+        static ColliderSpec ReadCollider(JsonFields f)
+        {
+            var c = new ColliderSpec();
+            string type = f.Choice("type", "plane", "plane", "sphere", "capsule", "box");
+            c.Friction = f.Number("friction", 0, 0, 10);
+            switch (type)
+            {
+                case "plane":
+                    c.Kind = ColliderKind.Plane;
+                    c.Center = f.Vector("point", Float3.Zero);
+                    c.Normal = f.Vector("normal", new Float3(0, 1, 0));
+                    if (c.Normal.Length < 1e-6f) throw new ScenarioException(f.Child("normal"), "must not be zero");
+                    c.Normal = c.Normal / c.Normal.Length;
+                    break;
+                case "sphere":
+                    c.Kind = ColliderKind.Sphere;
+                    c.Center = f.Vector("center", Float3.Zero);
+                    c.Radius = f.Number("radius", c.Radius, 0, 1e4, minExclusive: true);
+                    break;
+                case "capsule":
+                    c.Kind = ColliderKind.Capsule;
+                    c.Center = f.Vector("a", new Float3(-0.5f, 0, 0));
+                    c.PointB = f.Vector("b", new Float3(0.5f, 0, 0));
+                    c.Radius = f.Number("radius", c.Radius, 0, 1e4, minExclusive: true);
+                    break;
+                default:
+                    c.Kind = ColliderKind.Box;
+                    c.Center = f.Vector("center", Float3.Zero);
+                    c.HalfExtents = f.Vector("halfExtents", c.HalfExtents, 1e4);
+                    if (c.HalfExtents.X <= 0 || c.HalfExtents.Y <= 0 || c.HalfExtents.Z <= 0)
+                        throw new ScenarioException(f.Child("halfExtents"), "every half extent must be > 0 m");
+                    c.EulerDegrees = f.Vector("rotation", Float3.Zero, 3600);
+                    break;
+            }
+            f.RejectUnknown();
+            return c;
+        }
+
+        static void ReadOutputs(JsonFields f, OutputSpec spec, double duration)
+        {
+            spec.SampleRate = f.Number("sampleRate", spec.SampleRate, 0, 100000);
+            if (spec.SampleRate * duration > MaxRows)
+                throw new ScenarioException(f.Child("sampleRate"), $"sampleRate × duration exceeds {MaxRows:G3} rows");
+            spec.ProfileTimes = f.Numbers("profileTimes", MaxInstants, 0, duration);
+            spec.GltfTimes = f.Numbers("gltfTimes", MaxInstants, 0, duration);
+            f.RejectUnknown();
+        }
+
+        static void CrossCheck(Scenario s)
+        {
+            if (s.Initial.FallHeight.HasValue)
+            {
+                if (s.End.Kind != AttachmentKind.Body && s.End.Kind != AttachmentKind.Free)
+                    throw new ScenarioException("$.initial.fallHeight", "needs a body or free end to raise");
+                if (s.End.Position.HasValue)
+                    throw new ScenarioException("$.initial.fallHeight", "cannot be combined with end.position (it places the end)");
+                if (s.Start.Kind == AttachmentKind.Free || s.Start.Kind == AttachmentKind.Body)
+                    throw new ScenarioException("$.initial.fallHeight", "needs a fixed or keyframed start");
+                if (s.Initial.FallHeight.Value > 2 * s.Rope.RestLength)
+                    throw new ScenarioException("$.initial.fallHeight",
+                        $"at most 2 × rope.restLength ({JsonFields.Format(2 * s.Rope.RestLength)} m): the end is raised above the anchor by at most the rope length");
+            }
+            if (s.Initial.Shape == InitialShape.Catenary)
+            {
+                if (!s.Start.Position.HasValue || !s.End.Position.HasValue)
+                    throw new ScenarioException("$.initial.shape", "catenary needs start.position and end.position");
+                var chord = s.End.Position.Value - s.Start.Position.Value;
+                if (chord.Length >= s.Rope.RestLength)
+                    throw new ScenarioException("$.initial.shape", "catenary needs a span shorter than rope.restLength");
+                var down = ScenarioGeometry.DownDirection(s.Gravity);
+                if (Math.Abs(Float3.Dot(chord, down)) > 1e-4 * s.Rope.RestLength)
+                    throw new ScenarioException("$.initial.shape", "catenary needs both ends at the same height");
+            }
+            if (s.Initial.Stretch > 0 && s.End.Position.HasValue)
+                throw new ScenarioException("$.initial.stretch", "applies only when end.position is not given (the end is placed at L·(1 + stretch) below the start)");
+            foreach (var t in s.Outputs.GltfTimes)
+                if (t > s.Duration) throw new ScenarioException("$.outputs.gltfTimes", "instants must lie within duration");
+        }
+    }
+}

@@ -1,0 +1,398 @@
+using System;
+using System.Collections.Generic;
+using HookeRope.Lab.Scenarios;
+
+namespace HookeRope.Lab.Simulation
+{
+    /// <summary>One measured quantity next to its analytic answer.</summary>
+    public sealed class CheckResult
+    {
+        /// <summary>What is compared.</summary>
+        public string Quantity;
+        /// <summary>Unit of both values.</summary>
+        public string Unit;
+        /// <summary>Simulated value.</summary>
+        public double Measured;
+        /// <summary>Analytic value.</summary>
+        public double Expected;
+        /// <summary>Accepted relative error (or absolute, in Unit, when <see cref="Absolute"/>).</summary>
+        public double Tolerance;
+        /// <summary>True: the tolerance is absolute and <see cref="Expected"/> is a bound or target in Unit.</summary>
+        public bool Absolute;
+        /// <summary>Formula or source of the expected value.</summary>
+        public string Formula;
+
+        /// <summary>|measured − expected| / |expected| (or absolute difference when <see cref="Absolute"/>).</summary>
+        public double Error => Absolute
+            ? Math.Abs(Measured - Expected)
+            : Math.Abs(Measured - Expected) / Math.Max(Math.Abs(Expected), 1e-30);
+
+        /// <summary>True when the error is within tolerance and the measurement is finite.</summary>
+        public bool Passed => double.IsFinite(Measured) && Error <= Tolerance;
+    }
+
+    /// <summary>
+    /// The analytic answers of the built-in scenarios (physics-notes reference answers) and the
+    /// matching measurements of a run. Shared by the summary, the report and the tests.
+    /// </summary>
+    public static class PhysicsChecks
+    {
+        /// <summary>Standard gravity used by the formulas: |scenario gravity| in m/s².</summary>
+        static double G(Scenario s) => s.Gravity.Length;
+
+        /// <summary>Peak arrest force of a massless linear lanyard, N: Mg + sqrt((Mg)² + 2Mgkh).</summary>
+        public static double FallArrestForce(double mass, double g, double stiffness, double fallHeight)
+        {
+            double w = mass * g;
+            return w + Math.Sqrt(w * w + 2 * w * stiffness * fallHeight);
+        }
+
+        /// <summary>Static elongation of a hanging rope with a load, m: (M + m/2)·g·L/(E·A).</summary>
+        public static double StaticElongation(double load, double ropeMass, double g, double length, double axialStiffness) =>
+            (load + ropeMass / 2) * g * length / axialStiffness;
+
+        /// <summary>Root β of β·tan β = ratio (ratio = rope mass / load), first branch (0, π/2).</summary>
+        public static double HeavyRopeBeta(double ratio)
+        {
+            double lo = 0, hi = Math.PI / 2 - 1e-12;
+            for (int i = 0; i < 200; i++)
+            {
+                double mid = (lo + hi) / 2;
+                if (mid * Math.Tan(mid) > ratio) hi = mid; else lo = mid;
+            }
+            return (lo + hi) / 2;
+        }
+
+        /// <summary>Fundamental period of a rope (fixed top) with a load, s: 2π·L/(β·c), c = sqrt(E·A/μ).</summary>
+        public static double HeavyRopePeriod(double load, double ropeMass, double length, double axialStiffness)
+        {
+            double mu = ropeMass / length;
+            double c = Math.Sqrt(axialStiffness / mu);
+            double beta = HeavyRopeBeta(ropeMass / load);
+            return 2 * Math.PI * length / (beta * c);
+        }
+
+        /// <summary>Poisson radius ratio r/R = sqrt(1 + 2ν(L/l − 1)) at strain ε = l/L − 1.</summary>
+        public static double PoissonRadiusRatio(double nu, double strain) =>
+            Math.Sqrt(Math.Max(0, 1 + 2 * nu * (1 / (1 + strain) - 1)));
+
+        /// <summary>Neck waist a = (sqrt(l² + 16 r²) − l)/4, written without cancellation, m.</summary>
+        public static double NeckWaist(double length, double rMin) =>
+            4 * rMin * rMin / (Math.Sqrt(length * length + 16 * rMin * rMin) + length);
+
+        /// <summary>Mean period (s) of a series sampled every <paramref name="dt"/> s, from upward crossings of its mean after <paramref name="skip"/> samples.</summary>
+        public static double Period(double[] series, double dt, int skip = 0)
+        {
+            int n = series.Length;
+            if (n - skip < 4) return double.NaN;
+            double mean = 0;
+            for (int i = skip; i < n; i++) mean += series[i];
+            mean /= n - skip;
+            double first = double.NaN, lastCrossing = double.NaN;
+            int count = 0;
+            for (int i = skip + 1; i < n; i++)
+            {
+                double a = series[i - 1] - mean, b = series[i] - mean;
+                if (a < 0 && b >= 0)
+                {
+                    double t = (i - 1 + a / (a - b)) * dt;
+                    if (count == 0) first = t;
+                    lastCrossing = t;
+                    count++;
+                }
+            }
+            return count >= 2 ? (lastCrossing - first) / (count - 1) : double.NaN;
+        }
+
+        /// <summary>Mean of a series over whole periods after <paramref name="skip"/> samples.</summary>
+        public static double Mean(double[] series, int skip)
+        {
+            double sum = 0;
+            int count = 0;
+            for (int i = skip; i < series.Length; i++)
+            {
+                sum += series[i];
+                count++;
+            }
+            return count > 0 ? sum / count : double.NaN;
+        }
+
+        static double LoadMass(AttachmentSpec a) => a.Kind == AttachmentKind.Body ? a.Mass : 0;
+
+        /// <summary>The checks that apply to a run (empty when the scenario has none).</summary>
+        public static List<CheckResult> Evaluate(RunResult r)
+        {
+            var s = r.Scenario;
+            var rope = s.Rope;
+            double g = G(s), ea = rope.ResolvedAxialStiffness, length = rope.RestLength, mr = rope.Mass;
+            double load = LoadMass(s.End);
+            var list = new List<CheckResult>();
+            switch (s.Expect.Check)
+            {
+                case "fall-arrest":
+                    list.Add(new CheckResult
+                    {
+                        Quantity = "peak anchor force", Unit = "N", Measured = r.PeakTopForce, Tolerance = 0.05,
+                        Expected = FallArrestForce(load, g, ea / length, s.Initial.FallHeight ?? length),
+                        Formula = "Mg + sqrt((Mg)² + 2Mgkh), k = E·A/L",
+                    });
+                    break;
+                case "static-hang":
+                {
+                    // Mean over the last whole periods of the residual axial oscillation (its centre is the static answer).
+                    int whole = WholePeriods(r, HeavyRopePeriod(load, mr, length, ea), r.Steps / 2);
+                    list.Add(new CheckResult
+                    {
+                        Quantity = "static elongation", Unit = "m", Tolerance = 0.02,
+                        Measured = Mean(r.ElongationSeries, r.ElongationSeries.Length - whole),
+                        Expected = StaticElongation(load, mr, g, length, ea), Formula = "(M + m/2)·g·L/(E·A)",
+                    });
+                    list.Add(new CheckResult
+                    {
+                        Quantity = "top tension", Unit = "N", Tolerance = 0.02,
+                        Measured = Mean(r.TopTensionSeries, r.TopTensionSeries.Length - whole),
+                        Expected = (load + mr) * g, Formula = "(M + m)·g",
+                    });
+                    break;
+                }
+                case "period":
+                {
+                    double expected = HeavyRopePeriod(load, mr, length, ea);
+                    list.Add(new CheckResult
+                    {
+                        Quantity = "oscillation period", Unit = "s", Tolerance = 0.03, Expected = expected,
+                        Measured = Period(r.LoadDrop, r.HostStep),
+                        Formula = mr / load < 0.01 ? "2π·sqrt(M·L/(E·A))" : "2π·L/(β·c), β·tan β = m/M, c = sqrt(E·A/μ)",
+                    });
+                    int whole = WholePeriods(r, expected, r.Steps);
+                    list.Add(new CheckResult
+                    {
+                        Quantity = "mean elongation", Unit = "m", Tolerance = 0.03,
+                        Expected = StaticElongation(load, mr, g, length, ea),
+                        Measured = Mean(r.ElongationSeries, r.ElongationSeries.Length - whole), Formula = "(M + m/2)·g·L/(E·A)",
+                    });
+                    break;
+                }
+                case "catenary":
+                {
+                    var start = ScenarioGeometry.StartPosition(s);
+                    var end = ScenarioGeometry.EndPosition(s);
+                    double span = (end - start).Length;
+                    double a = ScenarioGeometry.CatenaryParameter(span, length);
+                    list.Add(new CheckResult
+                    {
+                        Quantity = "sag", Unit = "m", Measured = Sag(r), Tolerance = 0.01,
+                        Expected = ScenarioGeometry.CatenarySag(span, length), Formula = "a·cosh(D/2a) − a, 2a·sinh(D/2a) = S",
+                    });
+                    list.Add(new CheckResult
+                    {
+                        Quantity = "horizontal tension", Unit = "N", Tolerance = 0.02, Expected = rope.ResolvedLinearDensity * g * a,
+                        Measured = Math.Abs(Horizontal(r.StartPinForce, s)), Formula = "H = μ·g·a",
+                    });
+                    break;
+                }
+                case "poisson":
+                {
+                    double strain = FinalElongation(r) / length;
+                    list.Add(new CheckResult
+                    {
+                        Quantity = "radius ratio r/R", Unit = "", Tolerance = 0.01, Absolute = false,
+                        Expected = PoissonRadiusRatio(rope.PoissonRatio, strain), Measured = MidRadius(r) / rope.Radius,
+                        Formula = "sqrt(1 + 2ν(L/l − 1))",
+                    });
+                    break;
+                }
+                case "neck":
+                {
+                    double rMin = rope.RMinFraction * rope.Radius;
+                    double strain = FinalElongation(r) / length;
+                    list.Add(new CheckResult
+                    {
+                        Quantity = "neck radius below r_min", Unit = "m", Absolute = true, Tolerance = 0,
+                        Expected = 0, Measured = Math.Max(0, LastNeckRadius(r) - rMin), Formula = "r_neck ≤ r_min once r < r_min",
+                    });
+                    list.Add(new CheckResult
+                    {
+                        Quantity = "thinnest point (fraction of L)", Unit = "", Absolute = true, Tolerance = 1.5 / rope.Segments,
+                        Expected = rope.Defect?.Position ?? 0.5, Measured = ThinnestFraction(r), Formula = "at the defect",
+                    });
+                    list.Add(new CheckResult
+                    {
+                        Quantity = "radius ratio away from the neck", Unit = "", Tolerance = 0.02,
+                        Expected = PoissonRadiusRatio(rope.PoissonRatio, strain), Measured = FarRadius(r) / rope.Radius,
+                        Formula = "sqrt(1 + 2ν(L/l − 1))",
+                    });
+                    break;
+                }
+                case "fracture":
+                    list.Add(new CheckResult
+                    {
+                        Quantity = "tension at break", Unit = "N", Tolerance = 0.05, Measured = r.BreakTension,
+                        Expected = ea * rope.BreakStrain, Formula = "E·A·ε_break",
+                    });
+                    break;
+                case "collision":
+                {
+                    list.Add(new CheckResult
+                    {
+                        Quantity = "deepest penetration", Unit = "m", Absolute = true, Tolerance = 2e-3, Expected = 0,
+                        Measured = Math.Max(0, Penetration(r)), Formula = "no particle inside the collider",
+                    });
+                    double path = WrappedPathLength(s);
+                    list.Add(new CheckResult
+                    {
+                        Quantity = "rope length over the bar", Unit = "m", Tolerance = 0.01,
+                        Expected = path, Measured = length + FinalElongation(r),
+                        Formula = "tangent + arc + tangent around radius R + r",
+                    });
+                    list.Add(new CheckResult
+                    {
+                        Quantity = "reported tension", Unit = "N", Tolerance = 0.03,
+                        Expected = ea * FinalElongation(r) / length, Measured = MeanTension(r),
+                        Formula = "E·A·strain of the same rope",
+                    });
+                    break;
+                }
+            }
+            return list;
+        }
+
+        /// <summary>Number of trailing samples spanning a whole number of periods, at most <paramref name="limit"/>.</summary>
+        static int WholePeriods(RunResult r, double period, int limit)
+        {
+            int n = Math.Min(r.ElongationSeries.Length, Math.Max(limit, 1));
+            double periods = Math.Floor(n * r.HostStep / period);
+            if (periods < 1 || !double.IsFinite(periods)) return n;
+            return Math.Min(n, (int)Math.Round(periods * period / r.HostStep));
+        }
+
+        /// <summary>Final length of the intact rope minus its rest length, m.</summary>
+        public static double FinalElongation(RunResult r) =>
+            r.ElongationSeries.Length > 0 ? r.ElongationSeries[r.ElongationSeries.Length - 1] : 0;
+
+        static double MeanTension(RunResult r)
+        {
+            double sum = 0;
+            foreach (var t in r.FinalTensions) sum += t;
+            return sum / r.FinalTensions.Length;
+        }
+
+        /// <summary>
+        /// Length (m) of the shortest path from the final start anchor to the final end anchor around the
+        /// first collider (sphere or capsule cross-section, radius + rope radius): tangent, arc, tangent.
+        /// </summary>
+        public static double WrappedPathLength(Scenario s)
+        {
+            var a = s.Start.PositionAt(s.Duration);
+            var b = s.End.PositionAt(s.Duration);
+            var c = s.Colliders[0].Kind == ColliderKind.Capsule
+                ? HookeRope.Mathematics.Float3.Lerp(s.Colliders[0].Center, s.Colliders[0].PointB, 0.5f)
+                : s.Colliders[0].Center;
+            double radius = s.Colliders[0].Radius + s.Rope.Radius;
+            var ex = (b - a).NormalizedOr(new HookeRope.Mathematics.Float3(1f, 0f, 0f));
+            var up = -ScenarioGeometry.DownDirection(s.Gravity);
+            var ey = (up - ex * HookeRope.Mathematics.Float3.Dot(up, ex)).NormalizedOr(new HookeRope.Mathematics.Float3(0f, 1f, 0f));
+            double ax = HookeRope.Mathematics.Float3.Dot(a - c, ex), ay = HookeRope.Mathematics.Float3.Dot(a - c, ey);
+            double bx = HookeRope.Mathematics.Float3.Dot(b - c, ex), by = HookeRope.Mathematics.Float3.Dot(b - c, ey);
+            double da = Math.Sqrt(ax * ax + ay * ay), db = Math.Sqrt(bx * bx + by * by);
+            double tangentA = Math.Acos(radius / da), tangentB = Math.Acos(radius / db);
+            double angleA = Math.Atan2(ay, ax);               // A on the left: measure its angle in [0, 2π)
+            if (angleA < 0) angleA += 2 * Math.PI;
+            angleA -= tangentA;                                // upper tangent point seen from A
+            double angleB = Math.Atan2(by, bx) + tangentB;
+            double arc = angleA - angleB;
+            if (arc <= 0) return Math.Sqrt((bx - ax) * (bx - ax) + (by - ay) * (by - ay));
+            return Math.Sqrt(da * da - radius * radius) + Math.Sqrt(db * db - radius * radius) + radius * arc;
+        }
+
+        static double Norm(double[] v) => Math.Sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+
+        static double Horizontal(double[] force, Scenario s)
+        {
+            var down = ScenarioGeometry.DownDirection(s.Gravity);
+            double along = force[0] * down.X + force[1] * down.Y + force[2] * down.Z;
+            double total = Norm(force);
+            return Math.Sqrt(Math.Max(0, total * total - along * along));
+        }
+
+        static double Sag(RunResult r)
+        {
+            var down = ScenarioGeometry.DownDirection(r.Scenario.Gravity);
+            var start = ScenarioGeometry.StartPosition(r.Scenario);
+            double sag = 0;
+            var p = r.FinalPositions;
+            for (int i = 0; i < p.Length / 3; i++)
+            {
+                double d = (p[3 * i] - start.X) * down.X + (p[3 * i + 1] - start.Y) * down.Y + (p[3 * i + 2] - start.Z) * down.Z;
+                if (d > sag) sag = d;
+            }
+            return sag;
+        }
+
+        static double MidRadius(RunResult r)
+        {
+            if (r.Profiles.Count == 0) return double.NaN;
+            var radius = r.Profiles[r.Profiles.Count - 1].Radius;
+            return radius[radius.Length / 2];
+        }
+
+        static double ThinnestFraction(RunResult r)
+        {
+            if (r.Profiles.Count == 0) return double.NaN;
+            var p = r.Profiles[r.Profiles.Count - 1];
+            int best = 0;
+            for (int i = 1; i < p.Radius.Length; i++) if (p.Radius[i] < p.Radius[best]) best = i;
+            return p.Arc[best] / r.Scenario.Rope.RestLength;
+        }
+
+        /// <summary>Particle radius at the end of the rope farthest from the defect (last profile), m.</summary>
+        static double FarRadius(RunResult r)
+        {
+            if (r.Profiles.Count == 0) return double.NaN;
+            var radius = r.Profiles[r.Profiles.Count - 1].Radius;
+            double defect = r.Scenario.Rope.Defect?.Position ?? 0.5;
+            int i = defect < 0.5 ? (int)(radius.Length * 0.9) : (int)(radius.Length * 0.1);
+            return radius[i];
+        }
+
+        static double LastNeckRadius(RunResult r) => r.Samples.Count > 0 ? r.Samples[r.Samples.Count - 1].NeckRadius : double.NaN;
+
+        static double Penetration(RunResult r)
+        {
+            double deepest = double.NegativeInfinity;
+            var p = r.FinalPositions;
+            double particleRadius = r.Scenario.Rope.Radius;
+            foreach (var c in r.Scenario.Colliders)
+            {
+                for (int i = 0; i < p.Length / 3; i++)
+                {
+                    double depth = c.Kind switch
+                    {
+                        ColliderKind.Sphere => c.Radius + particleRadius - Distance(p, i, c.Center.X, c.Center.Y, c.Center.Z),
+                        ColliderKind.Capsule => c.Radius + particleRadius - SegmentDistance(p, i, c),
+                        ColliderKind.Plane => -(((p[3 * i] - c.Center.X) * c.Normal.X + (p[3 * i + 1] - c.Center.Y) * c.Normal.Y + (p[3 * i + 2] - c.Center.Z) * c.Normal.Z) - particleRadius),
+                        _ => double.NegativeInfinity,
+                    };
+                    if (depth > deepest) deepest = depth;
+                }
+            }
+            return deepest;
+        }
+
+        static double Distance(double[] p, int i, double x, double y, double z)
+        {
+            double dx = p[3 * i] - x, dy = p[3 * i + 1] - y, dz = p[3 * i + 2] - z;
+            return Math.Sqrt(dx * dx + dy * dy + dz * dz);
+        }
+
+        static double SegmentDistance(double[] p, int i, ColliderSpec c)
+        {
+            double ax = c.Center.X, ay = c.Center.Y, az = c.Center.Z;
+            double bx = c.PointB.X - ax, by = c.PointB.Y - ay, bz = c.PointB.Z - az;
+            double px = p[3 * i] - ax, py = p[3 * i + 1] - ay, pz = p[3 * i + 2] - az;
+            double len2 = bx * bx + by * by + bz * bz;
+            double t = len2 > 0 ? Math.Clamp((px * bx + py * by + pz * bz) / len2, 0, 1) : 0;
+            return Distance(p, i, ax + t * bx, ay + t * by, az + t * bz);
+        }
+    }
+}

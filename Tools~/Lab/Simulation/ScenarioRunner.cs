@@ -1,0 +1,400 @@
+using System;
+using System.Diagnostics;
+using HookeRope.Lab.Scenarios;
+using HookeRope.Geometry;
+using HookeRope.Mathematics;
+using HookeRope.Radius;
+using HookeRope.Solver;
+
+namespace HookeRope.Lab.Simulation
+{
+    /// <summary>What a run records besides the headline numbers.</summary>
+    public sealed class RunOptions
+    {
+        /// <summary>Record CSV samples at outputs.sampleRate.</summary>
+        public bool RecordSamples = true;
+        /// <summary>Evaluate the total energy every step (O(n) per step).</summary>
+        public bool TrackEnergy = true;
+        /// <summary>Capture radius profiles and meshes at the scenario's instants.</summary>
+        public bool Captures = true;
+        /// <summary>Run the radius model (Poisson thinning, neck, neck break) after every step.</summary>
+        public bool Radius = true;
+        /// <summary>Called after every host step with the step index (progress bars).</summary>
+        public Action<int> Progress;
+
+        /// <summary>Options for timing runs: only the headline numbers.</summary>
+        public static RunOptions Lean() => new RunOptions { RecordSamples = false, TrackEnergy = false, Captures = false };
+    }
+
+    /// <summary>Builds a <see cref="Rope"/> from a <see cref="Scenario"/> and steps it through the scenario.</summary>
+    public static class ScenarioRunner
+    {
+        /// <summary>Solver settings for a scenario (SI units).</summary>
+        public static RopeSettings Settings(Scenario s)
+        {
+            var r = s.Rope;
+            var settings = new RopeSettings();
+            settings.RestLength = (float)r.RestLength;
+            settings.SegmentCount = r.Segments;
+            settings.Radius = (float)r.Radius;
+            if (r.AxialStiffness.HasValue) settings.AxialStiffness = (float)r.AxialStiffness.Value;
+            else settings.YoungsModulus = (float)(r.YoungsModulus ?? 1e9);
+            if (r.LinearDensity.HasValue) settings.LinearDensity = (float)r.LinearDensity.Value;
+            else settings.Density = (float)(r.Density ?? 1140.0);
+            settings.Damping = (float)s.Solver.Damping;
+            settings.Gravity = s.Gravity;
+            settings.Substeps = s.Solver.Substeps;
+            settings.Iterations = s.Solver.Iterations;
+            settings.Solver = s.Solver.Method == SolverMethod.GaussSeidel ? ConstraintSolverKind.GaussSeidel : ConstraintSolverKind.ExactChain;
+            settings.Tension = s.Solver.TensionOnly ? TensionModel.TensionOnly : TensionModel.Bilateral;
+            settings.BreakStrain = (float)r.BreakStrain;
+            return settings;
+        }
+
+        /// <summary>The rope of a scenario in its initial state, with pins, loads and colliders.</summary>
+        public static RopeSetup Build(Scenario s, bool withRadius = true)
+        {
+            var rope = new Rope(Settings(s), ScenarioGeometry.StartPosition(s), ScenarioGeometry.EndPosition(s));
+            var positions = new Float3[rope.ParticleCount];
+            ScenarioGeometry.InitialPositions(s, positions);
+            for (int i = 0; i < positions.Length; i++) rope.SetPosition(i, positions[i]);
+            var setup = new RopeSetup { Rope = rope };
+            setup.StartPin = Attach(rope, s.Start, 0, positions[0], out setup.StartLoad);
+            setup.EndPin = Attach(rope, s.End, rope.ParticleCount - 1, positions[positions.Length - 1], out setup.EndLoad);
+            foreach (var c in s.Colliders) rope.AddCollider(Shape(c));
+            var mesh = new TubeMeshSettings { RadialSegments = s.Rope.RadialSegments };
+            mesh.Burr.Seed = (uint)s.Rope.Seed;
+            setup.Simulation = new RopeSimulation(rope, withRadius ? RadiusSettings(s) : null, mesh);
+            return setup;
+        }
+
+        /// <summary>Radius-model settings of a scenario (Poisson ratio, neck onset and mode, defect).</summary>
+        public static RadiusSettings RadiusSettings(Scenario s)
+        {
+            var r = s.Rope;
+            var settings = new RadiusSettings();
+            settings.PoissonRatio = (float)r.PoissonRatio;
+            bool neck = r.RMinFraction > 0 && r.NeckMode != "none";
+            settings.NeckMode = !neck ? NeckMode.Off : r.NeckMode == "paper" ? NeckMode.Paper : NeckMode.Zone;
+            if (neck) settings.RMinFraction = (float)r.RMinFraction;
+            if (r.Defect != null) settings.DefectPosition = (float)r.Defect.Position;
+            return settings;
+        }
+
+        static int Attach(Rope rope, AttachmentSpec a, int particle, Float3 position, out int load)
+        {
+            load = -1;
+            switch (a.Kind)
+            {
+                case AttachmentKind.Fixed:
+                case AttachmentKind.Keyframes:
+                    return rope.AddPin(particle, position, (float)a.Compliance);
+                case AttachmentKind.Body:
+                    load = rope.AddLoad(particle, (float)a.Mass);
+                    rope.SetVelocity(particle, a.Velocity);
+                    return -1;
+                default:
+                    return -1;
+            }
+        }
+
+        /// <summary>Solver collider for a scenario collider.</summary>
+        public static ColliderShape Shape(ColliderSpec c)
+        {
+            float friction = (float)c.Friction;
+            switch (c.Kind)
+            {
+                case Scenarios.ColliderKind.Plane:
+                    return ColliderShape.Plane(c.Center, c.Normal, friction);
+                case Scenarios.ColliderKind.Sphere:
+                    return ColliderShape.Sphere(c.Center, (float)c.Radius, friction);
+                case Scenarios.ColliderKind.Capsule:
+                    var axis = c.PointB - c.Center;
+                    var rotation = axis.Length > 1e-6f ? Quat.FromToRotation(new Float3(0f, 1f, 0f), axis) : Quat.Identity;
+                    return ColliderShape.Capsule(Float3.Lerp(c.Center, c.PointB, 0.5f), rotation, (float)c.Radius, axis.Length / 2, friction);
+                default:
+                    return ColliderShape.Box(c.Center, EulerToQuat(c.EulerDegrees), c.HalfExtents, friction);
+            }
+        }
+
+        /// <summary>Unity's Euler convention (degrees; rotate about Z, then X, then Y).</summary>
+        public static Quat EulerToQuat(Float3 degrees)
+        {
+            const float toRadians = MathF.PI / 180f;
+            var qx = Quat.FromAxisAngle(new Float3(1f, 0f, 0f), degrees.X * toRadians);
+            var qy = Quat.FromAxisAngle(new Float3(0f, 1f, 0f), degrees.Y * toRadians);
+            var qz = Quat.FromAxisAngle(new Float3(0f, 0f, 1f), degrees.Z * toRadians);
+            return qy * qx * qz;
+        }
+
+        /// <summary>Runs a scenario to its duration and returns what it produced.</summary>
+        public static RunResult Run(Scenario s, RunOptions options = null)
+        {
+            options = options ?? new RunOptions();
+            var setup = Build(s, options.Radius);
+            var rope = setup.Rope;
+            var result = new RunResult { Scenario = s };
+            int n = rope.SegmentCount;
+            int last = rope.ParticleCount - 1;
+            double weight = (s.End.Kind == AttachmentKind.Body ? s.End.Mass : 0) * s.Gravity.Length;
+            var down = ScenarioGeometry.DownDirection(s.Gravity);
+            var releasePosition = rope.GetPosition(last);
+            double lowest = 0, tautDrop = double.NaN;
+            bool broken = false;
+            rope.Broken += e =>
+            {
+                if (double.IsNaN(result.BreakTime))
+                {
+                    result.BreakTime = e.Time;
+                    result.BreakTension = e.Tension;
+                }
+                broken = true;
+            };
+            result.InitialEnergy = options.TrackEnergy ? rope.TotalEnergy() : 0;
+            result.MaxEnergy = result.InitialEnergy;
+            double dt = s.HostStep;
+            int steps = s.StepCount;
+            result.HostStep = dt;
+            result.LoadDrop = new double[steps];
+            result.ElongationSeries = new double[steps];
+            result.TopTensionSeries = new double[steps];
+            double sampleInterval = s.Outputs.SampleRate > 0 ? 1.0 / s.Outputs.SampleRate : 0;
+            double nextSample = 0;
+            int nextProfile = 0, nextMesh = 0;
+            var profileTimes = Sorted(s.Outputs.ProfileTimes);
+            var meshTimes = Sorted(s.Outputs.GltfTimes);
+            if (options.RecordSamples) result.Samples.Add(Measure(setup, 0, default, options, out _));
+            if (options.RecordSamples) nextSample = sampleInterval;
+            var watch = Stopwatch.StartNew();
+            for (int k = 0; k < steps; k++)
+            {
+                double t = (k + 1) * dt;
+                if (s.Start.Kind == AttachmentKind.Keyframes) rope.SetPinTarget(setup.StartPin, s.Start.PositionAt(t));
+                if (s.End.Kind == AttachmentKind.Keyframes) rope.SetPinTarget(setup.EndPin, s.End.PositionAt(t));
+                var report = setup.Step((float)dt);
+                result.Steps = k + 1;
+                if (report.Residual > result.MaxResidual) result.MaxResidual = report.Residual;
+                var load = rope.GetPosition(last);
+                if (!load.IsFinite || !AllFinite(rope))
+                {
+                    result.NonFinite = true;
+                    break;
+                }
+                double extent = (load - releasePosition).Length;
+                if (extent > result.MaxExtent) result.MaxExtent = extent;
+                double top = rope.IsSegmentBroken(0) ? 0 : rope.Tensions[0];
+                double bottom = rope.IsSegmentBroken(n - 1) ? 0 : rope.Tensions[n - 1];
+                if (top > result.PeakTopForce) result.PeakTopForce = top;
+                if (setup.EndLoad >= 0)
+                {
+                    double f = rope.GetLoadForce(setup.EndLoad).Length;
+                    if (f > result.PeakLoadForce) result.PeakLoadForce = f;
+                }
+                else if (bottom > result.PeakLoadForce) result.PeakLoadForce = bottom;
+                double elongation = Elongation(rope);
+                if (elongation > result.MaxElongation) result.MaxElongation = elongation;
+                double drop = Float3.Dot(load - releasePosition, down);
+                result.LoadDrop[k] = drop;
+                result.ElongationSeries[k] = elongation;
+                result.TopTensionSeries[k] = top;
+                if (drop > lowest) lowest = drop;
+                if (double.IsNaN(tautDrop) && bottom > Math.Max(0.1 * weight, 1e-6) && k > 0)
+                {
+                    tautDrop = drop;
+                    result.TautTime = t;
+                }
+                if (options.TrackEnergy)
+                {
+                    double energy = rope.TotalEnergy();
+                    if (energy > result.MaxEnergy) result.MaxEnergy = energy;
+                    if (k >= steps / 2) { if (energy > result.LateMaxEnergy) result.LateMaxEnergy = energy; }
+                    else if (energy > result.EarlyMaxEnergy) result.EarlyMaxEnergy = energy;
+                }
+                options.Progress?.Invoke(k);
+                if (options.RecordSamples && t >= nextSample - 1e-9)
+                {
+                    result.Samples.Add(Measure(setup, t, report, options, out _, broken));
+                    nextSample += sampleInterval;
+                    if (sampleInterval > 0 && nextSample < t) nextSample = t + sampleInterval;
+                }
+                if (options.Captures)
+                {
+                    while (nextProfile < profileTimes.Length && t >= profileTimes[nextProfile] - dt / 2)
+                    {
+                        result.Profiles.Add(Profile(setup, t));
+                        nextProfile++;
+                    }
+                    while (nextMesh < meshTimes.Length && t >= meshTimes[nextMesh] - dt / 2)
+                    {
+                        var mesh = MeshCapture.Capture(setup, s, t);
+                        if (mesh != null) result.Meshes.Add(mesh);
+                        nextMesh++;
+                    }
+                }
+            }
+            result.WallSeconds = watch.Elapsed.TotalSeconds;
+            if (result.Steps < steps)
+            {
+                Array.Resize(ref result.LoadDrop, result.Steps);
+                Array.Resize(ref result.ElongationSeries, result.Steps);
+                Array.Resize(ref result.TopTensionSeries, result.Steps);
+            }
+            if (options.Captures)
+                while (nextProfile < profileTimes.Length && profileTimes[nextProfile] <= 1e-9)
+                    nextProfile++;
+            result.TotalDrop = lowest;
+            result.ArrestDistance = double.IsNaN(tautDrop) ? 0 : lowest - tautDrop;
+            Final(setup, result);
+            return result;
+        }
+
+        static double[] Sorted(System.Collections.Generic.List<double> times)
+        {
+            var a = times.ToArray();
+            Array.Sort(a);
+            return a;
+        }
+
+        static bool AllFinite(Rope rope)
+        {
+            var x = rope.PositionX;
+            var y = rope.PositionY;
+            var z = rope.PositionZ;
+            for (int i = 0; i < x.Length; i++)
+                if (!float.IsFinite(x[i]) || !float.IsFinite(y[i]) || !float.IsFinite(z[i])) return false;
+            return true;
+        }
+
+        /// <summary>Current length of the intact segments minus their rest length, m.</summary>
+        public static double Elongation(Rope rope)
+        {
+            var lengths = rope.SegmentLengths;
+            var rest = rope.RestLengths;
+            double sum = 0;
+            for (int j = 0; j < lengths.Length; j++)
+                if (!rope.IsSegmentBroken(j)) sum += lengths[j] - rest[j];
+            return sum;
+        }
+
+        static Sample Measure(RopeSetup setup, double t, StepReport report, RunOptions options, out double energy, bool broken = false)
+        {
+            var rope = setup.Rope;
+            int last = rope.ParticleCount - 1;
+            int n = rope.SegmentCount;
+            var p = rope.GetPosition(last);
+            var v = rope.GetVelocity(last);
+            energy = options.TrackEnergy ? rope.TotalEnergy() : 0;
+            double min = setup.MinRadius();
+            return new Sample
+            {
+                Time = t,
+                X = p.X, Y = p.Y, Z = p.Z,
+                VX = v.X, VY = v.Y, VZ = v.Z,
+                TopTension = rope.IsSegmentBroken(0) ? 0 : rope.Tensions[0],
+                BottomTension = rope.IsSegmentBroken(n - 1) ? 0 : rope.Tensions[n - 1],
+                Elongation = Elongation(rope),
+                MinRadius = min,
+                NeckRadius = setup.NeckRadius(),
+                Broken = broken,
+                Residual = report.Residual,
+                Energy = energy,
+            };
+        }
+
+        static RadiusProfile Profile(RopeSetup setup, double t)
+        {
+            var rope = setup.Rope;
+            var rest = rope.RestLengths;
+            const int perSegment = 8;
+            if (setup.Radius == null)
+            {
+                var radius = rope.ParticleRadius;
+                var plain = new RadiusProfile { Time = t, Arc = new double[radius.Length], Radius = new double[radius.Length] };
+                double arc = 0;
+                for (int i = 0; i < radius.Length; i++)
+                {
+                    plain.Arc[i] = arc;
+                    plain.Radius[i] = radius[i];
+                    if (i < rest.Length) arc += rest[i];
+                }
+                return plain;
+            }
+            int n = rope.SegmentCount;
+            var profile = new RadiusProfile { Time = t, Arc = new double[n * perSegment + 1], Radius = new double[n * perSegment + 1] };
+            double start = 0;
+            for (int j = 0; j < n; j++)
+            {
+                for (int k = 0; k < perSegment; k++)
+                {
+                    float f = (float)k / perSegment;
+                    profile.Arc[j * perSegment + k] = start + rest[j] * f;
+                    profile.Radius[j * perSegment + k] = setup.Radius.RadiusAt(j, f);
+                }
+                start += rest[j];
+            }
+            profile.Arc[n * perSegment] = start;
+            profile.Radius[n * perSegment] = setup.Radius.RadiusAt(n - 1, 1f);
+            return profile;
+        }
+
+        static void Final(RopeSetup setup, RunResult result)
+        {
+            var rope = setup.Rope;
+            result.FinalPositions = new double[rope.ParticleCount * 3];
+            for (int i = 0; i < rope.ParticleCount; i++)
+            {
+                var p = rope.GetPosition(i);
+                result.FinalPositions[3 * i] = p.X;
+                result.FinalPositions[3 * i + 1] = p.Y;
+                result.FinalPositions[3 * i + 2] = p.Z;
+            }
+            for (int i = 0; i < rope.ParticleCount; i++)
+                result.FinalMaxSpeed = Math.Max(result.FinalMaxSpeed, rope.GetVelocity(i).Length);
+            result.FinalTensions = new double[rope.SegmentCount];
+            for (int j = 0; j < rope.SegmentCount; j++) result.FinalTensions[j] = rope.Tensions[j];
+            if (setup.StartPin >= 0) Copy(rope.GetPinForce(setup.StartPin), result.StartPinForce);
+            if (setup.EndPin >= 0) Copy(rope.GetPinForce(setup.EndPin), result.EndPinForce);
+            if (setup.StartLoad >= 0) Copy(rope.GetLoadForce(setup.StartLoad), result.StartLoadForce);
+            if (setup.EndLoad >= 0) Copy(rope.GetLoadForce(setup.EndLoad), result.EndLoadForce);
+        }
+
+        static void Copy(Float3 f, double[] to)
+        {
+            to[0] = f.X;
+            to[1] = f.Y;
+            to[2] = f.Z;
+        }
+    }
+
+    /// <summary>A rope built for a scenario and the handles of its attachments.</summary>
+    public sealed class RopeSetup
+    {
+        /// <summary>The rope.</summary>
+        public Rope Rope;
+        /// <summary>Pin of particle 0, or −1.</summary>
+        public int StartPin = -1;
+        /// <summary>Pin of the last particle, or −1.</summary>
+        public int EndPin = -1;
+        /// <summary>Load on particle 0, or −1.</summary>
+        public int StartLoad = -1;
+        /// <summary>Load on the last particle, or −1.</summary>
+        public int EndLoad = -1;
+        /// <summary>The core facade: solver + radius model + tube mesh.</summary>
+        public RopeSimulation Simulation;
+
+        /// <summary>The radius model, or null when the run has it off.</summary>
+        public RadiusModel Radius => Simulation.RadiusModel;
+
+        /// <summary>One host step of the facade (solver, then radii, neck break), s.</summary>
+        public StepReport Step(float hostDeltaTime) => Simulation.Step(hostDeltaTime);
+
+        /// <summary>The radius half of <see cref="Step"/> alone (used to measure its allocations).</summary>
+        public void UpdateRadii() => Simulation.UpdateRadii();
+
+        /// <summary>Radius at the defect (neck included), or the smallest particle radius without a radius model, m.</summary>
+        public double NeckRadius() => Simulation.NeckRadius;
+
+        /// <summary>Smallest radius along the rope (neck waist included), m.</summary>
+        public double MinRadius() => Simulation.MinRadius;
+    }
+}

@@ -1,0 +1,158 @@
+using System;
+using System.Collections.Generic;
+using HookeRope.Lab.Scenarios;
+using HookeRope.Lab.Simulation;
+using HookeRope.Mathematics;
+
+namespace HookeRope.Lab.Stability
+{
+    /// <summary>One stiff or extreme case of the sweep.</summary>
+    public sealed class StabilityCase
+    {
+        /// <summary>What is extreme about it.</summary>
+        public string Name;
+        /// <summary>The scenario that runs.</summary>
+        public Scenario Scenario;
+        /// <summary>True when an anchor is moved (does work): the energy criterion does not apply.</summary>
+        public bool DrivenAnchor;
+        /// <summary>Outside the documented range of its solver (Gauss–Seidel at a huge mass ratio): shown, not counted.</summary>
+        public bool KnownLimit;
+    }
+
+    /// <summary>Outcome of one case.</summary>
+    public sealed class StabilityOutcome
+    {
+        /// <summary>The case.</summary>
+        public StabilityCase Case;
+        /// <summary>NaN or ∞ appeared in positions.</summary>
+        public bool NonFinite;
+        /// <summary>Total energy rose above its start by more than the tolerance.</summary>
+        public bool EnergyBlowUp;
+        /// <summary>Largest rise of the total energy over its start, J.</summary>
+        public double EnergyRise;
+        /// <summary>A particle went farther than 100 rope lengths from where the end started.</summary>
+        public bool Exploded;
+        /// <summary>Largest particle speed at the end is below 0.1 m/s.</summary>
+        public bool Settled;
+        /// <summary>Largest solver residual (strain error) over the run.</summary>
+        public double MaxConstraintError;
+        /// <summary>Wall time, s.</summary>
+        public double WallSeconds;
+
+        /// <summary>NaN, energy blow-up or explosion (not accuracy or settling).</summary>
+        public bool Unstable => NonFinite || EnergyBlowUp || Exploded;
+
+        /// <summary>The case counts as a failure: unstable and not a documented limit of its solver.</summary>
+        public bool Failed => Unstable && !Case.KnownLimit;
+    }
+
+    /// <summary>
+    /// The sweep of stiff and extreme cases: E from 1 MPa to 200 GPa, load-to-particle mass ratio 1 to
+    /// 10⁶, host step 1/30 to 1/1000 s, 2 to 10 000 segments, a rope released at 10× its length and an
+    /// anchor teleported 5 m in one step; each with the exact chain and, where it matters, Gauss–Seidel.
+    /// </summary>
+    public static class StabilitySweep
+    {
+        /// <summary>Base case: 1 m nylon-like rope (R 5 mm, E 1 GPa, 1140 kg/m³), 16 segments, 1 kg load.</summary>
+        public static Scenario Base(SolverMethod method, double duration)
+        {
+            var s = new Scenario { Name = "stability", Duration = duration, HostStep = 1.0 / 90 };
+            s.Solver.Method = method;
+            s.Solver.Substeps = 4;
+            s.Solver.Iterations = 2;
+            s.Solver.Damping = 0.01;
+            s.Rope.RestLength = 1;
+            s.Rope.Segments = 16;
+            s.Rope.Radius = 0.005;
+            s.Rope.YoungsModulus = 1e9;
+            s.Rope.Density = 1140;
+            s.Start = AttachmentSpec.FixedAt(Float3.Zero);
+            s.End = new AttachmentSpec { Kind = AttachmentKind.Body, Mass = 1 };
+            s.Outputs.SampleRate = 10;
+            return s;
+        }
+
+        /// <summary>The cases (reduced when <paramref name="quick"/>).</summary>
+        public static List<StabilityCase> Cases(bool quick)
+        {
+            double duration = quick ? 1.0 : 2.0;
+            var list = new List<StabilityCase>();
+            var methods = quick ? new[] { SolverMethod.ExactChain } : new[] { SolverMethod.ExactChain, SolverMethod.GaussSeidel };
+            string Tag(SolverMethod m) => m == SolverMethod.ExactChain ? "exact" : "GS";
+
+            foreach (var m in methods)
+                foreach (double e in quick ? new[] { 1e6, 2e11 } : new[] { 1e6, 1e9, 2e11 })
+                {
+                    var s = Base(m, duration);
+                    s.Rope.YoungsModulus = e;
+                    list.Add(new StabilityCase { Name = $"E = {e:G3} Pa ({Tag(m)})", Scenario = s });
+                }
+            foreach (var m in quick ? new[] { SolverMethod.ExactChain, SolverMethod.GaussSeidel } : methods)
+                foreach (double ratio in quick ? new[] { 1e6 } : new[] { 1.0, 1e3, 1e6 })
+                {
+                    var s = Base(m, duration);
+                    double particle = s.Rope.ResolvedLinearDensity * s.Rope.RestLength / s.Rope.Segments;
+                    s.End.Mass = ratio * particle;
+                    list.Add(new StabilityCase
+                    {
+                        Name = $"mass ratio {ratio:G3} ({Tag(m)})", Scenario = s,
+                        KnownLimit = m == SolverMethod.GaussSeidel && ratio >= 1e3,
+                    });
+                }
+            foreach (double rate in quick ? new[] { 30.0 } : new[] { 30.0, 1000.0 })
+            {
+                var s = Base(SolverMethod.ExactChain, duration);
+                s.HostStep = 1.0 / rate;
+                list.Add(new StabilityCase { Name = $"host step 1/{rate:G4} s (exact)", Scenario = s });
+            }
+            foreach (int n in quick ? new[] { 2, 1000 } : new[] { 2, 10000 })
+            {
+                var s = Base(SolverMethod.ExactChain, duration);
+                s.Rope.Segments = n;
+                list.Add(new StabilityCase { Name = $"{n} segments (exact)", Scenario = s });
+            }
+            foreach (var m in quick ? new[] { SolverMethod.ExactChain, SolverMethod.GaussSeidel } : methods)
+            {
+                var s = Base(m, duration);
+                s.Initial.Stretch = 9;   // released at 10× its rest length
+                list.Add(new StabilityCase { Name = $"released at 10× length ({Tag(m)})", Scenario = s });
+            }
+            foreach (var m in methods)
+            {
+                var s = Base(m, duration);
+                s.Start = new AttachmentSpec { Kind = AttachmentKind.Keyframes, Position = Float3.Zero };
+                s.Start.Keys.Add(new Keyframe { Time = 0, Position = Float3.Zero });
+                s.Start.Keys.Add(new Keyframe { Time = 0.3, Position = Float3.Zero });
+                s.Start.Keys.Add(new Keyframe { Time = 0.3 + s.HostStep, Position = new Float3(5f, 0f, 0f) });
+                list.Add(new StabilityCase { Name = $"anchor teleported 5 m ({Tag(m)})", Scenario = s, DrivenAnchor = true });
+            }
+            return list;
+        }
+
+        /// <summary>Runs one case.</summary>
+        public static StabilityOutcome Run(StabilityCase c)
+        {
+            var s = c.Scenario;
+            var r = ScenarioRunner.Run(s, new RunOptions { RecordSamples = false, Captures = false, TrackEnergy = true });
+            double mass = s.Rope.Mass + (s.End.Kind == AttachmentKind.Body ? s.End.Mass : 0);
+            double scale = mass * s.Gravity.Length * s.Rope.RestLength * (1 + s.Initial.Stretch) + Math.Abs(r.InitialEnergy);
+            // Blow-up: the energy ends above its start AND is still growing, i.e. the second half of the
+            // run reaches above everything of the first half (a one-off rise that then stays flat, as when
+            // Gauss–Seidel leaves a stiff rope over-stretched, is an accuracy problem, not an instability).
+            double tolerance = 0.05 * scale + 1e-3;
+            double rise = r.LateMaxEnergy - r.InitialEnergy;
+            bool growing = r.LateMaxEnergy > Math.Max(r.EarlyMaxEnergy, r.InitialEnergy) + tolerance;
+            return new StabilityOutcome
+            {
+                Case = c,
+                NonFinite = r.NonFinite,
+                EnergyRise = rise,
+                EnergyBlowUp = !c.DrivenAnchor && (!double.IsFinite(rise) || (rise > tolerance && growing)),
+                Exploded = r.MaxExtent > 100 * s.Rope.RestLength * (1 + s.Initial.Stretch) + 10,
+                Settled = r.FinalMaxSpeed < 0.1,
+                MaxConstraintError = r.MaxResidual,
+                WallSeconds = r.WallSeconds,
+            };
+        }
+    }
+}
