@@ -1,0 +1,75 @@
+using System;
+
+namespace HookeRope.Solver
+{
+    /// <summary>
+    /// Structure-of-arrays state of one particle chain in the rope-local frame (metres, m/s, kg).
+    /// Allocated once when a rope is built; the step only reads and writes these arrays.
+    /// </summary>
+    internal sealed class ChainState
+    {
+        public readonly int ParticleCount;
+        public readonly int SegmentCount;
+
+        // particles (rope-local metres, m/s, kg, 1/kg)
+        public readonly float[] X, Y, Z;
+        public readonly float[] PrevX, PrevY, PrevZ;
+        public readonly float[] VelX, VelY, VelZ;
+        public readonly float[] Mass;
+        public readonly float[] InverseMass;
+        public readonly float[] LoadMass;
+        public readonly bool[] Kinematic;
+        public readonly float[] Radius;
+
+        // segments
+        public readonly float[] RestLength;       // m
+        public readonly float[] Compliance;       // m/N, α = L/(E·A); 0 = inextensible
+        public readonly double[] Lambda;          // N·s², accumulated over the substep, ≤ 0 pulls
+        public readonly float[] Tension;          // N, ≥ 0 pulls
+        public readonly float[] Length;           // m, current
+        public readonly bool[] Broken;
+        public readonly float[] DirX, DirY, DirZ; // last valid unit direction x_j → x_{j+1}
+
+        // scratch for the exact solve (double)
+        public readonly double[] Lower, Diagonal, Upper, Rhs, Delta, Scratch, FullDiagonal, FullLower, FullUpper, FullRhs;
+        public readonly bool[] Active;
+
+        public ChainState(int segmentCount)
+        {
+            SegmentCount = segmentCount;
+            ParticleCount = segmentCount + 1;
+            int n = ParticleCount, s = segmentCount;
+            X = new float[n]; Y = new float[n]; Z = new float[n];
+            PrevX = new float[n]; PrevY = new float[n]; PrevZ = new float[n];
+            VelX = new float[n]; VelY = new float[n]; VelZ = new float[n];
+            Mass = new float[n]; InverseMass = new float[n]; LoadMass = new float[n];
+            Kinematic = new bool[n]; Radius = new float[n];
+            RestLength = new float[s]; Compliance = new float[s]; Lambda = new double[s];
+            Tension = new float[s]; Length = new float[s]; Broken = new bool[s];
+            DirX = new float[s]; DirY = new float[s]; DirZ = new float[s];
+            Lower = new double[s]; Diagonal = new double[s]; Upper = new double[s];
+            Rhs = new double[s]; Delta = new double[s]; Scratch = new double[s];
+            FullDiagonal = new double[s]; FullLower = new double[s]; FullUpper = new double[s]; FullRhs = new double[s];
+            Active = new bool[s];
+        }
+
+        /// <summary>Unit direction of segment j into (nx, ny, nz) and its length; keeps the last valid direction when the ends coincide.</summary>
+        public float Direction(int j, out float nx, out float ny, out float nz)
+        {
+            float dx = X[j + 1] - X[j], dy = Y[j + 1] - Y[j], dz = Z[j + 1] - Z[j];
+            float len = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
+            if (len > 1e-12f && float.IsFinite(len))
+            {
+                float inv = 1f / len;
+                nx = dx * inv; ny = dy * inv; nz = dz * inv;
+                DirX[j] = nx; DirY[j] = ny; DirZ[j] = nz;
+            }
+            else
+            {
+                nx = DirX[j]; ny = DirY[j]; nz = DirZ[j];
+                if (!float.IsFinite(len)) len = 0f;
+            }
+            return len;
+        }
+    }
+}

@@ -1,0 +1,154 @@
+using System;
+using HookeRope.Mathematics;
+
+namespace HookeRope.Solver
+{
+    /// <summary>
+    /// The colliders of one rope in the rope-local frame, with the pose at the start and end of the
+    /// current host step (positions are interpolated linearly, rotations by nlerp, across substeps).
+    /// Particles are pushed out along the surface normal to their collision radius; friction removes
+    /// tangential motion relative to the collider up to μ times the push depth (position-based Coulomb).
+    /// </summary>
+    internal sealed class CollisionSet
+    {
+        private ColliderShape[] shapes = new ColliderShape[0];
+        private Float3[] startPosition = new Float3[0], endPosition = new Float3[0], position = new Float3[0], velocity = new Float3[0];
+        private Quat[] startRotation = new Quat[0], endRotation = new Quat[0], rotation = new Quat[0];
+
+        public int Count { get; private set; }
+
+        public int Add(in ColliderShape shape, Float3 localPosition)
+        {
+            if (Count == shapes.Length)
+            {
+                int size = Math.Max(4, Count * 2);
+                Array.Resize(ref shapes, size);
+                Array.Resize(ref startPosition, size);
+                Array.Resize(ref endPosition, size);
+                Array.Resize(ref position, size);
+                Array.Resize(ref velocity, size);
+                Array.Resize(ref startRotation, size);
+                Array.Resize(ref endRotation, size);
+                Array.Resize(ref rotation, size);
+            }
+            int i = Count++;
+            shapes[i] = shape;
+            startPosition[i] = endPosition[i] = position[i] = localPosition;
+            startRotation[i] = endRotation[i] = rotation[i] = shape.Rotation;
+            velocity[i] = Float3.Zero;
+            return i;
+        }
+
+        public ColliderShape Get(int i) => shapes[i];
+
+        public void SetPose(int i, Float3 localPosition, Quat newRotation)
+        {
+            endPosition[i] = localPosition;
+            endRotation[i] = newRotation.Normalized();
+        }
+
+        /// <summary>Pose at fraction t ∈ (0, 1] of the host step of length dt (s).</summary>
+        public void PrepareSubstep(float t, float dt)
+        {
+            for (int i = 0; i < Count; i++)
+            {
+                position[i] = Float3.Lerp(startPosition[i], endPosition[i], t);
+                rotation[i] = t >= 1f ? endRotation[i] : Quat.Nlerp(startRotation[i], endRotation[i], t);
+                velocity[i] = (endPosition[i] - startPosition[i]) / dt;
+            }
+        }
+
+        /// <summary>Makes the end pose of this host step the start pose of the next.</summary>
+        public void EndStep()
+        {
+            for (int i = 0; i < Count; i++)
+            {
+                startPosition[i] = endPosition[i];
+                startRotation[i] = endRotation[i];
+                velocity[i] = Float3.Zero;
+            }
+        }
+
+        /// <summary>Pushes every dynamic particle out of every collider; applies friction when asked (substep h in s).</summary>
+        public void Project(ChainState c, float h, bool friction)
+        {
+            int n = c.ParticleCount;
+            for (int i = 0; i < n; i++)
+            {
+                if (c.InverseMass[i] == 0f) continue;
+                float r = c.Radius[i];
+                for (int k = 0; k < Count; k++)
+                {
+                    var x = new Float3(c.X[i], c.Y[i], c.Z[i]);
+                    float distance = SignedDistance(k, x, out Float3 normal);
+                    float push = r - distance;
+                    if (!(push > 0f)) continue;
+                    x += normal * push;
+                    if (friction && shapes[k].Friction > 0f)
+                    {
+                        var moved = new Float3(x.X - c.PrevX[i], x.Y - c.PrevY[i], x.Z - c.PrevZ[i]) - velocity[k] * h;
+                        Float3 tangent = moved - normal * Float3.Dot(moved, normal);
+                        float slide = tangent.Length;
+                        float limit = shapes[k].Friction * push;
+                        if (slide > 0f) x -= slide <= limit ? tangent : tangent * (limit / slide);
+                    }
+                    c.X[i] = x.X; c.Y[i] = x.Y; c.Z[i] = x.Z;
+                }
+            }
+        }
+
+        /// <summary>Signed distance (m) from point x (rope-local) to the surface of collider k, and the outward unit normal.</summary>
+        public float SignedDistance(int k, Float3 x, out Float3 normal)
+        {
+            ref readonly ColliderShape shape = ref shapes[k];
+            Float3 centre = position[k];
+            Quat q = rotation[k];
+            switch (shape.Kind)
+            {
+                case ColliderKind.Plane:
+                    normal = q.Rotate(new Float3(0f, 1f, 0f));
+                    return Float3.Dot(x - centre, normal);
+                case ColliderKind.Sphere:
+                    return Round(x - centre, shape.Radius, q, out normal);
+                case ColliderKind.Capsule:
+                {
+                    Float3 axis = q.Rotate(new Float3(0f, 1f, 0f));
+                    float t = Float3.Dot(x - centre, axis);
+                    t = t < -shape.HalfHeight ? -shape.HalfHeight : (t > shape.HalfHeight ? shape.HalfHeight : t);
+                    return Round(x - (centre + axis * t), shape.Radius, q, out normal);
+                }
+                default:
+                    return BoxDistance(x - centre, q, shape.HalfExtents, out normal);
+            }
+        }
+
+        private static float Round(Float3 offset, float radius, Quat q, out Float3 normal)
+        {
+            float dist = offset.Length;
+            normal = dist > 1e-12f ? offset / dist : q.Rotate(new Float3(0f, 1f, 0f));
+            return dist - radius;
+        }
+
+        private static float BoxDistance(Float3 offset, Quat q, Float3 e, out Float3 normal)
+        {
+            Float3 p = q.Conjugate.Rotate(offset);
+            float dx = MathF.Abs(p.X) - e.X, dy = MathF.Abs(p.Y) - e.Y, dz = MathF.Abs(p.Z) - e.Z;
+            if (dx <= 0f && dy <= 0f && dz <= 0f)
+            {
+                Float3 local;
+                float d;
+                if (dx >= dy && dx >= dz) { d = dx; local = new Float3(p.X >= 0f ? 1f : -1f, 0f, 0f); }
+                else if (dy >= dz) { d = dy; local = new Float3(0f, p.Y >= 0f ? 1f : -1f, 0f); }
+                else { d = dz; local = new Float3(0f, 0f, p.Z >= 0f ? 1f : -1f); }
+                normal = q.Rotate(local);
+                return d;
+            }
+            var outside = new Float3(MathF.Max(dx, 0f) * Sign(p.X), MathF.Max(dy, 0f) * Sign(p.Y), MathF.Max(dz, 0f) * Sign(p.Z));
+            float length = outside.Length;
+            normal = q.Rotate(outside / length);
+            return length;
+        }
+
+        private static float Sign(float v) => v >= 0f ? 1f : -1f;
+    }
+}

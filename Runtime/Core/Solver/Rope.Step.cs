@@ -1,0 +1,218 @@
+using System;
+using HookeRope.Mathematics;
+
+namespace HookeRope.Solver
+{
+    public sealed partial class Rope
+    {
+        /// <summary>Largest host step in seconds that <see cref="Step"/> accepts.</summary>
+        public const float MaxHostDeltaTime = 1f;
+
+        /// <summary>
+        /// Advances the rope by one host step (s, in (0, 1]): <see cref="RopeSettings.Substeps"/> substeps of
+        /// h = Δt/substeps, each predicting with gravity, running <see cref="RopeSettings.Iterations"/>
+        /// constraint iterations (chain, compliant pins, colliders), then deriving velocities, tensions,
+        /// pin forces and breaks. Allocation-free.
+        /// </summary>
+        public StepReport Step(float hostDeltaTime)
+        {
+            if (!(hostDeltaTime > 0f && hostDeltaTime <= MaxHostDeltaTime))
+                throw new ArgumentOutOfRangeException(nameof(hostDeltaTime), hostDeltaTime, "hostDeltaTime must be in (0, 1] s");
+            if (settings.Version != appliedVersion) ApplySettings();
+
+            int substeps = settings.Substeps;
+            int iterations = settings.Iterations;
+            float h = hostDeltaTime / substeps;
+            double hd = (double)hostDeltaTime / substeps;
+            double beta = settings.Damping;
+            bool tensionOnly = settings.Tension == TensionModel.TensionOnly;
+            bool exact = settings.Solver == ConstraintSolverKind.ExactChain;
+            Float3 g = settings.Gravity;
+            bool hasColliders = colliders.Count > 0;
+
+            for (int l = 0; l < loadCount; l++)
+            {
+                int i = loadParticle[l];
+                loadStartVelocity[l] = new Float3(chain.VelX[i], chain.VelY[i], chain.VelZ[i]);
+            }
+
+            for (int k = 0; k < substeps; k++)
+            {
+                float t = (float)(k + 1) / substeps;
+                if (hasColliders) colliders.PrepareSubstep(t, hostDeltaTime);
+                Predict(h, g);
+                MovePins(t);
+                Array.Clear(chain.Lambda, 0, chain.SegmentCount);
+                if (pinCount > 0) Array.Clear(pinLambda, 0, pinCount * 3);
+                for (int it = 0; it < iterations; it++)
+                {
+                    if (exact) ExactChainSolver.Iterate(chain, hd, beta, tensionOnly);
+                    else GaussSeidelSolver.Iterate(chain, hd, beta, tensionOnly);
+                    if (pinCount > 0) ProjectCompliantPins(hd, t);
+                    if (hasColliders) colliders.Project(chain, h, it == iterations - 1);
+                }
+                UpdateVelocities(h);
+                time += hd;
+                UpdateTensions(hd);
+                if (pinCount > 0) UpdatePinForces(hd, g);
+                CheckStrainBreaks();
+            }
+            if (hasColliders) colliders.EndStep();
+            for (int p = 0; p < pinCount; p++) pinStart[p] = pinEnd[p];
+
+            lastStepTime = hostDeltaTime;
+            float invDt = 1f / hostDeltaTime;
+            for (int l = 0; l < loadCount; l++)
+            {
+                int i = loadParticle[l];
+                var v = new Float3(chain.VelX[i], chain.VelY[i], chain.VelZ[i]);
+                loadForce[l] = ((v - loadStartVelocity[l]) * invDt - g) * loadMass[l];
+            }
+
+            return new StepReport { Residual = ComputeResidual(), Iterations = iterations, Substeps = substeps };
+        }
+
+        private void Predict(float h, Float3 g)
+        {
+            int n = chain.ParticleCount;
+            float gx = g.X * h, gy = g.Y * h, gz = g.Z * h;
+            float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
+            float[] vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ;
+            bool[] kinematic = chain.Kinematic;
+            for (int i = 0; i < n; i++)
+            {
+                px[i] = x[i]; py[i] = y[i]; pz[i] = z[i];
+                if (kinematic[i]) continue;
+                vx[i] += gx; vy[i] += gy; vz[i] += gz;
+                x[i] += vx[i] * h; y[i] += vy[i] * h; z[i] += vz[i] * h;
+            }
+        }
+
+        private void MovePins(float t)
+        {
+            for (int p = 0; p < pinCount; p++)
+            {
+                if (pinBroken[p] || pinCompliance[p] != 0f) continue;
+                int i = pinParticle[p];
+                Float3 target = Float3.Lerp(pinStart[p], pinEnd[p], t);
+                chain.X[i] = target.X; chain.Y[i] = target.Y; chain.Z[i] = target.Z;
+            }
+        }
+
+        private void ProjectCompliantPins(double h, float t)
+        {
+            double invH2 = 1.0 / (h * h);
+            for (int p = 0; p < pinCount; p++)
+            {
+                if (pinBroken[p] || pinCompliance[p] == 0f) continue;
+                int i = pinParticle[p];
+                double w = chain.InverseMass[i];
+                if (w == 0.0) continue;
+                double alphaTilde = pinCompliance[p] * invH2;
+                double denominator = w + alphaTilde;
+                // the target moves across the substeps like a rigid pin's
+                Float3 target = Float3.Lerp(pinStart[p], pinEnd[p], t);
+                int b = 3 * p;
+                double dx = (-((double)chain.X[i] - target.X) - alphaTilde * pinLambda[b]) / denominator;
+                double dy = (-((double)chain.Y[i] - target.Y) - alphaTilde * pinLambda[b + 1]) / denominator;
+                double dz = (-((double)chain.Z[i] - target.Z) - alphaTilde * pinLambda[b + 2]) / denominator;
+                pinLambda[b] += dx; pinLambda[b + 1] += dy; pinLambda[b + 2] += dz;
+                chain.X[i] += (float)(w * dx); chain.Y[i] += (float)(w * dy); chain.Z[i] += (float)(w * dz);
+            }
+        }
+
+        private void UpdateVelocities(float h)
+        {
+            int n = chain.ParticleCount;
+            float invH = 1f / h;
+            float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
+            float[] vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ;
+            for (int i = 0; i < n; i++)
+            {
+                float ux = (x[i] - px[i]) * invH, uy = (y[i] - py[i]) * invH, uz = (z[i] - pz[i]) * invH;
+                if (float.IsFinite(ux + uy + uz))
+                {
+                    vx[i] = ux; vy[i] = uy; vz[i] = uz;
+                }
+                else
+                {
+                    // never let a non-finite value into the state: fall back to the last good position at rest
+                    x[i] = px[i]; y[i] = py[i]; z[i] = pz[i];
+                    vx[i] = 0f; vy[i] = 0f; vz[i] = 0f;
+                }
+            }
+        }
+
+        private void UpdateTensions(double h)
+        {
+            double invH2 = 1.0 / (h * h);
+            for (int j = 0; j < chain.SegmentCount; j++)
+            {
+                float dx = chain.X[j + 1] - chain.X[j], dy = chain.Y[j + 1] - chain.Y[j], dz = chain.Z[j + 1] - chain.Z[j];
+                chain.Length[j] = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
+                double tension = chain.Broken[j] ? 0.0 : -chain.Lambda[j] * invH2;
+                chain.Tension[j] = float.IsFinite((float)tension) ? (float)tension : float.MaxValue;
+            }
+        }
+
+        private void UpdatePinForces(double h, Float3 g)
+        {
+            double invH2 = 1.0 / (h * h);
+            bool released = false;
+            for (int p = 0; p < pinCount; p++)
+            {
+                if (pinBroken[p]) continue;
+                int i = pinParticle[p];
+                Float3 force;
+                if (pinCompliance[p] != 0f)
+                {
+                    int b = 3 * p;
+                    force = new Float3((float)(-pinLambda[b] * invH2), (float)(-pinLambda[b + 1] * invH2), (float)(-pinLambda[b + 2] * invH2));
+                }
+                else
+                {
+                    force = g * (chain.Mass[i]);
+                    if (i < chain.SegmentCount && !chain.Broken[i])
+                        force += new Float3(chain.DirX[i], chain.DirY[i], chain.DirZ[i]) * chain.Tension[i];
+                    if (i > 0 && !chain.Broken[i - 1])
+                        force -= new Float3(chain.DirX[i - 1], chain.DirY[i - 1], chain.DirZ[i - 1]) * chain.Tension[i - 1];
+                }
+                pinForce[p] = force;
+                if (force.Length > pinBreakForce[p])
+                {
+                    pinBroken[p] = true;
+                    released = true;
+                }
+            }
+            if (released) RefreshKinematic();
+        }
+
+        private void CheckStrainBreaks()
+        {
+            float limit = settings.BreakStrain;
+            if (float.IsPositiveInfinity(limit)) return;
+            for (int j = 0; j < chain.SegmentCount; j++)
+            {
+                if (chain.Broken[j]) continue;
+                if (chain.Length[j] > chain.RestLength[j] * (1f + limit)) BreakSegment(j);
+            }
+        }
+
+        private float ComputeResidual()
+        {
+            double worst = 0.0;
+            bool tensionOnly = settings.Tension == TensionModel.TensionOnly;
+            for (int j = 0; j < chain.SegmentCount; j++)
+            {
+                if (chain.Broken[j]) continue;
+                double rest = chain.RestLength[j];
+                double c = chain.Length[j] - rest;
+                double tension = chain.Tension[j];
+                if (tensionOnly && tension <= 0.0 && c <= 0.0) continue; // slack: no constraint to meet
+                double error = Math.Abs(c - chain.Compliance[j] * tension) / rest;
+                if (error > worst) worst = error;
+            }
+            return (float)worst;
+        }
+    }
+}

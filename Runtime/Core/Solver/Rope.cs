@@ -1,0 +1,248 @@
+using System;
+using HookeRope.Mathematics;
+
+namespace HookeRope.Solver
+{
+    /// <summary>
+    /// An elastic rope: a chain of particles joined by XPBD distance constraints whose compliance is
+    /// that of the real material (α = L_seg/(E·A)), stepped with substeps (Small Steps) and either a
+    /// Gauss–Seidel or an exact whole-chain solve per iteration.
+    /// <para>Frames: every <see cref="Float3"/> argument and return value is in world metres; the
+    /// spans (<see cref="PositionX"/>…) are in the rope-local frame, world = <see cref="Origin"/> + local,
+    /// which keeps float32 precision when the rope is far from the world origin.</para>
+    /// <para>Sign convention: tensions and the accumulated XPBD multipliers are reported as forces,
+    /// ≥ 0 when a segment pulls; a tension-only segment never reports a negative tension.</para>
+    /// </summary>
+    public sealed partial class Rope
+    {
+        private readonly RopeSettings settings;
+        private readonly ChainState chain;
+        private readonly CollisionSet colliders = new CollisionSet();
+        private int appliedVersion = -1;
+        private float appliedRadius = float.NaN;
+        private double time;
+
+        /// <summary>
+        /// Builds a rope from <paramref name="settings"/> (kept by reference and re-read each step)
+        /// with its particles evenly spaced on the straight line start → end (world metres). The
+        /// rest length comes from the settings, so a start–end distance different from it starts the
+        /// rope stretched or slack.
+        /// </summary>
+        public Rope(RopeSettings settings, Float3 start, Float3 end)
+        {
+            if (settings == null) throw new ArgumentNullException(nameof(settings));
+            if (!start.IsFinite) throw new ArgumentException("start must be a finite position in metres", nameof(start));
+            if (!end.IsFinite) throw new ArgumentException("end must be a finite position in metres", nameof(end));
+            this.settings = settings;
+            Origin = start;
+            chain = new ChainState(settings.SegmentCount);
+            int s = chain.SegmentCount;
+            Float3 span = end - start;
+            Float3 fallback = settings.Gravity.NormalizedOr(new Float3(0f, -1f, 0f));
+            Float3 dir = span.NormalizedOr(fallback);
+            for (int i = 0; i <= s; i++)
+            {
+                Float3 p = span * ((float)i / s);
+                chain.X[i] = chain.PrevX[i] = p.X;
+                chain.Y[i] = chain.PrevY[i] = p.Y;
+                chain.Z[i] = chain.PrevZ[i] = p.Z;
+            }
+            for (int j = 0; j < s; j++) { chain.DirX[j] = dir.X; chain.DirY[j] = dir.Y; chain.DirZ[j] = dir.Z; }
+            ApplySettings();
+        }
+
+        /// <summary>The settings this rope reads (shared by reference; changes apply at the next step).</summary>
+        public RopeSettings Settings => settings;
+
+        /// <summary>World position in metres of the rope-local frame's origin (the start point given at construction).</summary>
+        public Float3 Origin { get; }
+
+        /// <summary>Simulated time in seconds since the rope was built.</summary>
+        public double Time => time;
+
+        /// <summary>Number of particles (SegmentCount + 1).</summary>
+        public int ParticleCount => chain.ParticleCount;
+
+        /// <summary>Number of segments (fixed when the rope is built).</summary>
+        public int SegmentCount => chain.SegmentCount;
+
+        /// <summary>Particle X coordinates in metres, rope-local frame (world = Origin + local).</summary>
+        public ReadOnlySpan<float> PositionX => chain.X;
+        /// <summary>Particle Y coordinates in metres, rope-local frame (world = Origin + local).</summary>
+        public ReadOnlySpan<float> PositionY => chain.Y;
+        /// <summary>Particle Z coordinates in metres, rope-local frame (world = Origin + local).</summary>
+        public ReadOnlySpan<float> PositionZ => chain.Z;
+
+        /// <summary>Rest length of each segment in metres.</summary>
+        public ReadOnlySpan<float> RestLengths => chain.RestLength;
+
+        /// <summary>Current length of each segment in metres (after the last step).</summary>
+        public ReadOnlySpan<float> SegmentLengths => chain.Length;
+
+        /// <summary>Tension of each segment in newtons over the last substep, ≥ 0 = pulling (T = −λ/h²).</summary>
+        public ReadOnlySpan<float> Tensions => chain.Tension;
+
+        /// <summary>Collision radius of each particle in metres (default: the rest radius; the radius model writes it).</summary>
+        public Span<float> ParticleRadius => chain.Radius;
+
+        /// <summary>World position of a particle in metres.</summary>
+        public Float3 GetPosition(int particle)
+        {
+            CheckParticle(particle);
+            return Origin + new Float3(chain.X[particle], chain.Y[particle], chain.Z[particle]);
+        }
+
+        /// <summary>Moves a particle to a world position (m) without changing its velocity; NaN/∞ → ArgumentException.</summary>
+        public void SetPosition(int particle, Float3 position)
+        {
+            CheckParticle(particle);
+            CheckFinite(position, nameof(position), "a finite position in metres");
+            Float3 local = position - Origin;
+            chain.X[particle] = chain.PrevX[particle] = local.X;
+            chain.Y[particle] = chain.PrevY[particle] = local.Y;
+            chain.Z[particle] = chain.PrevZ[particle] = local.Z;
+            RefreshLengths();
+        }
+
+        /// <summary>Velocity of a particle in m/s.</summary>
+        public Float3 GetVelocity(int particle)
+        {
+            CheckParticle(particle);
+            return new Float3(chain.VelX[particle], chain.VelY[particle], chain.VelZ[particle]);
+        }
+
+        /// <summary>Sets the velocity of a particle in m/s; NaN/∞ → ArgumentException.</summary>
+        public void SetVelocity(int particle, Float3 velocity)
+        {
+            CheckParticle(particle);
+            CheckFinite(velocity, nameof(velocity), "a finite velocity in m/s");
+            chain.VelX[particle] = velocity.X;
+            chain.VelY[particle] = velocity.Y;
+            chain.VelZ[particle] = velocity.Z;
+        }
+
+        /// <summary>Mass of a particle in kg: its lumped share of the rope (μ·L/2 per adjacent segment) plus attached loads.</summary>
+        public float GetParticleMass(int particle)
+        {
+            CheckParticle(particle);
+            return chain.Mass[particle];
+        }
+
+        /// <summary>True when the segment has broken (its two sides move independently).</summary>
+        public bool IsSegmentBroken(int segment)
+        {
+            CheckSegment(segment);
+            return chain.Broken[segment];
+        }
+
+        /// <summary>Breaks a segment now (no-op if already broken) and raises <see cref="Broken"/>.</summary>
+        public void BreakSegment(int segment)
+        {
+            CheckSegment(segment);
+            if (chain.Broken[segment]) return;
+            float tension = chain.Tension[segment];
+            chain.Broken[segment] = true;
+            chain.Lambda[segment] = 0.0;
+            chain.Tension[segment] = 0f;
+            var midpoint = new Float3(
+                0.5f * (chain.X[segment] + chain.X[segment + 1]),
+                0.5f * (chain.Y[segment] + chain.Y[segment + 1]),
+                0.5f * (chain.Z[segment] + chain.Z[segment + 1]));
+            Broken?.Invoke(new RopeBreakEvent(time, Origin + midpoint, segment, tension));
+        }
+
+        /// <summary>Raised when a segment breaks (by strain, by <see cref="BreakSegment"/>): time s, position m, segment, tension N just before.</summary>
+        public event Action<RopeBreakEvent> Broken;
+
+        /// <summary>
+        /// Re-reads the settings now (rest lengths, compliance, masses, and — if the rest radius changed — the
+        /// particle radii). <see cref="Step"/> calls it automatically when <see cref="RopeSettings.Version"/> changed.
+        /// </summary>
+        public void ApplySettings()
+        {
+            int s = chain.SegmentCount;
+            float restSegment = settings.RestLength / s;
+            float axial = settings.AxialStiffness;
+            float compliance = float.IsPositiveInfinity(axial) ? 0f : restSegment / axial;
+            for (int j = 0; j < s; j++)
+            {
+                chain.RestLength[j] = restSegment;
+                chain.Compliance[j] = compliance;
+            }
+            float mu = settings.LinearDensity;
+            for (int i = 0; i <= s; i++) UpdateMass(i, mu);
+            if (settings.Radius != appliedRadius)
+            {
+                appliedRadius = settings.Radius;
+                for (int i = 0; i <= s; i++) chain.Radius[i] = appliedRadius;
+            }
+            appliedVersion = settings.Version;
+            RefreshLengths();
+        }
+
+        /// <summary>
+        /// Total mechanical energy in joules: kinetic Σ½m|v|² + gravitational −Σ m g·x (rope-local x) +
+        /// elastic Σ½C²/α over the loaded segments (and compliant pins). For tests and the lab.
+        /// </summary>
+        public double TotalEnergy()
+        {
+            double e = 0.0;
+            Float3 g = settings.Gravity;
+            for (int i = 0; i < chain.ParticleCount; i++)
+            {
+                double m = chain.Mass[i];
+                double vx = chain.VelX[i], vy = chain.VelY[i], vz = chain.VelZ[i];
+                e += 0.5 * m * (vx * vx + vy * vy + vz * vz);
+                e -= m * ((double)g.X * chain.X[i] + (double)g.Y * chain.Y[i] + (double)g.Z * chain.Z[i]);
+            }
+            bool tensionOnly = settings.Tension == TensionModel.TensionOnly;
+            for (int j = 0; j < chain.SegmentCount; j++)
+            {
+                if (chain.Broken[j] || chain.Compliance[j] == 0f) continue;
+                double dx = (double)chain.X[j + 1] - chain.X[j], dy = (double)chain.Y[j + 1] - chain.Y[j], dz = (double)chain.Z[j + 1] - chain.Z[j];
+                double c = Math.Sqrt(dx * dx + dy * dy + dz * dz) - chain.RestLength[j];
+                if (tensionOnly && c < 0.0) continue;
+                e += 0.5 * c * c / chain.Compliance[j];
+            }
+            e += PinEnergy();
+            return e;
+        }
+
+        private void UpdateMass(int i, float mu)
+        {
+            int s = chain.SegmentCount;
+            double m = 0.0;
+            if (i > 0) m += 0.5 * mu * chain.RestLength[i - 1];
+            if (i < s) m += 0.5 * mu * chain.RestLength[i];
+            m += chain.LoadMass[i];
+            chain.Mass[i] = (float)m;
+            chain.InverseMass[i] = chain.Kinematic[i] ? 0f : (float)(1.0 / m);
+        }
+
+        private void RefreshLengths()
+        {
+            for (int j = 0; j < chain.SegmentCount; j++)
+            {
+                float dx = chain.X[j + 1] - chain.X[j], dy = chain.Y[j + 1] - chain.Y[j], dz = chain.Z[j + 1] - chain.Z[j];
+                chain.Length[j] = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
+            }
+        }
+
+        private void CheckParticle(int particle)
+        {
+            if ((uint)particle >= (uint)chain.ParticleCount)
+                throw new ArgumentOutOfRangeException(nameof(particle), particle, "particle must be in [0, " + (chain.ParticleCount - 1) + "]");
+        }
+
+        private void CheckSegment(int segment)
+        {
+            if ((uint)segment >= (uint)chain.SegmentCount)
+                throw new ArgumentOutOfRangeException(nameof(segment), segment, "segment must be in [0, " + (chain.SegmentCount - 1) + "]");
+        }
+
+        private static void CheckFinite(Float3 value, string name, string what)
+        {
+            if (!value.IsFinite) throw new ArgumentException(name + " must be " + what + " (no NaN or infinity)", name);
+        }
+    }
+}

@@ -1,0 +1,205 @@
+using System;
+using HookeRope.Mathematics;
+
+namespace HookeRope.Solver
+{
+    /// <summary>
+    /// Validated, mutable rope parameters in SI units. Every setter throws an
+    /// <see cref="ArgumentException"/> naming the property and its valid range. A live
+    /// <see cref="Rope"/> picks up changes at its next step (or at <see cref="Rope.ApplySettings"/>),
+    /// except <see cref="SegmentCount"/>, which is read only when a rope is built.
+    /// Cross-section A = π·R²: <see cref="YoungsModulus"/>/<see cref="AxialStiffness"/> and
+    /// <see cref="Density"/>/<see cref="LinearDensity"/> are two views of one value each; setting
+    /// <see cref="Radius"/> keeps the material (E, ρ) and rescales E·A and the linear density.
+    /// </summary>
+    public sealed class RopeSettings
+    {
+        /// <summary>Default rest length in metres.</summary>
+        public const float DefaultRestLength = 1f;
+        /// <summary>Default number of segments.</summary>
+        public const int DefaultSegmentCount = 16;
+        /// <summary>Default rest radius in metres (a 10 mm rope).</summary>
+        public const float DefaultRadius = 0.005f;
+        /// <summary>Default Young's modulus in pascals (a polyamide rope, 1 GPa).</summary>
+        public const float DefaultYoungsModulus = 1e9f;
+        /// <summary>Default material density in kg/m³ (polyamide).</summary>
+        public const float DefaultDensity = 1140f;
+        /// <summary>Default substeps per host step.</summary>
+        public const int DefaultSubsteps = 16;
+        /// <summary>Default iterations per substep.</summary>
+        public const int DefaultIterations = 1;
+        /// <summary>Largest segment count.</summary>
+        public const int MaxSegmentCount = 10000;
+        /// <summary>Largest substep or iteration count.</summary>
+        public const int MaxSubsteps = 1000;
+
+        private float restLength = DefaultRestLength;
+        private int segmentCount = DefaultSegmentCount;
+        private float radius = DefaultRadius;
+        private float youngsModulus = DefaultYoungsModulus;
+        private float density = DefaultDensity;
+        private float damping;
+        private Float3 gravity = new Float3(0f, -9.81f, 0f);
+        private int substeps = DefaultSubsteps;
+        private int iterations = DefaultIterations;
+        private ConstraintSolverKind solver = ConstraintSolverKind.ExactChain;
+        private TensionModel tension = TensionModel.TensionOnly;
+        private float breakStrain = float.PositiveInfinity;
+
+        /// <summary>Incremented by every successful setter; a rope re-reads its settings when it changes.</summary>
+        public int Version { get; private set; }
+
+        /// <summary>Unstretched length of the whole rope in metres, in (0, 1e5]. Default 1 m.</summary>
+        public float RestLength
+        {
+            get => restLength;
+            set { CheckRange(value, 0f, false, 1e5f, nameof(RestLength), "(0, 100000] m"); restLength = value; Version++; }
+        }
+
+        /// <summary>Number of segments (particles = segments + 1), in [1, 10000]. Default 16. Read when a rope is built.</summary>
+        public int SegmentCount
+        {
+            get => segmentCount;
+            set
+            {
+                if (value < 1 || value > MaxSegmentCount) throw new ArgumentOutOfRangeException(nameof(SegmentCount), value, "SegmentCount must be in [1, 10000]");
+                segmentCount = value;
+                Version++;
+            }
+        }
+
+        /// <summary>Rest radius R of the rope in metres, in (0, 10]. Default 0.005 m. Keeps E and ρ; rescales E·A and linear density.</summary>
+        public float Radius
+        {
+            get => radius;
+            set { CheckRange(value, 0f, false, 10f, nameof(Radius), "(0, 10] m"); radius = value; Version++; }
+        }
+
+        /// <summary>Cross-section area π·R² in square metres.</summary>
+        public float Area => MathF.PI * radius * radius;
+
+        /// <summary>Young's modulus E in pascals, in (0, +inf]; +inf = inextensible. Default 1e9 Pa.</summary>
+        public float YoungsModulus
+        {
+            get => youngsModulus;
+            set { CheckPositiveOrInfinity(value, nameof(YoungsModulus), "(0, +inf] Pa"); youngsModulus = value; Version++; }
+        }
+
+        /// <summary>Axial stiffness E·A in newtons, in (0, +inf]; setting it sets E = (E·A)/(π·R²).</summary>
+        public float AxialStiffness
+        {
+            get => youngsModulus * Area;
+            set
+            {
+                CheckPositiveOrInfinity(value, nameof(AxialStiffness), "(0, +inf] N");
+                float e = value / Area;
+                if (!(e > 0f)) throw new ArgumentOutOfRangeException(nameof(AxialStiffness), value, "AxialStiffness must be in (0, +inf] N (too small for the radius)");
+                youngsModulus = e;
+                Version++;
+            }
+        }
+
+        /// <summary>Material density ρ in kg/m³, in (0, 1e6]. Default 1140 kg/m³. Sets the linear density ρ·π·R².</summary>
+        public float Density
+        {
+            get => density;
+            set { CheckRange(value, 0f, false, 1e6f, nameof(Density), "(0, 1000000] kg/m³"); density = value; Version++; }
+        }
+
+        /// <summary>Mass per unit rest length μ in kg/m, finite and &gt; 0; setting it sets ρ = μ/(π·R²).</summary>
+        public float LinearDensity
+        {
+            get => density * Area;
+            set
+            {
+                if (!float.IsFinite(value) || value <= 0f) throw new ArgumentOutOfRangeException(nameof(LinearDensity), value, "LinearDensity must be finite and in (0, +inf) kg/m");
+                float rho = value / Area;
+                if (!(rho > 0f) || !float.IsFinite(rho)) throw new ArgumentOutOfRangeException(nameof(LinearDensity), value, "LinearDensity must be finite and in (0, +inf) kg/m (out of range for the radius)");
+                density = rho;
+                Version++;
+            }
+        }
+
+        /// <summary>
+        /// XPBD constraint damping β in seconds, finite and ≥ 0 (Macklin 2016, eq. 26): a dashpot of
+        /// β·k in parallel with each segment of stiffness k. Removes vibration energy without moving
+        /// the static solution. Default 0 (substepping alone dissipates a little).
+        /// </summary>
+        public float Damping
+        {
+            get => damping;
+            set { if (!float.IsFinite(value) || value < 0f) throw new ArgumentOutOfRangeException(nameof(Damping), value, "Damping must be finite and in [0, +inf) s"); damping = value; Version++; }
+        }
+
+        /// <summary>Gravity acceleration in m/s², each component finite. Default (0, −9.81, 0).</summary>
+        public Float3 Gravity
+        {
+            get => gravity;
+            set { if (!value.IsFinite) throw new ArgumentException("Gravity must have finite components (m/s²)", nameof(Gravity)); gravity = value; Version++; }
+        }
+
+        /// <summary>Substeps per host step, in [1, 1000]. Default 16.</summary>
+        public int Substeps
+        {
+            get => substeps;
+            set { if (value < 1 || value > MaxSubsteps) throw new ArgumentOutOfRangeException(nameof(Substeps), value, "Substeps must be in [1, 1000]"); substeps = value; Version++; }
+        }
+
+        /// <summary>Constraint iterations per substep, in [1, 1000]. Default 1.</summary>
+        public int Iterations
+        {
+            get => iterations;
+            set { if (value < 1 || value > MaxSubsteps) throw new ArgumentOutOfRangeException(nameof(Iterations), value, "Iterations must be in [1, 1000]"); iterations = value; Version++; }
+        }
+
+        /// <summary>Constraint solver. Default <see cref="ConstraintSolverKind.ExactChain"/>.</summary>
+        public ConstraintSolverKind Solver
+        {
+            get => solver;
+            set
+            {
+                if (value != ConstraintSolverKind.GaussSeidel && value != ConstraintSolverKind.ExactChain) throw new ArgumentOutOfRangeException(nameof(Solver), (int)value, "Solver must be GaussSeidel or ExactChain");
+                solver = value;
+                Version++;
+            }
+        }
+
+        /// <summary>Rope (tension only) or rod (bilateral). Default <see cref="TensionModel.TensionOnly"/>.</summary>
+        public TensionModel Tension
+        {
+            get => tension;
+            set
+            {
+                if (value != TensionModel.TensionOnly && value != TensionModel.Bilateral) throw new ArgumentOutOfRangeException(nameof(Tension), (int)value, "Tension must be TensionOnly or Bilateral");
+                tension = value;
+                Version++;
+            }
+        }
+
+        /// <summary>Strain l/L − 1 at which a segment breaks, in [0, +inf]; +inf (default) = never.</summary>
+        public float BreakStrain
+        {
+            get => breakStrain;
+            set { if (float.IsNaN(value) || value < 0f) throw new ArgumentOutOfRangeException(nameof(BreakStrain), value, "BreakStrain must be in [0, +inf]"); breakStrain = value; Version++; }
+        }
+
+        /// <summary>A copy with the same values (version 0).</summary>
+        public RopeSettings Clone()
+        {
+            var copy = (RopeSettings)MemberwiseClone();
+            copy.Version = 0;
+            return copy;
+        }
+
+        private static void CheckRange(float value, float low, bool lowInclusive, float high, string name, string range)
+        {
+            bool ok = float.IsFinite(value) && (lowInclusive ? value >= low : value > low) && value <= high;
+            if (!ok) throw new ArgumentOutOfRangeException(name, value, name + " must be in " + range);
+        }
+
+        private static void CheckPositiveOrInfinity(float value, string name, string range)
+        {
+            if (float.IsNaN(value) || value <= 0f) throw new ArgumentOutOfRangeException(name, value, name + " must be in " + range);
+        }
+    }
+}
