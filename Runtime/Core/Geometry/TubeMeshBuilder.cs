@@ -1,0 +1,502 @@
+using System;
+using HookeRope.Fracture;
+using HookeRope.Mathematics;
+
+namespace HookeRope.Geometry
+{
+    /// <summary>
+    /// Builds the procedural tube mesh of a rope into caller-owned buffers: rings along a Catmull–Rom curve through
+    /// the particles, oriented by parallel transport, normals tilted for a varying radius, v along the rest arc
+    /// length, flat caps at intact ends, and at each broken end a cap plus seeded burr strands. Vertex positions are
+    /// relative to the first particle. The index buffer is rewritten only when the topology changes (first build,
+    /// a newly broken segment, another index array). Allocation-free after construction.
+    /// </summary>
+    public sealed class TubeMeshBuilder
+    {
+        private const float InnerStrandRadius = 0.45f;
+        private const float MaxSlope = 10f;
+
+        private readonly TubeMeshSettings settings;
+        private readonly RingLayout layout;
+        private readonly int radial;
+        private readonly bool capEnds;
+        private readonly bool burrEnabled;
+        private readonly float[] cos;
+        private readonly float[] sin;
+        private readonly float[] w0, w1, w2, w3;
+        private readonly Float3[] centers;
+        private readonly Float3[] tangents;
+        private readonly Float3[] normals;
+        private readonly float[] ringRadii;
+        private readonly float[] ringV;
+        private readonly float[] slopes;
+        private readonly double[] restArc;
+        private readonly float[] particleRadii;
+        private readonly bool[] lastBroken;
+        private int[] lastIndices;
+        private bool topologyValid;
+
+        /// <summary>Builder for <paramref name="segmentCount"/> segments (≥ 1) with settings.RingsPerSegment rings in each.</summary>
+        public TubeMeshBuilder(TubeMeshSettings settings, int segmentCount)
+            : this(settings, new RingLayout(segmentCount, (settings ?? throw new ArgumentNullException(nameof(settings))).RingsPerSegment))
+        {
+        }
+
+        /// <summary>Builder with an explicit ring layout (e.g. refined around the neck zone).</summary>
+        public TubeMeshBuilder(TubeMeshSettings settings, RingLayout layout)
+        {
+            this.settings = settings ?? throw new ArgumentNullException(nameof(settings));
+            this.layout = layout ?? throw new ArgumentNullException(nameof(layout));
+            radial = settings.RadialSegments;
+            capEnds = settings.CapEnds;
+            burrEnabled = settings.Burr.Enabled;
+            cos = new float[radial + 1];
+            sin = new float[radial + 1];
+            for (int i = 0; i <= radial; i++)
+            {
+                double angle = 2.0 * Math.PI * i / radial;
+                cos[i] = i == radial ? 1f : (float)Math.Cos(angle);
+                sin[i] = i == radial ? 0f : (float)Math.Sin(angle);
+            }
+            int rings = layout.RingCount;
+            w0 = new float[rings]; w1 = new float[rings]; w2 = new float[rings]; w3 = new float[rings];
+            ReadOnlySpan<float> fractions = layout.RingFractions;
+            for (int k = 0; k < rings; k++)
+            {
+                float t = fractions[k], t2 = t * t, t3 = t2 * t;
+                w0[k] = 0.5f * (-t + 2f * t2 - t3);
+                w1[k] = 0.5f * (2f - 5f * t2 + 3f * t3);
+                w2[k] = 0.5f * (t + 4f * t2 - 3f * t3);
+                w3[k] = 0.5f * (-t2 + t3);
+            }
+            centers = new Float3[rings];
+            tangents = new Float3[rings];
+            normals = new Float3[rings];
+            ringRadii = new float[rings];
+            ringV = new float[rings];
+            slopes = new float[rings];
+            int n = layout.SegmentCount;
+            restArc = new double[n + 1];
+            particleRadii = new float[n + 1];
+            lastBroken = new bool[n];
+        }
+
+        /// <summary>The ring layout (ring count and stations).</summary>
+        public RingLayout Layout => layout;
+
+        /// <summary>Number of rope segments.</summary>
+        public int SegmentCount => layout.SegmentCount;
+
+        /// <summary>Vertices around the tube (fixed at construction).</summary>
+        public int RadialSegments => radial;
+
+        /// <summary>Vertices the mesh needs for these broken-segment flags (empty = intact rope).</summary>
+        public int GetVertexCount(ReadOnlySpan<bool> brokenSegments)
+        {
+            Count(brokenSegments, out int vertices, out _, out _);
+            return vertices;
+        }
+
+        /// <summary>Indices the mesh needs for these broken-segment flags (tube, caps and burr strands).</summary>
+        public int GetIndexCount(ReadOnlySpan<bool> brokenSegments)
+        {
+            Count(brokenSegments, out _, out int tube, out int burr);
+            return tube + burr;
+        }
+
+        /// <summary>
+        /// Builds the mesh from particle positions (m; SegmentCount + 1 each), rest segment lengths (m), per-segment
+        /// radii (m; smoothed to the particles and interpolated to the rings) and broken flags (empty = none).
+        /// </summary>
+        public TubeMeshUpdate Build(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
+            ReadOnlySpan<float> restLengths, ReadOnlySpan<float> segmentRadii, ReadOnlySpan<bool> brokenSegments,
+            TubeVertex[] vertices, int[] indices)
+        {
+            int n = layout.SegmentCount;
+            if (segmentRadii.Length != n)
+                throw new ArgumentException("segmentRadii must hold SegmentCount = " + n + " values.", nameof(segmentRadii));
+            bool hasBroken = brokenSegments.Length > 0;
+            for (int i = 0; i <= n; i++)
+            {
+                bool left = i > 0 && !(hasBroken && brokenSegments[i - 1]);
+                bool right = i < n && !(hasBroken && brokenSegments[i]);
+                float r;
+                if (left && right) r = 0.5f * (segmentRadii[i - 1] + segmentRadii[i]);
+                else if (left) r = segmentRadii[i - 1];
+                else if (right) r = segmentRadii[i];
+                else r = segmentRadii[i < n ? i : n - 1];
+                particleRadii[i] = r;
+            }
+            ReadOnlySpan<int> segments = layout.RingSegments;
+            ReadOnlySpan<float> fractions = layout.RingFractions;
+            for (int k = 0; k < ringRadii.Length; k++)
+            {
+                int j = segments[k];
+                ringRadii[k] = particleRadii[j] + (particleRadii[j + 1] - particleRadii[j]) * fractions[k];
+            }
+            return BuildWithRingRadii(x, y, z, restLengths, ringRadii, brokenSegments, vertices, indices);
+        }
+
+        /// <summary>
+        /// Builds the mesh from particle positions (m), rest segment lengths (m), one radius per ring (m;
+        /// <see cref="RingLayout.RingCount"/> values, e.g. from RadiusModel.FillRingRadii) and broken flags (empty =
+        /// none). Non-finite or non-positive radii count as 1e-6 m; non-finite positions repeat the previous ring.
+        /// Throws ArgumentException when a span has the wrong length or a buffer is too small.
+        /// </summary>
+        public TubeMeshUpdate BuildWithRingRadii(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
+            ReadOnlySpan<float> restLengths, ReadOnlySpan<float> radii, ReadOnlySpan<bool> brokenSegments,
+            TubeVertex[] vertices, int[] indices)
+        {
+            int n = layout.SegmentCount;
+            if (x.Length != n + 1 || y.Length != n + 1 || z.Length != n + 1)
+                throw new ArgumentException("x, y and z must each hold SegmentCount + 1 = " + (n + 1) + " positions.", nameof(x));
+            if (restLengths.Length != n)
+                throw new ArgumentException("restLengths must hold SegmentCount = " + n + " values.", nameof(restLengths));
+            if (radii.Length != layout.RingCount)
+                throw new ArgumentException("radii must hold RingCount = " + layout.RingCount + " values.", nameof(radii));
+            bool hasBroken = brokenSegments.Length > 0;
+            if (hasBroken && brokenSegments.Length != n)
+                throw new ArgumentException("brokenSegments must be empty or hold SegmentCount = " + n + " flags.", nameof(brokenSegments));
+            if (vertices == null) throw new ArgumentNullException(nameof(vertices));
+            if (indices == null) throw new ArgumentNullException(nameof(indices));
+            Count(brokenSegments, out int vertexCount, out int tubeIndexCount, out int burrIndexCount);
+            if (vertices.Length < vertexCount)
+                throw new ArgumentException("vertices must hold at least GetVertexCount = " + vertexCount + " vertices.", nameof(vertices));
+            if (indices.Length < tubeIndexCount + burrIndexCount)
+                throw new ArgumentException("indices must hold at least GetIndexCount = " + (tubeIndexCount + burrIndexCount) + " indices.", nameof(indices));
+
+            bool topologyChanged = !topologyValid || !ReferenceEquals(indices, lastIndices);
+            for (int j = 0; j < n; j++)
+            {
+                bool b = hasBroken && brokenSegments[j];
+                if (b != lastBroken[j]) { topologyChanged = true; lastBroken[j] = b; }
+            }
+
+            double arc = 0.0;
+            restArc[0] = 0.0;
+            for (int j = 0; j < n; j++) { arc += restLengths[j]; restArc[j + 1] = arc; }
+            float vScale = settings.VPerMetre;
+            ReadOnlySpan<int> ringSegments = layout.RingSegments;
+            ReadOnlySpan<float> ringFractions = layout.RingFractions;
+            for (int k = 0; k < ringV.Length; k++)
+            {
+                int j = ringSegments[k];
+                double s = restArc[j] + (restArc[j + 1] - restArc[j]) * ringFractions[k];
+                ringV[k] = (float)(s * vScale);
+                float r = radii[k];
+                ringRadii[k] = float.IsFinite(r) && r > 1e-6f ? r : 1e-6f;
+            }
+
+            Float3 origin = new Float3(x[0], y[0], z[0]);
+            if (!origin.IsFinite) origin = Float3.Zero;
+            var bounds = new Bounds(true);
+            int vertexBase = 0;
+            int tubeCursor = 0;
+            int burrCursor = tubeIndexCount;
+            int segment = 0;
+            while (segment < n)
+            {
+                if (hasBroken && brokenSegments[segment]) { segment++; continue; }
+                int a = segment;
+                while (segment < n && !(hasBroken && brokenSegments[segment])) segment++;
+                int b = segment;
+                BuildPiece(a, b, x, y, z, origin, vertices, indices, topologyChanged,
+                    ref vertexBase, ref tubeCursor, ref burrCursor, ref bounds);
+            }
+
+            if (topologyChanged) { lastIndices = indices; topologyValid = true; }
+            if (vertexCount == 0) bounds = new Bounds(false);
+            return new TubeMeshUpdate(vertexCount, tubeIndexCount + burrIndexCount, tubeIndexCount, topologyChanged,
+                origin, bounds.Min, bounds.Max);
+        }
+
+        private void Count(ReadOnlySpan<bool> brokenSegments, out int vertexCount, out int tubeIndexCount, out int burrIndexCount)
+        {
+            int n = layout.SegmentCount;
+            bool hasBroken = brokenSegments.Length > 0;
+            if (hasBroken && brokenSegments.Length != n)
+                throw new ArgumentException("brokenSegments must be empty or hold SegmentCount = " + n + " flags.", nameof(brokenSegments));
+            vertexCount = 0; tubeIndexCount = 0; burrIndexCount = 0;
+            int segment = 0;
+            while (segment < n)
+            {
+                if (hasBroken && brokenSegments[segment]) { segment++; continue; }
+                int a = segment;
+                while (segment < n && !(hasBroken && brokenSegments[segment])) segment++;
+                int b = segment;
+                int rings = layout.FirstRing(b) - layout.FirstRing(a) + 1;
+                vertexCount += rings * (radial + 1);
+                tubeIndexCount += (rings - 1) * radial * 6;
+                CountEnd(a > 0, ref vertexCount, ref tubeIndexCount, ref burrIndexCount);
+                CountEnd(b < n, ref vertexCount, ref tubeIndexCount, ref burrIndexCount);
+            }
+        }
+
+        private void CountEnd(bool brokenEnd, ref int vertexCount, ref int tubeIndexCount, ref int burrIndexCount)
+        {
+            if (brokenEnd || capEnds) { vertexCount += radial + 1; tubeIndexCount += radial * 3; }
+            if (brokenEnd && burrEnabled) { vertexCount += radial * 9; burrIndexCount += radial * 9; }
+        }
+
+        private void BuildPiece(int a, int b, ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
+            Float3 origin, TubeVertex[] vertices, int[] indices, bool writeIndices,
+            ref int vertexBase, ref int tubeCursor, ref int burrCursor, ref Bounds bounds)
+        {
+            int n = layout.SegmentCount;
+            int first = layout.FirstRing(a);
+            int last = layout.FirstRing(b);
+            ComputeCenters(a, b, first, last, x, y, z, origin);
+            ComputeFrames(a, b, first, last, x, y, z);
+            ComputeSlopes(first, last);
+
+            bool startBroken = a > 0, endBroken = b < n;
+            if (startBroken || capEnds) WriteCap(first, false, vertices, indices, writeIndices, ref vertexBase, ref tubeCursor, ref bounds);
+            if (startBroken && burrEnabled) WriteStrands(first, false, 2 * (a - 1) + 1, vertices, indices, writeIndices, ref vertexBase, ref burrCursor, ref bounds);
+
+            int stride = radial + 1;
+            for (int k = first; k <= last; k++)
+            {
+                int ringBase = vertexBase + (k - first) * stride;
+                WriteRing(k, vertices, ringBase, ref bounds);
+                if (writeIndices && k < last)
+                {
+                    for (int i = 0; i < radial; i++)
+                    {
+                        int a0 = ringBase + i, a1 = a0 + 1, b0 = a0 + stride, b1 = b0 + 1;
+                        indices[tubeCursor++] = a0; indices[tubeCursor++] = a1; indices[tubeCursor++] = b0;
+                        indices[tubeCursor++] = a1; indices[tubeCursor++] = b1; indices[tubeCursor++] = b0;
+                    }
+                }
+                else if (k < last)
+                {
+                    tubeCursor += radial * 6;
+                }
+            }
+            vertexBase += (last - first + 1) * stride;
+
+            if (endBroken || capEnds) WriteCap(last, true, vertices, indices, writeIndices, ref vertexBase, ref tubeCursor, ref bounds);
+            if (endBroken && burrEnabled) WriteStrands(last, true, 2 * b, vertices, indices, writeIndices, ref vertexBase, ref burrCursor, ref bounds);
+        }
+
+        private void ComputeCenters(int a, int b, int first, int last, ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z, Float3 origin)
+        {
+            ReadOnlySpan<int> ringSegments = layout.RingSegments;
+            ReadOnlySpan<float> ringFractions = layout.RingFractions;
+            Float3 fallbackDirection = (Particle(b, x, y, z, origin) - Particle(a, x, y, z, origin)).NormalizedOr(new Float3(1f, 0f, 0f));
+            if (!fallbackDirection.IsFinite) fallbackDirection = new Float3(1f, 0f, 0f);
+            for (int k = first; k <= last; k++)
+            {
+                int j = ringSegments[k];
+                float t = ringFractions[k];
+                Float3 c;
+                if (k == last)
+                {
+                    c = Particle(b, x, y, z, origin);
+                }
+                else if (t == 0f)
+                {
+                    c = Particle(j, x, y, z, origin);
+                }
+                else
+                {
+                    Float3 p1 = Particle(j, x, y, z, origin);
+                    Float3 p2 = Particle(j + 1, x, y, z, origin);
+                    Float3 p0 = j - 1 >= a ? Particle(j - 1, x, y, z, origin) : p1 * 2f - p2;
+                    Float3 p3 = j + 2 <= b ? Particle(j + 2, x, y, z, origin) : p2 * 2f - p1;
+                    c = p0 * w0[k] + p1 * w1[k] + p2 * w2[k] + p3 * w3[k];
+                }
+                if (!c.IsFinite) c = k > first ? centers[k - 1] : Float3.Zero;
+                if (k > first)
+                {
+                    Float3 previous = centers[k - 1];
+                    float minimum = 1e-3f * ringRadii[k] + 1e-7f;
+                    if ((c - previous).LengthSquared < minimum * minimum)
+                    {
+                        Float3 direction = k > first + 1 ? (previous - centers[k - 2]).NormalizedOr(fallbackDirection) : fallbackDirection;
+                        c = previous + direction * minimum;
+                    }
+                }
+                centers[k] = c;
+            }
+        }
+
+        private void ComputeFrames(int a, int b, int first, int last, ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z)
+        {
+            Float3 previousTangent = (centers[last] - centers[first]).NormalizedOr(new Float3(1f, 0f, 0f));
+            for (int k = first; k <= last; k++)
+            {
+                Float3 ahead = k < last ? centers[k + 1] : centers[k];
+                Float3 behind = k > first ? centers[k - 1] : centers[k];
+                Float3 t = (ahead - behind).NormalizedOr(Float3.Zero);
+                if (t.LengthSquared == 0f && k < last) t = (centers[k + 1] - centers[k]).NormalizedOr(Float3.Zero);
+                if (t.LengthSquared == 0f && k > first) t = (centers[k] - centers[k - 1]).NormalizedOr(Float3.Zero);
+                if (t.LengthSquared == 0f) t = previousTangent;
+                tangents[k] = t;
+                if (k == first)
+                {
+                    normals[k] = FrameTransport.Perpendicular(normals[k], t);
+                }
+                else
+                {
+                    normals[k] = FrameTransport.Transport(normals[k - 1], tangents[k - 1], t);
+                }
+                previousTangent = t;
+            }
+        }
+
+        private void ComputeSlopes(int first, int last)
+        {
+            for (int k = first; k <= last; k++)
+            {
+                int ahead = k < last ? k + 1 : k;
+                int behind = k > first ? k - 1 : k;
+                float distance = (centers[ahead] - centers[behind]).Length;
+                float slope = distance > 1e-12f ? (ringRadii[ahead] - ringRadii[behind]) / distance : 0f;
+                if (!(slope >= -MaxSlope)) slope = -MaxSlope;
+                if (slope > MaxSlope) slope = MaxSlope;
+                slopes[k] = slope;
+            }
+        }
+
+        private void WriteRing(int k, TubeVertex[] vertices, int ringBase, ref Bounds bounds)
+        {
+            Float3 c = centers[k], t = tangents[k], nrm = normals[k];
+            Float3 bin = Float3.Cross(t, nrm);
+            float r = ringRadii[k];
+            float slope = slopes[k];
+            float inverse = 1f / MathF.Sqrt(1f + slope * slope);
+            float v = ringV[k];
+            for (int i = 0; i <= radial; i++)
+            {
+                Float3 radialDirection = nrm * cos[i] + bin * sin[i];
+                Float3 around = bin * cos[i] - nrm * sin[i];
+                Float3 p = c + radialDirection * r;
+                Float3 normal = (radialDirection - t * slope) * inverse;
+                ref TubeVertex vertex = ref vertices[ringBase + i];
+                vertex.PX = p.X; vertex.PY = p.Y; vertex.PZ = p.Z;
+                vertex.NX = normal.X; vertex.NY = normal.Y; vertex.NZ = normal.Z;
+                vertex.TX = around.X; vertex.TY = around.Y; vertex.TZ = around.Z; vertex.TW = 1f;
+                vertex.U = (float)i / radial;
+                vertex.V = v;
+                bounds.Add(p);
+            }
+        }
+
+        private void WriteCap(int k, bool atEnd, TubeVertex[] vertices, int[] indices, bool writeIndices,
+            ref int vertexBase, ref int tubeCursor, ref Bounds bounds)
+        {
+            Float3 c = centers[k], t = tangents[k], nrm = normals[k];
+            Float3 bin = Float3.Cross(t, nrm);
+            Float3 outward = atEnd ? t : -t;
+            float r = ringRadii[k];
+            SetVertex(vertices, vertexBase, c, outward, nrm, 0.5f, 0.5f);
+            bounds.Add(c);
+            for (int i = 0; i < radial; i++)
+            {
+                Float3 p = c + (nrm * cos[i] + bin * sin[i]) * r;
+                SetVertex(vertices, vertexBase + 1 + i, p, outward, nrm, 0.5f + 0.5f * cos[i], 0.5f + 0.5f * sin[i]);
+                bounds.Add(p);
+            }
+            if (writeIndices)
+            {
+                for (int i = 0; i < radial; i++)
+                {
+                    int r0 = vertexBase + 1 + i;
+                    int r1 = vertexBase + 1 + (i + 1) % radial;
+                    indices[tubeCursor++] = vertexBase;
+                    indices[tubeCursor++] = atEnd ? r0 : r1;
+                    indices[tubeCursor++] = atEnd ? r1 : r0;
+                }
+            }
+            else
+            {
+                tubeCursor += radial * 3;
+            }
+            vertexBase += radial + 1;
+        }
+
+        private void WriteStrands(int k, bool atEnd, int endKey, TubeVertex[] vertices, int[] indices, bool writeIndices,
+            ref int vertexBase, ref int burrCursor, ref Bounds bounds)
+        {
+            BurrSettings burr = settings.Burr;
+            Float3 c = centers[k], t = tangents[k], nrm = normals[k];
+            Float3 bin = Float3.Cross(t, nrm);
+            Float3 outward = atEnd ? t : -t;
+            float r = ringRadii[k];
+            float halfStep = MathF.PI / radial;
+            for (int i = 0; i < radial; i++)
+            {
+                BurrStrand strand = BurrStrand.Draw(burr.Seed, endKey, i, burr.Spread);
+                Float3 e0 = nrm * cos[i] + bin * sin[i];
+                Float3 e1 = nrm * cos[i + 1] + bin * sin[i + 1];
+                float mid = 2f * halfStep * i + halfStep;
+                float cm = MathF.Cos(mid), sm = MathF.Sin(mid);
+                Float3 radialMid = nrm * cm + bin * sm;
+                Float3 aroundMid = bin * cm - nrm * sm;
+                Float3 b0 = c + e0 * r;
+                Float3 b1 = c + e1 * r;
+                Float3 b2 = c + radialMid * (InnerStrandRadius * r);
+                if (!atEnd) { Float3 swap = b0; b0 = b1; b1 = swap; }
+                Float3 side = radialMid * MathF.Cos(strand.Twist) + aroundMid * MathF.Sin(strand.Twist);
+                Float3 direction = outward * MathF.Cos(strand.Tilt) + side * MathF.Sin(strand.Tilt);
+                Float3 centroid = (b0 + b1 + b2) * (1f / 3f);
+                Float3 tip = centroid + direction * (strand.LengthFraction * burr.Length * r);
+                int v = vertexBase + i * 9;
+                WriteStrandFace(vertices, v, b0, b1, tip, outward, ref bounds);
+                WriteStrandFace(vertices, v + 3, b1, b2, tip, outward, ref bounds);
+                WriteStrandFace(vertices, v + 6, b2, b0, tip, outward, ref bounds);
+                if (writeIndices)
+                {
+                    for (int q = 0; q < 9; q++) indices[burrCursor++] = v + q;
+                }
+                else
+                {
+                    burrCursor += 9;
+                }
+            }
+            vertexBase += radial * 9;
+        }
+
+        private static void WriteStrandFace(TubeVertex[] vertices, int v, Float3 p0, Float3 p1, Float3 tip, Float3 fallback, ref Bounds bounds)
+        {
+            Float3 edge = p1 - p0;
+            Float3 normal = Float3.Cross(edge, tip - p0).NormalizedOr(fallback);
+            Float3 tangent = edge.NormalizedOr(FrameTransport.Perpendicular(fallback, normal));
+            SetVertex(vertices, v, p0, normal, tangent, 0f, 0f);
+            SetVertex(vertices, v + 1, p1, normal, tangent, 1f, 0f);
+            SetVertex(vertices, v + 2, tip, normal, tangent, 0.5f, 1f);
+            bounds.Add(tip);
+        }
+
+        private static void SetVertex(TubeVertex[] vertices, int index, Float3 p, Float3 normal, Float3 tangent, float u, float v)
+        {
+            ref TubeVertex vertex = ref vertices[index];
+            vertex.PX = p.X; vertex.PY = p.Y; vertex.PZ = p.Z;
+            vertex.NX = normal.X; vertex.NY = normal.Y; vertex.NZ = normal.Z;
+            vertex.TX = tangent.X; vertex.TY = tangent.Y; vertex.TZ = tangent.Z; vertex.TW = 1f;
+            vertex.U = u; vertex.V = v;
+        }
+
+        private static Float3 Particle(int i, ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z, Float3 origin) =>
+            new Float3(x[i] - origin.X, y[i] - origin.Y, z[i] - origin.Z);
+
+        private struct Bounds
+        {
+            public Float3 Min;
+            public Float3 Max;
+
+            public Bounds(bool empty)
+            {
+                float big = empty ? float.MaxValue : 0f;
+                Min = new Float3(big, big, big);
+                Max = new Float3(-big, -big, -big);
+            }
+
+            public void Add(Float3 p)
+            {
+                Min = new Float3(MathF.Min(Min.X, p.X), MathF.Min(Min.Y, p.Y), MathF.Min(Min.Z, p.Z));
+                Max = new Float3(MathF.Max(Max.X, p.X), MathF.Max(Max.Y, p.Y), MathF.Max(Max.Z, p.Z));
+            }
+        }
+    }
+}

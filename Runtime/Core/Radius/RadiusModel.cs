@@ -1,0 +1,295 @@
+using System;
+
+namespace HookeRope.Radius
+{
+    /// <summary>
+    /// Per-segment and per-ring radii of a rope from its rest and current segment lengths: Poisson thinning
+    /// (eq. 16) from each segment's own stretch, smoothed to the particles; a neck at the defect (Paper or Zone
+    /// mode); and the break decision at the defect segment. Allocation-free after construction.
+    /// </summary>
+    public sealed class RadiusModel
+    {
+        private readonly float[] segmentRadii;
+        private readonly float[] baseParticleRadii;
+        private readonly float[] particleRadii;
+        private readonly float[] restArc;
+        private readonly float[] currentArc;
+        private readonly float[] segmentStretch;
+        private readonly bool[] brokenCopy;
+        private readonly float restRadius;
+        private int defectSegment;
+        private float defectT;
+        private float defectArc;
+        private float neckDepth;
+        private float zoneWaistRatio;
+        private float zoneAxisFactor;
+        private float paperWaist;
+        private float paperAxisSquared;
+        private float paperCenter;
+        private bool paperNecking;
+        private float neckRadius;
+        private float minRadius;
+        private BreakReason breakReason;
+        private bool broken;
+
+        /// <summary>
+        /// Creates the model for a rope with rest radius <paramref name="restRadius"/> (m, finite, &gt; 0) and the
+        /// given rest segment lengths (m, each finite and &gt; 0; at least one segment). Radii start at R.
+        /// </summary>
+        public RadiusModel(RadiusSettings settings, float restRadius, ReadOnlySpan<float> restLengths)
+        {
+            Settings = settings ?? throw new ArgumentNullException(nameof(settings));
+            if (!float.IsFinite(restRadius) || !(restRadius > 0f))
+                throw new ArgumentOutOfRangeException(nameof(restRadius), restRadius, "restRadius must be finite and in (0, +inf) m.");
+            if (restLengths.Length < 1)
+                throw new ArgumentException("restLengths must hold at least one segment length (1 … any).", nameof(restLengths));
+            int n = restLengths.Length;
+            this.restRadius = restRadius;
+            segmentRadii = new float[n];
+            segmentStretch = new float[n];
+            brokenCopy = new bool[n];
+            baseParticleRadii = new float[n + 1];
+            particleRadii = new float[n + 1];
+            restArc = new float[n + 1];
+            currentArc = new float[n + 1];
+            double sum = 0.0;
+            for (int j = 0; j < n; j++)
+            {
+                float length = restLengths[j];
+                if (!float.IsFinite(length) || !(length > 0f))
+                    throw new ArgumentOutOfRangeException(nameof(restLengths), length, "every rest length must be finite and in (0, +inf) m.");
+                sum += length;
+                restArc[j + 1] = (float)sum;
+                currentArc[j + 1] = (float)sum;
+                segmentStretch[j] = 1f;
+            }
+            Array.Fill(segmentRadii, restRadius);
+            Array.Fill(baseParticleRadii, restRadius);
+            Array.Fill(particleRadii, restRadius);
+            neckRadius = restRadius;
+            minRadius = restRadius;
+            LocateDefect();
+        }
+
+        /// <summary>The settings read at every update.</summary>
+        public RadiusSettings Settings { get; }
+
+        /// <summary>Rest radius R in metres.</summary>
+        public float RestRadius => restRadius;
+
+        /// <summary>Number of segments.</summary>
+        public int SegmentCount => segmentRadii.Length;
+
+        /// <summary>Total rest length in metres.</summary>
+        public float RestLength => restArc[restArc.Length - 1];
+
+        /// <summary>Poisson radius of each segment in metres (R when thinning is off or the segment is broken).</summary>
+        public ReadOnlySpan<float> SegmentRadii => segmentRadii;
+
+        /// <summary>Radius at each particle in metres, neck included (what colliders should use).</summary>
+        public ReadOnlySpan<float> ParticleRadii => particleRadii;
+
+        /// <summary>Index of the segment holding the defect (where the neck forms and the rope breaks).</summary>
+        public int DefectSegment => defectSegment;
+
+        /// <summary>Position of the defect inside <see cref="DefectSegment"/> as a fraction of its length, [0, 1].</summary>
+        public float DefectFraction => defectT;
+
+        /// <summary>Rest arc length from the first particle to the defect in metres.</summary>
+        public float DefectRestArc => defectArc;
+
+        /// <summary>Rest length of the neck zone in metres (Zone mode): NeckZoneDiameters·2R.</summary>
+        public float NeckZoneRestLength => Settings.NeckZoneDiameters * 2f * restRadius;
+
+        /// <summary>Radius at the defect in metres, neck included (the Poisson radius there when no neck has formed).</summary>
+        public float NeckRadius => neckRadius;
+
+        /// <summary>Smallest radius along the rope in metres (particles and the neck waist).</summary>
+        public float MinRadius => minRadius;
+
+        /// <summary>Neck depth in [0, 1]: Zone mode grows it continuously from 0 at onset; Paper mode is 0 or 1.</summary>
+        public float NeckDepth => neckDepth;
+
+        /// <summary>True once the neck has started to form.</summary>
+        public bool IsNecking => neckDepth > 0f;
+
+        /// <summary>The break decision of the last update (None until a criterion is met; reset by <see cref="MarkBroken"/>).</summary>
+        public BreakReason BreakReason => breakReason;
+
+        /// <summary>True when the last update decided that the rope breaks at <see cref="DefectSegment"/>.</summary>
+        public bool ShouldBreak => breakReason != BreakReason.None;
+
+        /// <summary>True after <see cref="MarkBroken"/>: the neck is frozen and no further break is asked for.</summary>
+        public bool IsBroken => broken;
+
+        /// <summary>True when any part is enabled; when false <see cref="Update"/> returns at once.</summary>
+        public bool IsActive => Settings.AnyEnabled;
+
+        /// <summary>
+        /// Recomputes radii from the current segment lengths (m) and the broken flags (null/empty = none broken),
+        /// then the break decision. Spans must hold <see cref="SegmentCount"/> values. Allocation-free; does
+        /// nothing when every part is off. Non-finite lengths count as unstretched.
+        /// </summary>
+        public void Update(ReadOnlySpan<float> currentLengths, ReadOnlySpan<bool> brokenSegments)
+        {
+            if (!Settings.AnyEnabled) return;
+            int n = segmentRadii.Length;
+            if (currentLengths.Length != n)
+                throw new ArgumentException("currentLengths must hold SegmentCount = " + n + " values.", nameof(currentLengths));
+            bool hasBroken = brokenSegments.Length > 0;
+            if (hasBroken && brokenSegments.Length != n)
+                throw new ArgumentException("brokenSegments must be empty or hold SegmentCount = " + n + " flags.", nameof(brokenSegments));
+            RadiusSettings s = Settings;
+            double nu = s.PoissonRatio;
+            bool slack = s.SlackKeepsRestRadius;
+            double arc = 0.0;
+            for (int j = 0; j < n; j++)
+            {
+                float rest = restArc[j + 1] - restArc[j];
+                float current = currentLengths[j];
+                bool isBroken = hasBroken && brokenSegments[j];
+                brokenCopy[j] = isBroken;
+                if (isBroken || !float.IsFinite(current)) current = rest;
+                segmentStretch[j] = current / rest;
+                arc += current;
+                currentArc[j + 1] = (float)arc;
+                segmentRadii[j] = s.PoissonEnabled && !isBroken
+                    ? (float)(restRadius * PoissonRadius.Ratio(rest, current, nu, slack))
+                    : restRadius;
+            }
+            SmoothToParticles();
+            LocateDefect();
+            UpdateNeck();
+            float smallest = float.PositiveInfinity;
+            for (int i = 0; i <= n; i++)
+            {
+                float r = RadiusAt(i < n ? i : n - 1, i < n ? 0f : 1f);
+                particleRadii[i] = r;
+                if (r < smallest) smallest = r;
+            }
+            neckRadius = RadiusAt(defectSegment, defectT);
+            if (s.NeckMode == NeckMode.Paper && paperNecking) neckRadius = Math.Min(neckRadius, paperWaist);
+            minRadius = Math.Min(smallest, neckRadius);
+            DecideBreak();
+        }
+
+        /// <summary>
+        /// Radius in metres at fraction <paramref name="t"/> ∈ [0, 1] of segment <paramref name="segment"/>:
+        /// the particle radii interpolated linearly, times the neck profile where it applies.
+        /// </summary>
+        public float RadiusAt(int segment, float t)
+        {
+            if (t < 0f) t = 0f; else if (t > 1f) t = 1f;
+            float baseRadius = baseParticleRadii[segment] + (baseParticleRadii[segment + 1] - baseParticleRadii[segment]) * t;
+            if (neckDepth <= 0f) return baseRadius;
+            if (Settings.NeckMode == NeckMode.Zone)
+            {
+                float zone = NeckZoneRestLength;
+                float s = restArc[segment] + (restArc[segment + 1] - restArc[segment]) * t;
+                float u = (s - defectArc) / zone;
+                if (u <= -0.5f || u >= 0.5f) return baseRadius;
+                float profile = zoneWaistRatio * MathF.Sqrt(1f + u * u * zoneAxisFactor);
+                if (profile > 1f) profile = 1f;
+                return baseRadius * (1f - neckDepth * (1f - profile));
+            }
+            if (Settings.NeckMode == NeckMode.Paper && paperNecking)
+            {
+                float c = currentArc[segment] + (currentArc[segment + 1] - currentArc[segment]) * t;
+                float y = c - paperCenter;
+                return paperAxisSquared > 0f ? paperWaist * MathF.Sqrt(1f + y * y / paperAxisSquared) : paperWaist;
+            }
+            return baseRadius;
+        }
+
+        /// <summary>
+        /// Fills <paramref name="radii"/> (m) with the radius at each ring station given by parallel spans of
+        /// segment indices and fractions (e.g. a <see cref="HookeRope.Geometry.RingLayout"/>). Allocation-free.
+        /// </summary>
+        public void FillRingRadii(ReadOnlySpan<int> ringSegments, ReadOnlySpan<float> ringFractions, Span<float> radii)
+        {
+            if (ringSegments.Length != ringFractions.Length || radii.Length < ringSegments.Length)
+                throw new ArgumentException("radii must hold at least as many values as ringSegments and ringFractions (which must match).", nameof(radii));
+            for (int k = 0; k < ringSegments.Length; k++) radii[k] = RadiusAt(ringSegments[k], ringFractions[k]);
+        }
+
+        /// <summary>
+        /// Tells the model that the host broke the rope: the neck is frozen at its present depth (Zone) or
+        /// dropped (Paper), the break decision resets to None and no further break is asked for.
+        /// </summary>
+        public void MarkBroken()
+        {
+            broken = true;
+            breakReason = BreakReason.None;
+            paperNecking = false;
+            if (Settings.NeckMode == NeckMode.Paper) neckDepth = 0f;
+        }
+
+        private void SmoothToParticles()
+        {
+            int n = segmentRadii.Length;
+            for (int i = 0; i <= n; i++)
+            {
+                bool left = i > 0 && !brokenCopy[i - 1];
+                bool right = i < n && !brokenCopy[i];
+                float r;
+                if (left && right) r = 0.5f * (segmentRadii[i - 1] + segmentRadii[i]);
+                else if (left) r = segmentRadii[i - 1];
+                else if (right) r = segmentRadii[i];
+                else r = restRadius;
+                baseParticleRadii[i] = r;
+            }
+        }
+
+        private void LocateDefect()
+        {
+            int n = segmentRadii.Length;
+            float position = Settings.NeckMode == NeckMode.Paper ? 0.5f : Settings.DefectPosition;
+            float target = position * restArc[n];
+            int j = 0;
+            while (j < n - 1 && restArc[j + 1] <= target) j++;
+            defectSegment = j;
+            float length = restArc[j + 1] - restArc[j];
+            float t = (target - restArc[j]) / length;
+            defectT = t < 0f ? 0f : (t > 1f ? 1f : t);
+            defectArc = target;
+        }
+
+        private void UpdateNeck()
+        {
+            RadiusSettings s = Settings;
+            if (s.NeckMode == NeckMode.Off) { neckDepth = 0f; paperNecking = false; return; }
+            if (broken) return;
+            double strain = segmentStretch[defectSegment] - 1.0;
+            double onset = PoissonRadius.StrainAtRatio(s.RMinFraction, s.PoissonRatio);
+            float rMin = s.RMinFraction * restRadius;
+            if (s.NeckMode == NeckMode.Zone)
+            {
+                double depth = (strain - onset) / s.NeckGrowthStrain;
+                neckDepth = depth > 0.0 ? (depth < 1.0 ? (float)depth : 1f) : 0f;
+                float zoneLength = NeckZoneRestLength * segmentStretch[defectSegment];
+                float waist = NeckHyperbola.WaistRadius(zoneLength, rMin);
+                float axisSquared = NeckHyperbola.AxisSquared(zoneLength, rMin);
+                zoneWaistRatio = waist / rMin;
+                zoneAxisFactor = axisSquared > 0f ? zoneLength * zoneLength / axisSquared : 0f;
+                paperNecking = false;
+                return;
+            }
+            paperNecking = strain >= onset;
+            neckDepth = paperNecking ? 1f : 0f;
+            if (!paperNecking) return;
+            float length = currentArc[currentArc.Length - 1];
+            paperWaist = NeckHyperbola.WaistRadius(length, rMin);
+            paperAxisSquared = NeckHyperbola.AxisSquared(length, rMin);
+            paperCenter = 0.5f * length;
+        }
+
+        private void DecideBreak()
+        {
+            RadiusSettings s = Settings;
+            breakReason = BreakReason.None;
+            if (!s.BreakEnabled || broken) return;
+            if (segmentStretch[defectSegment] - 1f >= s.BreakElongation) breakReason = BreakReason.Elongation;
+            else if (neckRadius < s.BreakRadiusFraction * restRadius) breakReason = BreakReason.NeckRadius;
+        }
+    }
+}
