@@ -1,6 +1,7 @@
 using System;
 using System.Diagnostics;
 using HookeRope.Mathematics;
+using HookeRope.Radius;
 using HookeRope.Solver;
 using UnityEngine;
 using Debug = UnityEngine.Debug;
@@ -100,6 +101,9 @@ namespace HookeRope
         [SerializeField, Tooltip("Form a neck at the defect once the radius falls below r_min. Needs the radius model.")]
         bool m_Necking = true;
 
+        [SerializeField, Tooltip("Zone: a neck over a few diameters around the defect that deepens smoothly (default). Paper: Chen et al.'s hyperbola over the whole length (eq. 18); at onset the waist jumps to about 2·r_min²/l.")]
+        NeckMode m_NeckMode = NeckMode.Zone;
+
         [SerializeField, Range(0.01f, 1f), Tooltip("Neck onset radius r_min as a fraction of the rest radius R (dimensionless, 0.01–1).")]
         float m_NeckRadiusFraction = 0.75f;
 
@@ -109,8 +113,11 @@ namespace HookeRope
         [SerializeField, Tooltip("Let the rope break. Off costs nothing.")]
         bool m_Fracture = true;
 
-        [SerializeField, Tooltip("Break threshold: the segment strain l/L − 1 (dimensionless) at which the rope breaks.")]
+        [SerializeField, Tooltip("Break threshold: the strain l/L − 1 (dimensionless) of the defect segment at which the rope breaks.")]
         float m_BreakStrain = 0.6f;
+
+        [SerializeField, Range(0f, 0.99f), Tooltip("The rope also breaks when the neck radius falls below this fraction of R (dimensionless, 0–0.99; 0 = off). Needs necking.")]
+        float m_BreakRadiusFraction = 0.25f;
 
         // ---- Events ---------------------------------------------------------------------------------------
         [SerializeField, Tooltip("Raised when the rope breaks, with the break position (world, m) and the peak tension just before it (N).")]
@@ -120,6 +127,7 @@ namespace HookeRope
         Rope _rope;
         RopeSettings _settings;
         readonly RopeColliderBinding _colliderBinding = new RopeColliderBinding();
+        readonly RopeRadiusBinding _radiusBinding = new RopeRadiusBinding();
         readonly Stopwatch _stopwatch = new Stopwatch();
         Action<RopeBreakEvent> _onCoreBroken;
         Vector3 _origin;
@@ -333,14 +341,36 @@ namespace HookeRope
             set { m_BreakStrain = RopeParameterLimits.Check(value, RopeParameterLimits.MinBreakStrain, RopeParameterLimits.MaxBreakStrain, nameof(BreakStrain), ""); ApplySettings(); }
         }
 
+        /// <summary>Neck model used when <see cref="Necking"/> is on (Zone or Paper).</summary>
+        public NeckMode NeckMode
+        {
+            get => m_NeckMode;
+            set
+            {
+                if (value != NeckMode.Zone && value != NeckMode.Paper) throw new ArgumentOutOfRangeException(nameof(NeckMode), value, "NeckMode must be Zone or Paper (turn necking off with Necking = false)");
+                m_NeckMode = value;
+                ApplySettings();
+            }
+        }
+
+        /// <summary>Neck radius below which the rope breaks, as a fraction of R, 0 … 0.99 (0 = off).</summary>
+        public float BreakRadiusFraction
+        {
+            get => m_BreakRadiusFraction;
+            set { m_BreakRadiusFraction = RopeParameterLimits.Check(value, 0f, 0.99f, nameof(BreakRadiusFraction), ""); ApplySettings(); }
+        }
+
+        /// <summary>The core radius model, or null when thinning, necking and fracture are all off.</summary>
+        public HookeRope.Radius.RadiusModel RadiusModelCore => _radiusBinding.Model;
+
         /// <summary>Whether the radius follows the Poisson ratio.</summary>
-        public bool RadiusModel { get => m_RadiusModel; set { m_RadiusModel = value; ApplySettings(); } }
+        public bool RadiusModel { get => m_RadiusModel; set { m_RadiusModel = value; ApplyFeatureToggles(); } }
 
         /// <summary>Whether a neck forms at the defect below r_min.</summary>
-        public bool Necking { get => m_Necking; set { m_Necking = value; ApplySettings(); } }
+        public bool Necking { get => m_Necking; set { m_Necking = value; ApplyFeatureToggles(); } }
 
         /// <summary>Whether the rope can break.</summary>
-        public bool Fracture { get => m_Fracture; set { m_Fracture = value; ApplySettings(); } }
+        public bool Fracture { get => m_Fracture; set { m_Fracture = value; ApplyFeatureToggles(); } }
 
         /// <summary>Start attachment. Changing what it points to takes effect at the next <see cref="Rebuild"/>.</summary>
         public RopeEnd StartAttachment => m_Start;
@@ -399,6 +429,12 @@ namespace HookeRope
             Report(RopeParameterLimits.Clamp(ref m_NeckRadiusFraction, RopeParameterLimits.MinNeckFraction, RopeParameterLimits.MaxNeckFraction, 0.75f, "Neck radius fraction r_min/R", ""));
             Report(RopeParameterLimits.Clamp(ref m_DefectPosition, 0f, 1f, 0.5f, "Defect position", ""));
             Report(RopeParameterLimits.Clamp(ref m_BreakStrain, RopeParameterLimits.MinBreakStrain, RopeParameterLimits.MaxBreakStrain, 0.6f, "Break strain", ""));
+            Report(RopeParameterLimits.Clamp(ref m_BreakRadiusFraction, 0f, 0.99f, 0.25f, "Break radius fraction", ""));
+            if (m_NeckMode != NeckMode.Zone && m_NeckMode != NeckMode.Paper)
+            {
+                m_NeckMode = NeckMode.Zone;
+                Report("Neck mode must be Zone or Paper; set to Zone (use the Necking toggle to turn necking off).");
+            }
             if (!m_Gravity.ToFloat3().IsFinite)
             {
                 m_Gravity = new Vector3(0f, -9.81f, 0f);
@@ -408,7 +444,7 @@ namespace HookeRope
             if (m_Colliders == null) m_Colliders = Array.Empty<Collider>();
             if (m_Planes == null) m_Planes = Array.Empty<Transform>();
             if (_rope == null) return;
-            if (_rope.SegmentCount != m_SegmentCount) _rebuildPending = true;
+            if (_rope.SegmentCount != m_SegmentCount || (_radiusBinding.Model != null) != RadiusFeaturesOn) _rebuildPending = true;
             else ApplySettings();
         }
 
@@ -437,6 +473,8 @@ namespace HookeRope
             AttachEnd(m_End, last, ref _endPin, ref _endLoad);
 
             RegisterColliders();
+            WriteRadiusSettings(_radiusBinding.Settings);
+            _radiusBinding.Build(_rope, m_Radius, RadiusFeaturesOn);
 
             _onCoreBroken ??= OnCoreBroken;
             _rope.Broken += _onCoreBroken;
@@ -472,6 +510,7 @@ namespace HookeRope
             Array.Copy(_current, _previous, _current.Length);
             _stopwatch.Restart();
             var report = _rope.Step(deltaTime);
+            _radiusBinding.Update(_rope);
             _stopwatch.Stop();
             StepMilliseconds = (float)_stopwatch.Elapsed.TotalMilliseconds;
             Residual = report.Residual;
@@ -534,6 +573,21 @@ namespace HookeRope
         {
             if (_rope == null) return m_Radius;
             return _rope.ParticleRadius[particle];
+        }
+
+        /// <summary>
+        /// Fills <paramref name="radii"/> (m) with the rope radius at the given ring stations (segment index and
+        /// fraction along it): the radius model's profile (Poisson, neck) when it is on, else the rest radius.
+        /// </summary>
+        public void FillRingRadii(ReadOnlySpan<int> ringSegments, ReadOnlySpan<float> ringFractions, Span<float> radii)
+        {
+            var model = _radiusBinding.Model;
+            if (model != null && model.SegmentCount == (_rope?.SegmentCount ?? -1))
+            {
+                model.FillRingRadii(ringSegments, ringFractions, radii);
+                return;
+            }
+            for (int k = 0; k < ringSegments.Length; k++) radii[k] = m_Radius;
         }
 
         /// <summary>True when segment <paramref name="segment"/> has broken.</summary>
@@ -601,12 +655,35 @@ namespace HookeRope
             settings.Iterations = m_Iterations;
             settings.Solver = m_Solver;
             settings.Tension = m_TensionModel;
-            settings.BreakStrain = m_Fracture ? m_BreakStrain : float.PositiveInfinity;
+            settings.BreakStrain = float.PositiveInfinity;
+        }
+
+        /// <summary>True when any radius-model feature (thinning, necking, fracture) is on; all off costs nothing per step.</summary>
+        bool RadiusFeaturesOn => m_RadiusModel || m_Necking || m_Fracture;
+
+        /// <summary>Writes the thinning, necking and break settings into the core radius settings.</summary>
+        void WriteRadiusSettings(RadiusSettings settings)
+        {
+            settings.PoissonEnabled = m_RadiusModel;
+            settings.PoissonRatio = m_PoissonRatio;
+            settings.RMinFraction = m_NeckRadiusFraction;
+            settings.NeckMode = m_Necking ? m_NeckMode : NeckMode.Off;
+            settings.DefectPosition = m_DefectPosition;
+            settings.BreakEnabled = m_Fracture;
+            settings.BreakElongation = m_BreakStrain;
+            settings.BreakRadiusFraction = m_Necking ? m_BreakRadiusFraction : 0f;
         }
 
         void ApplySettings()
         {
             if (_settings != null) WriteSettings(_settings);
+            if (_rope != null) WriteRadiusSettings(_radiusBinding.Settings);
+        }
+
+        void ApplyFeatureToggles()
+        {
+            if (_rope != null && (_radiusBinding.Model != null) != RadiusFeaturesOn) _rebuildPending = true;
+            ApplySettings();
         }
 
         void AttachEnd(RopeEnd end, int particle, ref int pin, ref int load)
@@ -713,8 +790,16 @@ namespace HookeRope
             float minRadius = float.PositiveInfinity;
             for (int i = 0; i < radii.Length; i++) if (radii[i] < minRadius) minRadius = radii[i];
             MinRadius = radii.Length > 0 ? minRadius : m_Radius;
-            int defect = (int)Math.Round(m_DefectPosition * (radii.Length - 1));
-            NeckRadius = radii.Length > 0 ? radii[defect] : m_Radius;
+            var model = _radiusBinding.Model;
+            if (model != null)
+            {
+                NeckRadius = model.NeckRadius;
+                if (model.MinRadius < MinRadius) MinRadius = model.MinRadius;
+            }
+            else
+            {
+                NeckRadius = m_Radius;
+            }
 
             ArrestForce = _endLoad >= 0 ? _rope.GetLoadForce(_endLoad).Length : BottomTension;
             if (ArrestForce > PeakArrestForce) PeakArrestForce = ArrestForce;

@@ -11,6 +11,29 @@ namespace HookeRope
     /// </summary>
     public static class RopeDefaultMaterial
     {
+        /// <summary>Render queue of alpha-tested geometry (Unity's AlphaTest queue).</summary>
+        const int AlphaTestQueue = 2450;
+
+        /// <summary>
+        /// Creates the burr-strand material: <see cref="Create"/> with <paramref name="burrTexture"/> and alpha
+        /// clipping turned on the way each pipeline's lit shader expects it (_ALPHATEST_ON with _Cutoff for
+        /// Built-in Standard, _AlphaClip for URP Lit, _AlphaCutoffEnable/_AlphaCutoff for HDRP Lit; unknown
+        /// properties are ignored), so only the texture's triangles are drawn. Null when no shader is available.
+        /// </summary>
+        public static Material CreateBurr(Texture burrTexture)
+        {
+            var material = Create(burrTexture);
+            if (material == null) return null;
+            material.name = "Elastic Rope Burr (generated)";
+            material.EnableKeyword("_ALPHATEST_ON");
+            material.SetFloat("_Cutoff", 0.5f);
+            material.SetFloat("_AlphaClip", 1f);
+            material.SetFloat("_AlphaCutoffEnable", 1f);
+            material.SetFloat("_AlphaCutoff", 0.5f);
+            material.renderQueue = AlphaTestQueue;
+            return material;
+        }
+
         /// <summary>Creates the material (caller owns and destroys it), or null when no suitable shader is available.</summary>
         public static Material Create(Texture texture)
         {

@@ -12,6 +12,15 @@ namespace UnityEngine
         /// <summary>The material's texture.</summary>
         public Texture mainTexture { get => throw Shim.NotRun; set => throw Shim.NotRun; }
 
+        /// <summary>Render queue of this material.</summary>
+        public int renderQueue { get => throw Shim.NotRun; set => throw Shim.NotRun; }
+
+        /// <summary>Sets a named float value.</summary>
+        public void SetFloat(string name, float value) => throw Shim.NotRun;
+
+        /// <summary>Enables a local shader keyword for this material.</summary>
+        public void EnableKeyword(string keyword) => throw Shim.NotRun;
+
         /// <summary>The main color of the Material.</summary>
         public Color color { get => throw Shim.NotRun; set => throw Shim.NotRun; }
     }

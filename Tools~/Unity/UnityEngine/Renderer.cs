@@ -8,5 +8,8 @@ namespace UnityEngine
 
         /// <summary>The shared material of this object.</summary>
         public Material sharedMaterial { get => throw Shim.NotRun; set => throw Shim.NotRun; }
+
+        /// <summary>All the shared materials of this object.</summary>
+        public Material[] sharedMaterials { get => throw Shim.NotRun; set => throw Shim.NotRun; }
     }
 }
