@@ -14,6 +14,9 @@ namespace HookeRope.Solver
         // particles (rope-local metres, m/s, kg, 1/kg)
         public readonly float[] X, Y, Z;
         public readonly float[] PrevX, PrevY, PrevZ;
+        // displacement over the current substep: live position = Prev + D. Kept separately so that
+        // velocities D/h keep full float precision however small h is.
+        public readonly float[] DX, DY, DZ;
         public readonly float[] VelX, VelY, VelZ;
         public readonly float[] Mass;
         public readonly float[] InverseMass;
@@ -41,6 +44,7 @@ namespace HookeRope.Solver
             int n = ParticleCount, s = segmentCount;
             X = new float[n]; Y = new float[n]; Z = new float[n];
             PrevX = new float[n]; PrevY = new float[n]; PrevZ = new float[n];
+            DX = new float[n]; DY = new float[n]; DZ = new float[n];
             VelX = new float[n]; VelY = new float[n]; VelZ = new float[n];
             Mass = new float[n]; InverseMass = new float[n]; LoadMass = new float[n];
             Kinematic = new bool[n]; Radius = new float[n];
@@ -53,10 +57,12 @@ namespace HookeRope.Solver
             Active = new bool[s];
         }
 
-        /// <summary>Unit direction of segment j into (nx, ny, nz) and its length; keeps the last valid direction when the ends coincide.</summary>
+        /// <summary>Unit direction of segment j (live positions Prev + D) into (nx, ny, nz) and its length; keeps the last valid direction when the ends coincide.</summary>
         public float Direction(int j, out float nx, out float ny, out float nz)
         {
-            float dx = X[j + 1] - X[j], dy = Y[j + 1] - Y[j], dz = Z[j + 1] - Z[j];
+            float dx = (PrevX[j + 1] - PrevX[j]) + (DX[j + 1] - DX[j]);
+            float dy = (PrevY[j + 1] - PrevY[j]) + (DY[j + 1] - DY[j]);
+            float dz = (PrevZ[j + 1] - PrevZ[j]) + (DZ[j + 1] - DZ[j]);
             float len = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
             if (len > 1e-12f && float.IsFinite(len))
             {

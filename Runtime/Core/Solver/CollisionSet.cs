@@ -79,20 +79,21 @@ namespace HookeRope.Solver
                 float r = c.Radius[i];
                 for (int k = 0; k < Count; k++)
                 {
-                    var x = new Float3(c.X[i], c.Y[i], c.Z[i]);
+                    var d = new Float3(c.DX[i], c.DY[i], c.DZ[i]);
+                    var x = new Float3(c.PrevX[i], c.PrevY[i], c.PrevZ[i]) + d;
                     float distance = SignedDistance(k, x, out Float3 normal);
                     float push = r - distance;
                     if (!(push > 0f)) continue;
-                    x += normal * push;
+                    d += normal * push;
                     if (friction && shapes[k].Friction > 0f)
                     {
-                        var moved = new Float3(x.X - c.PrevX[i], x.Y - c.PrevY[i], x.Z - c.PrevZ[i]) - velocity[k] * h;
+                        Float3 moved = d - velocity[k] * h;
                         Float3 tangent = moved - normal * Float3.Dot(moved, normal);
                         float slide = tangent.Length;
                         float limit = shapes[k].Friction * push;
-                        if (slide > 0f) x -= slide <= limit ? tangent : tangent * (limit / slide);
+                        if (slide > 0f) d -= slide <= limit ? tangent : tangent * (limit / slide);
                     }
-                    c.X[i] = x.X; c.Y[i] = x.Y; c.Z[i] = x.Z;
+                    c.DX[i] = d.X; c.DY[i] = d.Y; c.DZ[i] = d.Z;
                 }
             }
         }

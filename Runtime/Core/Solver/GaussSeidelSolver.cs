@@ -24,9 +24,7 @@ namespace HookeRope.Solver
                 double rel = 0.0;
                 if (g > 0.0)
                 {
-                    rel = nx * ((c.X[j + 1] - c.PrevX[j + 1]) - (c.X[j] - c.PrevX[j]))
-                        + ny * ((c.Y[j + 1] - c.PrevY[j + 1]) - (c.Y[j] - c.PrevY[j]))
-                        + nz * ((c.Z[j + 1] - c.PrevZ[j + 1]) - (c.Z[j] - c.PrevZ[j]));
+                    rel = nx * (c.DX[j + 1] - c.DX[j]) + ny * (c.DY[j + 1] - c.DY[j]) + nz * (c.DZ[j + 1] - c.DZ[j]);
                 }
                 double constraint = (double)len - c.RestLength[j];
                 double d = (-constraint - alphaTilde * lambda[j] - g * rel) / ((1.0 + g) * wSum + alphaTilde);
@@ -34,8 +32,8 @@ namespace HookeRope.Solver
                 if (d == 0.0) continue;
                 lambda[j] += d;
                 float a = (float)(w[j] * d), b = (float)(w[j + 1] * d);
-                c.X[j] -= nx * a; c.Y[j] -= ny * a; c.Z[j] -= nz * a;
-                c.X[j + 1] += nx * b; c.Y[j + 1] += ny * b; c.Z[j + 1] += nz * b;
+                c.DX[j] -= nx * a; c.DY[j] -= ny * a; c.DZ[j] -= nz * a;
+                c.DX[j + 1] += nx * b; c.DY[j + 1] += ny * b; c.DZ[j + 1] += nz * b;
             }
         }
     }

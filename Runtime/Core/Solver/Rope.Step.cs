@@ -79,12 +79,13 @@ namespace HookeRope.Solver
             float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
             float[] vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ;
             bool[] kinematic = chain.Kinematic;
+            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
             for (int i = 0; i < n; i++)
             {
                 px[i] = x[i]; py[i] = y[i]; pz[i] = z[i];
-                if (kinematic[i]) continue;
+                if (kinematic[i]) { dx[i] = 0f; dy[i] = 0f; dz[i] = 0f; continue; }
                 vx[i] += gx; vy[i] += gy; vz[i] += gz;
-                x[i] += vx[i] * h; y[i] += vy[i] * h; z[i] += vz[i] * h;
+                dx[i] = vx[i] * h; dy[i] = vy[i] * h; dz[i] = vz[i] * h;
             }
         }
 
@@ -95,7 +96,9 @@ namespace HookeRope.Solver
                 if (pinBroken[p] || pinCompliance[p] != 0f) continue;
                 int i = pinParticle[p];
                 Float3 target = Float3.Lerp(pinStart[p], pinEnd[p], t);
-                chain.X[i] = target.X; chain.Y[i] = target.Y; chain.Z[i] = target.Z;
+                chain.DX[i] = target.X - chain.PrevX[i];
+                chain.DY[i] = target.Y - chain.PrevY[i];
+                chain.DZ[i] = target.Z - chain.PrevZ[i];
             }
         }
 
@@ -113,11 +116,11 @@ namespace HookeRope.Solver
                 // the target moves across the substeps like a rigid pin's
                 Float3 target = Float3.Lerp(pinStart[p], pinEnd[p], t);
                 int b = 3 * p;
-                double dx = (-((double)chain.X[i] - target.X) - alphaTilde * pinLambda[b]) / denominator;
-                double dy = (-((double)chain.Y[i] - target.Y) - alphaTilde * pinLambda[b + 1]) / denominator;
-                double dz = (-((double)chain.Z[i] - target.Z) - alphaTilde * pinLambda[b + 2]) / denominator;
+                double dx = (-((double)chain.PrevX[i] - target.X + chain.DX[i]) - alphaTilde * pinLambda[b]) / denominator;
+                double dy = (-((double)chain.PrevY[i] - target.Y + chain.DY[i]) - alphaTilde * pinLambda[b + 1]) / denominator;
+                double dz = (-((double)chain.PrevZ[i] - target.Z + chain.DZ[i]) - alphaTilde * pinLambda[b + 2]) / denominator;
                 pinLambda[b] += dx; pinLambda[b + 1] += dy; pinLambda[b + 2] += dz;
-                chain.X[i] += (float)(w * dx); chain.Y[i] += (float)(w * dy); chain.Z[i] += (float)(w * dz);
+                chain.DX[i] += (float)(w * dx); chain.DY[i] += (float)(w * dy); chain.DZ[i] += (float)(w * dz);
             }
         }
 
@@ -127,11 +130,14 @@ namespace HookeRope.Solver
             float invH = 1f / h;
             float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
             float[] vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ;
+            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
             for (int i = 0; i < n; i++)
             {
-                float ux = (x[i] - px[i]) * invH, uy = (y[i] - py[i]) * invH, uz = (z[i] - pz[i]) * invH;
-                if (float.IsFinite(ux + uy + uz))
+                float ux = dx[i] * invH, uy = dy[i] * invH, uz = dz[i] * invH;
+                float nx = px[i] + dx[i], ny = py[i] + dy[i], nz = pz[i] + dz[i];
+                if (float.IsFinite(ux + uy + uz) && float.IsFinite(nx + ny + nz))
                 {
+                    x[i] = nx; y[i] = ny; z[i] = nz;
                     vx[i] = ux; vy[i] = uy; vz[i] = uz;
                 }
                 else
