@@ -737,10 +737,10 @@ namespace HookeRope
             switch (m_CollisionMode)
             {
                 case RopeCollisionMode.Off:
-                    _colliderBinding.Register(_rope, Array.Empty<Collider>(), 0, Array.Empty<Transform>(), _origin, m_Friction, this);
+                    _colliderBinding.Register(_rope, Array.Empty<Collider>(), 0, Array.Empty<Transform>(), _origin, m_Friction, m_Start.Body, m_End.Body, this);
                     break;
                 case RopeCollisionMode.ListedColliders:
-                    _colliderBinding.Register(_rope, m_Colliders, m_Colliders.Length, m_Planes, _origin, m_Friction, this);
+                    _colliderBinding.Register(_rope, m_Colliders, m_Colliders.Length, m_Planes, _origin, m_Friction, m_Start.Body, m_End.Body, this);
                     break;
                 case RopeCollisionMode.LayerMask:
                 {
@@ -749,7 +749,7 @@ namespace HookeRope
                     Vector3 center = (start + end) * 0.5f;
                     float reach = m_RestLength * (1f + (m_Fracture ? m_BreakStrain : 1f)) + m_Radius;
                     int count = Physics.OverlapSphereNonAlloc(center, reach, _overlapBuffer, m_CollisionLayers, QueryTriggerInteraction.Ignore);
-                    _colliderBinding.Register(_rope, _overlapBuffer, count, m_Planes, _origin, m_Friction, this);
+                    _colliderBinding.Register(_rope, _overlapBuffer, count, m_Planes, _origin, m_Friction, m_Start.Body, m_End.Body, this);
                     break;
                 }
             }

@@ -25,8 +25,13 @@ namespace HookeRope
         /// <summary>Number of shapes registered with the rope.</summary>
         public int Count => _colliderCount + _planeCount;
 
-        /// <summary>Registers every supported collider and plane; unsupported colliders (mesh, terrain…) are skipped and reported.</summary>
-        public void Register(Rope rope, Collider[] colliders, int colliderCount, Transform[] planes, Vector3 origin, float friction, UnityEngine.Object context)
+        /// <summary>
+        /// Registers every supported collider and plane; unsupported colliders (mesh, terrain…) are skipped and
+        /// reported, triggers and colliders of the rope's own attached bodies (<paramref name="ownBodyA"/>,
+        /// <paramref name="ownBodyB"/>) are skipped silently.
+        /// </summary>
+        public void Register(Rope rope, Collider[] colliders, int colliderCount, Transform[] planes, Vector3 origin, float friction,
+            Rigidbody ownBodyA, Rigidbody ownBodyB, UnityEngine.Object context)
         {
             _colliders = new Collider[colliderCount];
             _colliderIds = new int[colliderCount];
@@ -35,6 +40,8 @@ namespace HookeRope
             {
                 var collider = colliders[i];
                 if (collider == null || collider.isTrigger) continue;
+                var body = collider.attachedRigidbody;
+                if (body != null && (body == ownBodyA || body == ownBodyB)) continue;
                 if (!TryShape(collider, origin, friction, out var shape))
                 {
                     Debug.LogWarning("ElasticRope: collider '" + collider.name + "' is not a Sphere, Capsule or Box collider; the rope ignores it.", context);
