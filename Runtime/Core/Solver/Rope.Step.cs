@@ -29,6 +29,7 @@ namespace HookeRope.Solver
             bool exact = settings.Solver == ConstraintSolverKind.ExactChain;
             Float3 g = settings.Gravity;
             bool hasColliders = colliders.Count > 0;
+            bool polish = true;
 
             for (int l = 0; l < loadCount; l++)
             {
@@ -47,7 +48,7 @@ namespace HookeRope.Solver
                 for (int it = 0; it < iterations; it++)
                 {
                     if (exact) ExactChainSolver.Iterate(chain, hd, beta, tensionOnly);
-                    else GaussSeidelSolver.Iterate(chain, hd, beta, tensionOnly);
+                    if (!exact || polish) GaussSeidelSolver.Iterate(chain, hd, beta, tensionOnly);
                     if (pinCount > 0) ProjectCompliantPins(hd, t);
                     if (hasColliders) colliders.Project(chain, h, it == iterations - 1);
                 }

@@ -181,20 +181,37 @@ namespace HookeRope.Solver
         }
 
         /// <summary>
-        /// Total mechanical energy in joules: kinetic Σ½m|v|² + gravitational −Σ m g·x (rope-local x) +
-        /// elastic Σ½C²/α over the loaded segments (and compliant pins). For tests and the lab.
+        /// Total mechanical energy in joules: <see cref="KineticEnergy"/> + <see cref="GravitationalEnergy"/> +
+        /// <see cref="ElasticEnergy"/>. For tests and the lab.
         /// </summary>
-        public double TotalEnergy()
+        public double TotalEnergy() => KineticEnergy() + GravitationalEnergy() + ElasticEnergy();
+
+        /// <summary>Kinetic energy Σ½m|v|² in joules (particles with their loads).</summary>
+        public double KineticEnergy()
+        {
+            double e = 0.0;
+            for (int i = 0; i < chain.ParticleCount; i++)
+            {
+                double vx = chain.VelX[i], vy = chain.VelY[i], vz = chain.VelZ[i];
+                e += 0.5 * chain.Mass[i] * (vx * vx + vy * vy + vz * vz);
+            }
+            return e;
+        }
+
+        /// <summary>Gravitational energy −Σ m g·x in joules, zero at the rope-local origin (<see cref="Origin"/>).</summary>
+        public double GravitationalEnergy()
         {
             double e = 0.0;
             Float3 g = settings.Gravity;
             for (int i = 0; i < chain.ParticleCount; i++)
-            {
-                double m = chain.Mass[i];
-                double vx = chain.VelX[i], vy = chain.VelY[i], vz = chain.VelZ[i];
-                e += 0.5 * m * (vx * vx + vy * vy + vz * vz);
-                e -= m * ((double)g.X * chain.X[i] + (double)g.Y * chain.Y[i] + (double)g.Z * chain.Z[i]);
-            }
+                e -= chain.Mass[i] * ((double)g.X * chain.X[i] + (double)g.Y * chain.Y[i] + (double)g.Z * chain.Z[i]);
+            return e;
+        }
+
+        /// <summary>Elastic energy Σ½C²/α in joules over the loaded segments (stretched ones for a tension-only rope) and compliant pins.</summary>
+        public double ElasticEnergy()
+        {
+            double e = 0.0;
             bool tensionOnly = settings.Tension == TensionModel.TensionOnly;
             for (int j = 0; j < chain.SegmentCount; j++)
             {
@@ -204,8 +221,7 @@ namespace HookeRope.Solver
                 if (tensionOnly && c < 0.0) continue;
                 e += 0.5 * c * c / chain.Compliance[j];
             }
-            e += PinEnergy();
-            return e;
+            return e + PinEnergy();
         }
 
         private void UpdateMass(int i, float mu)
