@@ -1,0 +1,108 @@
+using System;
+using System.Collections.Generic;
+using HookeRope.Geometry;
+
+namespace HookeRope.Tests.Core.Geometry
+{
+    /// <summary>Topology and geometry measurements of a built mesh, for the tests.</summary>
+    internal static class MeshChecks
+    {
+        /// <summary>Maps every vertex to the first vertex with exactly the same position.</summary>
+        public static int[] Weld(TubeVertex[] vertices, int count)
+        {
+            var first = new Dictionary<(float, float, float), int>();
+            var map = new int[count];
+            for (int i = 0; i < count; i++)
+            {
+                var key = (vertices[i].PX, vertices[i].PY, vertices[i].PZ);
+                if (!first.TryGetValue(key, out int w)) { w = i; first.Add(key, i); }
+                map[i] = w;
+            }
+            return map;
+        }
+
+        /// <summary>
+        /// Welds by position, then counts: distinct vertices V, undirected edges E, triangles F; edges not shared
+        /// by exactly two triangles; directed edges used twice (inconsistent winding).
+        /// </summary>
+        public static void Topology(TubeVertex[] vertices, int vertexCount, int[] indices, int start, int count,
+            out int v, out int e, out int f, out int badEdges, out int badDirections)
+        {
+            int[] map = Weld(vertices, vertexCount);
+            var used = new HashSet<int>();
+            var undirected = new Dictionary<(int, int), int>();
+            var directed = new Dictionary<(int, int), int>();
+            f = count / 3;
+            for (int t = start; t < start + count; t += 3)
+            {
+                for (int s = 0; s < 3; s++)
+                {
+                    int a = map[indices[t + s]], b = map[indices[t + (s + 1) % 3]];
+                    used.Add(a);
+                    var key = a < b ? (a, b) : (b, a);
+                    undirected.TryGetValue(key, out int c);
+                    undirected[key] = c + 1;
+                    directed.TryGetValue((a, b), out int d);
+                    directed[(a, b)] = d + 1;
+                }
+            }
+            v = used.Count;
+            e = undirected.Count;
+            badEdges = 0;
+            foreach (var pair in undirected) if (pair.Value != 2) badEdges++;
+            badDirections = 0;
+            foreach (var pair in directed) if (pair.Value != 1) badDirections++;
+        }
+
+        /// <summary>Signed volume in m³ enclosed by the triangles (positive for outward winding).</summary>
+        public static double Volume(TubeVertex[] vertices, int[] indices, int start, int count)
+        {
+            double sum = 0.0;
+            for (int t = start; t < start + count; t += 3)
+            {
+                TubeVertex a = vertices[indices[t]], b = vertices[indices[t + 1]], c = vertices[indices[t + 2]];
+                double cx = (double)b.PY * c.PZ - (double)b.PZ * c.PY;
+                double cy = (double)b.PZ * c.PX - (double)b.PX * c.PZ;
+                double cz = (double)b.PX * c.PY - (double)b.PY * c.PX;
+                sum += a.PX * cx + a.PY * cy + a.PZ * cz;
+            }
+            return sum / 6.0;
+        }
+
+        /// <summary>Smallest triangle area in m² and the smallest cosine between a face normal (from the winding) and its vertices' normals.</summary>
+        public static void Faces(TubeVertex[] vertices, int[] indices, int start, int count, out double smallestArea, out double worstAlignment)
+        {
+            smallestArea = double.MaxValue;
+            worstAlignment = 1.0;
+            for (int t = start; t < start + count; t += 3)
+            {
+                TubeVertex a = vertices[indices[t]], b = vertices[indices[t + 1]], c = vertices[indices[t + 2]];
+                double ux = b.PX - a.PX, uy = b.PY - a.PY, uz = b.PZ - a.PZ;
+                double wx = c.PX - a.PX, wy = c.PY - a.PY, wz = c.PZ - a.PZ;
+                double nx = uy * wz - uz * wy, ny = uz * wx - ux * wz, nz = ux * wy - uy * wx;
+                double length = Math.Sqrt(nx * nx + ny * ny + nz * nz);
+                smallestArea = Math.Min(smallestArea, 0.5 * length);
+                if (length > 0.0)
+                {
+                    double mx = a.NX + b.NX + c.NX, my = a.NY + b.NY + c.NY, mz = a.NZ + b.NZ + c.NZ;
+                    double m = Math.Sqrt(mx * mx + my * my + mz * mz);
+                    if (m > 0.0) worstAlignment = Math.Min(worstAlignment, (nx * mx + ny * my + nz * mz) / (length * m));
+                }
+            }
+        }
+
+        /// <summary>True when every float of the first <paramref name="count"/> vertices is finite and every normal and tangent is unit length within 1e-3.</summary>
+        public static bool AllFiniteAndUnit(TubeVertex[] vertices, int count)
+        {
+            for (int i = 0; i < count; i++)
+            {
+                TubeVertex v = vertices[i];
+                float[] all = { v.PX, v.PY, v.PZ, v.NX, v.NY, v.NZ, v.TX, v.TY, v.TZ, v.TW, v.U, v.V };
+                foreach (float value in all) if (!float.IsFinite(value)) return false;
+                if (Math.Abs(Math.Sqrt(v.NX * v.NX + v.NY * v.NY + v.NZ * v.NZ) - 1.0) > 1e-3) return false;
+                if (Math.Abs(Math.Sqrt(v.TX * v.TX + v.TY * v.TY + v.TZ * v.TZ) - 1.0) > 1e-3) return false;
+            }
+            return true;
+        }
+    }
+}
