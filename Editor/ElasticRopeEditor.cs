@@ -20,7 +20,7 @@ namespace HookeRope.Editor
         SerializedProperty m_Solver, m_Substeps, m_Iterations, m_TensionModel, m_Gravity;
         SerializedProperty m_Start, m_End, m_AttachmentCompliance;
         SerializedProperty m_CollisionMode, m_Colliders, m_CollisionLayers, m_Planes, m_Friction;
-        SerializedProperty m_RadiusModel, m_Necking, m_NeckRadiusFraction, m_DefectPosition, m_Fracture, m_BreakStrain, m_OnBreak;
+        SerializedProperty m_RadiusModel, m_Necking, m_NeckMode, m_NeckRadiusFraction, m_DefectPosition, m_Fracture, m_BreakStrain, m_BreakRadiusFraction, m_OnBreak;
 
         void OnEnable()
         {
@@ -49,10 +49,12 @@ namespace HookeRope.Editor
             m_Friction = so.FindProperty(nameof(m_Friction));
             m_RadiusModel = so.FindProperty(nameof(m_RadiusModel));
             m_Necking = so.FindProperty(nameof(m_Necking));
+            m_NeckMode = so.FindProperty(nameof(m_NeckMode));
             m_NeckRadiusFraction = so.FindProperty(nameof(m_NeckRadiusFraction));
             m_DefectPosition = so.FindProperty(nameof(m_DefectPosition));
             m_Fracture = so.FindProperty(nameof(m_Fracture));
             m_BreakStrain = so.FindProperty(nameof(m_BreakStrain));
+            m_BreakRadiusFraction = so.FindProperty(nameof(m_BreakRadiusFraction));
             m_OnBreak = so.FindProperty(nameof(m_OnBreak));
         }
 
@@ -108,17 +110,19 @@ namespace HookeRope.Editor
                     Field(m_Friction);
                 }
             }
-            if (Section(ref s_Fracture, "Radius, Necking and Fracture"))
+            if (Section(ref s_Fracture, "Fracture (thinning, necking, break)"))
             {
                 Field(m_RadiusModel);
-                EditorGUI.BeginDisabledGroup(!m_RadiusModel.boolValue);
                 Field(m_Necking);
+                EditorGUI.BeginDisabledGroup(!m_Necking.boolValue);
+                Field(m_NeckMode);
                 Field(m_NeckRadiusFraction);
-                Field(m_DefectPosition);
                 EditorGUI.EndDisabledGroup();
+                Field(m_DefectPosition);
                 Field(m_Fracture);
                 EditorGUI.BeginDisabledGroup(!m_Fracture.boolValue);
                 Field(m_BreakStrain);
+                Field(m_BreakRadiusFraction);
                 EditorGUI.EndDisabledGroup();
                 EditorGUILayout.PropertyField(m_OnBreak, true);
             }

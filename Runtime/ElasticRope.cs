@@ -596,10 +596,11 @@ namespace HookeRope
         /// <summary>
         /// Computes the static sag of the current settings between the current attachment positions without
         /// entering Play (for the inspector's preview button): a separate core rope relaxes for
-        /// <paramref name="seconds"/> of simulated time with its velocities cleared every step, so it settles
-        /// into the static shape. The result is in <see cref="StaticSagPreview"/> (world, m).
+        /// <paramref name="seconds"/> of simulated time with its velocities scaled by 0.85 every 1/60 s step (a
+        /// near-critical damping of the swing of a metre-scale rope), so it settles into the static shape; long
+        /// ropes swing slowly and need more seconds. The result is in <see cref="StaticSagPreview"/> (world, m).
         /// </summary>
-        public Vector3[] PreviewStaticSag(float seconds = 4f)
+        public Vector3[] PreviewStaticSag(float seconds = 6f)
         {
             if (!(seconds > 0f) || float.IsInfinity(seconds))
                 throw new ArgumentOutOfRangeException(nameof(seconds), seconds, "seconds must be in (0, +inf)");
@@ -618,7 +619,7 @@ namespace HookeRope
             for (int s = 0; s < steps; s++)
             {
                 rope.Step(dt);
-                for (int i = 0; i <= last; i++) rope.SetVelocity(i, Float3.Zero);
+                for (int i = 0; i <= last; i++) rope.SetVelocity(i, rope.GetVelocity(i) * 0.85f);
             }
             if (_preview.Length != rope.ParticleCount) _preview = new Vector3[rope.ParticleCount];
             for (int i = 0; i <= last; i++) _preview[i] = start + rope.GetPosition(i).ToVector3();
