@@ -40,6 +40,9 @@ namespace HookeRope
         [SerializeField, Tooltip("Generate the burr-strand material with the procedural burr texture when the renderer has no second material.")]
         bool m_BurrTexture = true;
 
+        [SerializeField, Tooltip("Colour of the generated tube material (used only when the renderer has no material). Safety orange by default.")]
+        Color m_Color = new Color(0.93f, 0.5f, 0.12f, 1f);
+
         ElasticRope _rope;
         MeshFilter _filter;
         MeshRenderer _renderer;
@@ -134,6 +137,7 @@ namespace HookeRope
             if (tube == null)
             {
                 _generatedMaterial = RopeDefaultMaterial.Create(null);
+                if (_generatedMaterial != null) _generatedMaterial.color = m_Color;
                 tube = _generatedMaterial;
             }
             if (burr == null)
