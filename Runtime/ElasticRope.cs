@@ -127,7 +127,8 @@ namespace HookeRope
         Rope _rope;
         RopeSettings _settings;
         readonly RopeColliderBinding _colliderBinding = new RopeColliderBinding();
-        readonly RopeRadiusBinding _radiusBinding = new RopeRadiusBinding();
+        readonly RadiusSettings _radiusSettings = new RadiusSettings();
+        RopeSimulation _simulation;
         readonly Stopwatch _stopwatch = new Stopwatch();
         Action<RopeBreakEvent> _onCoreBroken;
         Vector3 _origin;
@@ -361,7 +362,10 @@ namespace HookeRope
         }
 
         /// <summary>The core radius model, or null when thinning, necking and fracture are all off.</summary>
-        public HookeRope.Radius.RadiusModel RadiusModelCore => _radiusBinding.Model;
+        public HookeRope.Radius.RadiusModel RadiusModelCore => _simulation?.RadiusModel;
+
+        /// <summary>The core facade (solver rope + radius model), or null before the first build.</summary>
+        public RopeSimulation Simulation => _simulation;
 
         /// <summary>Whether the radius follows the Poisson ratio.</summary>
         public bool RadiusModel { get => m_RadiusModel; set { m_RadiusModel = value; ApplyFeatureToggles(); } }
@@ -444,7 +448,7 @@ namespace HookeRope
             if (m_Colliders == null) m_Colliders = Array.Empty<Collider>();
             if (m_Planes == null) m_Planes = Array.Empty<Transform>();
             if (_rope == null) return;
-            if (_rope.SegmentCount != m_SegmentCount || (_radiusBinding.Model != null) != RadiusFeaturesOn) _rebuildPending = true;
+            if (_rope.SegmentCount != m_SegmentCount || (_simulation.RadiusSettings != null) != RadiusFeaturesOn) _rebuildPending = true;
             else ApplySettings();
         }
 
@@ -465,7 +469,8 @@ namespace HookeRope
             Vector3 start = m_Start.WorldPosition(here);
             Vector3 end = m_End.WorldPosition(new Vector3(start.x, start.y - m_RestLength, start.z));
             _origin = start;
-            _rope = new Rope(_settings, Sim(start), Sim(end));
+            var rope = new Rope(_settings, Sim(start), Sim(end));
+            _rope = rope;
             int last = _rope.ParticleCount - 1;
 
             _startPin = _endPin = _startLoad = _endLoad = -1;
@@ -473,8 +478,8 @@ namespace HookeRope
             AttachEnd(m_End, last, ref _endPin, ref _endLoad);
 
             RegisterColliders();
-            WriteRadiusSettings(_radiusBinding.Settings);
-            _radiusBinding.Build(_rope, m_Radius, RadiusFeaturesOn);
+            WriteRadiusSettings(_radiusSettings);
+            _simulation = new RopeSimulation(rope, RadiusFeaturesOn ? _radiusSettings : null);
 
             _onCoreBroken ??= OnCoreBroken;
             _rope.Broken += _onCoreBroken;
@@ -509,8 +514,7 @@ namespace HookeRope
 
             Array.Copy(_current, _previous, _current.Length);
             _stopwatch.Restart();
-            var report = _rope.Step(deltaTime);
-            _radiusBinding.Update(_rope);
+            var report = _simulation.Step(deltaTime);
             _stopwatch.Stop();
             StepMilliseconds = (float)_stopwatch.Elapsed.TotalMilliseconds;
             Residual = report.Residual;
@@ -581,8 +585,8 @@ namespace HookeRope
         /// </summary>
         public void FillRingRadii(ReadOnlySpan<int> ringSegments, ReadOnlySpan<float> ringFractions, Span<float> radii)
         {
-            var model = _radiusBinding.Model;
-            if (model != null && model.SegmentCount == (_rope?.SegmentCount ?? -1))
+            var model = _simulation?.RadiusModel;
+            if (model != null && model.IsActive && model.SegmentCount == _rope.SegmentCount)
             {
                 model.FillRingRadii(ringSegments, ringFractions, radii);
                 return;
@@ -678,12 +682,12 @@ namespace HookeRope
         void ApplySettings()
         {
             if (_settings != null) WriteSettings(_settings);
-            if (_rope != null) WriteRadiusSettings(_radiusBinding.Settings);
+            if (_rope != null) WriteRadiusSettings(_radiusSettings);
         }
 
         void ApplyFeatureToggles()
         {
-            if (_rope != null && (_radiusBinding.Model != null) != RadiusFeaturesOn) _rebuildPending = true;
+            if (_rope != null && (_simulation.RadiusSettings != null) != RadiusFeaturesOn) _rebuildPending = true;
             ApplySettings();
         }
 
@@ -791,16 +795,8 @@ namespace HookeRope
             float minRadius = float.PositiveInfinity;
             for (int i = 0; i < radii.Length; i++) if (radii[i] < minRadius) minRadius = radii[i];
             MinRadius = radii.Length > 0 ? minRadius : m_Radius;
-            var model = _radiusBinding.Model;
-            if (model != null)
-            {
-                NeckRadius = model.NeckRadius;
-                if (model.MinRadius < MinRadius) MinRadius = model.MinRadius;
-            }
-            else
-            {
-                NeckRadius = m_Radius;
-            }
+            NeckRadius = _simulation.NeckRadius;
+            if (_simulation.MinRadius < MinRadius) MinRadius = _simulation.MinRadius;
 
             ArrestForce = _endLoad >= 0 ? _rope.GetLoadForce(_endLoad).Length : BottomTension;
             if (ArrestForce > PeakArrestForce) PeakArrestForce = ArrestForce;

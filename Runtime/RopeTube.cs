@@ -6,14 +6,17 @@ using UnityEngine;
 namespace HookeRope
 {
     /// <summary>
-    /// Owns the core <see cref="TubeMeshBuilder"/> and the caller-owned vertex and index buffers of one rope mesh,
-    /// and feeds the builder with the rope's interpolated positions in the renderer's local space. Buffers grow only
+    /// Owns a core <see cref="TubeMeshBuilder"/> (on the ring layout of the rope's <see cref="RopeSimulation"/>,
+    /// refined around the neck) and the caller-owned vertex and index buffers of one rope mesh, and feeds the builder
+    /// with the rope's interpolated positions in the renderer's local space (the facade's own mesh fill uses the
+    /// latest physics positions in world space, so the renderer builds its own). Buffers grow only
     /// when the topology grows (a new segment count or a break); otherwise an update allocates nothing.
     /// </summary>
     internal sealed class RopeTube
     {
         readonly TubeMeshSettings _settings = new TubeMeshSettings();
         TubeMeshBuilder _builder;
+        RingLayout _layout;
         TubeVertex[] _vertices = Array.Empty<TubeVertex>();
         int[] _indices = Array.Empty<int>();
         float[] _x = Array.Empty<float>(), _y = Array.Empty<float>(), _z = Array.Empty<float>();
@@ -58,9 +61,12 @@ namespace HookeRope
             var core = rope.Core;
             int segments = particles - 1;
             bool resized = false;
-            if (_builder == null || _builder.SegmentCount != segments)
+            // The facade's ring layout: uniform, or refined around the neck zone in Zone neck mode.
+            var ringLayout = rope.Simulation.RingLayout;
+            if (_builder == null || !ReferenceEquals(_layout, ringLayout) || _builder.SegmentCount != segments)
             {
-                _builder = new TubeMeshBuilder(_settings, segments);
+                _layout = ringLayout;
+                _builder = new TubeMeshBuilder(_settings, ringLayout);
                 _x = new float[particles];
                 _y = new float[particles];
                 _z = new float[particles];
