@@ -1,3 +1,5 @@
+using System;
+
 namespace HookeRope.Solver
 {
     /// <summary>
@@ -13,51 +15,80 @@ namespace HookeRope.Solver
         /// <summary>Largest number of active-set passes per iteration.</summary>
         public const int MaxPasses = 8;
 
-        /// <summary>Runs one iteration; returns the number of active-set passes used.</summary>
-        public static int Iterate(ChainState c, double h, double beta, bool tensionOnly)
+        /// <summary>
+        /// Runs one iteration. Returns true when the linearisation was poor somewhere (a fold: neighbouring
+        /// segments at more than 90°, a slack (compressed) segment, or a changed active set), so that a nonlinear
+        /// Gauss–Seidel sweep should follow.
+        /// </summary>
+        public static bool Iterate(ChainState c, double h, double beta, bool tensionOnly)
         {
             int s = c.SegmentCount;
             double invH2 = 1.0 / (h * h);
-            float[] w = c.InverseMass;
-            double[] fd = c.FullDiagonal, fl = c.FullLower, fu = c.FullUpper, fr = c.FullRhs, gamma = c.Scratch;
+            double gammaAll = beta / h; // γ = α̃·β̃/h with β̃ = h²·β·k, k = 1/α
+            float[] w = c.InverseMass, rest = c.RestLength, compliance = c.Compliance, length = c.Length;
+            float[] px = c.PrevX, py = c.PrevY, pz = c.PrevZ, dx = c.DX, dy = c.DY, dz = c.DZ;
+            float[] nxs = c.DirX, nys = c.DirY, nzs = c.DirZ;
+            double[] fd = c.FullDiagonal, fl = c.FullLower, fu = c.FullUpper, fr = c.FullRhs;
             double[] lambda = c.Lambda;
-            bool[] active = c.Active;
+            bool[] active = c.Active, broken = c.Broken;
+            bool poor = false;
+            float pnx = 0f, pny = 0f, pnz = 0f;
+            double previousScale = 0.0;
 
             for (int j = 0; j < s; j++)
             {
-                if (c.Broken[j])
+                if (broken[j])
                 {
-                    fd[j] = 0.0; fr[j] = 0.0; gamma[j] = 0.0; active[j] = false;
+                    fd[j] = 0.0; fr[j] = 0.0; fl[j] = 0.0; fu[j] = 0.0; active[j] = false;
+                    if (j > 0) fu[j - 1] = 0.0;
                     continue;
                 }
-                float len = c.Direction(j, out float nx, out float ny, out float nz);
-                c.Length[j] = len;
-                double alpha = c.Compliance[j];
-                double alphaTilde = alpha * invH2;
-                double g = alpha * beta / h;
-                double rel = 0.0;
-                if (g > 0.0)
+                float ddx = dx[j + 1] - dx[j], ddy = dy[j + 1] - dy[j], ddz = dz[j + 1] - dz[j];
+                float ex = (px[j + 1] - px[j]) + ddx, ey = (py[j + 1] - py[j]) + ddy, ez = (pz[j + 1] - pz[j]) + ddz;
+                float len = MathF.Sqrt(ex * ex + ey * ey + ez * ez);
+                float nx, ny, nz;
+                if (len > 1e-12f && len <= float.MaxValue)
                 {
-                    rel = nx * (c.DX[j + 1] - c.DX[j]) + ny * (c.DY[j + 1] - c.DY[j]) + nz * (c.DZ[j + 1] - c.DZ[j]);
+                    float inv = 1f / len;
+                    nx = ex * inv; ny = ey * inv; nz = ez * inv;
+                    nxs[j] = nx; nys[j] = ny; nzs[j] = nz;
                 }
-                double constraint = (double)len - c.RestLength[j];
+                else
+                {
+                    nx = nxs[j]; ny = nys[j]; nz = nzs[j];
+                    if (!(len <= float.MaxValue)) len = 0f;
+                }
+                length[j] = len;
+                double alpha = compliance[j];
+                double alphaTilde = alpha * invH2;
+                double g = alpha > 0.0 ? gammaAll : 0.0;
+                double rel = g > 0.0 ? nx * ddx + ny * ddy + nz * ddz : 0.0;
+                double constraint = (double)len - rest[j];
+                float wa = w[j], wb = w[j + 1];
+                double diagonal = (1.0 + g) * ((double)wa + wb) + alphaTilde;
                 fr[j] = -constraint - alphaTilde * lambda[j] - g * rel;
-                fd[j] = (1.0 + g) * ((double)w[j] + w[j + 1]) + alphaTilde;
-                gamma[j] = g;
-                active[j] = fd[j] > 0.0;
+                fd[j] = diagonal;
+                bool valid = diagonal > 0.0;
+                active[j] = valid;
+                if (len < rest[j]) poor = true;
+                double scale = 1.0 + g;
+                if (valid && j > 0 && active[j - 1])
+                {
+                    double cos = (double)pnx * nx + (double)pny * ny + (double)pnz * nz;
+                    if (cos < 0.0) poor = true;
+                    fl[j] = -scale * wa * cos;
+                    fu[j - 1] = -previousScale * wa * cos;
+                }
+                else
+                {
+                    fl[j] = 0.0;
+                    if (j > 0) fu[j - 1] = 0.0;
+                }
+                fu[j] = 0.0;
+                pnx = nx; pny = ny; pnz = nz;
+                previousScale = scale;
             }
 
-            for (int j = 0; j < s; j++)
-            {
-                if (!active[j]) { fl[j] = 0.0; fu[j] = 0.0; continue; }
-                double scale = 1.0 + gamma[j];
-                fl[j] = j > 0 && active[j - 1]
-                    ? -scale * w[j] * ((double)c.DirX[j - 1] * c.DirX[j] + (double)c.DirY[j - 1] * c.DirY[j] + (double)c.DirZ[j - 1] * c.DirZ[j])
-                    : 0.0;
-                fu[j] = j + 1 < s && fd[j + 1] > 0.0 && !c.Broken[j + 1]
-                    ? -scale * w[j + 1] * ((double)c.DirX[j] * c.DirX[j + 1] + (double)c.DirY[j] * c.DirY[j + 1] + (double)c.DirZ[j] * c.DirZ[j + 1])
-                    : 0.0;
-            }
             double[] delta = c.Delta;
             int passes = 0;
             while (true)
@@ -84,52 +115,60 @@ namespace HookeRope.Solver
                 if (!changed) break;
             }
 
+            float wLeft = w[0];
             for (int j = 0; j < s; j++)
             {
+                float wRight = w[j + 1];
                 double d = delta[j];
                 if (tensionOnly && lambda[j] + d > 0.0) d = -lambda[j];
-                if (d == 0.0) continue;
-                lambda[j] += d;
-                float nx = c.DirX[j], ny = c.DirY[j], nz = c.DirZ[j];
-                float a = (float)(w[j] * d), b = (float)(w[j + 1] * d);
-                c.DX[j] -= nx * a; c.DY[j] -= ny * a; c.DZ[j] -= nz * a;
-                c.DX[j + 1] += nx * b; c.DY[j + 1] += ny * b; c.DZ[j + 1] += nz * b;
+                if (d != 0.0)
+                {
+                    lambda[j] += d;
+                    float nx = nxs[j], ny = nys[j], nz = nzs[j];
+                    float a = (float)(wLeft * d), b = (float)(wRight * d);
+                    dx[j] -= nx * a; dy[j] -= ny * a; dz[j] -= nz * a;
+                    dx[j + 1] += nx * b; dy[j + 1] += ny * b; dz[j + 1] += nz * b;
+                }
+                wLeft = wRight;
             }
-            return passes;
+            return poor || passes > 1;
         }
 
-        /// <summary>Builds the system of the current active set into Lower/Diagonal/Upper/Rhs and solves it into Delta (Thomas algorithm).</summary>
+        /// <summary>Solves the system of the current active set into Delta (Thomas algorithm; released rows are Δλ = −λ).</summary>
         private static void Solve(ChainState c, bool tensionOnly)
         {
             int s = c.SegmentCount;
-            double[] lo = c.Lower, di = c.Diagonal, up = c.Upper, rhs = c.Rhs, x = c.Delta;
+            double[] cp = c.Upper, dp = c.Rhs, x = c.Delta, lambda = c.Lambda;
             double[] fd = c.FullDiagonal, fl = c.FullLower, fu = c.FullUpper, fr = c.FullRhs;
             bool[] active = c.Active;
+            // forward sweep: cp = c', dp = d'
+            double previousC = 0.0, previousD = 0.0;
             for (int j = 0; j < s; j++)
             {
+                double lo, di, up, rhs;
                 if (active[j])
                 {
-                    lo[j] = fl[j]; di[j] = fd[j]; up[j] = fu[j]; rhs[j] = fr[j];
+                    lo = fl[j]; di = fd[j]; up = fu[j]; rhs = fr[j];
                 }
                 else
                 {
                     // released (or broken) row: its λ returns to zero this iteration, Δλ = −λ
-                    lo[j] = 0.0; di[j] = 1.0; up[j] = 0.0;
-                    rhs[j] = fd[j] > 0.0 && tensionOnly ? -c.Lambda[j] : 0.0;
+                    lo = 0.0; di = 1.0; up = 0.0;
+                    rhs = fd[j] > 0.0 && tensionOnly ? -lambda[j] : 0.0;
                 }
+                double m = di - lo * previousC;
+                previousC = up / m;
+                previousD = (rhs - lo * previousD) / m;
+                cp[j] = previousC;
+                dp[j] = previousD;
             }
-            // forward sweep (in place: up becomes c', rhs becomes d')
-            double m = di[0];
-            up[0] /= m;
-            rhs[0] /= m;
-            for (int j = 1; j < s; j++)
+            double next = dp[s - 1];
+            x[s - 1] = next;
+            for (int j = s - 2; j >= 0; j--)
             {
-                m = di[j] - lo[j] * up[j - 1];
-                up[j] /= m;
-                rhs[j] = (rhs[j] - lo[j] * rhs[j - 1]) / m;
+                next = dp[j] - cp[j] * next;
+                x[j] = next;
             }
-            x[s - 1] = rhs[s - 1];
-            for (int j = s - 2; j >= 0; j--) x[j] = rhs[j] - up[j] * x[j + 1];
         }
     }
 }

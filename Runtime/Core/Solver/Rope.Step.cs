@@ -29,7 +29,7 @@ namespace HookeRope.Solver
             bool exact = settings.Solver == ConstraintSolverKind.ExactChain;
             Float3 g = settings.Gravity;
             bool hasColliders = colliders.Count > 0;
-            bool polish = true;
+            int compliantPins = CountCompliantPins();
 
             for (int l = 0; l < loadCount; l++)
             {
@@ -47,9 +47,12 @@ namespace HookeRope.Solver
                 if (pinCount > 0) Array.Clear(pinLambda, 0, pinCount * 3);
                 for (int it = 0; it < iterations; it++)
                 {
-                    if (exact) ExactChainSolver.Iterate(chain, hd, beta, tensionOnly);
-                    if (!exact || polish) GaussSeidelSolver.Iterate(chain, hd, beta, tensionOnly);
-                    if (pinCount > 0) ProjectCompliantPins(hd, t);
+                    bool softPins = compliantPins > 0 && ProjectCompliantPins(hd, t);
+                    // Gauss–Seidel is the solver itself, or a polish sweep after an exact solve whose
+                    // linearisation was poor somewhere (a fold); on a taut chain the sweep would change nothing
+                    bool sweep = !exact || ExactChainSolver.Iterate(chain, hd, beta, tensionOnly);
+                    if (sweep) GaussSeidelSolver.Iterate(chain, hd, beta, tensionOnly);
+                    if (softPins) ReleaseCompliantPins(hd, t);
                     if (hasColliders) colliders.Project(chain, h, it == iterations - 1);
                 }
                 UpdateVelocities(h);
@@ -103,9 +106,24 @@ namespace HookeRope.Solver
             }
         }
 
-        private void ProjectCompliantPins(double h, float t)
+        private int CountCompliantPins()
+        {
+            int count = 0;
+            for (int p = 0; p < pinCount; p++) if (!pinBroken[p] && pinCompliance[p] != 0f) count++;
+            return count;
+        }
+
+        /// <summary>
+        /// Compliant pins are zero-length linear springs, so they can be folded into the chain solve exactly:
+        /// project each pin alone (XPBD Gauss–Seidel step), then give its particle the effective inverse mass
+        /// w·α̃/(w + α̃) — the particle's mass plus the spring's implicit mass 1/α̃ — for the chain solve.
+        /// <see cref="ReleaseCompliantPins"/> restores the masses and reads the pin multipliers back.
+        /// Returns true when some pin was folded in.
+        /// </summary>
+        private bool ProjectCompliantPins(double h, float t)
         {
             double invH2 = 1.0 / (h * h);
+            bool any = false;
             for (int p = 0; p < pinCount; p++)
             {
                 if (pinBroken[p] || pinCompliance[p] == 0f) continue;
@@ -114,14 +132,34 @@ namespace HookeRope.Solver
                 if (w == 0.0) continue;
                 double alphaTilde = pinCompliance[p] * invH2;
                 double denominator = w + alphaTilde;
-                // the target moves across the substeps like a rigid pin's
                 Float3 target = Float3.Lerp(pinStart[p], pinEnd[p], t);
                 int b = 3 * p;
                 double dx = (-((double)chain.PrevX[i] - target.X + chain.DX[i]) - alphaTilde * pinLambda[b]) / denominator;
                 double dy = (-((double)chain.PrevY[i] - target.Y + chain.DY[i]) - alphaTilde * pinLambda[b + 1]) / denominator;
                 double dz = (-((double)chain.PrevZ[i] - target.Z + chain.DZ[i]) - alphaTilde * pinLambda[b + 2]) / denominator;
-                pinLambda[b] += dx; pinLambda[b + 1] += dy; pinLambda[b + 2] += dz;
                 chain.DX[i] += (float)(w * dx); chain.DY[i] += (float)(w * dy); chain.DZ[i] += (float)(w * dz);
+                chain.InverseMass[i] = (float)(w * alphaTilde / denominator);
+                any = true;
+            }
+            return any;
+        }
+
+        private void ReleaseCompliantPins(double h, float t)
+        {
+            double invH2 = 1.0 / (h * h);
+            for (int p = 0; p < pinCount; p++)
+            {
+                if (pinBroken[p] || pinCompliance[p] == 0f) continue;
+                int i = pinParticle[p];
+                if (chain.Kinematic[i]) continue;
+                chain.InverseMass[i] = 1f / chain.Mass[i];
+                double alphaTilde = pinCompliance[p] * invH2;
+                Float3 target = Float3.Lerp(pinStart[p], pinEnd[p], t);
+                int b = 3 * p;
+                // compliance-consistent multiplier: C + α̃·λ = 0
+                pinLambda[b] = -((double)chain.PrevX[i] - target.X + chain.DX[i]) / alphaTilde;
+                pinLambda[b + 1] = -((double)chain.PrevY[i] - target.Y + chain.DY[i]) / alphaTilde;
+                pinLambda[b + 2] = -((double)chain.PrevZ[i] - target.Z + chain.DZ[i]) / alphaTilde;
             }
         }
 
@@ -188,21 +226,27 @@ namespace HookeRope.Solver
                 if (force.Length > pinBreakForce[p])
                 {
                     pinBroken[p] = true;
+                    pinForce[p] = Float3.Zero;
                     released = true;
                 }
             }
             if (released) RefreshKinematic();
         }
 
+        /// <summary>Breaks the most strained segment past the limit, one per substep: once it fails the others unload.</summary>
         private void CheckStrainBreaks()
         {
             float limit = settings.BreakStrain;
             if (float.IsPositiveInfinity(limit)) return;
+            int worst = -1;
+            float worstStrain = limit;
             for (int j = 0; j < chain.SegmentCount; j++)
             {
                 if (chain.Broken[j]) continue;
-                if (chain.Length[j] > chain.RestLength[j] * (1f + limit)) BreakSegment(j);
+                float strain = chain.Length[j] / chain.RestLength[j] - 1f;
+                if (strain > worstStrain) { worstStrain = strain; worst = j; }
             }
+            if (worst >= 0) BreakSegment(worst);
         }
 
         private float ComputeResidual()

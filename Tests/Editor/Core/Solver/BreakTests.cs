@@ -1,0 +1,67 @@
+using System;
+using HookeRope.Mathematics;
+using HookeRope.Solver;
+using NUnit.Framework;
+
+namespace HookeRope.Tests.Solver
+{
+    public sealed class BreakTests
+    {
+        [Test]
+        public void StrainBeyondTheLimitBreaksOneSegmentAndRaisesTheEvent()
+        {
+            // 1 m, E·A = 10 kN, limit 1 % strain (100 N); the load is raised step by step until it breaks
+            var settings = RopeTestKit.Settings(1f, 10, 1e4f, 0.01f);
+            settings.BreakStrain = 0.01f;
+            var rope = RopeTestKit.Hanging(settings, 1f, out _);
+            var events = new System.Collections.Generic.List<RopeBreakEvent>();
+            rope.Broken += e => events.Add(e);
+            rope.AddLoad(rope.ParticleCount - 1, 15f); // 16 kg: 157 N > 100 N → breaks while stretching
+            for (int i = 0; i < 180; i++) rope.Step(RopeTestKit.HostStep);
+            Assert.That(events.Count, Is.EqualTo(1));
+            RopeBreakEvent e0 = events[0];
+            TestContext.WriteLine($"broke segment {e0.Segment} at t={e0.Time:G4} s, tension {e0.Tension:G5} N, at {e0.Position}");
+            Assert.That(rope.IsSegmentBroken(e0.Segment), Is.True);
+            Assert.That(e0.Tension, Is.GreaterThan(100f * 0.95f), "tension just before ≈ E·A·strain limit");
+            Assert.That(e0.Tension, Is.LessThan(100f * 1.1f));
+            Assert.That(e0.Time, Is.GreaterThan(0.0));
+            Assert.That(e0.Time, Is.LessThan(2.0));
+            Assert.That(e0.Position.Y, Is.LessThan(0f));
+            Assert.That(e0.Position.Y, Is.GreaterThan(-1.1f));
+            // the lower part falls freely, the upper part hangs: no NaN, no force across the break
+            Assert.That(RopeTestKit.AllFinite(rope), Is.True);
+            Assert.That(rope.Tensions[e0.Segment], Is.EqualTo(0f));
+            Assert.That(RopeTestKit.Bottom(rope), Is.LessThan(-5f), "the load fell");
+            Assert.That(rope.GetPinForce(0).Length, Is.LessThan(2f), "the anchor carries only the remaining rope");
+        }
+
+        [TestCase(ConstraintSolverKind.ExactChain)]
+        [TestCase(ConstraintSolverKind.GaussSeidel)]
+        public void BreakSegmentSplitsTheChainIntoTwoIndependentRopes(ConstraintSolverKind solver)
+        {
+            var settings = new RopeSettings { RestLength = 2f, SegmentCount = 20, Solver = solver };
+            var rope = new Rope(settings, new Float3(-1f, 0f, 0f), new Float3(1f, 0f, 0f));
+            rope.AddPin(0, new Float3(-1f, 0f, 0f));
+            rope.AddPin(20, new Float3(1f, 0f, 0f));
+            for (int i = 0; i < 90; i++) rope.Step(RopeTestKit.HostStep);
+            float before = rope.Tensions[10];
+            RopeBreakEvent seen = default;
+            rope.Broken += e => seen = e;
+            rope.BreakSegment(10);
+            Assert.That(seen.Segment, Is.EqualTo(10));
+            Assert.That(seen.Tension, Is.EqualTo(before));
+            Assert.That(seen.Position.X, Is.EqualTo(0f).Within(0.1f));
+            for (int i = 0; i < 180; i++) rope.Step(RopeTestKit.HostStep);
+            Assert.That(RopeTestKit.AllFinite(rope), Is.True);
+            // each half swings from its own anchor, within its own length of it; the gap opens
+            float halfLength = 10 * settings.RestLength / settings.SegmentCount;
+            for (int i = 0; i <= 10; i++) Assert.That((rope.GetPosition(i) - new Float3(-1f, 0f, 0f)).Length, Is.LessThanOrEqualTo(halfLength * 1.01f));
+            for (int i = 11; i <= 20; i++) Assert.That((rope.GetPosition(i) - new Float3(1f, 0f, 0f)).Length, Is.LessThanOrEqualTo(halfLength * 1.01f));
+            Assert.That(rope.SegmentLengths[10], Is.GreaterThan(0.5f));
+            Assert.That(rope.Tensions[10], Is.EqualTo(0f));
+            Assert.That(rope.Tensions[0], Is.GreaterThan(0f));
+            rope.BreakSegment(10); // breaking again is a no-op
+            Assert.That(rope.IsSegmentBroken(10), Is.True);
+        }
+    }
+}
