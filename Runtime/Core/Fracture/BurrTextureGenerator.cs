@@ -3,10 +3,10 @@ using System;
 namespace HookeRope.Fracture
 {
     /// <summary>
-    /// Procedural burr texture: a row of inverted triangles (base along v = 0, apex toward v = 1, the strand
-    /// tip), one per strand, with seeded heights, apex offsets and fibre streaks; outside the triangles the alpha
-    /// is 0 (use alpha clipping). Output is RGBA32, row 0 first = v = 0 (the order of Unity's
-    /// Texture2D.LoadRawTextureData); in a top-down image viewer the triangles therefore point down.
+    /// Procedural burr texture: a row of inverted triangles (base along the top edge v = 1, apex pointing down
+    /// toward v = 0, where the burr strands have their tips), one per strand, with seeded heights, apex offsets
+    /// and fibre streaks; outside the triangles the alpha is 0 (use alpha clipping). Output is RGBA32, row 0
+    /// first = v = 0 = the bottom row (the order of Unity's Texture2D.LoadRawTextureData).
     /// </summary>
     public static class BurrTextureGenerator
     {
@@ -46,7 +46,7 @@ namespace HookeRope.Fracture
                     float apexX = (c + 0.5f + 0.3f * (SeededRandom.Unit(seed, c, 1) - 0.5f)) * cell;
                     float left = c * cell;
                     float right = (c + 1) * cell;
-                    float along = v / apexHeight;
+                    float along = (1f - v) / apexHeight;
                     float coverage = 0f;
                     if (along < 1f)
                     {

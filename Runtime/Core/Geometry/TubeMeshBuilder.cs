@@ -378,8 +378,13 @@ namespace HookeRope.Geometry
                 vertex.TX = around.X; vertex.TY = around.Y; vertex.TZ = around.Z; vertex.TW = 1f;
                 vertex.U = (float)i / radial;
                 vertex.V = v;
-                bounds.Add(p);
             }
+            // The ring lies on the circle of radius r around c in the plane normal to t: per axis c ± r·sqrt(1 − t²).
+            float ex = r * MathF.Sqrt(MathF.Max(0f, 1f - t.X * t.X)) * 1.000001f;
+            float ey = r * MathF.Sqrt(MathF.Max(0f, 1f - t.Y * t.Y)) * 1.000001f;
+            float ez = r * MathF.Sqrt(MathF.Max(0f, 1f - t.Z * t.Z)) * 1.000001f;
+            bounds.Add(new Float3(c.X - ex, c.Y - ey, c.Z - ez));
+            bounds.Add(new Float3(c.X + ex, c.Y + ey, c.Z + ez));
         }
 
         private void WriteCap(int k, bool atEnd, TubeVertex[] vertices, int[] indices, bool writeIndices,
@@ -462,9 +467,9 @@ namespace HookeRope.Geometry
             Float3 edge = p1 - p0;
             Float3 normal = Float3.Cross(edge, tip - p0).NormalizedOr(fallback);
             Float3 tangent = edge.NormalizedOr(FrameTransport.Perpendicular(fallback, normal));
-            SetVertex(vertices, v, p0, normal, tangent, 0f, 0f);
-            SetVertex(vertices, v + 1, p1, normal, tangent, 1f, 0f);
-            SetVertex(vertices, v + 2, tip, normal, tangent, 0.5f, 1f);
+            SetVertex(vertices, v, p0, normal, tangent, 0f, 1f);
+            SetVertex(vertices, v + 1, p1, normal, tangent, 1f, 1f);
+            SetVertex(vertices, v + 2, tip, normal, tangent, 0.5f, 0f);
             bounds.Add(tip);
         }
 

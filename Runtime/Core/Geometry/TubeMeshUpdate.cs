@@ -17,9 +17,9 @@ namespace HookeRope.Geometry
         public readonly bool TopologyChanged;
         /// <summary>Position of the rope's first particle in metres: vertex positions are relative to it.</summary>
         public readonly Float3 Origin;
-        /// <summary>Smallest vertex coordinates in metres (relative to <see cref="Origin"/>).</summary>
+        /// <summary>Lower corner in metres (relative to <see cref="Origin"/>) of a box holding every vertex (tight to within the ring polygons' circumcircles).</summary>
         public readonly Float3 BoundsMin;
-        /// <summary>Largest vertex coordinates in metres (relative to <see cref="Origin"/>).</summary>
+        /// <summary>Upper corner in metres (relative to <see cref="Origin"/>) of a box holding every vertex.</summary>
         public readonly Float3 BoundsMax;
 
         /// <summary>Creates the report.</summary>

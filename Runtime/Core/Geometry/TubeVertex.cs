@@ -32,7 +32,7 @@ namespace HookeRope.Geometry
         public float TW;
         /// <summary>Texture u (around the rope, 0 … 1; on strands across the strand).</summary>
         public float U;
-        /// <summary>Texture v (rest arc length times <see cref="TubeMeshSettings.VPerMetre"/>; on strands 0 at the base, 1 at the tip).</summary>
+        /// <summary>Texture v (rest arc length times <see cref="TubeMeshSettings.VPerMetre"/>; on strands 1 at the base, 0 at the tip).</summary>
         public float V;
 
         /// <summary>Size of one vertex in bytes (48).</summary>

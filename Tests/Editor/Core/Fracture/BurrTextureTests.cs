@@ -26,12 +26,13 @@ namespace HookeRope.Tests.Core.Fracture
         public void TrianglesNarrowFromTheBaseToTheTips()
         {
             byte[] rgba = Make(3u);
-            Assert.That(OpaqueInRow(rgba, 0), Is.GreaterThanOrEqualTo(W - 2 * Triangles)); // the base row is nearly full
-            Assert.That(OpaqueInRow(rgba, H - 1), Is.EqualTo(0)); // every apex is below v = 1
+            // Inverted triangles: base along the top row (v = 1), apexes pointing down toward v = 0.
+            Assert.That(OpaqueInRow(rgba, H - 1), Is.GreaterThanOrEqualTo(W - 2 * Triangles)); // the base row is nearly full
+            Assert.That(OpaqueInRow(rgba, 0), Is.EqualTo(0)); // every apex is above v = 0
             for (int y = 1; y < H; y++)
-                Assert.That(OpaqueInRow(rgba, y), Is.LessThanOrEqualTo(OpaqueInRow(rgba, y - 1)), "row " + y);
-            // Half way up, the opaque pixels form one run per triangle (those tall enough to reach it).
-            int row = H / 3, runs = 0;
+                Assert.That(OpaqueInRow(rgba, y), Is.GreaterThanOrEqualTo(OpaqueInRow(rgba, y - 1)), "row " + y);
+            // A third of the way down from the base, the opaque pixels form one run per triangle.
+            int row = H - 1 - H / 3, runs = 0;
             for (int x = 0; x < W; x++)
             {
                 bool on = rgba[(row * W + x) * 4 + 3] >= 128;
