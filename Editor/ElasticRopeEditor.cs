@@ -1,0 +1,176 @@
+using System.Globalization;
+using HookeRope.Solver;
+using UnityEditor;
+using UnityEngine;
+
+namespace HookeRope.Editor
+{
+    /// <summary>
+    /// Inspector of <see cref="ElasticRope"/>, grouped Material / Geometry / Solver / Attachments / Collisions /
+    /// Fracture / Read-outs. Warns when the settings predict a large stretch error and previews the static
+    /// sag in edit mode. Read-outs repaint live in Play.
+    /// </summary>
+    [CustomEditor(typeof(ElasticRope)), CanEditMultipleObjects]
+    sealed class ElasticRopeEditor : UnityEditor.Editor
+    {
+        static bool s_Material = true, s_Geometry = true, s_Solver = true, s_Attachments = true, s_Collisions, s_Fracture, s_Readouts = true;
+
+        SerializedProperty m_StiffnessInput, m_YoungsModulus, m_AxialStiffness, m_Density, m_PoissonRatio, m_Damping;
+        SerializedProperty m_RestLength, m_Radius, m_SegmentCount;
+        SerializedProperty m_Solver, m_Substeps, m_Iterations, m_TensionModel, m_Gravity;
+        SerializedProperty m_Start, m_End, m_AttachmentCompliance;
+        SerializedProperty m_CollisionMode, m_Colliders, m_CollisionLayers, m_Planes, m_Friction;
+        SerializedProperty m_RadiusModel, m_Necking, m_NeckMode, m_NeckRadiusFraction, m_DefectPosition, m_Fracture, m_BreakStrain, m_BreakRadiusFraction, m_OnBreak;
+
+        void OnEnable()
+        {
+            var so = serializedObject;
+            m_StiffnessInput = so.FindProperty(nameof(m_StiffnessInput));
+            m_YoungsModulus = so.FindProperty(nameof(m_YoungsModulus));
+            m_AxialStiffness = so.FindProperty(nameof(m_AxialStiffness));
+            m_Density = so.FindProperty(nameof(m_Density));
+            m_PoissonRatio = so.FindProperty(nameof(m_PoissonRatio));
+            m_Damping = so.FindProperty(nameof(m_Damping));
+            m_RestLength = so.FindProperty(nameof(m_RestLength));
+            m_Radius = so.FindProperty(nameof(m_Radius));
+            m_SegmentCount = so.FindProperty(nameof(m_SegmentCount));
+            m_Solver = so.FindProperty(nameof(m_Solver));
+            m_Substeps = so.FindProperty(nameof(m_Substeps));
+            m_Iterations = so.FindProperty(nameof(m_Iterations));
+            m_TensionModel = so.FindProperty(nameof(m_TensionModel));
+            m_Gravity = so.FindProperty(nameof(m_Gravity));
+            m_Start = so.FindProperty(nameof(m_Start));
+            m_End = so.FindProperty(nameof(m_End));
+            m_AttachmentCompliance = so.FindProperty(nameof(m_AttachmentCompliance));
+            m_CollisionMode = so.FindProperty(nameof(m_CollisionMode));
+            m_Colliders = so.FindProperty(nameof(m_Colliders));
+            m_CollisionLayers = so.FindProperty(nameof(m_CollisionLayers));
+            m_Planes = so.FindProperty(nameof(m_Planes));
+            m_Friction = so.FindProperty(nameof(m_Friction));
+            m_RadiusModel = so.FindProperty(nameof(m_RadiusModel));
+            m_Necking = so.FindProperty(nameof(m_Necking));
+            m_NeckMode = so.FindProperty(nameof(m_NeckMode));
+            m_NeckRadiusFraction = so.FindProperty(nameof(m_NeckRadiusFraction));
+            m_DefectPosition = so.FindProperty(nameof(m_DefectPosition));
+            m_Fracture = so.FindProperty(nameof(m_Fracture));
+            m_BreakStrain = so.FindProperty(nameof(m_BreakStrain));
+            m_BreakRadiusFraction = so.FindProperty(nameof(m_BreakRadiusFraction));
+            m_OnBreak = so.FindProperty(nameof(m_OnBreak));
+        }
+
+        public override bool RequiresConstantRepaint() => EditorApplication.isPlaying;
+
+        public override void OnInspectorGUI()
+        {
+            serializedObject.Update();
+            var rope = (ElasticRope)target;
+
+            if (Section(ref s_Material, "Material"))
+            {
+                Field(m_StiffnessInput);
+                Field(m_StiffnessInput.intValue == (int)RopeStiffnessInput.AxialStiffness ? m_AxialStiffness : m_YoungsModulus);
+                Field(m_Density);
+                Field(m_PoissonRatio);
+                Field(m_Damping);
+                EditorGUILayout.LabelField("Axial stiffness E·A", Format(rope.AxialStiffness, "N"));
+                EditorGUILayout.LabelField("Mass per metre", Format(rope.LinearDensity, "kg/m"));
+            }
+            if (Section(ref s_Geometry, "Geometry"))
+            {
+                Field(m_RestLength);
+                Field(m_Radius);
+                Field(m_SegmentCount);
+            }
+            if (Section(ref s_Solver, "Solver"))
+            {
+                Field(m_Solver);
+                Field(m_Substeps);
+                Field(m_Iterations);
+                Field(m_TensionModel);
+                Field(m_Gravity);
+                StretchWarning(rope);
+            }
+            if (Section(ref s_Attachments, "Attachments"))
+            {
+                EditorGUILayout.PropertyField(m_Start, true);
+                EditorGUILayout.PropertyField(m_End, true);
+                Field(m_AttachmentCompliance);
+                EditorGUI.BeginDisabledGroup(EditorApplication.isPlaying || serializedObject.isEditingMultipleObjects);
+                if (GUILayout.Button("Preview static sag")) rope.PreviewStaticSag();
+                EditorGUI.EndDisabledGroup();
+            }
+            if (Section(ref s_Collisions, "Collisions"))
+            {
+                Field(m_CollisionMode);
+                if (m_CollisionMode.intValue == (int)RopeCollisionMode.ListedColliders) EditorGUILayout.PropertyField(m_Colliders, true);
+                if (m_CollisionMode.intValue == (int)RopeCollisionMode.LayerMask) Field(m_CollisionLayers);
+                if (m_CollisionMode.intValue != (int)RopeCollisionMode.Off)
+                {
+                    EditorGUILayout.PropertyField(m_Planes, true);
+                    Field(m_Friction);
+                }
+            }
+            if (Section(ref s_Fracture, "Fracture (thinning, necking, break)"))
+            {
+                Field(m_RadiusModel);
+                Field(m_Necking);
+                EditorGUI.BeginDisabledGroup(!m_Necking.boolValue);
+                Field(m_NeckMode);
+                Field(m_NeckRadiusFraction);
+                EditorGUI.EndDisabledGroup();
+                Field(m_DefectPosition);
+                Field(m_Fracture);
+                EditorGUI.BeginDisabledGroup(!m_Fracture.boolValue);
+                Field(m_BreakStrain);
+                Field(m_BreakRadiusFraction);
+                EditorGUI.EndDisabledGroup();
+                EditorGUILayout.PropertyField(m_OnBreak, true);
+            }
+            if (Section(ref s_Readouts, "Read-outs"))
+                Readouts(rope);
+
+            serializedObject.ApplyModifiedProperties();
+        }
+
+        static bool Section(ref bool open, string title)
+        {
+            open = EditorGUILayout.Foldout(open, title, true);
+            return open;
+        }
+
+        static void Field(SerializedProperty property) => EditorGUILayout.PropertyField(property);
+
+        static string Format(float value, string unit) =>
+            value.ToString("G4", CultureInfo.InvariantCulture) + (unit.Length > 0 ? " " + unit : "");
+
+        void StretchWarning(ElasticRope rope)
+        {
+            float endMass = rope.EndAttachment.Body != null ? rope.EndAttachment.Body.mass : 0f;
+            double error = StretchErrorEstimate.Predict(rope.SegmentCount, rope.RestLength, rope.AxialStiffness, rope.LinearDensity,
+                endMass, Time.fixedDeltaTime, rope.Substeps, rope.Iterations, rope.Solver);
+            if (error > StretchErrorEstimate.WarningThreshold)
+                EditorGUILayout.HelpBox(string.Format(CultureInfo.InvariantCulture,
+                    "These settings predict the rope to stretch about {0:P0} more than the material allows (Gauss-Seidel, {1} substeps × {2} iterations for {3} segments). Use the Exact Chain solver, or raise substeps.",
+                    error, rope.Substeps, rope.Iterations, rope.SegmentCount), MessageType.Warning);
+        }
+
+        static void Readouts(ElasticRope rope)
+        {
+            if (!rope.IsBuilt)
+            {
+                EditorGUILayout.HelpBox("Read-outs appear in Play (or after ElasticRope.Rebuild()).", MessageType.Info);
+                return;
+            }
+            EditorGUILayout.LabelField("Elongation", Format(rope.Elongation, "m"));
+            EditorGUILayout.LabelField("Top / bottom tension", Format(rope.TopTension, "N") + " / " + Format(rope.BottomTension, "N"));
+            EditorGUILayout.LabelField("Peak tension", Format(rope.PeakTension, "N"));
+            EditorGUILayout.LabelField("Min radius / neck radius", Format(rope.MinRadius, "m") + " / " + Format(rope.NeckRadius, "m"));
+            EditorGUILayout.LabelField("Broken", rope.IsBroken ? "yes" : "no");
+            EditorGUILayout.LabelField("Arrest force (peak)", Format(rope.ArrestForce, "N") + " (" + Format(rope.PeakArrestForce, "N") + ")");
+            EditorGUILayout.LabelField("EN 355 (6 kN)", rope.MeetsEn355 ? "within limit" : "EXCEEDED");
+            EditorGUILayout.LabelField("ANSI Z359.13 (8 kN)", rope.MeetsAnsiZ359_13 ? "within limit" : "EXCEEDED");
+            EditorGUILayout.LabelField("Residual (strain error)", Format(rope.Residual, ""));
+            EditorGUILayout.LabelField("Step time", Format(rope.StepMilliseconds, "ms"));
+        }
+    }
+}

@@ -1,0 +1,813 @@
+using System;
+using System.Diagnostics;
+using HookeRope.Mathematics;
+using HookeRope.Radius;
+using HookeRope.Solver;
+using UnityEngine;
+using Debug = UnityEngine.Debug;
+
+namespace HookeRope
+{
+    /// <summary>
+    /// An elastic rope with real physics in SI units: thin glue over the engine-free core. It holds the
+    /// serialized settings, builds the core rope, copies anchor and hand poses in every FixedUpdate, steps the
+    /// solver (substeps inside), exchanges forces with attached Rigidbodies (two-way) and exposes read-outs.
+    /// Rendering lives in <see cref="RopeMeshRenderer"/>. Inspector changes in Play apply at the next step;
+    /// only a new segment count or new attachments rebuild the rope.
+    /// </summary>
+    [AddComponentMenu("Physics/Elastic Rope")]
+    [HelpURL(DocumentationUrl)]
+    [DisallowMultipleComponent]
+    public sealed class ElasticRope : MonoBehaviour
+    {
+        /// <summary>The package manual.</summary>
+        public const string DocumentationUrl = "https://github.com/hookerope/com.hookerope.elastic-rope/blob/main/Documentation~/index.md";
+
+        // ---- Material -------------------------------------------------------------------------------------
+        [SerializeField, Tooltip("Edit the stiffness as Young's modulus E (Pa) or as axial stiffness E·A (N); the other follows from A = πR².")]
+        RopeStiffnessInput m_StiffnessInput = RopeStiffnessInput.YoungsModulus;
+
+        [SerializeField, Tooltip("Young's modulus E of the rope material (Pa). Polyamide lanyard ≈ 1e8–1e9, steel ≈ 2e11.")]
+        float m_YoungsModulus = 1.5e8f;
+
+        [SerializeField, Tooltip("Axial stiffness E·A (N): force per unit strain. Used when the stiffness input is Axial Stiffness.")]
+        float m_AxialStiffness = 30159f;
+
+        [SerializeField, Tooltip("Material density ρ (kg/m³); rope mass per metre = ρ·πR². Polyamide ≈ 1140, steel ≈ 7850.")]
+        float m_Density = 1140f;
+
+        [SerializeField, Range(-1f, 0.5f), Tooltip("Poisson ratio ν (dimensionless, −1 to 0.5): how much the rope thins as it stretches. 0.5 keeps the volume; negative values thicken (auxetic).")]
+        float m_PoissonRatio = 0.3f;
+
+        [SerializeField, Tooltip("XPBD constraint damping β (s): removes axial vibration without moving the static sag. 0 = undamped.")]
+        float m_Damping = 0.002f;
+
+        // ---- Geometry -------------------------------------------------------------------------------------
+        [SerializeField, Tooltip("Rest (unstretched) length L (m).")]
+        float m_RestLength = 2f;
+
+        [SerializeField, Tooltip("Rest radius R (m) of the rope's cross-section.")]
+        float m_Radius = 0.008f;
+
+        [SerializeField, Tooltip("Number of segments (particles = segments + 1). Changing it during Play rebuilds the rope.")]
+        int m_SegmentCount = 24;
+
+        // ---- Solver ---------------------------------------------------------------------------------------
+        [SerializeField, Tooltip("Exact Chain solves the whole chain at once each iteration (right stretch under heavy loads); Gauss-Seidel is cheaper per iteration but stretches under heavy loads.")]
+        ConstraintSolverKind m_Solver = ConstraintSolverKind.ExactChain;
+
+        [SerializeField, Tooltip("Substeps per physics step (1–1000). More substeps = stiffer, more accurate, slower.")]
+        int m_Substeps = 4;
+
+        [SerializeField, Tooltip("Constraint iterations per substep (1–1000).")]
+        int m_Iterations = 2;
+
+        [SerializeField, Tooltip("Tension Only: a rope pulls but never pushes. Bilateral: a rod that also pushes.")]
+        TensionModel m_TensionModel = TensionModel.TensionOnly;
+
+        [SerializeField, Tooltip("Gravity acting on the rope (m/s²).")]
+        Vector3 m_Gravity = new Vector3(0f, -9.81f, 0f);
+
+        // ---- Attachments ----------------------------------------------------------------------------------
+        [SerializeField, Tooltip("Start of the rope (first particle): a Transform to follow, a Rigidbody to pull two-way, or nothing.")]
+        RopeEnd m_Start = new RopeEnd();
+
+        [SerializeField, Tooltip("End of the rope (last particle): a Transform to follow, a Rigidbody to pull two-way (e.g. a harness D-ring), or nothing.")]
+        RopeEnd m_End = new RopeEnd();
+
+        [SerializeField, Tooltip("Compliance of the Transform attachments (m/N); 0 = rigid.")]
+        float m_AttachmentCompliance;
+
+        // ---- Collisions -----------------------------------------------------------------------------------
+        [SerializeField, Tooltip("Off costs nothing. Listed Colliders: the colliders and planes below. Layer Mask: Sphere/Capsule/Box colliders on these layers within reach when the rope is built.")]
+        RopeCollisionMode m_CollisionMode = RopeCollisionMode.Off;
+
+        [SerializeField, Tooltip("Sphere, Capsule and Box colliders the rope collides with (Listed Colliders mode).")]
+        Collider[] m_Colliders = Array.Empty<Collider>();
+
+        [SerializeField, Tooltip("Layers searched for colliders (Layer Mask mode).")]
+        LayerMask m_CollisionLayers = -1;
+
+        [SerializeField, Tooltip("Infinite planes the rope stays above: each Transform's position is a point on the plane, its up axis the normal.")]
+        Transform[] m_Planes = Array.Empty<Transform>();
+
+        [SerializeField, Tooltip("Coulomb friction coefficient μ between rope and colliders (dimensionless, 0–2).")]
+        float m_Friction = 0.3f;
+
+        // ---- Radius, necking and fracture -----------------------------------------------------------------
+        [SerializeField, Tooltip("Thin the rope as it stretches (Poisson ratio). Off costs nothing; the radius stays R.")]
+        bool m_RadiusModel = true;
+
+        [SerializeField, Tooltip("Form a neck at the defect once the radius falls below r_min. Needs the radius model.")]
+        bool m_Necking = true;
+
+        [SerializeField, Tooltip("Zone: a neck over a few diameters around the defect that deepens smoothly (default). Paper: Chen et al.'s hyperbola over the whole length (eq. 18); at onset the waist jumps to about 2·r_min²/l.")]
+        NeckMode m_NeckMode = NeckMode.Zone;
+
+        [SerializeField, Range(0.01f, 1f), Tooltip("Neck onset radius r_min as a fraction of the rest radius R (dimensionless, 0.01–1).")]
+        float m_NeckRadiusFraction = 0.75f;
+
+        [SerializeField, Range(0f, 1f), Tooltip("Where the material defect sits, as a fraction of the rest length from the start (0–1). The neck and the break form there.")]
+        float m_DefectPosition = 0.5f;
+
+        [SerializeField, Tooltip("Let the rope break. Off costs nothing.")]
+        bool m_Fracture = true;
+
+        [SerializeField, Tooltip("Break threshold: the strain l/L − 1 (dimensionless) of the defect segment at which the rope breaks.")]
+        float m_BreakStrain = 0.6f;
+
+        [SerializeField, Range(0f, 0.99f), Tooltip("The rope also breaks when the neck radius falls below this fraction of R (dimensionless, 0–0.99; 0 = off). Needs necking.")]
+        float m_BreakRadiusFraction = 0.25f;
+
+        // ---- Events ---------------------------------------------------------------------------------------
+        [SerializeField, Tooltip("Raised when the rope breaks, with the break position (world, m) and the peak tension just before it (N).")]
+        RopeBreakUnityEvent m_OnBreak = new RopeBreakUnityEvent();
+
+        // ---- Runtime state (not serialized) ---------------------------------------------------------------
+        Rope _rope;
+        RopeSettings _settings;
+        readonly RopeColliderBinding _colliderBinding = new RopeColliderBinding();
+        readonly RadiusSettings _radiusSettings = new RadiusSettings();
+        RopeSimulation _simulation;
+        readonly Stopwatch _stopwatch = new Stopwatch();
+        Action<RopeBreakEvent> _onCoreBroken;
+        Vector3 _origin;
+        int _startPin = -1, _endPin = -1, _startLoad = -1, _endLoad = -1;
+        float[] _previous = Array.Empty<float>();
+        float[] _current = Array.Empty<float>();
+        bool _rebuildPending;
+        bool _breakPending;
+        Vector3 _breakPosition;
+        float _breakTension;
+        Collider[] _overlapBuffer;
+        Vector3[] _preview = Array.Empty<Vector3>();
+
+        // ---- Read-outs ------------------------------------------------------------------------------------
+        /// <summary>Raised when the rope breaks: world position (m) and peak tension just before (N).</summary>
+        public RopeBreakUnityEvent OnBreak => m_OnBreak;
+
+        /// <summary>The core rope, or null before the first build (Awake in Play, or <see cref="Rebuild"/>).</summary>
+        public Rope Core => _rope;
+
+        /// <summary>True once the core rope exists.</summary>
+        public bool IsBuilt => _rope != null;
+
+        /// <summary>Current length minus rest length (m), summed over intact segments.</summary>
+        public float Elongation { get; private set; }
+
+        /// <summary>Tension in the first segment (N).</summary>
+        public float TopTension { get; private set; }
+
+        /// <summary>Tension in the last segment (N).</summary>
+        public float BottomTension { get; private set; }
+
+        /// <summary>Largest segment tension seen since the build or <see cref="ResetPeaks"/> (N).</summary>
+        public float PeakTension { get; private set; }
+
+        /// <summary>Smallest particle radius now (m).</summary>
+        public float MinRadius { get; private set; }
+
+        /// <summary>Radius at the defect (m): the neck radius once necking has started, else the local Poisson radius.</summary>
+        public float NeckRadius { get; private set; }
+
+        /// <summary>True once any segment has broken.</summary>
+        public bool IsBroken { get; private set; }
+
+        /// <summary>
+        /// Force the rope exerts on the end load now (N): on the end Rigidbody when there is one, else the bottom
+        /// tension. This is the arrest force of a fall-arrest lanyard.
+        /// </summary>
+        public float ArrestForce { get; private set; }
+
+        /// <summary>Largest <see cref="ArrestForce"/> since the build or <see cref="ResetPeaks"/> (N).</summary>
+        public float PeakArrestForce { get; private set; }
+
+        /// <summary>True while <see cref="PeakArrestForce"/> is within EN 355's 6 kN.</summary>
+        public bool MeetsEn355 => FallArrestLimits.MeetsEn355(PeakArrestForce);
+
+        /// <summary>True while <see cref="PeakArrestForce"/> is within ANSI Z359.13's 8 kN.</summary>
+        public bool MeetsAnsiZ359_13 => FallArrestLimits.MeetsAnsiZ359_13(PeakArrestForce);
+
+        /// <summary>Constraint residual of the last step: largest strain error against the compliance-consistent target (dimensionless).</summary>
+        public float Residual { get; private set; }
+
+        /// <summary>Wall-clock time of the last solver step (ms), for trading substeps/iterations against accuracy.</summary>
+        public float StepMilliseconds { get; private set; }
+
+        /// <summary>Particles in the built rope (segments + 1), or 0 before the build.</summary>
+        public int ParticleCount => _rope?.ParticleCount ?? 0;
+
+        /// <summary>Static sag computed by <see cref="PreviewStaticSag"/> in world space (m); empty until then.</summary>
+        public Vector3[] StaticSagPreview => _preview;
+
+        // ---- Settings properties (validated; changes apply at the next step) ------------------------------
+        /// <summary>Young's modulus E (Pa), 1e3 … 1e12. Setting it switches the stiffness input to E.</summary>
+        public float YoungsModulus
+        {
+            get => m_StiffnessInput == RopeStiffnessInput.YoungsModulus ? m_YoungsModulus : m_AxialStiffness / Area(m_Radius);
+            set
+            {
+                m_YoungsModulus = RopeParameterLimits.Check(value, RopeParameterLimits.MinYoungsModulus, RopeParameterLimits.MaxYoungsModulus, nameof(YoungsModulus), "Pa");
+                m_StiffnessInput = RopeStiffnessInput.YoungsModulus;
+                m_AxialStiffness = m_YoungsModulus * Area(m_Radius);
+                ApplySettings();
+            }
+        }
+
+        /// <summary>Axial stiffness E·A (N), 1 … 1e10. Setting it switches the stiffness input to E·A.</summary>
+        public float AxialStiffness
+        {
+            get => m_StiffnessInput == RopeStiffnessInput.AxialStiffness ? m_AxialStiffness : m_YoungsModulus * Area(m_Radius);
+            set
+            {
+                m_AxialStiffness = RopeParameterLimits.Check(value, RopeParameterLimits.MinAxialStiffness, RopeParameterLimits.MaxAxialStiffness, nameof(AxialStiffness), "N");
+                m_StiffnessInput = RopeStiffnessInput.AxialStiffness;
+                m_YoungsModulus = m_AxialStiffness / Area(m_Radius);
+                ApplySettings();
+            }
+        }
+
+        /// <summary>Material density ρ (kg/m³), 1 … 20000.</summary>
+        public float Density
+        {
+            get => m_Density;
+            set { m_Density = RopeParameterLimits.Check(value, RopeParameterLimits.MinDensity, RopeParameterLimits.MaxDensity, nameof(Density), "kg/m³"); ApplySettings(); }
+        }
+
+        /// <summary>Rope mass per metre ρ·πR² (kg/m).</summary>
+        public float LinearDensity => m_Density * Area(m_Radius);
+
+        /// <summary>Poisson ratio ν (dimensionless), −1 … 0.5.</summary>
+        public float PoissonRatio
+        {
+            get => m_PoissonRatio;
+            set { m_PoissonRatio = RopeParameterLimits.Check(value, RopeParameterLimits.MinPoisson, RopeParameterLimits.MaxPoisson, nameof(PoissonRatio), ""); ApplySettings(); }
+        }
+
+        /// <summary>XPBD damping coefficient β (s), 0 … 1.</summary>
+        public float Damping
+        {
+            get => m_Damping;
+            set { m_Damping = RopeParameterLimits.Check(value, RopeParameterLimits.MinDamping, RopeParameterLimits.MaxDamping, nameof(Damping), "s"); ApplySettings(); }
+        }
+
+        /// <summary>Rest length L (m), 0.01 … 1000.</summary>
+        public float RestLength
+        {
+            get => m_RestLength;
+            set { m_RestLength = RopeParameterLimits.Check(value, RopeParameterLimits.MinRestLength, RopeParameterLimits.MaxRestLength, nameof(RestLength), "m"); ApplySettings(); }
+        }
+
+        /// <summary>Rest radius R (m), 1e-4 … 1. With E·A as the stiffness input, E·A is kept and E follows.</summary>
+        public float Radius
+        {
+            get => m_Radius;
+            set
+            {
+                m_Radius = RopeParameterLimits.Check(value, RopeParameterLimits.MinRadius, RopeParameterLimits.MaxRadius, nameof(Radius), "m");
+                SyncStiffness();
+                ApplySettings();
+            }
+        }
+
+        /// <summary>Segment count, 1 … 1000. A new value rebuilds the rope at the next step.</summary>
+        public int SegmentCount
+        {
+            get => m_SegmentCount;
+            set
+            {
+                m_SegmentCount = RopeParameterLimits.Check(value, RopeParameterLimits.MinSegments, RopeParameterLimits.MaxSegments, nameof(SegmentCount));
+                if (_rope != null && _rope.SegmentCount != m_SegmentCount) _rebuildPending = true;
+            }
+        }
+
+        /// <summary>Constraint solver: exact chain solve or Gauss–Seidel.</summary>
+        public ConstraintSolverKind Solver
+        {
+            get => m_Solver;
+            set { m_Solver = value; ApplySettings(); }
+        }
+
+        /// <summary>Substeps per physics step, 1 … 1000.</summary>
+        public int Substeps
+        {
+            get => m_Substeps;
+            set { m_Substeps = RopeParameterLimits.Check(value, RopeParameterLimits.MinSubsteps, RopeParameterLimits.MaxSubsteps, nameof(Substeps)); ApplySettings(); }
+        }
+
+        /// <summary>Iterations per substep, 1 … 1000.</summary>
+        public int Iterations
+        {
+            get => m_Iterations;
+            set { m_Iterations = RopeParameterLimits.Check(value, RopeParameterLimits.MinIterations, RopeParameterLimits.MaxIterations, nameof(Iterations)); ApplySettings(); }
+        }
+
+        /// <summary>Rope (pulls only) or rod (also pushes).</summary>
+        public TensionModel TensionModel
+        {
+            get => m_TensionModel;
+            set { m_TensionModel = value; ApplySettings(); }
+        }
+
+        /// <summary>Gravity on the rope (m/s²).</summary>
+        public Vector3 Gravity
+        {
+            get => m_Gravity;
+            set
+            {
+                if (!value.ToFloat3().IsFinite) throw new ArgumentException("Gravity must be finite (m/s²).", nameof(Gravity));
+                m_Gravity = value;
+                ApplySettings();
+            }
+        }
+
+        /// <summary>Neck onset radius r_min as a fraction of R, 0.01 … 1.</summary>
+        public float NeckRadiusFraction
+        {
+            get => m_NeckRadiusFraction;
+            set { m_NeckRadiusFraction = RopeParameterLimits.Check(value, RopeParameterLimits.MinNeckFraction, RopeParameterLimits.MaxNeckFraction, nameof(NeckRadiusFraction), ""); ApplySettings(); }
+        }
+
+        /// <summary>Defect position as a fraction of the rest length from the start, 0 … 1.</summary>
+        public float DefectPosition
+        {
+            get => m_DefectPosition;
+            set { m_DefectPosition = RopeParameterLimits.Check(value, 0f, 1f, nameof(DefectPosition), ""); ApplySettings(); }
+        }
+
+        /// <summary>Break strain l/L − 1 (dimensionless), 1e-3 … 10; used when <see cref="Fracture"/> is on.</summary>
+        public float BreakStrain
+        {
+            get => m_BreakStrain;
+            set { m_BreakStrain = RopeParameterLimits.Check(value, RopeParameterLimits.MinBreakStrain, RopeParameterLimits.MaxBreakStrain, nameof(BreakStrain), ""); ApplySettings(); }
+        }
+
+        /// <summary>Neck model used when <see cref="Necking"/> is on (Zone or Paper).</summary>
+        public NeckMode NeckMode
+        {
+            get => m_NeckMode;
+            set
+            {
+                if (value != NeckMode.Zone && value != NeckMode.Paper) throw new ArgumentOutOfRangeException(nameof(NeckMode), value, "NeckMode must be Zone or Paper (turn necking off with Necking = false)");
+                m_NeckMode = value;
+                ApplySettings();
+            }
+        }
+
+        /// <summary>Neck radius below which the rope breaks, as a fraction of R, 0 … 0.99 (0 = off).</summary>
+        public float BreakRadiusFraction
+        {
+            get => m_BreakRadiusFraction;
+            set { m_BreakRadiusFraction = RopeParameterLimits.Check(value, 0f, 0.99f, nameof(BreakRadiusFraction), ""); ApplySettings(); }
+        }
+
+        /// <summary>The core radius model, or null when thinning, necking and fracture are all off.</summary>
+        public HookeRope.Radius.RadiusModel RadiusModelCore => _simulation?.RadiusModel;
+
+        /// <summary>The core facade (solver rope + radius model), or null before the first build.</summary>
+        public RopeSimulation Simulation => _simulation;
+
+        /// <summary>Whether the radius follows the Poisson ratio.</summary>
+        public bool RadiusModel { get => m_RadiusModel; set { m_RadiusModel = value; ApplyFeatureToggles(); } }
+
+        /// <summary>Whether a neck forms at the defect below r_min.</summary>
+        public bool Necking { get => m_Necking; set { m_Necking = value; ApplyFeatureToggles(); } }
+
+        /// <summary>Whether the rope can break.</summary>
+        public bool Fracture { get => m_Fracture; set { m_Fracture = value; ApplyFeatureToggles(); } }
+
+        /// <summary>Start attachment. Changing what it points to takes effect at the next <see cref="Rebuild"/>.</summary>
+        public RopeEnd StartAttachment => m_Start;
+
+        /// <summary>End attachment. Changing what it points to takes effect at the next <see cref="Rebuild"/>.</summary>
+        public RopeEnd EndAttachment => m_End;
+
+        /// <summary>How the rope collides; takes effect at the next <see cref="Rebuild"/>.</summary>
+        public RopeCollisionMode CollisionMode { get => m_CollisionMode; set { m_CollisionMode = value; _rebuildPending |= _rope != null; } }
+
+        /// <summary>Colliders used in <see cref="RopeCollisionMode.ListedColliders"/> mode; takes effect at the next <see cref="Rebuild"/>.</summary>
+        public Collider[] Colliders { get => m_Colliders; set { m_Colliders = value ?? Array.Empty<Collider>(); _rebuildPending |= _rope != null; } }
+
+        /// <summary>Coulomb friction coefficient between rope and colliders (dimensionless), 0 … 2; takes effect at the next <see cref="Rebuild"/>.</summary>
+        public float Friction
+        {
+            get => m_Friction;
+            set { m_Friction = RopeParameterLimits.Check(value, RopeParameterLimits.MinFriction, RopeParameterLimits.MaxFriction, nameof(Friction), ""); _rebuildPending |= _rope != null; }
+        }
+
+        /// <summary>Compliance of the Transform attachments (m/N), 0 … 1; takes effect at the next <see cref="Rebuild"/>.</summary>
+        public float AttachmentCompliance
+        {
+            get => m_AttachmentCompliance;
+            set { m_AttachmentCompliance = RopeParameterLimits.Check(value, RopeParameterLimits.MinCompliance, RopeParameterLimits.MaxCompliance, nameof(AttachmentCompliance), "m/N"); _rebuildPending |= _rope != null; }
+        }
+
+        /// <summary>Plane Transforms (up axis = normal); takes effect at the next <see cref="Rebuild"/>.</summary>
+        public Transform[] Planes { get => m_Planes; set { m_Planes = value ?? Array.Empty<Transform>(); _rebuildPending |= _rope != null; } }
+
+        // ---- Unity messages -------------------------------------------------------------------------------
+        void Awake()
+        {
+            if (Application.isPlaying) Rebuild();
+        }
+
+        void FixedUpdate()
+        {
+            Simulate(Time.fixedDeltaTime);
+        }
+
+        void OnValidate()
+        {
+            Report(RopeParameterLimits.Clamp(ref m_RestLength, RopeParameterLimits.MinRestLength, RopeParameterLimits.MaxRestLength, 2f, "Rest length", "m"));
+            Report(RopeParameterLimits.Clamp(ref m_Radius, RopeParameterLimits.MinRadius, RopeParameterLimits.MaxRadius, 0.008f, "Radius", "m"));
+            Report(RopeParameterLimits.Clamp(ref m_SegmentCount, RopeParameterLimits.MinSegments, RopeParameterLimits.MaxSegments, "Segment count"));
+            Report(RopeParameterLimits.Clamp(ref m_YoungsModulus, RopeParameterLimits.MinYoungsModulus, RopeParameterLimits.MaxYoungsModulus, 1.5e8f, "Young's modulus", "Pa"));
+            Report(RopeParameterLimits.Clamp(ref m_AxialStiffness, RopeParameterLimits.MinAxialStiffness, RopeParameterLimits.MaxAxialStiffness, 30159f, "Axial stiffness", "N"));
+            Report(RopeParameterLimits.Clamp(ref m_Density, RopeParameterLimits.MinDensity, RopeParameterLimits.MaxDensity, 1140f, "Density", "kg/m³"));
+            Report(RopeParameterLimits.Clamp(ref m_PoissonRatio, RopeParameterLimits.MinPoisson, RopeParameterLimits.MaxPoisson, 0.3f, "Poisson ratio", ""));
+            Report(RopeParameterLimits.Clamp(ref m_Damping, RopeParameterLimits.MinDamping, RopeParameterLimits.MaxDamping, 0f, "Damping", "s"));
+            Report(RopeParameterLimits.Clamp(ref m_Substeps, RopeParameterLimits.MinSubsteps, RopeParameterLimits.MaxSubsteps, "Substeps"));
+            Report(RopeParameterLimits.Clamp(ref m_Iterations, RopeParameterLimits.MinIterations, RopeParameterLimits.MaxIterations, "Iterations"));
+            Report(RopeParameterLimits.Clamp(ref m_Friction, RopeParameterLimits.MinFriction, RopeParameterLimits.MaxFriction, 0.3f, "Friction", ""));
+            Report(RopeParameterLimits.Clamp(ref m_AttachmentCompliance, RopeParameterLimits.MinCompliance, RopeParameterLimits.MaxCompliance, 0f, "Attachment compliance", "m/N"));
+            Report(RopeParameterLimits.Clamp(ref m_NeckRadiusFraction, RopeParameterLimits.MinNeckFraction, RopeParameterLimits.MaxNeckFraction, 0.75f, "Neck radius fraction r_min/R", ""));
+            Report(RopeParameterLimits.Clamp(ref m_DefectPosition, 0f, 1f, 0.5f, "Defect position", ""));
+            Report(RopeParameterLimits.Clamp(ref m_BreakStrain, RopeParameterLimits.MinBreakStrain, RopeParameterLimits.MaxBreakStrain, 0.6f, "Break strain", ""));
+            Report(RopeParameterLimits.Clamp(ref m_BreakRadiusFraction, 0f, 0.99f, 0.25f, "Break radius fraction", ""));
+            if (m_NeckMode != NeckMode.Zone && m_NeckMode != NeckMode.Paper)
+            {
+                m_NeckMode = NeckMode.Zone;
+                Report("Neck mode must be Zone or Paper; set to Zone (use the Necking toggle to turn necking off).");
+            }
+            if (!m_Gravity.ToFloat3().IsFinite)
+            {
+                m_Gravity = new Vector3(0f, -9.81f, 0f);
+                Report("Gravity was not finite; reset to (0, -9.81, 0) m/s².");
+            }
+            SyncStiffness();
+            if (m_Colliders == null) m_Colliders = Array.Empty<Collider>();
+            if (m_Planes == null) m_Planes = Array.Empty<Transform>();
+            if (_rope == null) return;
+            if (_rope.SegmentCount != m_SegmentCount || (_simulation.RadiusSettings != null) != RadiusFeaturesOn) _rebuildPending = true;
+            else ApplySettings();
+        }
+
+        // ---- Public API -----------------------------------------------------------------------------------
+        /// <summary>
+        /// (Re)creates the core rope from the current settings: particles evenly from the start attachment to
+        /// the end attachment (or straight down from this object by the rest length), pins, loads and colliders.
+        /// Called in Awake during Play; call it yourself in edit-mode code and tests.
+        /// </summary>
+        public void Rebuild()
+        {
+            if (_rope != null && _onCoreBroken != null) _rope.Broken -= _onCoreBroken;
+            _settings = new RopeSettings();
+            WriteSettings(_settings);
+            _settings.SegmentCount = m_SegmentCount;
+
+            Vector3 here = transform.position;
+            Vector3 start = m_Start.WorldPosition(here);
+            Vector3 end = m_End.WorldPosition(new Vector3(start.x, start.y - m_RestLength, start.z));
+            _origin = start;
+            var rope = new Rope(_settings, Sim(start), Sim(end));
+            _rope = rope;
+            int last = _rope.ParticleCount - 1;
+
+            _startPin = _endPin = _startLoad = _endLoad = -1;
+            AttachEnd(m_Start, 0, ref _startPin, ref _startLoad);
+            AttachEnd(m_End, last, ref _endPin, ref _endLoad);
+
+            RegisterColliders();
+            WriteRadiusSettings(_radiusSettings);
+            _simulation = new RopeSimulation(rope, RadiusFeaturesOn ? _radiusSettings : null);
+
+            _onCoreBroken ??= OnCoreBroken;
+            _rope.Broken += _onCoreBroken;
+
+            int n = _rope.ParticleCount * 3;
+            _previous = new float[n];
+            _current = new float[n];
+            CopyPositions(_current);
+            Array.Copy(_current, _previous, n);
+
+            IsBroken = false;
+            _breakPending = false;
+            _rebuildPending = false;
+            ResetPeaks();
+            UpdateReadouts();
+        }
+
+        /// <summary>
+        /// Advances the rope by <paramref name="deltaTime"/> seconds: copies attachment and collider poses in,
+        /// steps the solver (substeps inside), applies the rope's forces to attached Rigidbodies and updates
+        /// the read-outs. FixedUpdate calls it with Time.fixedDeltaTime; call it yourself in edit-mode code.
+        /// </summary>
+        public void Simulate(float deltaTime)
+        {
+            if (!(deltaTime > 0f) || float.IsInfinity(deltaTime))
+                throw new ArgumentOutOfRangeException(nameof(deltaTime), deltaTime, "deltaTime must be in (0, +inf) seconds");
+            if (_rope == null || _rebuildPending) Rebuild();
+
+            CopyAttachmentsIn(m_Start, 0, _startPin, _startLoad);
+            CopyAttachmentsIn(m_End, _rope.ParticleCount - 1, _endPin, _endLoad);
+            _colliderBinding.UpdatePoses(_rope, _origin);
+
+            Array.Copy(_current, _previous, _current.Length);
+            _stopwatch.Restart();
+            var report = _simulation.Step(deltaTime);
+            _stopwatch.Stop();
+            StepMilliseconds = (float)_stopwatch.Elapsed.TotalMilliseconds;
+            Residual = report.Residual;
+            CopyPositions(_current);
+
+            ApplyForceToBody(m_Start, _startLoad);
+            ApplyForceToBody(m_End, _endLoad);
+            UpdateReadouts();
+
+            if (_breakPending)
+            {
+                _breakPending = false;
+                m_OnBreak?.Invoke(_breakPosition, _breakTension);
+            }
+        }
+
+        /// <summary>Clears <see cref="PeakTension"/> and <see cref="PeakArrestForce"/>.</summary>
+        public void ResetPeaks()
+        {
+            PeakTension = 0f;
+            PeakArrestForce = 0f;
+        }
+
+        /// <summary>
+        /// Writes the particle positions interpolated between the last two steps into <paramref name="destination"/>
+        /// as x, y, z triples in world space (m). <paramref name="alpha"/> is 0 at the previous step and 1 at the latest.
+        /// Returns the particle count written (0 before the build). Allocation-free.
+        /// </summary>
+        public int GetInterpolatedPositions(float alpha, float[] destination)
+        {
+            if (_rope == null) return 0;
+            if (destination == null || destination.Length < _current.Length)
+                throw new ArgumentException("destination must hold 3 × ParticleCount floats", nameof(destination));
+            alpha = alpha < 0f ? 0f : alpha > 1f ? 1f : alpha;
+            for (int i = 0; i < _current.Length; i += 3)
+            {
+                destination[i] = _origin.x + _previous[i] + (_current[i] - _previous[i]) * alpha;
+                destination[i + 1] = _origin.y + _previous[i + 1] + (_current[i + 1] - _previous[i + 1]) * alpha;
+                destination[i + 2] = _origin.z + _previous[i + 2] + (_current[i + 2] - _previous[i + 2]) * alpha;
+            }
+            return _rope.ParticleCount;
+        }
+
+        /// <summary>World position of particle <paramref name="particle"/> after the last step (m).</summary>
+        public Vector3 GetParticlePosition(int particle)
+        {
+            if (_rope == null) throw new InvalidOperationException("The rope is not built yet; call Rebuild() or enter Play.");
+            return _origin + _rope.GetPosition(particle).ToVector3();
+        }
+
+        /// <summary>Tension of segment <paramref name="segment"/> after the last step (N, ≥ 0 = pulling).</summary>
+        public float GetSegmentTension(int segment)
+        {
+            if (_rope == null) throw new InvalidOperationException("The rope is not built yet; call Rebuild() or enter Play.");
+            return _rope.Tensions[segment];
+        }
+
+        /// <summary>Radius of particle <paramref name="particle"/> (m): the Poisson/neck radius when the radius model is on, else R.</summary>
+        public float GetParticleRadius(int particle)
+        {
+            if (_rope == null) return m_Radius;
+            return _rope.ParticleRadius[particle];
+        }
+
+        /// <summary>
+        /// Fills <paramref name="radii"/> (m) with the rope radius at the given ring stations (segment index and
+        /// fraction along it): the radius model's profile (Poisson, neck) when it is on, else the rest radius.
+        /// </summary>
+        public void FillRingRadii(ReadOnlySpan<int> ringSegments, ReadOnlySpan<float> ringFractions, Span<float> radii)
+        {
+            var model = _simulation?.RadiusModel;
+            if (model != null && model.IsActive && model.SegmentCount == _rope.SegmentCount)
+            {
+                model.FillRingRadii(ringSegments, ringFractions, radii);
+                return;
+            }
+            for (int k = 0; k < ringSegments.Length; k++) radii[k] = m_Radius;
+        }
+
+        /// <summary>True when segment <paramref name="segment"/> has broken.</summary>
+        public bool IsSegmentBroken(int segment) => _rope != null && _rope.IsSegmentBroken(segment);
+
+        /// <summary>
+        /// Computes the static sag of the current settings between the current attachment positions without
+        /// entering Play (for the inspector's preview button): a separate core rope relaxes for
+        /// <paramref name="seconds"/> of simulated time with its velocities scaled by 0.85 every 1/60 s step (a
+        /// near-critical damping of the swing of a metre-scale rope), so it settles into the static shape; long
+        /// ropes swing slowly and need more seconds. The result is in <see cref="StaticSagPreview"/> (world, m).
+        /// </summary>
+        public Vector3[] PreviewStaticSag(float seconds = 6f)
+        {
+            if (!(seconds > 0f) || float.IsInfinity(seconds))
+                throw new ArgumentOutOfRangeException(nameof(seconds), seconds, "seconds must be in (0, +inf)");
+            var settings = new RopeSettings();
+            WriteSettings(settings);
+            settings.SegmentCount = m_SegmentCount;
+            settings.BreakStrain = float.PositiveInfinity;
+            Vector3 start = m_Start.WorldPosition(transform.position);
+            Vector3 end = m_End.WorldPosition(new Vector3(start.x, start.y - m_RestLength, start.z));
+            var rope = new Rope(settings, (start - start).ToFloat3(), (end - start).ToFloat3());
+            int last = rope.ParticleCount - 1;
+            PreviewEnd(rope, m_Start, 0, start);
+            PreviewEnd(rope, m_End, last, start);
+            const float dt = 1f / 60f;
+            int steps = (int)Math.Ceiling(seconds / dt);
+            for (int s = 0; s < steps; s++)
+            {
+                rope.Step(dt);
+                for (int i = 0; i <= last; i++) rope.SetVelocity(i, rope.GetVelocity(i) * 0.85f);
+            }
+            if (_preview.Length != rope.ParticleCount) _preview = new Vector3[rope.ParticleCount];
+            for (int i = 0; i <= last; i++) _preview[i] = start + rope.GetPosition(i).ToVector3();
+            return _preview;
+        }
+
+        // ---- Internals ------------------------------------------------------------------------------------
+        static float Area(float radius) => MathF.PI * radius * radius;
+
+        Float3 Sim(Vector3 world) => new Float3(world.x - _origin.x, world.y - _origin.y, world.z - _origin.z);
+
+        void Report(string message)
+        {
+            if (message != null) Debug.LogWarning("ElasticRope '" + name + "': " + message, this);
+        }
+
+        void SyncStiffness()
+        {
+            if (m_StiffnessInput == RopeStiffnessInput.YoungsModulus) m_AxialStiffness = m_YoungsModulus * Area(m_Radius);
+            else m_YoungsModulus = m_AxialStiffness / Area(m_Radius);
+        }
+
+        /// <summary>Writes every live setting (all but the segment count) into a core settings object.</summary>
+        void WriteSettings(RopeSettings settings)
+        {
+            settings.RestLength = m_RestLength;
+            settings.Radius = m_Radius;
+            if (m_StiffnessInput == RopeStiffnessInput.AxialStiffness) settings.AxialStiffness = m_AxialStiffness;
+            else settings.YoungsModulus = m_YoungsModulus;
+            settings.Density = m_Density;
+            settings.Damping = m_Damping;
+            settings.Gravity = m_Gravity.ToFloat3();
+            settings.Substeps = m_Substeps;
+            settings.Iterations = m_Iterations;
+            settings.Solver = m_Solver;
+            settings.Tension = m_TensionModel;
+            settings.BreakStrain = float.PositiveInfinity;
+        }
+
+        /// <summary>True when any radius-model feature (thinning, necking, fracture) is on; all off costs nothing per step.</summary>
+        bool RadiusFeaturesOn => m_RadiusModel || m_Necking || m_Fracture;
+
+        /// <summary>Writes the thinning, necking and break settings into the core radius settings.</summary>
+        void WriteRadiusSettings(RadiusSettings settings)
+        {
+            settings.PoissonEnabled = m_RadiusModel;
+            settings.PoissonRatio = m_PoissonRatio;
+            settings.RMinFraction = m_NeckRadiusFraction;
+            settings.NeckMode = m_Necking ? m_NeckMode : NeckMode.Off;
+            settings.DefectPosition = m_DefectPosition;
+            settings.BreakEnabled = m_Fracture;
+            settings.BreakElongation = m_BreakStrain;
+            settings.BreakRadiusFraction = m_Necking ? m_BreakRadiusFraction : 0f;
+        }
+
+        void ApplySettings()
+        {
+            if (_settings != null) WriteSettings(_settings);
+            if (_rope != null) WriteRadiusSettings(_radiusSettings);
+        }
+
+        void ApplyFeatureToggles()
+        {
+            if (_rope != null && (_simulation.RadiusSettings != null) != RadiusFeaturesOn) _rebuildPending = true;
+            ApplySettings();
+        }
+
+        void AttachEnd(RopeEnd end, int particle, ref int pin, ref int load)
+        {
+            switch (end.Kind)
+            {
+                case RopeEndKind.Transform:
+                    pin = _rope.AddPin(particle, Sim(end.Point.position), m_AttachmentCompliance);
+                    break;
+                case RopeEndKind.Rigidbody:
+                    load = _rope.AddLoad(particle, end.Body.mass);
+                    break;
+            }
+        }
+
+        void PreviewEnd(Rope rope, RopeEnd end, int particle, Vector3 origin)
+        {
+            switch (end.Kind)
+            {
+                case RopeEndKind.Transform:
+                    rope.AddPin(particle, (end.Point.position - origin).ToFloat3(), m_AttachmentCompliance);
+                    break;
+                case RopeEndKind.Rigidbody:
+                    rope.AddLoad(particle, end.Body.mass);
+                    break;
+            }
+        }
+
+        void CopyAttachmentsIn(RopeEnd end, int particle, int pin, int load)
+        {
+            if (pin >= 0 && end.Point != null)
+            {
+                _rope.SetPinTarget(pin, Sim(end.Point.position));
+            }
+            else if (load >= 0 && end.Body != null)
+            {
+                Vector3 point = end.WorldPosition(end.Body.position);
+                _rope.SetLoadState(load, Sim(point), end.Body.GetPointVelocity(point).ToFloat3());
+            }
+        }
+
+        void ApplyForceToBody(RopeEnd end, int load)
+        {
+            if (load < 0 || end.Body == null) return;
+            Vector3 force = _rope.GetLoadForce(load).ToVector3();
+            end.Body.AddForceAtPosition(force, end.WorldPosition(end.Body.position), ForceMode.Force);
+        }
+
+        void RegisterColliders()
+        {
+            switch (m_CollisionMode)
+            {
+                case RopeCollisionMode.Off:
+                    _colliderBinding.Register(_rope, Array.Empty<Collider>(), 0, Array.Empty<Transform>(), _origin, m_Friction, m_Start.Body, m_End.Body, this);
+                    break;
+                case RopeCollisionMode.ListedColliders:
+                    _colliderBinding.Register(_rope, m_Colliders, m_Colliders.Length, m_Planes, _origin, m_Friction, m_Start.Body, m_End.Body, this);
+                    break;
+                case RopeCollisionMode.LayerMask:
+                {
+                    _overlapBuffer ??= new Collider[64];
+                    Vector3 start = GetParticlePosition(0), end = GetParticlePosition(_rope.ParticleCount - 1);
+                    Vector3 center = (start + end) * 0.5f;
+                    float reach = m_RestLength * (1f + (m_Fracture ? m_BreakStrain : 1f)) + m_Radius;
+                    int count = Physics.OverlapSphereNonAlloc(center, reach, _overlapBuffer, m_CollisionLayers, QueryTriggerInteraction.Ignore);
+                    _colliderBinding.Register(_rope, _overlapBuffer, count, m_Planes, _origin, m_Friction, m_Start.Body, m_End.Body, this);
+                    break;
+                }
+            }
+        }
+
+        void CopyPositions(float[] destination)
+        {
+            var x = _rope.PositionX;
+            var y = _rope.PositionY;
+            var z = _rope.PositionZ;
+            for (int i = 0, j = 0; i < x.Length; i++, j += 3)
+            {
+                destination[j] = x[i];
+                destination[j + 1] = y[i];
+                destination[j + 2] = z[i];
+            }
+        }
+
+        void UpdateReadouts()
+        {
+            var tensions = _rope.Tensions;
+            var lengths = _rope.SegmentLengths;
+            float stretched = 0f, peak = PeakTension;
+            bool broken = false;
+            for (int s = 0; s < tensions.Length; s++)
+            {
+                if (_rope.IsSegmentBroken(s)) { broken = true; continue; }
+                stretched += lengths[s];
+                if (tensions[s] > peak) peak = tensions[s];
+            }
+            Elongation = stretched - m_RestLength;
+            TopTension = tensions.Length > 0 ? tensions[0] : 0f;
+            BottomTension = tensions.Length > 0 ? tensions[tensions.Length - 1] : 0f;
+            PeakTension = peak;
+            IsBroken |= broken;
+
+            var radii = _rope.ParticleRadius;
+            float minRadius = float.PositiveInfinity;
+            for (int i = 0; i < radii.Length; i++) if (radii[i] < minRadius) minRadius = radii[i];
+            MinRadius = radii.Length > 0 ? minRadius : m_Radius;
+            NeckRadius = _simulation.NeckRadius;
+            if (_simulation.MinRadius < MinRadius) MinRadius = _simulation.MinRadius;
+
+            ArrestForce = _endLoad >= 0 ? _rope.GetLoadForce(_endLoad).Length : BottomTension;
+            if (ArrestForce > PeakArrestForce) PeakArrestForce = ArrestForce;
+        }
+
+        void OnCoreBroken(RopeBreakEvent e)
+        {
+            IsBroken = true;
+            _breakPending = true;
+            _breakPosition = _origin + e.Position.ToVector3();
+            _breakTension = e.Tension;
+        }
+    }
+}

@@ -1,0 +1,147 @@
+using System;
+using HookeRope.Mathematics;
+using HookeRope.Solver;
+using UnityEngine;
+
+namespace HookeRope
+{
+    /// <summary>
+    /// Registers Unity Sphere, Capsule and Box colliders (and plane Transforms, whose up axis is the normal) with
+    /// a core <see cref="Rope"/> and copies their poses in each step. Poses are converted to the rope's simulation
+    /// frame (world axes, origin at <c>origin</c>). Scale is taken from <see cref="Transform.lossyScale"/>
+    /// (spheres and capsules use the largest relevant axis, as PhysX does).
+    /// </summary>
+    internal sealed class RopeColliderBinding
+    {
+        static readonly Float3 Up = new Float3(0f, 1f, 0f);
+
+        Collider[] _colliders = Array.Empty<Collider>();
+        Transform[] _planes = Array.Empty<Transform>();
+        int[] _colliderIds = Array.Empty<int>();
+        int[] _planeIds = Array.Empty<int>();
+        int _colliderCount;
+        int _planeCount;
+
+        /// <summary>Number of shapes registered with the rope.</summary>
+        public int Count => _colliderCount + _planeCount;
+
+        /// <summary>
+        /// Registers every supported collider and plane; unsupported colliders (mesh, terrain…) are skipped and
+        /// reported, triggers and colliders of the rope's own attached bodies (<paramref name="ownBodyA"/>,
+        /// <paramref name="ownBodyB"/>) are skipped silently.
+        /// </summary>
+        public void Register(Rope rope, Collider[] colliders, int colliderCount, Transform[] planes, Vector3 origin, float friction,
+            Rigidbody ownBodyA, Rigidbody ownBodyB, UnityEngine.Object context)
+        {
+            _colliders = new Collider[colliderCount];
+            _colliderIds = new int[colliderCount];
+            _colliderCount = 0;
+            for (int i = 0; i < colliderCount; i++)
+            {
+                var collider = colliders[i];
+                if (collider == null || collider.isTrigger) continue;
+                var body = collider.attachedRigidbody;
+                if (body != null && (body == ownBodyA || body == ownBodyB)) continue;
+                if (!TryShape(collider, origin, friction, out var shape))
+                {
+                    Debug.LogWarning("ElasticRope: collider '" + collider.name + "' is not a Sphere, Capsule or Box collider; the rope ignores it.", context);
+                    continue;
+                }
+                _colliders[_colliderCount] = collider;
+                _colliderIds[_colliderCount] = rope.AddCollider(in shape);
+                _colliderCount++;
+            }
+
+            int planeCount = planes == null ? 0 : planes.Length;
+            _planes = new Transform[planeCount];
+            _planeIds = new int[planeCount];
+            _planeCount = 0;
+            for (int i = 0; i < planeCount; i++)
+            {
+                var plane = planes[i];
+                if (plane == null) continue;
+                var shape = ColliderShape.Plane(Sim(plane.position, origin), plane.rotation.ToQuat().Rotate(Up), friction);
+                _planes[_planeCount] = plane;
+                _planeIds[_planeCount] = rope.AddCollider(in shape);
+                _planeCount++;
+            }
+        }
+
+        /// <summary>Copies the current collider and plane poses into the rope (allocation-free).</summary>
+        public void UpdatePoses(Rope rope, Vector3 origin)
+        {
+            for (int i = 0; i < _colliderCount; i++)
+            {
+                var collider = _colliders[i];
+                if (collider == null) continue;
+                var t = collider.transform;
+                rope.SetColliderPose(_colliderIds[i], Sim(t.TransformPoint(LocalCenter(collider)), origin), ShapeRotation(collider));
+            }
+            for (int i = 0; i < _planeCount; i++)
+            {
+                var plane = _planes[i];
+                if (plane == null) continue;
+                rope.SetColliderPose(_planeIds[i], Sim(plane.position, origin),
+                    Quat.FromToRotation(Up, plane.rotation.ToQuat().Rotate(Up)));
+            }
+        }
+
+        static Float3 Sim(Vector3 world, Vector3 origin) => new Float3(world.x - origin.x, world.y - origin.y, world.z - origin.z);
+
+        static Vector3 LocalCenter(Collider collider)
+        {
+            switch (collider)
+            {
+                case SphereCollider sphere: return sphere.center;
+                case CapsuleCollider capsule: return capsule.center;
+                case BoxCollider box: return box.center;
+                default: return Vector3.zero;
+            }
+        }
+
+        static Quat ShapeRotation(Collider collider)
+        {
+            var rotation = collider.transform.rotation.ToQuat();
+            if (collider is CapsuleCollider capsule)
+                return rotation * Quat.FromToRotation(Up, Axis(capsule.direction));
+            return rotation;
+        }
+
+        static Float3 Axis(int direction) =>
+            direction == 0 ? new Float3(1f, 0f, 0f) : direction == 2 ? new Float3(0f, 0f, 1f) : Up;
+
+        static bool TryShape(Collider collider, Vector3 origin, float friction, out ColliderShape shape)
+        {
+            var t = collider.transform;
+            var s = t.lossyScale;
+            float sx = Math.Abs(s.x), sy = Math.Abs(s.y), sz = Math.Abs(s.z);
+            var center = Sim(t.TransformPoint(LocalCenter(collider)), origin);
+            switch (collider)
+            {
+                case SphereCollider sphere:
+                    shape = ColliderShape.Sphere(center, Math.Max(1e-6f, sphere.radius * Math.Max(sx, Math.Max(sy, sz))), friction);
+                    return true;
+                case CapsuleCollider capsule:
+                {
+                    float axisScale = capsule.direction == 0 ? sx : capsule.direction == 2 ? sz : sy;
+                    float radiusScale = capsule.direction == 0 ? Math.Max(sy, sz) : capsule.direction == 2 ? Math.Max(sx, sy) : Math.Max(sx, sz);
+                    float radius = Math.Max(1e-6f, capsule.radius * radiusScale);
+                    float halfHeight = Math.Max(0f, 0.5f * capsule.height * axisScale - radius);
+                    shape = ColliderShape.Capsule(center, ShapeRotation(collider), radius, halfHeight, friction);
+                    return true;
+                }
+                case BoxCollider box:
+                {
+                    var size = box.size;
+                    var half = new Float3(Math.Max(1e-6f, 0.5f * Math.Abs(size.x) * sx), Math.Max(1e-6f, 0.5f * Math.Abs(size.y) * sy),
+                        Math.Max(1e-6f, 0.5f * Math.Abs(size.z) * sz));
+                    shape = ColliderShape.Box(center, ShapeRotation(collider), half, friction);
+                    return true;
+                }
+                default:
+                    shape = default;
+                    return false;
+            }
+        }
+    }
+}

@@ -1,0 +1,38 @@
+using System;
+using UnityEngine;
+
+namespace HookeRope
+{
+    /// <summary>
+    /// What one end of an <see cref="ElasticRope"/> is attached to: nothing (a free end), a Transform the end
+    /// follows (an anchor or an XR hand: the rope cannot move it), or a Rigidbody the rope pulls and is pulled
+    /// by (two-way, e.g. the harness D-ring of a worker rig). With a Rigidbody, <see cref="Point"/> (optional)
+    /// marks where on the body the rope is fixed; without one, the body's position is used.
+    /// </summary>
+    [Serializable]
+    public sealed class RopeEnd
+    {
+        [SerializeField, Tooltip("Transform this end follows (anchor, XR hand), or, with a Rigidbody, the attachment point on that body (e.g. a D-ring child). Empty = free end or the body's position.")]
+        Transform m_Point;
+
+        [SerializeField, Tooltip("Rigidbody this end pulls two-way (its mass in kg joins the rope; rope force is applied to it in N). Empty = kinematic or free end.")]
+        Rigidbody m_Body;
+
+        /// <summary>The Transform this end follows, or the attachment point on <see cref="Body"/>; null when neither.</summary>
+        public Transform Point { get => m_Point; set => m_Point = value; }
+
+        /// <summary>The Rigidbody this end pulls two-way; null for a kinematic or free end.</summary>
+        public Rigidbody Body { get => m_Body; set => m_Body = value; }
+
+        /// <summary>What the end is attached to, derived from which fields are set.</summary>
+        public RopeEndKind Kind => m_Body != null ? RopeEndKind.Rigidbody : m_Point != null ? RopeEndKind.Transform : RopeEndKind.Free;
+
+        /// <summary>World position of the attachment in metres, or <paramref name="fallback"/> for a free end.</summary>
+        public Vector3 WorldPosition(Vector3 fallback)
+        {
+            if (m_Point != null) return m_Point.position;
+            if (m_Body != null) return m_Body.position;
+            return fallback;
+        }
+    }
+}

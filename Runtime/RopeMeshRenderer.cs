@@ -1,0 +1,161 @@
+using System;
+using HookeRope.Geometry;
+using UnityEngine;
+using UnityEngine.Rendering;
+
+namespace HookeRope
+{
+    /// <summary>
+    /// Renders the <see cref="ElasticRope"/> on the same GameObject as a procedural tube whose radius follows the
+    /// rope's radius model (Poisson thinning, neck) with burred ends where it broke. Submesh 0 is the tube and
+    /// its caps (material 0), submesh 1 the burr strands (material 1, alpha-clipped burr texture). The tube is rebuilt every
+    /// LateUpdate from positions interpolated between the last two physics steps, so 90/120 Hz headsets see
+    /// smooth motion at any physics rate. The mesh is dynamic (MarkDynamic), its vertex layout is set once per
+    /// topology, vertices are uploaded with SetVertexBufferData from a preallocated array (no GC per frame),
+    /// indices only when the topology changes (new segment count, a break), and the bounds are set explicitly.
+    /// Vertices are in this GameObject's local space; keep its scale uniform.
+    /// </summary>
+    [AddComponentMenu("Physics/Elastic Rope Mesh")]
+    [HelpURL(ElasticRope.DocumentationUrl)]
+    [DisallowMultipleComponent]
+    [RequireComponent(typeof(MeshFilter), typeof(MeshRenderer))]
+    public sealed class RopeMeshRenderer : MonoBehaviour
+    {
+        /// <summary>Position, normal, tangent (xyzw) and uv, all float32: the layout of <see cref="TubeVertex"/>.</summary>
+        static readonly VertexAttributeDescriptor[] s_Layout =
+        {
+            new VertexAttributeDescriptor(VertexAttribute.Position, VertexAttributeFormat.Float32, 3),
+            new VertexAttributeDescriptor(VertexAttribute.Normal, VertexAttributeFormat.Float32, 3),
+            new VertexAttributeDescriptor(VertexAttribute.Tangent, VertexAttributeFormat.Float32, 4),
+            new VertexAttributeDescriptor(VertexAttribute.TexCoord0, VertexAttributeFormat.Float32, 2),
+        };
+
+        /// <summary>Per-frame upload flags: no index validation, no bounds recalculation, no renderer notification.</summary>
+        const MeshUpdateFlags FrameFlags = MeshUpdateFlags.DontValidateIndices | MeshUpdateFlags.DontRecalculateBounds |
+                                           MeshUpdateFlags.DontNotifyMeshUsers | MeshUpdateFlags.DontResetBoneBounds;
+
+        [SerializeField, Range(3, 64), Tooltip("Vertices around the tube (3–64). 8 is cheap, 16 smooth, 32 for close-ups.")]
+        int m_RadialSegments = 12;
+
+        [SerializeField, Tooltip("Generate the burr-strand material with the procedural burr texture when the renderer has no second material.")]
+        bool m_BurrTexture = true;
+
+        [SerializeField, Tooltip("Colour of the generated tube material (used only when the renderer has no material). Safety orange by default.")]
+        Color m_Color = new Color(0.93f, 0.5f, 0.12f, 1f);
+
+        ElasticRope _rope;
+        MeshFilter _filter;
+        MeshRenderer _renderer;
+        Mesh _mesh;
+        RopeTube _tube;
+        float[] _world = Array.Empty<float>();
+        Material _generatedMaterial;
+        Material _generatedBurrMaterial;
+        Texture2D _generatedTexture;
+
+        /// <summary>Vertices around the tube, 3 … 64. A new value rebuilds the tube topology at the next frame.</summary>
+        public int RadialSegments
+        {
+            get => m_RadialSegments;
+            set
+            {
+                m_RadialSegments = RopeParameterLimits.Check(value, 3, 64, nameof(RadialSegments));
+                _tube = null;
+            }
+        }
+
+        /// <summary>The generated mesh, or null before the first <see cref="Render"/>.</summary>
+        public Mesh Mesh => _mesh;
+
+        void OnValidate()
+        {
+            string message = RopeParameterLimits.Clamp(ref m_RadialSegments, 3, 64, "Radial segments");
+            if (message != null) Debug.LogWarning("RopeMeshRenderer '" + name + "': " + message, this);
+            if (_tube != null && _tube.RadialSegments != m_RadialSegments) _tube = null;
+        }
+
+        void LateUpdate()
+        {
+            float alpha = Time.fixedDeltaTime > 0f ? (Time.time - Time.fixedTime) / Time.fixedDeltaTime : 1f;
+            Render(alpha);
+        }
+
+        void OnDestroy()
+        {
+            DestroyOwned(_mesh);
+            DestroyOwned(_generatedMaterial);
+            DestroyOwned(_generatedBurrMaterial);
+            DestroyOwned(_generatedTexture);
+            _mesh = null;
+            _generatedMaterial = null;
+            _generatedBurrMaterial = null;
+            _generatedTexture = null;
+        }
+
+        /// <summary>
+        /// Rebuilds the tube from the rope's positions interpolated by <paramref name="alpha"/> (0 = previous physics
+        /// step, 1 = latest) and uploads it. LateUpdate calls it; call it yourself in edit-mode code and tests.
+        /// Returns false when the rope is not built yet. Allocation-free unless the topology changed.
+        /// </summary>
+        public bool Render(float alpha)
+        {
+            if (_rope == null && !TryGetComponent(out _rope)) return false;
+            if (!_rope.IsBuilt) return false;
+            EnsureMesh();
+
+            int particles = _rope.ParticleCount;
+            if (_world.Length < particles * 3) _world = new float[particles * 3];
+            _rope.GetInterpolatedPositions(alpha, _world);
+
+            if (_tube == null || _tube.RadialSegments != m_RadialSegments) _tube = new RopeTube(m_RadialSegments);
+            bool topologyChanged = _tube.Update(_rope, _world, particles, transform);
+            if (topologyChanged)
+            {
+                _mesh.SetVertexBufferParams(_tube.VertexCount, s_Layout);
+                _mesh.SetIndexBufferParams(_tube.IndexCount, IndexFormat.UInt32);
+                _mesh.SetIndexBufferData(_tube.Indices, 0, 0, _tube.IndexCount, FrameFlags);
+                _mesh.subMeshCount = 2;
+                _mesh.SetSubMesh(0, new SubMeshDescriptor(0, _tube.TubeIndexCount, MeshTopology.Triangles), FrameFlags);
+                _mesh.SetSubMesh(1, new SubMeshDescriptor(_tube.TubeIndexCount, _tube.IndexCount - _tube.TubeIndexCount, MeshTopology.Triangles), FrameFlags);
+            }
+            _mesh.SetVertexBufferData(_tube.Vertices, 0, 0, _tube.VertexCount, 0, FrameFlags);
+            _mesh.bounds = _tube.Bounds;
+            return true;
+        }
+
+        void EnsureMesh()
+        {
+            if (_mesh != null) return;
+            _mesh = new Mesh { name = "Elastic Rope (generated)", hideFlags = HideFlags.DontSave };
+            _mesh.MarkDynamic();
+            if (_filter == null) _filter = GetComponent<MeshFilter>();
+            if (_renderer == null) _renderer = GetComponent<MeshRenderer>();
+            _filter.sharedMesh = _mesh;
+            var materials = _renderer.sharedMaterials;
+            Material tube = materials.Length > 0 ? materials[0] : null;
+            Material burr = materials.Length > 1 ? materials[1] : null;
+            if (tube == null)
+            {
+                _generatedMaterial = RopeDefaultMaterial.Create(null);
+                if (_generatedMaterial != null) _generatedMaterial.color = m_Color;
+                tube = _generatedMaterial;
+            }
+            if (burr == null)
+            {
+                if (m_BurrTexture && _generatedTexture == null) _generatedTexture = RopeTube.CreateBurrTexture();
+                _generatedBurrMaterial = m_BurrTexture ? RopeDefaultMaterial.CreateBurr(_generatedTexture) : null;
+                burr = _generatedBurrMaterial != null ? _generatedBurrMaterial : tube;
+            }
+            if (tube == null)
+                Debug.LogWarning("RopeMeshRenderer '" + name + "': no render-pipeline default material and no Standard shader; assign a material.", this);
+            _renderer.sharedMaterials = new[] { tube, burr };
+        }
+
+        static void DestroyOwned(UnityEngine.Object owned)
+        {
+            if (owned == null) return;
+            if (Application.isPlaying) Destroy(owned);
+            else DestroyImmediate(owned);
+        }
+    }
+}

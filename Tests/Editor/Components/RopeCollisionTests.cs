@@ -1,0 +1,57 @@
+using NUnit.Framework;
+using UnityEngine;
+
+namespace HookeRope.Tests.Components
+{
+    /// <summary>Unity only (edit mode): a rope lowered onto a SphereCollider stays outside it (to its particle radius).</summary>
+    [TestFixture]
+    public sealed class RopeCollisionTests
+    {
+        UnityRopeScene _scene;
+
+        [SetUp] public void SetUp() { _scene = new UnityRopeScene(); _scene.Begin(); }
+        [TearDown] public void TearDown() => _scene.End();
+
+        [Test]
+        public void ParticlesStayOutsideTheListedSphere()
+        {
+            var sphereObject = _scene.Track(new GameObject("Sphere"));
+            sphereObject.transform.position = new Vector3(0f, 1f, 0f);
+            var sphere = sphereObject.AddComponent<SphereCollider>();
+            sphere.radius = 0.3f;
+
+            var left = _scene.Point("Left", new Vector3(-1f, 1.6f, 0f));
+            var right = _scene.Point("Right", new Vector3(1f, 1.6f, 0f));
+            var rope = _scene.Rope("Rope", left.position);
+            rope.RestLength = 2.4f;
+            rope.SegmentCount = 40;
+            rope.Radius = 0.01f;
+            rope.AxialStiffness = 2000f;
+            rope.Fracture = false;
+            rope.CollisionMode = RopeCollisionMode.ListedColliders;
+            rope.Colliders = new Collider[] { sphere };
+            rope.StartAttachment.Point = left;
+            rope.EndAttachment.Point = right;
+            rope.Rebuild();
+
+            for (int step = 0; step < 200; step++)
+            {
+                float y = 1.6f - 1.2f * Mathf_Min(1f, step / 100f);
+                left.position = new Vector3(-1f, y, 0f);
+                right.position = new Vector3(1f, y, 0f);
+                rope.Simulate(0.01f);
+            }
+
+            float closest = float.PositiveInfinity;
+            for (int i = 0; i < rope.ParticleCount; i++)
+            {
+                float d = (rope.GetParticlePosition(i) - sphereObject.transform.position).magnitude - rope.GetParticleRadius(i);
+                if (d < closest) closest = d;
+            }
+            Assert.That(closest, Is.GreaterThan(0.3f - 0.01f));
+            Assert.That(rope.GetParticlePosition(rope.ParticleCount / 2).y, Is.GreaterThan(1.2f), "the rope drapes over the sphere");
+        }
+
+        static float Mathf_Min(float a, float b) => a < b ? a : b;
+    }
+}

@@ -1,0 +1,84 @@
+using NUnit.Framework;
+using UnityEngine;
+
+namespace HookeRope.Tests.Components
+{
+    /// <summary>
+    /// Unity only (edit mode): the rope mesh built from a stepped rope has finite vertices that stay near the rope
+    /// and inside the bounds set on the mesh, also after a break changed the topology.
+    /// </summary>
+    [TestFixture]
+    public sealed class RopeMeshRendererTests
+    {
+        UnityRopeScene _scene;
+
+        [SetUp] public void SetUp() { _scene = new UnityRopeScene(); _scene.Begin(); }
+        [TearDown] public void TearDown() => _scene.End();
+
+        (ElasticRope Rope, RopeMeshRenderer Renderer, Transform Grip) Build()
+        {
+            var top = _scene.Point("Top", new Vector3(0f, 3f, 0f));
+            var grip = _scene.Point("Grip", new Vector3(0.3f, 2f, 0f));
+            var go = _scene.Track(new GameObject("Rope", typeof(MeshFilter), typeof(MeshRenderer), typeof(ElasticRope), typeof(RopeMeshRenderer)));
+            var rope = go.GetComponent<ElasticRope>();
+            rope.RestLength = 1.2f;
+            rope.Radius = 0.02f;
+            rope.SegmentCount = 20;
+            rope.BreakStrain = 0.3f;
+            rope.StartAttachment.Point = top;
+            rope.EndAttachment.Point = grip;
+            rope.Rebuild();
+            return (rope, go.GetComponent<RopeMeshRenderer>(), grip);
+        }
+
+        static void AssertMeshFollowsRope(ElasticRope rope, Mesh mesh)
+        {
+            var vertices = mesh.vertices;
+            Assert.That(vertices.Length, Is.GreaterThan(0));
+            var bounds = mesh.bounds;
+            Vector3 min = bounds.center - bounds.size * 0.5f, max = bounds.center + bounds.size * 0.5f;
+            float reach = 20f * rope.Radius;
+            for (int v = 0; v < vertices.Length; v++)
+            {
+                var p = vertices[v];
+                Assert.That(float.IsNaN(p.x) || float.IsNaN(p.y) || float.IsNaN(p.z), Is.False, "vertex " + v + " is NaN");
+                Assert.That(p.x >= min.x - 1e-4f && p.y >= min.y - 1e-4f && p.z >= min.z - 1e-4f &&
+                            p.x <= max.x + 1e-4f && p.y <= max.y + 1e-4f && p.z <= max.z + 1e-4f, Is.True, "vertex " + v + " outside the mesh bounds");
+                float nearest = float.PositiveInfinity;
+                for (int i = 0; i < rope.ParticleCount; i++)
+                {
+                    float d = (rope.transform.TransformPoint(p) - rope.GetParticlePosition(i)).magnitude;
+                    if (d < nearest) nearest = d;
+                }
+                Assert.That(nearest, Is.LessThan(reach + 1.2f / 20f), "vertex " + v + " far from the rope");
+            }
+        }
+
+        [Test]
+        public void MeshOfSteppedRopeIsFiniteAndFollowsTheRope()
+        {
+            var (rope, renderer, _) = Build();
+            for (int step = 0; step < 100; step++) rope.Simulate(0.01f);
+            Assert.That(renderer.Render(0.5f), Is.True);
+            AssertMeshFollowsRope(rope, renderer.Mesh);
+        }
+
+        [Test]
+        public void MeshStaysFiniteAfterTheRopeBreaks()
+        {
+            var (rope, renderer, grip) = Build();
+            renderer.Render(1f);
+            int intactVertices = renderer.Mesh.vertexCount;
+            for (int step = 0; step < 300 && !rope.IsBroken; step++)
+            {
+                grip.position = new Vector3(0.3f, 2f - 0.004f * step, 0f);
+                rope.Simulate(0.01f);
+            }
+            Assert.That(rope.IsBroken, Is.True);
+            rope.Simulate(0.01f);
+            renderer.Render(1f);
+            Assert.That(renderer.Mesh.vertexCount, Is.GreaterThan(intactVertices), "broken ends add caps and burr strands");
+            AssertMeshFollowsRope(rope, renderer.Mesh);
+        }
+    }
+}

@@ -1,0 +1,26 @@
+using UnityEngine;
+
+namespace UnityEditor
+{
+    /// <summary>Shim of UnityEditor.EditorGUILayout: auto-layouted version of EditorGUI.</summary>
+    public class EditorGUILayout
+    {
+        /// <summary>Make a field for SerializedProperty.</summary>
+        public static bool PropertyField(SerializedProperty property, params GUILayoutOption[] options) => throw Shim.NotRun;
+
+        /// <summary>Make a field for SerializedProperty.</summary>
+        public static bool PropertyField(SerializedProperty property, bool includeChildren, params GUILayoutOption[] options) => throw Shim.NotRun;
+
+        /// <summary>Make a label with a foldout arrow to the left of it.</summary>
+        public static bool Foldout(bool foldout, string content, bool toggleOnLabelClick) => throw Shim.NotRun;
+
+        /// <summary>Make a help box with a message to the user.</summary>
+        public static void HelpBox(string message, MessageType type) => throw Shim.NotRun;
+
+        /// <summary>Make a label field. (Useful for showing read-only info.)</summary>
+        public static void LabelField(string label, string label2, params GUILayoutOption[] options) => throw Shim.NotRun;
+
+        /// <summary>Make a small space between the previous control and the following.</summary>
+        public static void Space() => throw Shim.NotRun;
+    }
+}

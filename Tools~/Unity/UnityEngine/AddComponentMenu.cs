@@ -1,0 +1,9 @@
+namespace UnityEngine
+{
+    /// <summary>Shim of UnityEngine.AddComponentMenu: places the script in the component menu.</summary>
+    public sealed class AddComponentMenu : System.Attribute
+    {
+        /// <summary>Add an item in the Component menu.</summary>
+        public AddComponentMenu(string menuName) { }
+    }
+}

@@ -1,0 +1,8 @@
+namespace UnityEngine
+{
+    /// <summary>Shim of UnityEngine.GUILayoutOption: class internally used to pass layout options into GUILayout functions.</summary>
+    public sealed class GUILayoutOption
+    {
+        internal GUILayoutOption() { }
+    }
+}

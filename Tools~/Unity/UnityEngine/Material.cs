@@ -1,0 +1,27 @@
+namespace UnityEngine
+{
+    /// <summary>Shim of UnityEngine.Material.</summary>
+    public class Material : Object
+    {
+        /// <summary>Create a temporary Material from a Shader.</summary>
+        public Material(Shader shader) => throw Shim.NotRun;
+
+        /// <summary>Create a temporary Material by copying the shader and all properties from the source Material.</summary>
+        public Material(Material source) => throw Shim.NotRun;
+
+        /// <summary>The material's texture.</summary>
+        public Texture mainTexture { get => throw Shim.NotRun; set => throw Shim.NotRun; }
+
+        /// <summary>Render queue of this material.</summary>
+        public int renderQueue { get => throw Shim.NotRun; set => throw Shim.NotRun; }
+
+        /// <summary>Sets a named float value.</summary>
+        public void SetFloat(string name, float value) => throw Shim.NotRun;
+
+        /// <summary>Enables a local shader keyword for this material.</summary>
+        public void EnableKeyword(string keyword) => throw Shim.NotRun;
+
+        /// <summary>The main color of the Material.</summary>
+        public Color color { get => throw Shim.NotRun; set => throw Shim.NotRun; }
+    }
+}

@@ -1,0 +1,8 @@
+namespace UnityEngine
+{
+    /// <summary>Shim of UnityEngine.PropertyAttribute: base class to derive custom property attributes from.</summary>
+    [System.AttributeUsage(System.AttributeTargets.Field, Inherited = true, AllowMultiple = false)]
+    public abstract class PropertyAttribute : System.Attribute
+    {
+    }
+}

@@ -1,0 +1,9 @@
+namespace UnityEngine.Rendering
+{
+    /// <summary>Shim of UnityEngine.Rendering.RenderPipelineAsset: an asset that produces a specific IRenderPipeline.</summary>
+    public abstract class RenderPipelineAsset : ScriptableObject
+    {
+        /// <summary>Return the default Material for this pipeline.</summary>
+        public virtual Material defaultMaterial => throw Shim.NotRun;
+    }
+}

@@ -1,0 +1,7 @@
+namespace UnityEngine
+{
+    /// <summary>Shim of UnityEngine.ScriptableObject.</summary>
+    public class ScriptableObject : Object
+    {
+    }
+}

@@ -1,0 +1,8 @@
+namespace UnityEngine
+{
+    /// <summary>Shim of UnityEngine.SerializeField: force Unity to serialize a private field.</summary>
+    [System.AttributeUsage(System.AttributeTargets.Field)]
+    public sealed class SerializeField : System.Attribute
+    {
+    }
+}

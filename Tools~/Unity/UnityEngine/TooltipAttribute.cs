@@ -1,0 +1,10 @@
+namespace UnityEngine
+{
+    /// <summary>Shim of UnityEngine.TooltipAttribute: specify a tooltip for a field in the Inspector window.</summary>
+    [System.AttributeUsage(System.AttributeTargets.Field, Inherited = true, AllowMultiple = false)]
+    public class TooltipAttribute : PropertyAttribute
+    {
+        /// <summary>Specify a tooltip for a field.</summary>
+        public TooltipAttribute(string tooltip) { }
+    }
+}

@@ -1,0 +1,7 @@
+namespace UnityEngine
+{
+    /// <summary>Shim of UnityEngine.WaitForFixedUpdate: waits until next fixed frame rate update function.</summary>
+    public sealed class WaitForFixedUpdate : YieldInstruction
+    {
+    }
+}
