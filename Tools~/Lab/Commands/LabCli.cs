@@ -74,7 +74,7 @@ namespace HookeRope.Lab.Commands
         static Option<string> OutOption() => new Option<string>("--out", "-o")
         {
             Description = "Output folder (created if missing).",
-            DefaultValueFactory = _ => "lab-out",
+            DefaultValueFactory = _ => "lab-out~",
         };
 
         /// <summary>Runs a command body; invalid input becomes a one-line message and exit code 2, never a stack trace.</summary>

@@ -245,7 +245,6 @@ namespace HookeRope.Tests.Lint
             {
                 var name = Path.GetFileName(entry);
                 if (name.EndsWith(".meta", StringComparison.Ordinal) || IsIgnoredName(name)) continue;
-                if (name == LabOutput && Directory.Exists(entry)) continue;  // the lab's gitignored output folder
                 yield return entry;
             }
             foreach (var top in ImportedRoots)
@@ -304,9 +303,6 @@ namespace HookeRope.Tests.Lint
                         yield return inner;
             }
         }
-
-        /// <summary>Default output folder of the headless lab (gitignored, never committed).</summary>
-        const string LabOutput = "lab-out";
 
         static bool IsIgnoredName(string name) =>
             name.StartsWith(".", StringComparison.Ordinal) || name.EndsWith("~", StringComparison.Ordinal) ||
