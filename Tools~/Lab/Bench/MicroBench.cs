@@ -15,9 +15,9 @@ namespace HookeRope.Lab.Bench
     {
         /// <summary>Segments.</summary>
         public int Segments;
-        /// <summary>Gauss–Seidel: ns per constraint projection.</summary>
+        /// <summary>Gauss–Seidel: marginal ns per constraint projection (per-step work excluded).</summary>
         public double NsPerProjection;
-        /// <summary>Exact chain: ns per segment and iteration.</summary>
+        /// <summary>Exact chain: marginal ns per segment and iteration (per-step work excluded).</summary>
         public double NsPerSegmentIteration;
         /// <summary>Exact chain: µs per host step (4 substeps × 1 iteration).</summary>
         public double MicrosecondsPerStep;
@@ -73,23 +73,27 @@ namespace HookeRope.Lab.Bench
         static int StepsFor(int segments, int work, bool quick) =>
             Math.Max(20, (int)((quick ? 2e5 : 2e6) / ((double)segments * work)));
 
-        /// <summary>Measures every size.</summary>
+        /// <summary>
+        /// Measures every size. Per-projection and per-segment-iteration costs are marginal: the
+        /// difference between steps with many and few iterations (1 substep) divided by the extra
+        /// projections, so the per-step work (prediction, velocities, tensions, residual) is not
+        /// counted in them; it is reported separately as µs per step at 4 substeps × 1 iteration.
+        /// </summary>
         public static List<SizeResult> Scaling(bool quick, Action<string> progress)
         {
             var list = new List<SizeResult>();
             float dt = 1f / 90f;
+            const int few = 2, many = 10;
             foreach (int n in Sizes(quick))
             {
                 var result = new SizeResult { Segments = n };
-                const int gsIterations = 4;
-                var gs = ScenarioRunner.Build(Hanging(n, SolverMethod.GaussSeidel, 1, gsIterations), false).Rope;
-                result.NsPerProjection = TimeNs(() => gs.Step(dt), StepsFor(n, gsIterations, quick)) / (n * gsIterations);
+                result.NsPerProjection = MarginalNsPerSegmentIteration(n, SolverMethod.GaussSeidel, few, many, dt, quick);
+                result.NsPerSegmentIteration = MarginalNsPerSegmentIteration(n, SolverMethod.ExactChain, few, many, dt, quick);
 
                 var exactSetup = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), true);
                 var exact = exactSetup.Rope;
                 double stepNs = TimeNs(() => exact.Step(dt), StepsFor(n, 4, quick));
                 result.MicrosecondsPerStep = stepNs / 1000;
-                result.NsPerSegmentIteration = stepNs / (n * 4);
 
                 result.BytesPerStep = BytesPerStep(exactSetup, dt, 200);
 
@@ -108,6 +112,17 @@ namespace HookeRope.Lab.Bench
                 progress?.Invoke(n + " segments");
             }
             return list;
+        }
+
+        /// <summary>ns per segment and iteration: (T(many) − T(few)) / (segments · (many − few)), one substep, medians.</summary>
+        static double MarginalNsPerSegmentIteration(int n, SolverMethod method, int few, int many, float dt, bool quick)
+        {
+            var small = ScenarioRunner.Build(Hanging(n, method, 1, few), false).Rope;
+            var large = ScenarioRunner.Build(Hanging(n, method, 1, many), false).Rope;
+            int steps = StepsFor(n, many, quick);
+            double tSmall = TimeNs(() => small.Step(dt), steps);
+            double tLarge = TimeNs(() => large.Step(dt), steps);
+            return Math.Max(0.0, tLarge - tSmall) / ((double)n * (many - few));
         }
 
         /// <summary>Managed bytes allocated per host step (solver + radius glue), after a warm-up.</summary>
@@ -134,48 +149,74 @@ namespace HookeRope.Lab.Bench
             return Stats.LogLogSlope(x, y);
         }
 
-        /// <summary>Cost per host step of each optional feature, on and off, at 256 segments.</summary>
+        /// <summary>
+        /// Cost per host step of each optional feature, on and off, at 256 segments. The configurations
+        /// are timed in turn, round after round, and each reports its median over the rounds, so that
+        /// a slow spell of a shared machine hits every row alike.
+        /// </summary>
         public static List<FeatureResult> Features(bool quick)
         {
             const int n = 256;
             float dt = 1f / 90f;
-            int steps = quick ? 100 : 600;
-            var list = new List<FeatureResult>();
+            int steps = quick ? 50 : 300;
+            int rounds = quick ? 3 : 9;
+            var names = new List<string>();
+            var actions = new List<Action>();
 
             var baseline = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), false);
-            list.Add(new FeatureResult { Name = "baseline: exact chain, 4 substeps, nothing optional", MicrosecondsPerStep = TimeNs(() => baseline.Rope.Step(dt), steps) / 1000 });
+            names.Add("baseline: exact chain, 4 substeps, nothing optional");
+            actions.Add(() => baseline.Rope.Step(dt));
 
             var collider = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), false);
             collider.Rope.AddCollider(ColliderShape.Plane(new Float3(0f, -100f, 0f), new Float3(0f, 1f, 0f)));
-            list.Add(new FeatureResult { Name = "collisions on (one plane, never touched)", MicrosecondsPerStep = TimeNs(() => collider.Rope.Step(dt), steps) / 1000 });
+            names.Add("collisions on (one plane, never touched)");
+            actions.Add(() => collider.Rope.Step(dt));
 
             var radiusOff = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), true);
             radiusOff.Radius.Settings.PoissonEnabled = false;
             radiusOff.Radius.Settings.NeckMode = HookeRope.Radius.NeckMode.Off;
             radiusOff.Radius.Settings.BreakEnabled = false;
-            list.Add(new FeatureResult { Name = "radius model present, all parts off", MicrosecondsPerStep = TimeNs(() => radiusOff.Step(dt), steps) / 1000 });
+            names.Add("radius model present, all parts off");
+            actions.Add(() => radiusOff.Step(dt));
 
             var poisson = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), true);
             poisson.Radius.Settings.NeckMode = HookeRope.Radius.NeckMode.Off;
-            list.Add(new FeatureResult { Name = "radius on (Poisson thinning + break test)", MicrosecondsPerStep = TimeNs(() => poisson.Step(dt), steps) / 1000 });
+            names.Add("radius on (Poisson thinning + break test)");
+            actions.Add(() => poisson.Step(dt));
 
             var necking = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), true);
             necking.Radius.Settings.NeckMode = HookeRope.Radius.NeckMode.Zone;
             necking.Radius.Settings.RMinFraction = 0.999f;
-            list.Add(new FeatureResult { Name = "radius + necking (zone neck active)", MicrosecondsPerStep = TimeNs(() => necking.Step(dt), steps) / 1000 });
+            names.Add("radius + necking (zone neck active)");
+            actions.Add(() => necking.Step(dt));
 
             var meshed = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), true);
             var vertices = new TubeVertex[meshed.Simulation.GetVertexCount()];
             var indices = new int[meshed.Simulation.GetIndexCount()];
-            list.Add(new FeatureResult
+            names.Add("radius + tube mesh filled every step (RopeSimulation.FillMesh)");
+            actions.Add(() =>
             {
-                Name = "radius + tube mesh filled every step (RopeSimulation.FillMesh)",
-                MicrosecondsPerStep = TimeNs(() =>
-                {
-                    meshed.Step(dt);
-                    meshed.Simulation.FillMesh(vertices, indices);
-                }, steps) / 1000,
+                meshed.Step(dt);
+                meshed.Simulation.FillMesh(vertices, indices);
             });
+
+            var samples = new List<double>[actions.Count];
+            for (int a = 0; a < actions.Count; a++)
+            {
+                samples[a] = new List<double>();
+                var warm = Stopwatch.StartNew();
+                for (int i = 0; i < 20000 && warm.ElapsedMilliseconds < 250; i++) actions[a]();
+            }
+            for (int r = 0; r < rounds; r++)
+                for (int a = 0; a < actions.Count; a++)
+                {
+                    var watch = Stopwatch.StartNew();
+                    for (int i = 0; i < steps; i++) actions[a]();
+                    samples[a].Add(watch.Elapsed.TotalMilliseconds * 1e3 / steps);
+                }
+            var list = new List<FeatureResult>();
+            for (int a = 0; a < actions.Count; a++)
+                list.Add(new FeatureResult { Name = names[a], MicrosecondsPerStep = Stats.Median(samples[a]) });
             return list;
         }
     }
