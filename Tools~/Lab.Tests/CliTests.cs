@@ -6,23 +6,8 @@ namespace HookeRope.Lab.Tests
 {
     /// <summary>The command line end to end: files written, summary printed, errors without stack traces.</summary>
     [TestFixture]
-    public sealed class CliTests
+    public sealed class CliTests : TempFolderTest
     {
-        string dir;
-
-        [SetUp]
-        public void CreateFolder()
-        {
-            dir = Path.Combine(Path.GetTempPath(), "hookerope-lab-" + System.Guid.NewGuid().ToString("N"));
-            Directory.CreateDirectory(dir);
-        }
-
-        [TearDown]
-        public void DeleteFolder()
-        {
-            if (Directory.Exists(dir)) Directory.Delete(dir, true);
-        }
-
         int Invoke(out string output, out string error, params string[] args)
         {
             var o = new StringWriter();

@@ -9,23 +9,8 @@ namespace HookeRope.Lab.Tests
 {
     /// <summary>Smoke runs of report and stability on their reduced sets (no timing assertions).</summary>
     [TestFixture]
-    public sealed class CommandSmokeTests
+    public sealed class CommandSmokeTests : TempFolderTest
     {
-        string dir;
-
-        [SetUp]
-        public void CreateFolder()
-        {
-            dir = Path.Combine(Path.GetTempPath(), "hookerope-lab-" + System.Guid.NewGuid().ToString("N"));
-            Directory.CreateDirectory(dir);
-        }
-
-        [TearDown]
-        public void DeleteFolder()
-        {
-            if (Directory.Exists(dir)) Directory.Delete(dir, true);
-        }
-
         [Test]
         public void QuickReportWritesMarkdownAndParetoPlotAndTheExactSolveWins()
         {

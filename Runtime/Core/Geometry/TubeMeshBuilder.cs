@@ -194,12 +194,8 @@ namespace HookeRope.Geometry
             int tubeCursor = 0;
             int burrCursor = tubeIndexCount;
             int segment = 0;
-            while (segment < n)
+            while (NextPiece(brokenSegments, n, ref segment, out int a, out int b))
             {
-                if (hasBroken && brokenSegments[segment]) { segment++; continue; }
-                int a = segment;
-                while (segment < n && !(hasBroken && brokenSegments[segment])) segment++;
-                int b = segment;
                 BuildPiece(a, b, x, y, z, origin, vertices, indices, topologyChanged,
                     ref vertexBase, ref tubeCursor, ref burrCursor, ref bounds);
             }
@@ -210,6 +206,20 @@ namespace HookeRope.Geometry
                 origin, bounds.Min, bounds.Max);
         }
 
+        /// <summary>
+        /// Finds the next intact piece at or after <paramref name="segment"/>: segments [a, b) with no break
+        /// among them (an empty span means nothing is broken). Advances <paramref name="segment"/> to b.
+        /// </summary>
+        private static bool NextPiece(ReadOnlySpan<bool> brokenSegments, int n, ref int segment, out int a, out int b)
+        {
+            bool hasBroken = brokenSegments.Length > 0;
+            while (segment < n && hasBroken && brokenSegments[segment]) segment++;
+            a = segment;
+            while (segment < n && !(hasBroken && brokenSegments[segment])) segment++;
+            b = segment;
+            return a < n;
+        }
+
         private void Count(ReadOnlySpan<bool> brokenSegments, out int vertexCount, out int tubeIndexCount, out int burrIndexCount)
         {
             int n = layout.SegmentCount;
@@ -218,12 +228,8 @@ namespace HookeRope.Geometry
                 throw new ArgumentException("brokenSegments must be empty or hold SegmentCount = " + n + " flags.", nameof(brokenSegments));
             vertexCount = 0; tubeIndexCount = 0; burrIndexCount = 0;
             int segment = 0;
-            while (segment < n)
+            while (NextPiece(brokenSegments, n, ref segment, out int a, out int b))
             {
-                if (hasBroken && brokenSegments[segment]) { segment++; continue; }
-                int a = segment;
-                while (segment < n && !(hasBroken && brokenSegments[segment])) segment++;
-                int b = segment;
                 int rings = layout.FirstRing(b) - layout.FirstRing(a) + 1;
                 vertexCount += rings * (radial + 1);
                 tubeIndexCount += (rings - 1) * radial * 6;
