@@ -3,12 +3,8 @@ using System;
 namespace HookeRope.Solver
 {
     /// <summary>
-    /// One Gauss–Seidel XPBD iteration (Macklin 2016, with the damping of eq. 26) in red–black order:
-    /// first the even segments, then the odd ones. Segments of one colour share no particle, so their
-    /// projections are independent and the CPU overlaps them (natural order chains every projection on
-    /// the previous one's result: about 3× slower). For a chain — a consistently ordered, tridiagonal
-    /// system — both orders have the same asymptotic convergence rate. Tension-only segments clamp the
-    /// accumulated λ to the pulling side (λ ≤ 0).
+    /// One Gauss–Seidel XPBD iteration over the segments in order (Macklin 2016, with the damping
+    /// of eq. 26). Tension-only segments clamp the accumulated λ to the pulling side (λ ≤ 0).
     /// </summary>
     internal static class GaussSeidelSolver
     {
@@ -24,43 +20,42 @@ namespace HookeRope.Solver
             double[] lambda = c.Lambda;
             if (w.Length < s + 1 || px.Length < s + 1 || dx.Length < s + 1 || dy.Length < s + 1 || dz.Length < s + 1 || py.Length < s + 1 || pz.Length < s + 1) return;
             if (rest.Length < s || compliance.Length < s || nxs.Length < s || nys.Length < s || nzs.Length < s || broken.Length < s || lambda.Length < s) return;
-            for (int colour = 0; colour < 2; colour++)
+            float wa = w[0];
+            for (int j = 0; j < s; j++)
             {
-                for (int j = colour; j < s; j += 2)
+                float wb = w[j + 1];
+                if (broken[j]) { wa = wb; continue; }
+                double alpha = compliance[j];
+                double wSum = (double)wa + wb;
+                if (wSum == 0.0 && alpha == 0.0) { wa = wb; continue; }
+                float ddx = dx[j + 1] - dx[j], ddy = dy[j + 1] - dy[j], ddz = dz[j + 1] - dz[j];
+                float ex = (px[j + 1] - px[j]) + ddx, ey = (py[j + 1] - py[j]) + ddy, ez = (pz[j + 1] - pz[j]) + ddz;
+                float len = MathF.Sqrt(ex * ex + ey * ey + ez * ez);
+                float nx, ny, nz;
+                if (len > 1e-12f && len <= float.MaxValue)
                 {
-                    if (broken[j]) continue;
-                    float wa = w[j], wb = w[j + 1];
-                    double alpha = compliance[j];
-                    double wSum = (double)wa + wb;
-                    if (wSum == 0.0 && alpha == 0.0) continue;
-                    float ddx = dx[j + 1] - dx[j], ddy = dy[j + 1] - dy[j], ddz = dz[j + 1] - dz[j];
-                    float ex = (px[j + 1] - px[j]) + ddx, ey = (py[j + 1] - py[j]) + ddy, ez = (pz[j + 1] - pz[j]) + ddz;
-                    float len = MathF.Sqrt(ex * ex + ey * ey + ez * ez);
-                    float nx, ny, nz;
-                    if (len > 1e-12f && len <= float.MaxValue)
-                    {
-                        float inv = 1f / len;
-                        nx = ex * inv; ny = ey * inv; nz = ez * inv;
-                        nxs[j] = nx; nys[j] = ny; nzs[j] = nz;
-                    }
-                    else
-                    {
-                        nx = nxs[j]; ny = nys[j]; nz = nzs[j];
-                        if (!(len <= float.MaxValue)) len = 0f;
-                    }
-                    double alphaTilde = alpha * invH2;
-                    double g = alpha > 0.0 ? gamma : 0.0;
-                    double rel = g > 0.0 ? nx * ddx + ny * ddy + nz * ddz : 0.0;
-                    double d = (-((double)len - rest[j]) - alphaTilde * lambda[j] - g * rel) / ((1.0 + g) * wSum + alphaTilde);
-                    if (tensionOnly && lambda[j] + d > 0.0) d = -lambda[j];
-                    if (d != 0.0)
-                    {
-                        lambda[j] += d;
-                        float a = (float)(wa * d), b = (float)(wb * d);
-                        dx[j] -= nx * a; dy[j] -= ny * a; dz[j] -= nz * a;
-                        dx[j + 1] += nx * b; dy[j + 1] += ny * b; dz[j + 1] += nz * b;
-                    }
+                    float inv = 1f / len;
+                    nx = ex * inv; ny = ey * inv; nz = ez * inv;
+                    nxs[j] = nx; nys[j] = ny; nzs[j] = nz;
                 }
+                else
+                {
+                    nx = nxs[j]; ny = nys[j]; nz = nzs[j];
+                    if (!(len <= float.MaxValue)) len = 0f;
+                }
+                double alphaTilde = alpha * invH2;
+                double g = alpha > 0.0 ? gamma : 0.0;
+                double rel = g > 0.0 ? nx * ddx + ny * ddy + nz * ddz : 0.0;
+                double d = (-((double)len - rest[j]) - alphaTilde * lambda[j] - g * rel) / ((1.0 + g) * wSum + alphaTilde);
+                if (tensionOnly && lambda[j] + d > 0.0) d = -lambda[j];
+                if (d != 0.0)
+                {
+                    lambda[j] += d;
+                    float a = (float)(wa * d), b = (float)(wb * d);
+                    dx[j] -= nx * a; dy[j] -= ny * a; dz[j] -= nz * a;
+                    dx[j + 1] += nx * b; dy[j + 1] += ny * b; dz[j + 1] += nz * b;
+                }
+                wa = wb;
             }
         }
     }

@@ -89,6 +89,10 @@ namespace HookeRope.Lab.Simulation
         public double LateMaxEnergy = double.NegativeInfinity;
         /// <summary>Largest energy over the first half of the run, J.</summary>
         public double EarlyMaxEnergy = double.NegativeInfinity;
+        /// <summary>Largest kinetic + gravitational energy over the second half of the run, J.</summary>
+        public double LateMaxMotionEnergy = double.NegativeInfinity;
+        /// <summary>Largest kinetic + gravitational energy over the first half of the run, J.</summary>
+        public double EarlyMaxMotionEnergy = double.NegativeInfinity;
         /// <summary>Wall-clock time of the stepping loop in s.</summary>
         public double WallSeconds;
         /// <summary>Host steps taken.</summary>

@@ -205,10 +205,19 @@ namespace HookeRope.Lab.Simulation
                 }
                 if (options.TrackEnergy)
                 {
-                    double energy = rope.TotalEnergy();
+                    double motion = rope.KineticEnergy() + rope.GravitationalEnergy();
+                    double energy = motion + rope.ElasticEnergy();
                     if (energy > result.MaxEnergy) result.MaxEnergy = energy;
-                    if (k >= steps / 2) { if (energy > result.LateMaxEnergy) result.LateMaxEnergy = energy; }
-                    else if (energy > result.EarlyMaxEnergy) result.EarlyMaxEnergy = energy;
+                    if (k >= steps / 2)
+                    {
+                        if (energy > result.LateMaxEnergy) result.LateMaxEnergy = energy;
+                        if (motion > result.LateMaxMotionEnergy) result.LateMaxMotionEnergy = motion;
+                    }
+                    else
+                    {
+                        if (energy > result.EarlyMaxEnergy) result.EarlyMaxEnergy = energy;
+                        if (motion > result.EarlyMaxMotionEnergy) result.EarlyMaxMotionEnergy = motion;
+                    }
                 }
                 options.Progress?.Invoke(k);
                 if (options.RecordSamples && t >= nextSample - 1e-9)
