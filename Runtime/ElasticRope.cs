@@ -57,7 +57,7 @@ namespace HookeRope
         ConstraintSolverKind m_Solver = ConstraintSolverKind.ExactChain;
 
         [SerializeField, Tooltip("Substeps per physics step (1–1000). More substeps = stiffer, more accurate, slower.")]
-        int m_Substeps = 4;
+        int m_Substeps = 8;
 
         [SerializeField, Tooltip("Constraint iterations per substep (1–1000).")]
         int m_Iterations = 2;
