@@ -12,7 +12,8 @@ namespace HookeRope
     /// LateUpdate from positions interpolated between the last two physics steps, so 90/120 Hz headsets see
     /// smooth motion at any physics rate. The mesh is dynamic (MarkDynamic), its vertex layout is set once per
     /// topology, vertices are uploaded with SetVertexBufferData from a preallocated array (no GC per frame),
-    /// indices only when the topology changes (new segment count, a break), and the bounds are set explicitly.
+    /// indices only when the topology changes (new segment count, a break), and the bounds are set explicitly
+    /// before each vertex upload. One mesh per frame serves both eyes in single-pass instanced stereo.
     /// Vertices are in this GameObject's local space; keep its scale uniform.
     /// </summary>
     [AddComponentMenu("Physics/Elastic Rope Mesh")]
@@ -30,9 +31,13 @@ namespace HookeRope
             new VertexAttributeDescriptor(VertexAttribute.TexCoord0, VertexAttributeFormat.Float32, 2),
         };
 
-        /// <summary>Per-frame upload flags: no index validation, no bounds recalculation, no renderer notification.</summary>
+        /// <summary>
+        /// Upload flags: no index validation and no bounds recalculation (the bounds come from the tube builder and
+        /// are set before the vertex upload). Renderers are still notified (no DontNotifyMeshUsers): that flag
+        /// would require a later Mesh.MarkModified call, or the MeshRenderer keeps culling with stale bounds.
+        /// </summary>
         const MeshUpdateFlags FrameFlags = MeshUpdateFlags.DontValidateIndices | MeshUpdateFlags.DontRecalculateBounds |
-                                           MeshUpdateFlags.DontNotifyMeshUsers | MeshUpdateFlags.DontResetBoneBounds;
+                                           MeshUpdateFlags.DontResetBoneBounds;
 
         [SerializeField, Range(3, 64), Tooltip("Vertices around the tube (3–64). 8 is cheap, 16 smooth, 32 for close-ups.")]
         int m_RadialSegments = 12;
@@ -118,8 +123,9 @@ namespace HookeRope
                 _mesh.SetSubMesh(0, new SubMeshDescriptor(0, _tube.TubeIndexCount, MeshTopology.Triangles), FrameFlags);
                 _mesh.SetSubMesh(1, new SubMeshDescriptor(_tube.TubeIndexCount, _tube.IndexCount - _tube.TubeIndexCount, MeshTopology.Triangles), FrameFlags);
             }
-            _mesh.SetVertexBufferData(_tube.Vertices, 0, 0, _tube.VertexCount, 0, FrameFlags);
+            // Bounds first, so the renderer notification of the vertex upload already sees this frame's bounds.
             _mesh.bounds = _tube.Bounds;
+            _mesh.SetVertexBufferData(_tube.Vertices, 0, 0, _tube.VertexCount, 0, FrameFlags);
             return true;
         }
 
@@ -137,7 +143,7 @@ namespace HookeRope
             if (tube == null)
             {
                 _generatedMaterial = RopeDefaultMaterial.Create(null);
-                if (_generatedMaterial != null) _generatedMaterial.color = m_Color;
+                RopeDefaultMaterial.SetBaseColor(_generatedMaterial, m_Color);
                 tube = _generatedMaterial;
             }
             if (burr == null)

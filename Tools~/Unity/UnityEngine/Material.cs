@@ -21,6 +21,15 @@ namespace UnityEngine
         /// <summary>Enables a local shader keyword for this material.</summary>
         public void EnableKeyword(string keyword) => throw Shim.NotRun;
 
+        /// <summary>Checks if material's shader has a property of a given name.</summary>
+        public bool HasProperty(string name) => throw Shim.NotRun;
+
+        /// <summary>Sets a named texture.</summary>
+        public void SetTexture(string name, Texture value) => throw Shim.NotRun;
+
+        /// <summary>Sets a named color value.</summary>
+        public void SetColor(string name, Color value) => throw Shim.NotRun;
+
         /// <summary>The main color of the Material.</summary>
         public Color color { get => throw Shim.NotRun; set => throw Shim.NotRun; }
     }

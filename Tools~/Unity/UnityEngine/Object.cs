@@ -11,10 +11,10 @@ namespace UnityEngine
         public HideFlags hideFlags { get => throw Shim.NotRun; set => throw Shim.NotRun; }
 
         /// <summary>Removes a GameObject, component or asset.</summary>
-        public static void Destroy(Object obj) => throw Shim.NotRun;
+        public static void Destroy(Object obj, float t = 0.0F) => throw Shim.NotRun;
 
         /// <summary>Destroys the object obj immediately. You are strongly recommended to use Destroy instead.</summary>
-        public static void DestroyImmediate(Object obj) => throw Shim.NotRun;
+        public static void DestroyImmediate(Object obj, bool allowDestroyingAssets = false) => throw Shim.NotRun;
 
         /// <summary>Does the object exist?</summary>
         public static implicit operator bool(Object exists) => throw Shim.NotRun;

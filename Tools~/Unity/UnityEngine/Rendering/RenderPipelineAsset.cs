@@ -5,5 +5,8 @@ namespace UnityEngine.Rendering
     {
         /// <summary>Return the default Material for this pipeline.</summary>
         public virtual Material defaultMaterial => throw Shim.NotRun;
+
+        /// <summary>Return the default Shader for this pipeline.</summary>
+        public virtual Shader defaultShader => throw Shim.NotRun;
     }
 }
