@@ -37,6 +37,15 @@ namespace HookeRope.Solver
         public readonly double[] Lower, Diagonal, Upper, Rhs, Delta, Scratch, FullDiagonal, FullLower, FullUpper, FullRhs;
         public readonly bool[] Active;
 
+        // contacts (allocated by EnsureContacts when the rope gets its first collider; null before)
+        public float[] ContactNX, ContactNY, ContactNZ; // outward unit surface normal at the particle
+        public float[] ContactGap;                      // m, distance − radius (≥ 0) when the contact was detected
+        public float[] ContactLoad;                     // m, normal correction the contact took this substep (friction limit)
+        public int[] ContactCollider;                   // collider index, −1 = no contact
+        public bool[] ContactActive;                    // contact used by the current chain solve (tangent-plane mass)
+        public int[] ContactList;                       // particles with ContactCollider ≥ 0, first ContactCount entries
+        public int ContactCount;
+
         public ChainState(int segmentCount)
         {
             SegmentCount = segmentCount;
@@ -55,6 +64,31 @@ namespace HookeRope.Solver
             Rhs = new double[s]; Delta = new double[s]; Scratch = new double[s];
             FullDiagonal = new double[s]; FullLower = new double[s]; FullUpper = new double[s]; FullRhs = new double[s];
             Active = new bool[s];
+        }
+
+        /// <summary>Allocates the contact arrays once (when the first collider is added; never in a step).</summary>
+        public void EnsureContacts()
+        {
+            if (ContactCollider != null) return;
+            int n = ParticleCount;
+            ContactNX = new float[n]; ContactNY = new float[n]; ContactNZ = new float[n];
+            ContactGap = new float[n]; ContactLoad = new float[n];
+            ContactCollider = new int[n]; ContactActive = new bool[n]; ContactList = new int[n];
+            for (int i = 0; i < n; i++) ContactCollider[i] = -1;
+            ContactCount = 0;
+        }
+
+        /// <summary>Forgets every contact (no collider left).</summary>
+        public void ClearContacts()
+        {
+            if (ContactCollider == null) return;
+            for (int k = 0; k < ContactCount; k++)
+            {
+                int i = ContactList[k];
+                ContactCollider[i] = -1;
+                ContactActive[i] = false;
+            }
+            ContactCount = 0;
         }
 
         /// <summary>Unit direction of segment j (live positions Prev + D) into (nx, ny, nz) and its length; keeps the last valid direction when the ends coincide.</summary>

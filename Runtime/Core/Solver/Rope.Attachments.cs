@@ -205,6 +205,7 @@ namespace HookeRope.Solver
         public int AddCollider(in ColliderShape shape)
         {
             if (shape.Rotation.LengthSquared == 0f) throw new ArgumentException("shape must be built with ColliderShape.Plane/Sphere/Capsule/Box", nameof(shape));
+            chain.EnsureContacts();
             return colliders.Add(shape, shape.Position - Origin);
         }
 
