@@ -47,6 +47,7 @@ namespace HookeRope.Solver
                 if (pinCount > 0) Array.Clear(pinLambda, 0, pinCount * 3);
                 // push the prediction out of the colliders and find the contacts the chain solve folds in
                 if (hasColliders) colliders.Project(chain, h, false, true, true);
+                if (exact) chain.UpdateTransverseMass(hd); else chain.AugmentedCount = 0;
                 for (int it = 0; it < iterations; it++)
                 {
                     bool softPins = compliantPins > 0 && ProjectCompliantPins(hd, t);
