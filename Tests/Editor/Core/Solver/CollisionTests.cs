@@ -126,5 +126,69 @@ namespace HookeRope.Tests.Solver
             }
             Assert.That(rope.GetPosition(16).X, Is.GreaterThan(0.05f), "the rope was pushed to +X");
         }
+
+        /// <summary>
+        /// A cord pulled over a frictionless bar (capsule along Z, radius 0.1 m) by two pins, no gravity: the rope takes
+        /// the tangent–arc–tangent path around R = R_bar + r, and its tension must be E·A·(path/L − 1) all along it and at
+        /// both anchors. Returns (mean tension, largest relative tension deviation, anchor forces) after settling.
+        /// </summary>
+        private static void PullOverBar(int substeps, int iterations, out double expected, out double path, out Rope rope, out int left, out int right)
+        {
+            const float BarRadius = 0.1f, CordRadius = 0.005f, Length = 1.2f;
+            var settings = new RopeSettings
+            {
+                RestLength = Length, SegmentCount = 80, Radius = CordRadius, AxialStiffness = 200f, LinearDensity = 0.05f,
+                Gravity = Float3.Zero, Substeps = substeps, Iterations = iterations,
+            };
+            Float3 a0 = new Float3(-0.5f, 0.2f, 0f), b0 = new Float3(0.5f, 0.2f, 0f);
+            rope = new Rope(settings, a0, b0);
+            left = rope.AddPin(0, a0);
+            right = rope.AddPin(rope.ParticleCount - 1, b0);
+            rope.AddCollider(ColliderShape.Capsule(Float3.Zero, Quat.FromAxisAngle(new Float3(1f, 0f, 0f), MathF.PI / 2f), BarRadius, 0.5f));
+            const float Drop = 0.6f;
+            for (int k = 1; k <= 180; k++)
+            {
+                float f = Math.Min(k / 90f, 1f); // ends pulled down 0.6 m in 1 s, then held for 1 s
+                rope.SetPinTarget(left, new Float3(-0.5f, 0.2f - Drop * f, 0f));
+                rope.SetPinTarget(right, new Float3(0.5f, 0.2f - Drop * f, 0f));
+                rope.Step(RopeTestKit.HostStep);
+            }
+            // tangent + arc + tangent from A = (−0.5, −0.4) to B = (0.5, −0.4) around the bar's centre
+            double radius = BarRadius + CordRadius;
+            double d = Math.Sqrt(0.5 * 0.5 + 0.4 * 0.4);
+            double tangent = Math.Sqrt(d * d - radius * radius);
+            double toAnchor = Math.Atan2(0.4, 0.5);                 // anchors below the horizontal through the centre
+            double touch = Math.Acos(radius / d);                   // angle between the anchor ray and the tangent point
+            double arc = Math.PI - 2.0 * (touch - toAnchor);        // wrapped angle θ
+            path = 2.0 * tangent + radius * arc;
+            expected = 200.0 * (path / Length - 1.0);
+        }
+
+        [TestCase(16, 1)]
+        [TestCase(8, 2)]
+        public void TensionOverAFrictionlessBarIsEATimesTheWrappedStrain(int substeps, int iterations)
+        {
+            PullOverBar(substeps, iterations, out double expected, out double path, out Rope rope, out int left, out int right);
+            double length = 0.0, low = double.PositiveInfinity, high = 0.0, mean = 0.0;
+            for (int j = 0; j < rope.SegmentCount; j++)
+            {
+                length += rope.SegmentLengths[j];
+                low = Math.Min(low, rope.Tensions[j]);
+                high = Math.Max(high, rope.Tensions[j]);
+                mean += rope.Tensions[j] / rope.SegmentCount;
+            }
+            double mid = rope.Tensions[rope.SegmentCount / 2];
+            double anchorLeft = rope.GetPinForce(left).Length, anchorRight = rope.GetPinForce(right).Length;
+            double deepest = Deepest(rope, out _);
+            TestContext.WriteLine($"{substeps}x{iterations}: path {path:F5} m, rope {length:F5} m; E·A·strain {expected:F3} N; tension mean {mean:F3}, mid {mid:F3}, range {low:F3}–{high:F3} N; anchors {anchorLeft:F3} / {anchorRight:F3} N; deepest {deepest:E2} m");
+            Assert.That(RopeTestKit.AllFinite(rope), Is.True);
+            Assert.That(length, Is.EqualTo(path).Within(0.5).Percent, "the cord follows tangent + arc + tangent");
+            Assert.That(mid, Is.EqualTo(expected).Within(2).Percent, "tension over the bar");
+            Assert.That(low, Is.EqualTo(expected).Within(2).Percent, "lowest segment tension");
+            Assert.That(high, Is.EqualTo(expected).Within(2).Percent, "highest segment tension");
+            Assert.That(anchorLeft, Is.EqualTo(expected).Within(2).Percent, "left anchor force");
+            Assert.That(anchorRight, Is.EqualTo(expected).Within(2).Percent, "right anchor force");
+            Assert.That(deepest, Is.LessThan(0.01 * 0.005), "no particle deeper than 1 % of the cord radius");
+        }
     }
 }
