@@ -97,28 +97,31 @@ namespace HookeRope.Solver
             double h2 = h * h;
             int s = SegmentCount;
             int count = 0;
+            double previous = 0.0; // geometric stiffness 2T/ℓ of segment i − 1 (N/m)
             for (int i = 0; i < ParticleCount; i++)
             {
-                Augmented[i] = false;
-                if (InverseMass[i] == 0f) continue;
-                double stiffness = 0.0, tx = 0.0, ty = 0.0, tz = 0.0;
-                // tangent from the predicted positions: the rope direction this substep solves along
-                if (i > 0 && !Broken[i - 1])
+                double next = i < s ? GeometricStiffness(i) : 0.0;
+                double stiffness = previous + next;
+                previous = next;
+                // the common case (a slack or lightly loaded rope) costs one multiply and compare per particle
+                if (!(stiffness * h2 > Mass[i]) || InverseMass[i] == 0f)
                 {
-                    stiffness += GeometricStiffness(i - 1);
-                    AddDirection(i - 1, ref tx, ref ty, ref tz);
-                }
-                if (i < s && !Broken[i])
-                {
-                    stiffness += GeometricStiffness(i);
-                    AddDirection(i, ref tx, ref ty, ref tz);
+                    Augmented[i] = false;
+                    continue;
                 }
                 double inertia = Math.Min(stiffness * h2, MaxTransverseInertia * Mass[i]);
-                if (!(inertia > Mass[i])) continue;
+                double tx = 0.0, ty = 0.0, tz = 0.0;
+                // tangent from the predicted positions: the rope direction this substep solves along
+                bool interior = i > 0 && i < s && !Broken[i - 1] && !Broken[i];
+                if (i > 0 && !Broken[i - 1]) AddDirection(i - 1, ref tx, ref ty, ref tz);
+                if (i < s && !Broken[i]) AddDirection(i, ref tx, ref ty, ref tz);
                 double norm = Math.Sqrt(tx * tx + ty * ty + tz * tz);
                 // only where the rope is locally straight-ish: two unit directions at ≤ 60° sum to a length ≥ √3
-                bool interior = i > 0 && i < s && !Broken[i - 1] && !Broken[i];
-                if (!(norm > (interior ? MinStraightness : 0.5))) continue;
+                if (!(norm > (interior ? MinStraightness : 0.5)))
+                {
+                    Augmented[i] = false;
+                    continue;
+                }
                 TangentX[i] = (float)(tx / norm); TangentY[i] = (float)(ty / norm); TangentZ[i] = (float)(tz / norm);
                 TransverseInverseMass[i] = (float)(1.0 / inertia);
                 Augmented[i] = true;
@@ -139,6 +142,7 @@ namespace HookeRope.Solver
 
         private double GeometricStiffness(int j)
         {
+            if (Broken[j]) return 0.0;
             double t = Tension[j];
             if (!(t > 0.0)) return 0.0;
             double l = Math.Max(Length[j], 0.1 * RestLength[j]);
