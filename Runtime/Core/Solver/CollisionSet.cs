@@ -41,6 +41,32 @@ namespace HookeRope.Solver
 
         public ColliderShape Get(int i) => shapes[i];
 
+        /// <summary>Removes collider i; the colliders after it move down one index. Allocation-free.</summary>
+        public void RemoveAt(int i)
+        {
+            int tail = Count - i - 1;
+            if (tail > 0)
+            {
+                Array.Copy(shapes, i + 1, shapes, i, tail);
+                Array.Copy(startPosition, i + 1, startPosition, i, tail);
+                Array.Copy(endPosition, i + 1, endPosition, i, tail);
+                Array.Copy(position, i + 1, position, i, tail);
+                Array.Copy(velocity, i + 1, velocity, i, tail);
+                Array.Copy(startRotation, i + 1, startRotation, i, tail);
+                Array.Copy(endRotation, i + 1, endRotation, i, tail);
+                Array.Copy(rotation, i + 1, rotation, i, tail);
+            }
+            Count--;
+            shapes[Count] = default;
+        }
+
+        /// <summary>Removes every collider (the arrays are kept for reuse).</summary>
+        public void Clear()
+        {
+            for (int i = 0; i < Count; i++) shapes[i] = default;
+            Count = 0;
+        }
+
         public void SetPose(int i, Float3 localPosition, Quat newRotation)
         {
             endPosition[i] = localPosition;

@@ -190,5 +190,66 @@ namespace HookeRope.Tests.Solver
             Assert.That(anchorRight, Is.EqualTo(expected).Within(2).Percent, "right anchor force");
             Assert.That(deepest, Is.LessThan(0.01 * 0.005), "no particle deeper than 1 % of the cord radius");
         }
+
+        /// <summary>A free rope resting on a floor plane (y = 0) for 1 s, with a sphere far away as a second collider.</summary>
+        private static Rope RopeOnTheFloor(out float restingY)
+        {
+            var settings = new RopeSettings { RestLength = 1f, SegmentCount = 16, Radius = RopeRadius, Damping = 0.01f };
+            var rope = new Rope(settings, new Float3(-0.5f, RopeRadius, 0f), new Float3(0.5f, RopeRadius, 0f));
+            rope.AddCollider(ColliderShape.Plane(Float3.Zero, new Float3(0f, 1f, 0f)));
+            rope.AddCollider(ColliderShape.Sphere(new Float3(0f, 0f, 10f), 1f));
+            for (int k = 0; k < 90; k++) rope.Step(RopeTestKit.HostStep);
+            restingY = CentreY(rope);
+            return rope;
+        }
+
+        private static float CentreY(Rope rope)
+        {
+            double sum = 0.0, mass = 0.0;
+            for (int i = 0; i < rope.ParticleCount; i++) { sum += rope.GetParticleMass(i) * rope.GetPosition(i).Y; mass += rope.GetParticleMass(i); }
+            return (float)(sum / mass);
+        }
+
+        [Test]
+        public void RemovingTheFloorLetsTheRopeFallFreelyAndShiftsLaterColliders()
+        {
+            var rope = RopeOnTheFloor(out float restingY);
+            Assert.That(restingY, Is.EqualTo(RopeRadius).Within(1e-4), "it rests on the floor");
+            rope.RemoveCollider(0);
+            Assert.That(rope.ColliderCount, Is.EqualTo(1));
+            // the sphere moved down to index 0: 9 m from the origin to its surface
+            Assert.That(rope.ColliderDistance(0, Float3.Zero), Is.EqualTo(9f).Within(1e-4));
+            Assert.Throws<ArgumentOutOfRangeException>(() => rope.RemoveCollider(1));
+            for (int k = 0; k < 45; k++) rope.Step(RopeTestKit.HostStep);
+            // from rest, the centre of mass falls ½·g·t² (t = 0.5 s; the exact drop of the discrete integrator is
+            // ½·g·Δt·h·n(n+1) over n substeps of h, within 0.1 % of it at 720 substeps)
+            double t = 45 * RopeTestKit.HostStep;
+            Assert.That(restingY - CentreY(rope), Is.EqualTo(0.5 * RopeTestKit.G * t * t).Within(0.5).Percent);
+        }
+
+        [Test]
+        public void ClearingTheCollidersAllocatesNothingAndStopsTheCollisionWork()
+        {
+            var rope = RopeOnTheFloor(out float restingY);
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            rope.ClearColliders();
+            long clearing = GC.GetAllocatedBytesForCurrentThread() - before;
+            // three windows of 15 steps: a per-step allocation shows in every one, a one-off runtime
+            // allocation (tiered JIT) in at most one
+            long stepping = long.MaxValue;
+            for (int window = 0; window < 3; window++)
+            {
+                before = GC.GetAllocatedBytesForCurrentThread();
+                for (int k = 0; k < 15; k++) rope.Step(RopeTestKit.HostStep);
+                stepping = Math.Min(stepping, GC.GetAllocatedBytesForCurrentThread() - before);
+            }
+            Assert.That(clearing, Is.EqualTo(0), "ClearColliders");
+            Assert.That(stepping, Is.EqualTo(0), "steps after clearing");
+            Assert.That(rope.ColliderCount, Is.EqualTo(0));
+            double t = 45 * RopeTestKit.HostStep;
+            Assert.That(restingY - CentreY(rope), Is.EqualTo(0.5 * RopeTestKit.G * t * t).Within(0.5).Percent);
+            // colliders can be added again afterwards
+            Assert.That(rope.AddCollider(ColliderShape.Plane(new Float3(0f, -10f, 0f), new Float3(0f, 1f, 0f))), Is.EqualTo(0));
+        }
     }
 }
