@@ -37,6 +37,21 @@ namespace HookeRope.Solver
         public readonly double[] Lower, Diagonal, Upper, Rhs, Delta, Scratch, FullDiagonal, FullLower, FullUpper, FullRhs;
         public readonly bool[] Active;
 
+        // transverse stabilisation (see UpdateTransverseMass)
+        public readonly float[] TransverseInverseMass;  // 1/kg, w_t across the tangent where Augmented
+        public readonly float[] TangentX, TangentY, TangentZ;
+        public readonly bool[] Augmented;
+        public int AugmentedCount;
+
+        // contacts (allocated by EnsureContacts when the rope gets its first collider; null before)
+        public float[] ContactNX, ContactNY, ContactNZ; // outward unit surface normal at the particle
+        public float[] ContactGap;                      // m, distance − radius (≥ 0) when the contact was detected
+        public float[] ContactLoad;                     // m, normal correction the contact took this substep (friction limit)
+        public int[] ContactCollider;                   // collider index, −1 = no contact
+        public bool[] ContactActive;                    // contact used by the current chain solve (tangent-plane mass)
+        public int[] ContactList;                       // particles with ContactCollider ≥ 0, first ContactCount entries
+        public int ContactCount;
+
         public ChainState(int segmentCount)
         {
             SegmentCount = segmentCount;
@@ -55,6 +70,108 @@ namespace HookeRope.Solver
             Rhs = new double[s]; Delta = new double[s]; Scratch = new double[s];
             FullDiagonal = new double[s]; FullLower = new double[s]; FullUpper = new double[s]; FullRhs = new double[s];
             Active = new bool[s];
+            TransverseInverseMass = new float[n]; TangentX = new float[n]; TangentY = new float[n]; TangentZ = new float[n];
+            Augmented = new bool[n];
+        }
+
+        /// <summary>
+        /// Cap of the transverse inertia as a multiple of the particle's mass. Where the rope direction changes within a
+        /// substep (a kink, a yanked anchor) the constraint direction leaves the tangent, and a larger ratio would let the
+        /// solve throw the particle along the tangent (displacement amplified by up to sqrt(ratio)).
+        /// </summary>
+        public const double MaxTransverseInertia = 16.0;
+
+        /// <summary>|n_{i−1} + n_i| below which a particle is a kink (segments more than 60° apart) and keeps its plain mass.</summary>
+        private const double MinStraightness = 1.7320508;
+
+        /// <summary>
+        /// The exact solve linearises each segment along its direction, so a taut chain's transverse (bending) response is
+        /// explicit: its zig-zag mode has k = h²·Σ2T/ℓ / m per particle and grows once k &gt; 4/3 (tension above about
+        /// m·ℓ/(3h²)), saturating at that tension with the particles flipping every substep. Where k would exceed 1 this
+        /// gives the particle the transverse inertia h²·Σ2T/ℓ (row-sum lumped geometric stiffness, tensions T in N of the
+        /// last substep, lengths ℓ in m): inverse mass w along the tangent, w_t = 1/(h²·Σ2T/ℓ) across it. Along the rope
+        /// nothing changes and static equilibria are untouched; a particle within the limit keeps its plain mass.
+        /// </summary>
+        public void UpdateTransverseMass(double h)
+        {
+            double h2 = h * h;
+            int s = SegmentCount;
+            int count = 0;
+            double previous = 0.0; // geometric stiffness 2T/ℓ of segment i − 1 (N/m)
+            for (int i = 0; i < ParticleCount; i++)
+            {
+                double next = i < s ? GeometricStiffness(i) : 0.0;
+                double stiffness = previous + next;
+                previous = next;
+                // the common case (a slack or lightly loaded rope) costs one multiply and compare per particle
+                if (!(stiffness * h2 > Mass[i]) || InverseMass[i] == 0f)
+                {
+                    Augmented[i] = false;
+                    continue;
+                }
+                double inertia = Math.Min(stiffness * h2, MaxTransverseInertia * Mass[i]);
+                double tx = 0.0, ty = 0.0, tz = 0.0;
+                // tangent from the predicted positions: the rope direction this substep solves along
+                bool interior = i > 0 && i < s && !Broken[i - 1] && !Broken[i];
+                if (i > 0 && !Broken[i - 1]) AddDirection(i - 1, ref tx, ref ty, ref tz);
+                if (i < s && !Broken[i]) AddDirection(i, ref tx, ref ty, ref tz);
+                double norm = Math.Sqrt(tx * tx + ty * ty + tz * tz);
+                // only where the rope is locally straight-ish: two unit directions at ≤ 60° sum to a length ≥ √3
+                if (!(norm > (interior ? MinStraightness : 0.5)))
+                {
+                    Augmented[i] = false;
+                    continue;
+                }
+                TangentX[i] = (float)(tx / norm); TangentY[i] = (float)(ty / norm); TangentZ[i] = (float)(tz / norm);
+                TransverseInverseMass[i] = (float)(1.0 / inertia);
+                Augmented[i] = true;
+                count++;
+            }
+            AugmentedCount = count;
+        }
+
+        private void AddDirection(int j, ref double tx, ref double ty, ref double tz)
+        {
+            double ex = (double)(PrevX[j + 1] - PrevX[j]) + (DX[j + 1] - DX[j]);
+            double ey = (double)(PrevY[j + 1] - PrevY[j]) + (DY[j + 1] - DY[j]);
+            double ez = (double)(PrevZ[j + 1] - PrevZ[j]) + (DZ[j + 1] - DZ[j]);
+            double len = Math.Sqrt(ex * ex + ey * ey + ez * ez);
+            if (len > 1e-12 && len < double.PositiveInfinity) { tx += ex / len; ty += ey / len; tz += ez / len; }
+            else { tx += DirX[j]; ty += DirY[j]; tz += DirZ[j]; }
+        }
+
+        private double GeometricStiffness(int j)
+        {
+            if (Broken[j]) return 0.0;
+            double t = Tension[j];
+            if (!(t > 0.0)) return 0.0;
+            double l = Math.Max(Length[j], 0.1 * RestLength[j]);
+            return 2.0 * t / l;
+        }
+
+        /// <summary>Allocates the contact arrays once (when the first collider is added; never in a step).</summary>
+        public void EnsureContacts()
+        {
+            if (ContactCollider != null) return;
+            int n = ParticleCount;
+            ContactNX = new float[n]; ContactNY = new float[n]; ContactNZ = new float[n];
+            ContactGap = new float[n]; ContactLoad = new float[n];
+            ContactCollider = new int[n]; ContactActive = new bool[n]; ContactList = new int[n];
+            for (int i = 0; i < n; i++) ContactCollider[i] = -1;
+            ContactCount = 0;
+        }
+
+        /// <summary>Forgets every contact (no collider left).</summary>
+        public void ClearContacts()
+        {
+            if (ContactCollider == null) return;
+            for (int k = 0; k < ContactCount; k++)
+            {
+                int i = ContactList[k];
+                ContactCollider[i] = -1;
+                ContactActive[i] = false;
+            }
+            ContactCount = 0;
         }
 
         /// <summary>Unit direction of segment j (live positions Prev + D) into (nx, ny, nz) and its length; keeps the last valid direction when the ends coincide.</summary>

@@ -41,6 +41,32 @@ namespace HookeRope.Solver
 
         public ColliderShape Get(int i) => shapes[i];
 
+        /// <summary>Removes collider i; the colliders after it move down one index. Allocation-free.</summary>
+        public void RemoveAt(int i)
+        {
+            int tail = Count - i - 1;
+            if (tail > 0)
+            {
+                Array.Copy(shapes, i + 1, shapes, i, tail);
+                Array.Copy(startPosition, i + 1, startPosition, i, tail);
+                Array.Copy(endPosition, i + 1, endPosition, i, tail);
+                Array.Copy(position, i + 1, position, i, tail);
+                Array.Copy(velocity, i + 1, velocity, i, tail);
+                Array.Copy(startRotation, i + 1, startRotation, i, tail);
+                Array.Copy(endRotation, i + 1, endRotation, i, tail);
+                Array.Copy(rotation, i + 1, rotation, i, tail);
+            }
+            Count--;
+            shapes[Count] = default;
+        }
+
+        /// <summary>Removes every collider (the arrays are kept for reuse).</summary>
+        public void Clear()
+        {
+            for (int i = 0; i < Count; i++) shapes[i] = default;
+            Count = 0;
+        }
+
         public void SetPose(int i, Float3 localPosition, Quat newRotation)
         {
             endPosition[i] = localPosition;
@@ -69,31 +95,69 @@ namespace HookeRope.Solver
             }
         }
 
-        /// <summary>Pushes every dynamic particle out of every collider; applies friction when asked (substep h in s).</summary>
-        public void Project(ChainState c, float h, bool friction)
+        /// <summary>Contact detection margin as a fraction of the particle radius: a particle this close to a surface counts as touching it.</summary>
+        public const float ContactMarginFraction = 0.1f;
+
+        /// <summary>
+        /// Pushes every dynamic particle out of every collider (substep h in s). friction: apply Coulomb friction
+        /// (the last iteration), limited by μ times the particle's whole normal correction in this substep
+        /// (<see cref="ChainState.ContactLoad"/>: pushes plus the normal motion the chain solve's tangent-plane mass
+        /// withheld). detect: record for each particle the closest surface within
+        /// <see cref="ContactMarginFraction"/>·radius (normal, gap) as the contact set of the next chain solve;
+        /// startOfSubstep also resets the per-substep normal corrections.
+        /// </summary>
+        public void Project(ChainState c, float h, bool friction, bool detect, bool startOfSubstep)
         {
             int n = c.ParticleCount;
+            float[] load = c.ContactLoad;
+            if (detect) c.ClearContacts();
             for (int i = 0; i < n; i++)
             {
+                if (startOfSubstep) load[i] = 0f;
                 if (c.InverseMass[i] == 0f) continue;
                 float r = c.Radius[i];
+                float bestGap = ContactMarginFraction * r;
+                int best = -1;
+                Float3 bestNormal = Float3.Zero;
                 for (int k = 0; k < Count; k++)
                 {
                     var d = new Float3(c.DX[i], c.DY[i], c.DZ[i]);
                     var x = new Float3(c.PrevX[i], c.PrevY[i], c.PrevZ[i]) + d;
                     float distance = SignedDistance(k, x, out Float3 normal);
                     float push = r - distance;
-                    if (!(push > 0f)) continue;
-                    d += normal * push;
+                    if (detect)
+                    {
+                        float gap = push > 0f ? 0f : -push;
+                        if (gap <= bestGap && (best < 0 || gap < bestGap)) { bestGap = gap; best = k; bestNormal = normal; }
+                    }
+                    bool touching = push > 0f;
+                    if (touching)
+                    {
+                        d += normal * push;
+                        load[i] += push;
+                    }
+                    else if (!friction || c.ContactCollider[i] != k || -push > ContactMarginFraction * r)
+                    {
+                        continue;
+                    }
+                    // friction also acts where the chain solve held the particle on the surface (no push left)
                     if (friction && shapes[k].Friction > 0f)
                     {
                         Float3 moved = d - velocity[k] * h;
                         Float3 tangent = moved - normal * Float3.Dot(moved, normal);
                         float slide = tangent.Length;
-                        float limit = shapes[k].Friction * push;
+                        float limit = shapes[k].Friction * load[i];
                         if (slide > 0f) d -= slide <= limit ? tangent : tangent * (limit / slide);
                     }
                     c.DX[i] = d.X; c.DY[i] = d.Y; c.DZ[i] = d.Z;
+                }
+                if (best >= 0 && float.IsFinite(bestNormal.X + bestNormal.Y + bestNormal.Z))
+                {
+                    c.ContactCollider[i] = best;
+                    c.ContactActive[i] = true;
+                    c.ContactNX[i] = bestNormal.X; c.ContactNY[i] = bestNormal.Y; c.ContactNZ[i] = bestNormal.Z;
+                    c.ContactGap[i] = bestGap;
+                    c.ContactList[c.ContactCount++] = i;
                 }
             }
         }

@@ -89,27 +89,49 @@ namespace HookeRope.Solver
                 previousScale = scale;
             }
 
+            bool contacts = c.ContactCount > 0;
+            bool augmented = c.AugmentedCount > 0;
+            if (augmented)
+            {
+                for (int i = 0; i <= s; i++)
+                    if (c.Augmented[i] || (contacts && c.ContactActive[i])) RebuildAround(c, i, invH2, gammaAll);
+            }
+            else if (contacts)
+            {
+                for (int k = 0; k < c.ContactCount; k++)
+                {
+                    int i = c.ContactList[k];
+                    if (c.ContactActive[i]) RebuildAround(c, i, invH2, gammaAll);
+                }
+            }
+
             double[] delta = c.Delta;
             int passes = 0;
+            bool activeSetChanged = false;
             while (true)
             {
                 passes++;
                 Solve(c, tensionOnly);
-                if (!tensionOnly || passes >= MaxPasses) break;
-                bool changed = false;
+                if ((!tensionOnly && !contacts) || passes >= MaxPasses) break;
+                bool changed = contacts && UpdateContacts(c, tensionOnly, invH2, gammaAll);
+                if (!tensionOnly)
+                {
+                    if (!changed) break;
+                    continue;
+                }
                 for (int j = 0; j < s; j++)
                 {
                     if (fd[j] <= 0.0) continue;
                     if (active[j])
                     {
-                        if (lambda[j] + delta[j] > 0.0) { active[j] = false; changed = true; }
+                        if (lambda[j] + delta[j] > 0.0) { active[j] = false; changed = true; activeSetChanged = true; }
                     }
                     else
                     {
                         double residual = fr[j] - fd[j] * delta[j]
                             - (j > 0 ? fl[j] * delta[j - 1] : 0.0)
                             - (j + 1 < s ? fu[j] * delta[j + 1] : 0.0);
-                        if (residual < 0.0) { active[j] = true; changed = true; }
+                        if (residual < 0.0) { active[j] = true; changed = true; activeSetChanged = true; }
                     }
                 }
                 if (!changed) break;
@@ -129,9 +151,12 @@ namespace HookeRope.Solver
                     dx[j] -= nx * a; dy[j] -= ny * a; dz[j] -= nz * a;
                     dx[j + 1] += nx * b; dy[j + 1] += ny * b; dz[j + 1] += nz * b;
                 }
+                if (contacts || augmented) delta[j] = d;
                 wLeft = wRight;
             }
-            return poor || passes > 1;
+            if (contacts || augmented) ApplyMobility(c, augmented);
+            // a changed contact set alone does not call for the sweep (it would use the plain masses)
+            return poor || (contacts || augmented ? activeSetChanged : passes > 1);
         }
 
         /// <summary>Solves the system of the current active set into Delta (Thomas algorithm; released rows are Δλ = −λ).</summary>
@@ -168,6 +193,180 @@ namespace HookeRope.Solver
             {
                 next = dp[j] - cp[j] * next;
                 x[j] = next;
+            }
+        }
+
+        /// <summary>
+        /// r = W_i v: the particle's mobility (inverse mass, 1/kg) applied to v. W = w I, or w t tᵀ + w_t (I − t tᵀ) with the
+        /// transverse stabilisation (<see cref="ChainState.UpdateTransverseMass"/>); with an active contact (normal c) and
+        /// withContact, the constrained mobility W − (W c)(W c)ᵀ/(cᵀ W c), which is w(I − c cᵀ) for an isotropic particle.
+        /// </summary>
+        private static void Mobility(ChainState c, int i, double vx, double vy, double vz, bool withContact, out double rx, out double ry, out double rz)
+        {
+            Free(c, i, vx, vy, vz, out rx, out ry, out rz);
+            if (!withContact || c.ContactCollider == null || !c.ContactActive[i]) return;
+            double cx = c.ContactNX[i], cy = c.ContactNY[i], cz = c.ContactNZ[i];
+            Free(c, i, cx, cy, cz, out double ux, out double uy, out double uz);
+            double cwc = cx * ux + cy * uy + cz * uz;
+            if (!(cwc > 0.0)) return;
+            double k = (ux * vx + uy * vy + uz * vz) / cwc;
+            rx -= ux * k; ry -= uy * k; rz -= uz * k;
+        }
+
+        private static void Free(ChainState c, int i, double vx, double vy, double vz, out double rx, out double ry, out double rz)
+        {
+            double w = c.InverseMass[i];
+            rx = w * vx; ry = w * vy; rz = w * vz;
+            if (c.AugmentedCount == 0 || !c.Augmented[i]) return;
+            double wt = Math.Min(c.TransverseInverseMass[i], w);
+            double tx = c.TangentX[i], ty = c.TangentY[i], tz = c.TangentZ[i];
+            double along = (w - wt) * (tx * vx + ty * vy + tz * vz);
+            rx = wt * vx + along * tx; ry = wt * vy + along * ty; rz = wt * vz + along * tz;
+        }
+
+        /// <summary>n_aᵀ W_i n_b for unit directions a, b (1/kg).</summary>
+        private static double Quadratic(ChainState c, int i, float ax, float ay, float az, float bx, float by, float bz)
+        {
+            Mobility(c, i, bx, by, bz, true, out double rx, out double ry, out double rz);
+            return ax * rx + ay * ry + az * rz;
+        }
+
+        /// <summary>
+        /// Rewrites the matrix entries that depend on particle i's inverse mass: the diagonals of segments i − 1 and i
+        /// and their coupling through i, n_{i−1}ᵀ W_i n_i. A contact that would leave a segment with no mobility is dropped.
+        /// </summary>
+        private static void RebuildAround(ChainState c, int i, double invH2, double gammaAll)
+        {
+            int s = c.SegmentCount;
+            double[] fd = c.FullDiagonal, fl = c.FullLower, fu = c.FullUpper;
+            double left = 0.0, right = 0.0;
+            for (int attempt = 0; attempt < 2; attempt++)
+            {
+                left = Diagonal(c, i - 1, invH2, gammaAll);
+                right = Diagonal(c, i, invH2, gammaAll);
+                if ((left < 0.0 || right < 0.0) && c.ContactCollider != null && c.ContactActive[i])
+                {
+                    c.ContactActive[i] = false; // the contact would leave a segment with no mobility
+                    continue;
+                }
+                break;
+            }
+            if (left > 0.0) fd[i - 1] = left;
+            if (right > 0.0) fd[i] = right;
+            if (i <= 0 || i >= s || c.Broken[i - 1] || c.Broken[i] || !(fd[i - 1] > 0.0) || !(fd[i] > 0.0)) return;
+            double coupling = Quadratic(c, i, c.DirX[i - 1], c.DirY[i - 1], c.DirZ[i - 1], c.DirX[i], c.DirY[i], c.DirZ[i]);
+            double gLower = c.Compliance[i] > 0f ? gammaAll : 0.0, gUpper = c.Compliance[i - 1] > 0f ? gammaAll : 0.0;
+            fl[i] = -(1.0 + gLower) * coupling;
+            fu[i - 1] = -(1.0 + gUpper) * coupling;
+        }
+
+        /// <summary>
+        /// Diagonal (1 + γ)(n_jᵀW_j n_j + n_jᵀW_{j+1}n_j) + α̃_j of segment j with the current contacts; 0 when the row is not
+        /// in the system (out of range, broken, or invalid from the start), −1 when the contacts leave it no mobility.
+        /// </summary>
+        private static double Diagonal(ChainState c, int j, double invH2, double gammaAll)
+        {
+            if (j < 0 || j >= c.SegmentCount || c.Broken[j] || !(c.FullDiagonal[j] > 0.0)) return 0.0;
+            double alpha = c.Compliance[j];
+            double g = alpha > 0.0 ? gammaAll : 0.0;
+            float nx = c.DirX[j], ny = c.DirY[j], nz = c.DirZ[j];
+            double masses = Quadratic(c, j, nx, ny, nz, nx, ny, nz) + Quadratic(c, j + 1, nx, ny, nz, nx, ny, nz);
+            double diagonal = (1.0 + g) * masses + alpha * invH2;
+            double full = (1.0 + g) * ((double)c.InverseMass[j] + c.InverseMass[j + 1]) + alpha * invH2;
+            return diagonal > 1e-9 * full ? diagonal : -1.0;
+        }
+
+        /// <summary>
+        /// The chain's pull f = n_{i−1}Δλ_{i−1} − n_iΔλ_i on particle i (N·s²) for the multiplier changes in Delta; the
+        /// particle moves by W_i f. clamp: tension-only changes as the position update will apply them.
+        /// </summary>
+        private static void ChainPull(ChainState c, int i, bool tensionOnly, bool clamp, out double fx, out double fy, out double fz)
+        {
+            int s = c.SegmentCount;
+            double[] delta = c.Delta, lambda = c.Lambda;
+            fx = 0.0; fy = 0.0; fz = 0.0;
+            if (i > 0 && !c.Broken[i - 1])
+            {
+                double d = delta[i - 1];
+                if (clamp && tensionOnly && lambda[i - 1] + d > 0.0) d = -lambda[i - 1];
+                fx += d * c.DirX[i - 1]; fy += d * c.DirY[i - 1]; fz += d * c.DirZ[i - 1];
+            }
+            if (i < s && !c.Broken[i])
+            {
+                double d = delta[i];
+                if (clamp && tensionOnly && lambda[i] + d > 0.0) d = -lambda[i];
+                fx -= d * c.DirX[i]; fy -= d * c.DirY[i]; fz -= d * c.DirZ[i];
+            }
+        }
+
+        /// <summary>Normal motion (m, &gt; 0 outward) contact particle i would make without its contact, for the current Delta.</summary>
+        private static double FreeNormalMotion(ChainState c, int i, bool tensionOnly, bool clamp)
+        {
+            ChainPull(c, i, tensionOnly, clamp, out double fx, out double fy, out double fz);
+            Mobility(c, i, fx, fy, fz, false, out double rx, out double ry, out double rz);
+            return c.ContactNX[i] * rx + c.ContactNY[i] * ry + c.ContactNZ[i] * rz;
+        }
+
+        /// <summary>
+        /// Contact complementarity on the current solution: a held contact whose chain pull would lift the particle off the
+        /// surface is released; a released one that the chain would drive deeper than its gap is held again.
+        /// Rebuilds the affected matrix rows; returns true when the contact set changed.
+        /// </summary>
+        private static bool UpdateContacts(ChainState c, bool tensionOnly, double invH2, double gammaAll)
+        {
+            bool changed = false;
+            for (int k = 0; k < c.ContactCount; k++)
+            {
+                int i = c.ContactList[k];
+                double outward = FreeNormalMotion(c, i, tensionOnly, true);
+                if (c.ContactActive[i])
+                {
+                    if (outward > 0.0)
+                    {
+                        c.ContactActive[i] = false;
+                        RebuildAround(c, i, invH2, gammaAll);
+                        changed = true;
+                    }
+                }
+                else if (-outward > c.ContactGap[i])
+                {
+                    c.ContactActive[i] = true;
+                    RebuildAround(c, i, invH2, gammaAll);
+                    changed |= c.ContactActive[i];
+                }
+            }
+            return changed;
+        }
+
+        /// <summary>
+        /// Replaces the plain update w·f of the particles with a non-isotropic mobility (held contacts, transverse
+        /// stabilisation) by W_i f. A held contact may still close its gap; the normal motion it withheld is recorded
+        /// as its normal load (friction limit). Delta holds the applied multiplier changes.
+        /// </summary>
+        private static void ApplyMobility(ChainState c, bool augmented)
+        {
+            bool contacts = c.ContactCount > 0;
+            int count = augmented ? c.ParticleCount : c.ContactCount;
+            for (int k = 0; k < count; k++)
+            {
+                int i = augmented ? k : c.ContactList[k];
+                bool held = contacts && c.ContactActive[i];
+                if (!held && !(augmented && c.Augmented[i])) continue;
+                ChainPull(c, i, false, false, out double fx, out double fy, out double fz);
+                Mobility(c, i, fx, fy, fz, true, out double rx, out double ry, out double rz);
+                if (held)
+                {
+                    Mobility(c, i, fx, fy, fz, false, out double ux, out double uy, out double uz);
+                    double inward = -(c.ContactNX[i] * ux + c.ContactNY[i] * uy + c.ContactNZ[i] * uz);
+                    if (inward > 0.0)
+                    {
+                        double allowed = Math.Min(inward, c.ContactGap[i]);
+                        rx -= c.ContactNX[i] * allowed; ry -= c.ContactNY[i] * allowed; rz -= c.ContactNZ[i] * allowed;
+                        c.ContactLoad[i] += (float)(inward - allowed);
+                    }
+                }
+                double w = c.InverseMass[i];
+                c.DX[i] += (float)(rx - w * fx); c.DY[i] += (float)(ry - w * fy); c.DZ[i] += (float)(rz - w * fz);
             }
         }
     }

@@ -205,7 +205,27 @@ namespace HookeRope.Solver
         public int AddCollider(in ColliderShape shape)
         {
             if (shape.Rotation.LengthSquared == 0f) throw new ArgumentException("shape must be built with ColliderShape.Plane/Sphere/Capsule/Box", nameof(shape));
+            chain.EnsureContacts();
             return colliders.Add(shape, shape.Position - Origin);
+        }
+
+        /// <summary>
+        /// Removes a collider (index in [0, ColliderCount − 1]); the colliders after it move down one index (k + 1 becomes k),
+        /// so re-read the indices of later colliders. Current contacts are forgotten and found again at the next step.
+        /// Allocation-free; with no collider left the collision work is skipped again.
+        /// </summary>
+        public void RemoveCollider(int collider)
+        {
+            if ((uint)collider >= (uint)colliders.Count) throw new ArgumentOutOfRangeException(nameof(collider), collider, "collider must be in [0, " + (colliders.Count - 1) + "]");
+            colliders.RemoveAt(collider);
+            chain.ClearContacts();
+        }
+
+        /// <summary>Removes every collider (for a host that re-gathers its colliders, e.g. by layer mask, each frame). Allocation-free.</summary>
+        public void ClearColliders()
+        {
+            colliders.Clear();
+            chain.ClearContacts();
         }
 
         /// <summary>Moves a collider to a new world pose (m); the motion is spread over the substeps of the next step. NaN → ArgumentException.</summary>

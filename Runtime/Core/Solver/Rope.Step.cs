@@ -45,6 +45,9 @@ namespace HookeRope.Solver
                 MovePins(t);
                 Array.Clear(chain.Lambda, 0, chain.SegmentCount);
                 if (pinCount > 0) Array.Clear(pinLambda, 0, pinCount * 3);
+                // push the prediction out of the colliders and find the contacts the chain solve folds in
+                if (hasColliders) colliders.Project(chain, h, false, true, true);
+                if (exact) chain.UpdateTransverseMass(hd); else chain.AugmentedCount = 0;
                 for (int it = 0; it < iterations; it++)
                 {
                     bool softPins = compliantPins > 0 && ProjectCompliantPins(hd, t);
@@ -53,7 +56,7 @@ namespace HookeRope.Solver
                     bool sweep = !exact || ExactChainSolver.Iterate(chain, hd, beta, tensionOnly);
                     if (sweep) GaussSeidelSolver.Iterate(chain, hd, beta, tensionOnly);
                     if (softPins) ReleaseCompliantPins(hd, t);
-                    if (hasColliders) colliders.Project(chain, h, it == iterations - 1);
+                    if (hasColliders) colliders.Project(chain, h, it == iterations - 1, it < iterations - 1, false);
                 }
                 UpdateVelocities(h);
                 time += hd;

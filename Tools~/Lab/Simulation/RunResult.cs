@@ -99,6 +99,8 @@ namespace HookeRope.Lab.Simulation
         public int Steps;
         /// <summary>Final particle positions in m (x, y, z per particle).</summary>
         public double[] FinalPositions;
+        /// <summary>Final collision radius of each particle in m (what the solver collides with: the radius model's Poisson-thinned or necked radius).</summary>
+        public double[] FinalRadii;
         /// <summary>Largest particle speed after the last step, m/s.</summary>
         public double FinalMaxSpeed;
         /// <summary>Largest distance of any particle from the start anchor during the run, m.</summary>

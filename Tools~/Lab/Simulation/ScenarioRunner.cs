@@ -357,6 +357,8 @@ namespace HookeRope.Lab.Simulation
                 result.FinalPositions[3 * i + 1] = p.Y;
                 result.FinalPositions[3 * i + 2] = p.Z;
             }
+            result.FinalRadii = new double[rope.ParticleCount];
+            for (int i = 0; i < rope.ParticleCount; i++) result.FinalRadii[i] = rope.ParticleRadius[i];
             for (int i = 0; i < rope.ParticleCount; i++)
                 result.FinalMaxSpeed = Math.Max(result.FinalMaxSpeed, rope.GetVelocity(i).Length);
             result.FinalTensions = new double[rope.SegmentCount];
