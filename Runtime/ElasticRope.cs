@@ -79,7 +79,7 @@ namespace HookeRope
         float m_AttachmentCompliance;
 
         // ---- Collisions -----------------------------------------------------------------------------------
-        [SerializeField, Tooltip("Off costs nothing. Listed Colliders: the colliders and planes below. Layer Mask: Sphere/Capsule/Box colliders on these layers within reach when the rope is built.")]
+        [SerializeField, Tooltip("Off costs nothing. Listed Colliders: the colliders and planes below. Layer Mask: Sphere/Capsule/Box colliders on these layers within the rope's reach, re-queried every physics step.")]
         RopeCollisionMode m_CollisionMode = RopeCollisionMode.Off;
 
         [SerializeField, Tooltip("Sphere, Capsule and Box colliders the rope collides with (Listed Colliders mode).")]
@@ -510,6 +510,7 @@ namespace HookeRope
 
             CopyAttachmentsIn(m_Start, 0, _startPin, _startLoad);
             CopyAttachmentsIn(m_End, _rope.ParticleCount - 1, _endPin, _endLoad);
+            if (m_CollisionMode == RopeCollisionMode.LayerMask) RefreshLayerColliders();
             _colliderBinding.UpdatePoses(_rope, _origin);
 
             Array.Copy(_current, _previous, _current.Length);
@@ -742,21 +743,42 @@ namespace HookeRope
             switch (m_CollisionMode)
             {
                 case RopeCollisionMode.Off:
-                    _colliderBinding.Register(_rope, Array.Empty<Collider>(), 0, Array.Empty<Transform>(), _origin, m_Friction, m_Start.Body, m_End.Body, this);
+                    _colliderBinding.Register(_rope, Array.Empty<Collider>(), 0, Array.Empty<Transform>(), _origin, m_Friction, m_Start.Body, m_End.Body, this, false);
                     break;
                 case RopeCollisionMode.ListedColliders:
-                    _colliderBinding.Register(_rope, m_Colliders, m_Colliders.Length, m_Planes, _origin, m_Friction, m_Start.Body, m_End.Body, this);
+                    _colliderBinding.Register(_rope, m_Colliders, m_Colliders.Length, m_Planes, _origin, m_Friction, m_Start.Body, m_End.Body, this, true);
                     break;
                 case RopeCollisionMode.LayerMask:
-                {
-                    _overlapBuffer ??= new Collider[64];
-                    Vector3 start = GetParticlePosition(0), end = GetParticlePosition(_rope.ParticleCount - 1);
-                    Vector3 center = (start + end) * 0.5f;
-                    float reach = m_RestLength * (1f + (m_Fracture ? m_BreakStrain : 1f)) + m_Radius;
-                    int count = Physics.OverlapSphereNonAlloc(center, reach, _overlapBuffer, m_CollisionLayers, QueryTriggerInteraction.Ignore);
-                    _colliderBinding.Register(_rope, _overlapBuffer, count, m_Planes, _origin, m_Friction, m_Start.Body, m_End.Body, this);
+                    _colliderBinding.Register(_rope, _overlapBuffer, QueryLayerColliders(), m_Planes, _origin, m_Friction, m_Start.Body, m_End.Body, this, true);
                     break;
-                }
+            }
+        }
+
+        /// <summary>
+        /// Layer Mask mode: colliders come and go (a worker walks past a beam), so each step re-queries the
+        /// colliders within the rope's reach and re-registers them only when the set changed. Allocation-free
+        /// unless more colliders are in reach than ever before.
+        /// </summary>
+        void RefreshLayerColliders()
+        {
+            int count = QueryLayerColliders();
+            if (!_colliderBinding.HasSameColliders(_overlapBuffer, count, m_Start.Body, m_End.Body))
+                _colliderBinding.Register(_rope, _overlapBuffer, count, m_Planes, _origin, m_Friction, m_Start.Body, m_End.Body, this, false);
+        }
+
+        /// <summary>Colliders on <see cref="CollisionLayers"/> within the rope's reach, into the overlap buffer (grown when full).</summary>
+        int QueryLayerColliders()
+        {
+            _overlapBuffer ??= new Collider[16];
+            Vector3 start = GetParticlePosition(0), end = GetParticlePosition(_rope.ParticleCount - 1);
+            Vector3 center = (start + end) * 0.5f;
+            // every particle lies within half the (longest expected) rope length of an end, and each end within half the span of the centre
+            float reach = 0.5f * (Vector3.Distance(start, end) + m_RestLength * (1f + (m_Fracture ? m_BreakStrain : 1f))) + m_Radius;
+            while (true)
+            {
+                int count = Physics.OverlapSphereNonAlloc(center, reach, _overlapBuffer, m_CollisionLayers, QueryTriggerInteraction.Ignore);
+                if (count < _overlapBuffer.Length) return count;
+                _overlapBuffer = new Collider[_overlapBuffer.Length * 2];
             }
         }
 

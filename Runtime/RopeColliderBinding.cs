@@ -26,25 +26,25 @@ namespace HookeRope
         public int Count => _colliderCount + _planeCount;
 
         /// <summary>
-        /// Registers every supported collider and plane; unsupported colliders (mesh, terrain…) are skipped and
-        /// reported, triggers and colliders of the rope's own attached bodies (<paramref name="ownBodyA"/>,
-        /// <paramref name="ownBodyB"/>) are skipped silently.
+        /// Replaces the rope's colliders with every supported collider and plane given; unsupported colliders (mesh,
+        /// terrain…) are skipped (and reported when <paramref name="warnUnsupported"/>), triggers and colliders of
+        /// the rope's own attached bodies (<paramref name="ownBodyA"/>, <paramref name="ownBodyB"/>) are skipped
+        /// silently. Allocates only when more shapes arrive than ever before.
         /// </summary>
         public void Register(Rope rope, Collider[] colliders, int colliderCount, Transform[] planes, Vector3 origin, float friction,
-            Rigidbody ownBodyA, Rigidbody ownBodyB, UnityEngine.Object context)
+            Rigidbody ownBodyA, Rigidbody ownBodyB, UnityEngine.Object context, bool warnUnsupported)
         {
-            _colliders = new Collider[colliderCount];
-            _colliderIds = new int[colliderCount];
+            rope.ClearColliders();
+            Reserve(ref _colliders, ref _colliderIds, colliderCount);
             _colliderCount = 0;
             for (int i = 0; i < colliderCount; i++)
             {
                 var collider = colliders[i];
-                if (collider == null || collider.isTrigger) continue;
-                var body = collider.attachedRigidbody;
-                if (body != null && (body == ownBodyA || body == ownBodyB)) continue;
+                if (!Accepts(collider, ownBodyA, ownBodyB)) continue;
                 if (!TryShape(collider, origin, friction, out var shape))
                 {
-                    Debug.LogWarning("ElasticRope: collider '" + collider.name + "' is not a Sphere, Capsule or Box collider; the rope ignores it.", context);
+                    if (warnUnsupported)
+                        Debug.LogWarning("ElasticRope: collider '" + collider.name + "' is not a Sphere, Capsule or Box collider; the rope ignores it.", context);
                     continue;
                 }
                 _colliders[_colliderCount] = collider;
@@ -53,8 +53,7 @@ namespace HookeRope
             }
 
             int planeCount = planes == null ? 0 : planes.Length;
-            _planes = new Transform[planeCount];
-            _planeIds = new int[planeCount];
+            Reserve(ref _planes, ref _planeIds, planeCount);
             _planeCount = 0;
             for (int i = 0; i < planeCount; i++)
             {
@@ -65,6 +64,40 @@ namespace HookeRope
                 _planeIds[_planeCount] = rope.AddCollider(in shape);
                 _planeCount++;
             }
+        }
+
+        /// <summary>
+        /// True when the supported colliders among the first <paramref name="count"/> of <paramref name="colliders"/>
+        /// are exactly the registered ones (in any order), so a layer-mask query that found the same set needs no
+        /// re-registration (which would also forget the current contacts). Allocation-free.
+        /// </summary>
+        public bool HasSameColliders(Collider[] colliders, int count, Rigidbody ownBodyA, Rigidbody ownBodyB)
+        {
+            int accepted = 0;
+            for (int i = 0; i < count; i++)
+            {
+                var collider = colliders[i];
+                if (!Accepts(collider, ownBodyA, ownBodyB) || !IsSupported(collider)) continue;
+                accepted++;
+                if (Array.IndexOf(_colliders, collider, 0, _colliderCount) < 0) return false;
+            }
+            return accepted == _colliderCount;
+        }
+
+        static bool Accepts(Collider collider, Rigidbody ownBodyA, Rigidbody ownBodyB)
+        {
+            if (collider == null || collider.isTrigger) return false;
+            var body = collider.attachedRigidbody;
+            return body == null || (body != ownBodyA && body != ownBodyB);
+        }
+
+        static bool IsSupported(Collider collider) => collider is SphereCollider || collider is CapsuleCollider || collider is BoxCollider;
+
+        static void Reserve<T>(ref T[] items, ref int[] ids, int count)
+        {
+            if (items.Length >= count) return;
+            items = new T[count];
+            ids = new int[count];
         }
 
         /// <summary>Copies the current collider and plane poses into the rope (allocation-free).</summary>

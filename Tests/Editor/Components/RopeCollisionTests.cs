@@ -3,7 +3,7 @@ using UnityEngine;
 
 namespace HookeRope.Tests.Components
 {
-    /// <summary>Unity only (edit mode): a rope lowered onto a SphereCollider stays outside it (to its particle radius).</summary>
+    /// <summary>Unity only (edit mode): a rope lowered onto a SphereCollider stays outside it (to its particle radius), listed or found by layer mask.</summary>
     [TestFixture]
     public sealed class RopeCollisionTests
     {
@@ -50,6 +50,37 @@ namespace HookeRope.Tests.Components
             }
             Assert.That(closest, Is.GreaterThan(0.3f - 0.01f));
             Assert.That(rope.GetParticlePosition(rope.ParticleCount / 2).y, Is.GreaterThan(1.2f), "the rope drapes over the sphere");
+        }
+
+        [Test]
+        public void LayerMaskFindsASphereThatAppearsAfterTheRopeWasBuilt()
+        {
+            var left = _scene.Point("Left", new Vector3(-1f, 1.6f, 0f));
+            var right = _scene.Point("Right", new Vector3(1f, 1.6f, 0f));
+            var rope = _scene.Rope("Rope", left.position);
+            rope.RestLength = 2.4f;
+            rope.SegmentCount = 40;
+            rope.Radius = 0.01f;
+            rope.AxialStiffness = 2000f;
+            rope.Fracture = false;
+            rope.CollisionMode = RopeCollisionMode.LayerMask;
+            rope.StartAttachment.Point = left;
+            rope.EndAttachment.Point = right;
+            rope.Rebuild();
+            for (int step = 0; step < 20; step++) rope.Simulate(0.01f);
+
+            // the sphere arrives after the build: the per-step layer query must pick it up
+            var sphereObject = _scene.Track(new GameObject("Sphere"));
+            sphereObject.transform.position = new Vector3(0f, 1f, 0f);
+            sphereObject.AddComponent<SphereCollider>().radius = 0.3f;
+            for (int step = 0; step < 200; step++)
+            {
+                float y = 1.6f - 1.2f * Mathf_Min(1f, step / 100f);
+                left.position = new Vector3(-1f, y, 0f);
+                right.position = new Vector3(1f, y, 0f);
+                rope.Simulate(0.01f);
+            }
+            Assert.That(rope.GetParticlePosition(rope.ParticleCount / 2).y, Is.GreaterThan(1.2f), "the rope drapes over the new sphere");
         }
 
         static float Mathf_Min(float a, float b) => a < b ? a : b;

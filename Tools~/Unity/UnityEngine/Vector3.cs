@@ -22,6 +22,9 @@ namespace UnityEngine
         /// <summary>Returns the length of this vector.</summary>
         public float magnitude => throw Shim.NotRun;
 
+        /// <summary>Returns the distance between a and b (same as (a - b).magnitude).</summary>
+        public static float Distance(Vector3 a, Vector3 b) => throw Shim.NotRun;
+
         /// <summary>Adds two vectors.</summary>
         public static Vector3 operator +(Vector3 a, Vector3 b) => throw Shim.NotRun;
 
