@@ -25,9 +25,9 @@ namespace HookeRope.Solver
         /// <summary>Default material density in kg/m³ (polyamide).</summary>
         public const float DefaultDensity = 1140f;
         /// <summary>Default substeps per host step.</summary>
-        public const int DefaultSubsteps = 16;
+        public const int DefaultSubsteps = 8;
         /// <summary>Default iterations per substep.</summary>
-        public const int DefaultIterations = 1;
+        public const int DefaultIterations = 2;
         /// <summary>Largest segment count.</summary>
         public const int MaxSegmentCount = 10000;
         /// <summary>Largest substep or iteration count.</summary>
@@ -138,14 +138,14 @@ namespace HookeRope.Solver
             set { if (!value.IsFinite) throw new ArgumentException("Gravity must have finite components (m/s²)", nameof(Gravity)); gravity = value; Version++; }
         }
 
-        /// <summary>Substeps per host step, in [1, 1000]. Default 16.</summary>
+        /// <summary>Substeps per host step, in [1, 1000]. Default 8.</summary>
         public int Substeps
         {
             get => substeps;
             set { if (value < 1 || value > MaxSubsteps) throw new ArgumentOutOfRangeException(nameof(Substeps), value, "Substeps must be in [1, 1000]"); substeps = value; Version++; }
         }
 
-        /// <summary>Constraint iterations per substep, in [1, 1000]. Default 1.</summary>
+        /// <summary>Constraint iterations per substep, in [1, 1000]. Default 2.</summary>
         public int Iterations
         {
             get => iterations;
