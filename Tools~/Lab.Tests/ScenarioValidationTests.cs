@@ -112,7 +112,8 @@ namespace HookeRope.Lab.Tests
             Assert.That(s.Duration, Is.EqualTo(5.0));
             Assert.That(s.HostStep, Is.EqualTo(1.0 / 90).Within(1e-12));
             Assert.That(s.Solver.Method, Is.EqualTo(SolverMethod.ExactChain));
-            Assert.That(s.Solver.Substeps, Is.EqualTo(4));
+            Assert.That(s.Solver.Substeps, Is.EqualTo(HookeRope.Solver.RopeSettings.DefaultSubsteps));
+            Assert.That(s.Solver.Iterations, Is.EqualTo(HookeRope.Solver.RopeSettings.DefaultIterations));
             Assert.That(s.Rope.Segments, Is.EqualTo(20));
             Assert.That(s.Rope.RestLength, Is.EqualTo(2.0));
             Assert.That(s.Gravity.Y, Is.EqualTo(-9.81f));

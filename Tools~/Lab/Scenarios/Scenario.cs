@@ -52,9 +52,9 @@ namespace HookeRope.Lab.Scenarios
         /// <summary>Constraint solver.</summary>
         public SolverMethod Method = SolverMethod.ExactChain;
         /// <summary>Substeps per host step (1…1000).</summary>
-        public int Substeps = 4;
+        public int Substeps = HookeRope.Solver.RopeSettings.DefaultSubsteps;
         /// <summary>Iterations per substep (1…1000).</summary>
-        public int Iterations = 1;
+        public int Iterations = HookeRope.Solver.RopeSettings.DefaultIterations;
         /// <summary>XPBD constraint damping β in s.</summary>
         public double Damping = 0.0;
         /// <summary>True: rope (pulls only); false: rod (bilateral).</summary>
