@@ -60,7 +60,7 @@ namespace HookeRope
         int m_Substeps = 8;
 
         [SerializeField, Tooltip("Constraint iterations per substep (1–1000).")]
-        int m_Iterations = 2;
+        int m_Iterations = 1;
 
         [SerializeField, Tooltip("Tension Only: a rope pulls but never pushes. Bilateral: a rod that also pushes.")]
         TensionModel m_TensionModel = TensionModel.TensionOnly;

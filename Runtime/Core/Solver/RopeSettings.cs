@@ -27,7 +27,7 @@ namespace HookeRope.Solver
         /// <summary>Default substeps per host step.</summary>
         public const int DefaultSubsteps = 8;
         /// <summary>Default iterations per substep.</summary>
-        public const int DefaultIterations = 2;
+        public const int DefaultIterations = 1;
         /// <summary>Largest segment count.</summary>
         public const int MaxSegmentCount = 10000;
         /// <summary>Largest substep or iteration count.</summary>
@@ -145,7 +145,7 @@ namespace HookeRope.Solver
             set { if (value < 1 || value > MaxSubsteps) throw new ArgumentOutOfRangeException(nameof(Substeps), value, "Substeps must be in [1, 1000]"); substeps = value; Version++; }
         }
 
-        /// <summary>Constraint iterations per substep, in [1, 1000]. Default 2.</summary>
+        /// <summary>Constraint iterations per substep, in [1, 1000]. Default 1.</summary>
         public int Iterations
         {
             get => iterations;

@@ -41,9 +41,9 @@ namespace HookeRope.Tests.Solver
         public void AnchorTeleportedOneKilometreRecovers()
         {
             // the anchor jumps 1 km in one step (90 km/s): the rope is yanked along, never gains energy, and
-            // about 9 s later hangs from the new anchor again (numerical damping only, Damping = 0)
+            // within 20 s hangs from the new anchor again (numerical damping only, Damping = 0)
             var test = new StabilityCase { YoungsModulus = 1e9f, MassRatio = 100.0, TeleportDistance = 1000f };
-            StabilityResult result = test.Run(10.0);
+            StabilityResult result = test.Run(20.0);
             TestContext.WriteLine($"after teleport: ceiling {result.EnergyCeiling:G4} J, gain {result.LargestEnergyGain:G3} J, final KE {result.FinalKineticEnergy:G3} J, reach {result.FarthestFromAnchor:G4} m");
             Assert.That(result.Finite, Is.True);
             Assert.That(result.LargestEnergyGain, Is.LessThanOrEqualTo(1e-4 * result.EnergyCeiling + 1e-6));
