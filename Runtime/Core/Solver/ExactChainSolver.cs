@@ -46,6 +46,7 @@ namespace HookeRope.Solver
                 {
                     fd[j] = 0.0; fr[j] = 0.0; fl[j] = 0.0; fu[j] = 0.0; active[j] = false;
                     if (j > 0) fu[j - 1] = 0.0;
+                    if (augmented) left = TransverseMobility.Of(c, j + 1); // the chain restarts at particle j + 1
                     continue;
                 }
                 float ddx = dx[j + 1] - dx[j], ddy = dy[j + 1] - dy[j], ddz = dz[j + 1] - dz[j];
@@ -75,7 +76,7 @@ namespace HookeRope.Solver
                 double leftAlong = 0.0, rightAlong = 0.0; // t_j·n_j, t_{j+1}·n_j
                 if (augmented)
                 {
-                    // n_jᵀ W_i n_j = w_t + (w − w_t)(t_i·n_j)² for particles i = j, j + 1 (n_j unit)
+                    // n_jᵀ W_i n_j = w_t (n_j·n_j) + (w − w_t)(t_i·n_j)² for particles i = j, j + 1
                     right = TransverseMobility.Of(c, j + 1);
                     leftAlong = left.Along(nx, ny, nz);
                     rightAlong = right.Along(nx, ny, nz);
@@ -117,8 +118,11 @@ namespace HookeRope.Solver
                 fu[j] = 0.0;
                 pnx = nx; pny = ny; pnz = nz;
                 previousScale = scale;
-                left = right;
-                leftAlongPrevious = rightAlong;
+                if (augmented)
+                {
+                    left = right;
+                    leftAlongPrevious = rightAlong;
+                }
             }
 
             // held contacts: the general constrained mobility on the rows around each contact particle
