@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.CompilerServices;
 
 namespace HookeRope.Solver
 {
@@ -228,6 +229,7 @@ namespace HookeRope.Solver
         }
 
         /// <summary>Moves particle i by W_i f (m) for the chain pull f (N·s²), without its contact (see <see cref="ApplyTransverse"/>).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static void MoveParticle(ChainState c, int i, double fx, double fy, double fz, bool contacts)
         {
             double w = c.InverseMass[i];

@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.CompilerServices;
 
 namespace HookeRope.Solver
 {
@@ -24,6 +25,7 @@ namespace HookeRope.Solver
         }
 
         /// <summary>The mobility of particle i with its current inverse mass (a compliant pin may have lowered it).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static TransverseMobility Of(ChainState c, int i)
         {
             double w = c.InverseMass[i];
@@ -33,9 +35,11 @@ namespace HookeRope.Solver
         }
 
         /// <summary>t·v.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public double Along(double vx, double vy, double vz) => TangentX * vx + TangentY * vy + TangentZ * vz;
 
         /// <summary>n_aᵀ W n_b (1/kg) from t·n_a, t·n_b and n_a·n_b.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public double Quadratic(double alongA, double alongB, double dot) => Transverse * dot + Anisotropy * alongA * alongB;
     }
 }
