@@ -98,6 +98,9 @@ namespace HookeRope.Solver
             int s = SegmentCount;
             int count = 0;
             double previous = 0.0; // geometric stiffness 2T/ℓ of segment i − 1 (N/m)
+            // unit direction of segment i − 1 (predicted positions) when the previous particle computed it
+            bool havePrevious = false;
+            double ux = 0.0, uy = 0.0, uz = 0.0;
             for (int i = 0; i < ParticleCount; i++)
             {
                 double next = i < s ? GeometricStiffness(i) : 0.0;
@@ -107,22 +110,34 @@ namespace HookeRope.Solver
                 if (!(stiffness * h2 > Mass[i]) || InverseMass[i] == 0f)
                 {
                     Augmented[i] = false;
+                    havePrevious = false;
                     continue;
                 }
                 double inertia = Math.Min(stiffness * h2, MaxTransverseInertia * Mass[i]);
+                // tangent t = n_{i−1} + n_i from the predicted positions: the rope direction this substep solves along
                 double tx = 0.0, ty = 0.0, tz = 0.0;
-                // tangent from the predicted positions: the rope direction this substep solves along
                 bool interior = i > 0 && i < s && !Broken[i - 1] && !Broken[i];
-                if (i > 0 && !Broken[i - 1]) AddDirection(i - 1, ref tx, ref ty, ref tz);
-                if (i < s && !Broken[i]) AddDirection(i, ref tx, ref ty, ref tz);
-                double norm = Math.Sqrt(tx * tx + ty * ty + tz * tz);
+                if (i > 0 && !Broken[i - 1])
+                {
+                    if (!havePrevious) PredictedDirection(i - 1, out ux, out uy, out uz);
+                    tx += ux; ty += uy; tz += uz;
+                }
+                havePrevious = i < s && !Broken[i];
+                if (havePrevious)
+                {
+                    PredictedDirection(i, out ux, out uy, out uz);
+                    tx += ux; ty += uy; tz += uz;
+                }
                 // only where the rope is locally straight-ish: two unit directions at ≤ 60° sum to a length ≥ √3
-                if (!(norm > (interior ? MinStraightness : 0.5)))
+                double norm2 = tx * tx + ty * ty + tz * tz;
+                double limit = interior ? MinStraightness : 0.5;
+                if (!(norm2 > limit * limit))
                 {
                     Augmented[i] = false;
                     continue;
                 }
-                TangentX[i] = (float)(tx / norm); TangentY[i] = (float)(ty / norm); TangentZ[i] = (float)(tz / norm);
+                double inverseNorm = 1.0 / Math.Sqrt(norm2);
+                TangentX[i] = (float)(tx * inverseNorm); TangentY[i] = (float)(ty * inverseNorm); TangentZ[i] = (float)(tz * inverseNorm);
                 TransverseInverseMass[i] = (float)(1.0 / inertia);
                 Augmented[i] = true;
                 count++;
@@ -130,14 +145,22 @@ namespace HookeRope.Solver
             AugmentedCount = count;
         }
 
-        private void AddDirection(int j, ref double tx, ref double ty, ref double tz)
+        /// <summary>Unit direction of segment j from the predicted positions Prev + D (double); the last valid direction when its ends coincide.</summary>
+        private void PredictedDirection(int j, out double nx, out double ny, out double nz)
         {
             double ex = (double)(PrevX[j + 1] - PrevX[j]) + (DX[j + 1] - DX[j]);
             double ey = (double)(PrevY[j + 1] - PrevY[j]) + (DY[j + 1] - DY[j]);
             double ez = (double)(PrevZ[j + 1] - PrevZ[j]) + (DZ[j + 1] - DZ[j]);
             double len = Math.Sqrt(ex * ex + ey * ey + ez * ez);
-            if (len > 1e-12 && len < double.PositiveInfinity) { tx += ex / len; ty += ey / len; tz += ez / len; }
-            else { tx += DirX[j]; ty += DirY[j]; tz += DirZ[j]; }
+            if (len > 1e-12 && len < double.PositiveInfinity)
+            {
+                double inverse = 1.0 / len;
+                nx = ex * inverse; ny = ey * inverse; nz = ez * inverse;
+            }
+            else
+            {
+                nx = DirX[j]; ny = DirY[j]; nz = DirZ[j];
+            }
         }
 
         private double GeometricStiffness(int j)

@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.CompilerServices;
 
 namespace HookeRope.Solver
 {
@@ -31,9 +32,14 @@ namespace HookeRope.Solver
             double[] fd = c.FullDiagonal, fl = c.FullLower, fu = c.FullUpper, fr = c.FullRhs;
             double[] lambda = c.Lambda;
             bool[] active = c.Active, broken = c.Broken;
+            bool contacts = c.ContactCount > 0;
+            bool augmented = c.AugmentedCount > 0;
             bool poor = false;
             float pnx = 0f, pny = 0f, pnz = 0f;
             double previousScale = 0.0;
+            // transverse stabilisation (no contact): particle j's mobility w_t, w − w_t, tangent t, and t·n_{j−1}
+            var left = augmented ? TransverseMobility.Of(c, 0) : default;
+            double leftAlongPrevious = 0.0;
 
             for (int j = 0; j < s; j++)
             {
@@ -41,6 +47,7 @@ namespace HookeRope.Solver
                 {
                     fd[j] = 0.0; fr[j] = 0.0; fl[j] = 0.0; fu[j] = 0.0; active[j] = false;
                     if (j > 0) fu[j - 1] = 0.0;
+                    if (augmented) left = TransverseMobility.Of(c, j + 1); // the chain restarts at particle j + 1
                     continue;
                 }
                 float ddx = dx[j + 1] - dx[j], ddy = dy[j + 1] - dy[j], ddz = dz[j + 1] - dz[j];
@@ -65,7 +72,22 @@ namespace HookeRope.Solver
                 double rel = g > 0.0 ? nx * ddx + ny * ddy + nz * ddz : 0.0;
                 double constraint = (double)len - rest[j];
                 float wa = w[j], wb = w[j + 1];
-                double diagonal = (1.0 + g) * ((double)wa + wb) + alphaTilde;
+                double diagonal;
+                TransverseMobility right = default;
+                double leftAlong = 0.0, rightAlong = 0.0; // t_j·n_j, t_{j+1}·n_j
+                if (augmented)
+                {
+                    // n_jᵀ W_i n_j = w_t (n_j·n_j) + (w − w_t)(t_i·n_j)² for particles i = j, j + 1
+                    right = TransverseMobility.Of(c, j + 1);
+                    leftAlong = left.Along(nx, ny, nz);
+                    rightAlong = right.Along(nx, ny, nz);
+                    double nn = (double)nx * nx + (double)ny * ny + (double)nz * nz;
+                    diagonal = (1.0 + g) * (left.Quadratic(leftAlong, leftAlong, nn) + right.Quadratic(rightAlong, rightAlong, nn)) + alphaTilde;
+                }
+                else
+                {
+                    diagonal = (1.0 + g) * ((double)wa + wb) + alphaTilde;
+                }
                 fr[j] = -constraint - alphaTilde * lambda[j] - g * rel;
                 fd[j] = diagonal;
                 bool valid = diagonal > 0.0;
@@ -76,8 +98,18 @@ namespace HookeRope.Solver
                 {
                     double cos = (double)pnx * nx + (double)pny * ny + (double)pnz * nz;
                     if (cos < 0.0) poor = true;
-                    fl[j] = -scale * wa * cos;
-                    fu[j - 1] = -previousScale * wa * cos;
+                    if (augmented)
+                    {
+                        // n_{j−1}ᵀ W_j n_j = w_t (n_{j−1}·n_j) + (w − w_t)(t·n_{j−1})(t·n_j)
+                        double coupling = left.Quadratic(leftAlongPrevious, leftAlong, cos);
+                        fl[j] = -scale * coupling;
+                        fu[j - 1] = -previousScale * coupling;
+                    }
+                    else
+                    {
+                        fl[j] = -scale * wa * cos;
+                        fu[j - 1] = -previousScale * wa * cos;
+                    }
                 }
                 else
                 {
@@ -87,16 +119,15 @@ namespace HookeRope.Solver
                 fu[j] = 0.0;
                 pnx = nx; pny = ny; pnz = nz;
                 previousScale = scale;
+                if (augmented)
+                {
+                    left = right;
+                    leftAlongPrevious = rightAlong;
+                }
             }
 
-            bool contacts = c.ContactCount > 0;
-            bool augmented = c.AugmentedCount > 0;
-            if (augmented)
-            {
-                for (int i = 0; i <= s; i++)
-                    if (c.Augmented[i] || (contacts && c.ContactActive[i])) RebuildAround(c, i, invH2, gammaAll);
-            }
-            else if (contacts)
+            // held contacts: the general constrained mobility on the rows around each contact particle
+            if (contacts)
             {
                 for (int k = 0; k < c.ContactCount; k++)
                 {
@@ -137,6 +168,22 @@ namespace HookeRope.Solver
                 if (!changed) break;
             }
 
+            if (augmented) ApplyTransverse(c, tensionOnly, contacts);
+            else ApplyIsotropic(c, tensionOnly, contacts);
+            if (contacts) ApplyContactMobility(c);
+            // a changed contact set alone does not call for the sweep (it would use the plain masses)
+            return poor || (contacts || augmented ? activeSetChanged : passes > 1);
+        }
+
+        /// <summary>
+        /// Applies the multiplier changes in Delta (tension-only: clamped so λ ≤ 0) with isotropic masses: particle j moves
+        /// by −w_j n_j Δλ_j, particle j + 1 by +w_{j+1} n_j Δλ_j (m). keepDelta: Delta keeps the applied changes.
+        /// </summary>
+        private static void ApplyIsotropic(ChainState c, bool tensionOnly, bool keepDelta)
+        {
+            int s = c.SegmentCount;
+            float[] w = c.InverseMass, dx = c.DX, dy = c.DY, dz = c.DZ, nxs = c.DirX, nys = c.DirY, nzs = c.DirZ;
+            double[] delta = c.Delta, lambda = c.Lambda;
             float wLeft = w[0];
             for (int j = 0; j < s; j++)
             {
@@ -151,12 +198,51 @@ namespace HookeRope.Solver
                     dx[j] -= nx * a; dy[j] -= ny * a; dz[j] -= nz * a;
                     dx[j + 1] += nx * b; dy[j + 1] += ny * b; dz[j + 1] += nz * b;
                 }
-                if (contacts || augmented) delta[j] = d;
+                if (keepDelta) delta[j] = d;
                 wLeft = wRight;
             }
-            if (contacts || augmented) ApplyMobility(c, augmented);
-            // a changed contact set alone does not call for the sweep (it would use the plain masses)
-            return poor || (contacts || augmented ? activeSetChanged : passes > 1);
+        }
+
+        /// <summary>
+        /// Applies the multiplier changes in Delta (clamped as in <see cref="ApplyIsotropic"/>) with the transverse
+        /// stabilisation, one particle at a time: particle i feels the chain pull f = n_{i−1}Δλ_{i−1} − n_iΔλ_i (N·s²)
+        /// and moves by W_i f = w_t f + (w − w_t)(t·f) t (m). A particle with a held contact moves by w f here;
+        /// <see cref="ApplyContactMobility"/> corrects it afterwards. Delta keeps the applied changes.
+        /// </summary>
+        private static void ApplyTransverse(ChainState c, bool tensionOnly, bool contacts)
+        {
+            int s = c.SegmentCount;
+            float[] nxs = c.DirX, nys = c.DirY, nzs = c.DirZ;
+            double[] delta = c.Delta, lambda = c.Lambda;
+            double px = 0.0, py = 0.0, pz = 0.0; // n_{j−1}Δλ_{j−1}: the pull of the segment before particle j
+            for (int j = 0; j < s; j++)
+            {
+                double d = delta[j];
+                if (tensionOnly && lambda[j] + d > 0.0) d = -lambda[j];
+                lambda[j] += d;
+                delta[j] = d;
+                double qx = nxs[j] * d, qy = nys[j] * d, qz = nzs[j] * d;
+                MoveParticle(c, j, px - qx, py - qy, pz - qz, contacts);
+                px = qx; py = qy; pz = qz;
+            }
+            MoveParticle(c, s, px, py, pz, contacts);
+        }
+
+        /// <summary>Moves particle i by W_i f (m) for the chain pull f (N·s²), without its contact (see <see cref="ApplyTransverse"/>).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void MoveParticle(ChainState c, int i, double fx, double fy, double fz, bool contacts)
+        {
+            double w = c.InverseMass[i];
+            double rx = w * fx, ry = w * fy, rz = w * fz;
+            if (c.Augmented[i] && !(contacts && c.ContactActive[i]))
+            {
+                var m = TransverseMobility.Of(c, i);
+                double along = m.Anisotropy * m.Along(fx, fy, fz);
+                rx = m.Transverse * fx + along * m.TangentX;
+                ry = m.Transverse * fy + along * m.TangentY;
+                rz = m.Transverse * fz + along * m.TangentZ;
+            }
+            c.DX[i] += (float)rx; c.DY[i] += (float)ry; c.DZ[i] += (float)rz;
         }
 
         /// <summary>Solves the system of the current active set into Delta (Thomas algorithm; released rows are Δλ = −λ).</summary>
@@ -339,31 +425,25 @@ namespace HookeRope.Solver
         }
 
         /// <summary>
-        /// Replaces the plain update w·f of the particles with a non-isotropic mobility (held contacts, transverse
-        /// stabilisation) by W_i f. A held contact may still close its gap; the normal motion it withheld is recorded
-        /// as its normal load (friction limit). Delta holds the applied multiplier changes.
+        /// Replaces the plain update w·f of the particles with a held contact by W_i f (the constrained mobility, with the
+        /// transverse stabilisation where the particle has it). A held contact may still close its gap; the normal motion
+        /// it withheld is recorded as its normal load (friction limit). Delta holds the applied multiplier changes.
         /// </summary>
-        private static void ApplyMobility(ChainState c, bool augmented)
+        private static void ApplyContactMobility(ChainState c)
         {
-            bool contacts = c.ContactCount > 0;
-            int count = augmented ? c.ParticleCount : c.ContactCount;
-            for (int k = 0; k < count; k++)
+            for (int k = 0; k < c.ContactCount; k++)
             {
-                int i = augmented ? k : c.ContactList[k];
-                bool held = contacts && c.ContactActive[i];
-                if (!held && !(augmented && c.Augmented[i])) continue;
+                int i = c.ContactList[k];
+                if (!c.ContactActive[i]) continue;
                 ChainPull(c, i, false, false, out double fx, out double fy, out double fz);
                 Mobility(c, i, fx, fy, fz, true, out double rx, out double ry, out double rz);
-                if (held)
+                Mobility(c, i, fx, fy, fz, false, out double ux, out double uy, out double uz);
+                double inward = -(c.ContactNX[i] * ux + c.ContactNY[i] * uy + c.ContactNZ[i] * uz);
+                if (inward > 0.0)
                 {
-                    Mobility(c, i, fx, fy, fz, false, out double ux, out double uy, out double uz);
-                    double inward = -(c.ContactNX[i] * ux + c.ContactNY[i] * uy + c.ContactNZ[i] * uz);
-                    if (inward > 0.0)
-                    {
-                        double allowed = Math.Min(inward, c.ContactGap[i]);
-                        rx -= c.ContactNX[i] * allowed; ry -= c.ContactNY[i] * allowed; rz -= c.ContactNZ[i] * allowed;
-                        c.ContactLoad[i] += (float)(inward - allowed);
-                    }
+                    double allowed = Math.Min(inward, c.ContactGap[i]);
+                    rx -= c.ContactNX[i] * allowed; ry -= c.ContactNY[i] * allowed; rz -= c.ContactNZ[i] * allowed;
+                    c.ContactLoad[i] += (float)(inward - allowed);
                 }
                 double w = c.InverseMass[i];
                 c.DX[i] += (float)(rx - w * fx); c.DY[i] += (float)(ry - w * fy); c.DZ[i] += (float)(rz - w * fz);
