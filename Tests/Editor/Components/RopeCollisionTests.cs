@@ -20,27 +20,8 @@ namespace HookeRope.Tests.Components
             var sphere = sphereObject.AddComponent<SphereCollider>();
             sphere.radius = 0.3f;
 
-            var left = _scene.Point("Left", new Vector3(-1f, 1.6f, 0f));
-            var right = _scene.Point("Right", new Vector3(1f, 1.6f, 0f));
-            var rope = _scene.Rope("Rope", left.position);
-            rope.RestLength = 2.4f;
-            rope.SegmentCount = 40;
-            rope.Radius = 0.01f;
-            rope.AxialStiffness = 2000f;
-            rope.Fracture = false;
-            rope.CollisionMode = RopeCollisionMode.ListedColliders;
-            rope.Colliders = new Collider[] { sphere };
-            rope.StartAttachment.Point = left;
-            rope.EndAttachment.Point = right;
-            rope.Rebuild();
-
-            for (int step = 0; step < 200; step++)
-            {
-                float y = 1.6f - 1.2f * Mathf_Min(1f, step / 100f);
-                left.position = new Vector3(-1f, y, 0f);
-                right.position = new Vector3(1f, y, 0f);
-                rope.Simulate(0.01f);
-            }
+            var rope = LowerableRope(RopeCollisionMode.ListedColliders, new Collider[] { sphere }, out var left, out var right);
+            Lower(rope, left, right);
 
             float closest = float.PositiveInfinity;
             for (int i = 0; i < rope.ParticleCount; i++)
@@ -55,24 +36,39 @@ namespace HookeRope.Tests.Components
         [Test]
         public void LayerMaskFindsASphereThatAppearsAfterTheRopeWasBuilt()
         {
-            var left = _scene.Point("Left", new Vector3(-1f, 1.6f, 0f));
-            var right = _scene.Point("Right", new Vector3(1f, 1.6f, 0f));
-            var rope = _scene.Rope("Rope", left.position);
-            rope.RestLength = 2.4f;
-            rope.SegmentCount = 40;
-            rope.Radius = 0.01f;
-            rope.AxialStiffness = 2000f;
-            rope.Fracture = false;
-            rope.CollisionMode = RopeCollisionMode.LayerMask;
-            rope.StartAttachment.Point = left;
-            rope.EndAttachment.Point = right;
-            rope.Rebuild();
+            var rope = LowerableRope(RopeCollisionMode.LayerMask, new Collider[0], out var left, out var right);
             for (int step = 0; step < 20; step++) rope.Simulate(0.01f);
 
             // the sphere arrives after the build: the per-step layer query must pick it up
             var sphereObject = _scene.Track(new GameObject("Sphere"));
             sphereObject.transform.position = new Vector3(0f, 1f, 0f);
             sphereObject.AddComponent<SphereCollider>().radius = 0.3f;
+            Lower(rope, left, right);
+            Assert.That(rope.GetParticlePosition(rope.ParticleCount / 2).y, Is.GreaterThan(1.2f), "the rope drapes over the new sphere");
+        }
+
+        /// <summary>A 2.4 m cord (E·A 2 kN, 40 segments) between two anchors 2 m apart at y = 1.6 m.</summary>
+        ElasticRope LowerableRope(RopeCollisionMode mode, Collider[] colliders, out Transform left, out Transform right)
+        {
+            left = _scene.Point("Left", new Vector3(-1f, 1.6f, 0f));
+            right = _scene.Point("Right", new Vector3(1f, 1.6f, 0f));
+            var rope = _scene.Rope("Rope", left.position);
+            rope.RestLength = 2.4f;
+            rope.SegmentCount = 40;
+            rope.Radius = 0.01f;
+            rope.AxialStiffness = 2000f;
+            rope.Fracture = false;
+            rope.CollisionMode = mode;
+            rope.Colliders = colliders;
+            rope.StartAttachment.Point = left;
+            rope.EndAttachment.Point = right;
+            rope.Rebuild();
+            return rope;
+        }
+
+        /// <summary>Lowers both anchors by 1.2 m over 1 s, then holds them for 1 s (0.01 s steps).</summary>
+        static void Lower(ElasticRope rope, Transform left, Transform right)
+        {
             for (int step = 0; step < 200; step++)
             {
                 float y = 1.6f - 1.2f * Mathf_Min(1f, step / 100f);
@@ -80,7 +76,6 @@ namespace HookeRope.Tests.Components
                 right.position = new Vector3(1f, y, 0f);
                 rope.Simulate(0.01f);
             }
-            Assert.That(rope.GetParticlePosition(rope.ParticleCount / 2).y, Is.GreaterThan(1.2f), "the rope drapes over the new sphere");
         }
 
         static float Mathf_Min(float a, float b) => a < b ? a : b;
