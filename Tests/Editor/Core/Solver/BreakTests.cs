@@ -70,5 +70,29 @@ namespace HookeRope.Tests.Solver
             rope.BreakSegment(10); // breaking again is a no-op
             Assert.That(rope.IsSegmentBroken(10), Is.True);
         }
+
+        [Test]
+        public void TautHeavyRopeBrokenInTheMiddleDropsItsLowerHalfFreely()
+        {
+            // 100 kg on a 2 m rope of 1 g particles (E·A 100 kN): the tension is far above m·l/(3h²), so the exact
+            // solve runs its transverse stabilisation. Cut in the middle, the lower half and the load fall freely
+            // (internal forces cancel, the 10 g of rope can't hold back 100 kg): Δv = −g·t, and the anchor keeps
+            // only the upper half's weight.
+            var settings = RopeTestKit.Settings(2f, 20, 1e5f, 0.02f);
+            settings.Damping = 0.02f;
+            var rope = RopeTestKit.Hanging(settings, 100f, out int load);
+            for (int i = 0; i < 90; i++) rope.Step(RopeTestKit.HostStep);
+            float v0 = rope.GetLoadVelocity(load).Y;
+            rope.BreakSegment(10);
+            const int steps = 45;
+            for (int i = 0; i < steps; i++) rope.Step(RopeTestKit.HostStep);
+            double t = steps * (double)RopeTestKit.HostStep;
+            double dv = rope.GetLoadVelocity(load).Y - v0;
+            TestContext.WriteLine($"after the cut: Δv {dv:G6} m/s vs {-RopeTestKit.G * t:G6} m/s, anchor {rope.GetPinForce(0).Length:G4} N");
+            Assert.That(RopeTestKit.AllFinite(rope), Is.True);
+            Assert.That(dv, Is.EqualTo(-RopeTestKit.G * t).Within(0.01 * RopeTestKit.G * t));
+            Assert.That(rope.GetPinForce(0).Length, Is.LessThan(1f), "upper half: about 0.1 N of rope");
+            for (int i = 0; i <= 10; i++) Assert.That(rope.GetPosition(i).Length, Is.LessThanOrEqualTo(1.05f), "the upper half hangs within its length");
+        }
     }
 }
