@@ -9,6 +9,14 @@ namespace HookeRope.Lab.Tests
     {
         static ScenarioException Reject(string json) => Assert.Throws<ScenarioException>(() => ScenarioParser.Parse(json));
 
+        /// <summary>Parsing <paramref name="json"/> fails at <paramref name="path"/>, with <paramref name="words"/> in the message when given.</summary>
+        static void AssertRejectedAt(string json, string path, string words = null)
+        {
+            var e = Reject(json);
+            Assert.That(e.Path, Is.EqualTo(path));
+            if (words != null) Assert.That(e.Message, Does.Contain(words));
+        }
+
         [TestCase("{\"rope\":{\"segmnts\":10}}", "$.rope.segmnts", "unknown field")]
         [TestCase("{\"colour\":1}", "$.colour", "unknown field")]
         [TestCase("{\"solver\":{\"method\":\"gauss-seidel\",\"extra\":true}}", "$.solver.extra", "unknown field")]
@@ -16,9 +24,7 @@ namespace HookeRope.Lab.Tests
         [TestCase("{\"end\":{\"type\":\"keyframes\",\"keys\":[{\"time\":0,\"position\":[0,0,0],\"speed\":1}]}}", "$.end.keys[0].speed", "unknown field")]
         public void UnknownFieldsAreRejected(string json, string path, string words)
         {
-            var e = Reject(json);
-            Assert.That(e.Path, Is.EqualTo(path));
-            Assert.That(e.Message, Does.Contain(words));
+            AssertRejectedAt(json, path, words);
         }
 
         [TestCase("{\"duration\":\"long\"}", "$.duration", "expected a number")]
@@ -32,9 +38,7 @@ namespace HookeRope.Lab.Tests
         [TestCase("{\"name\":true}", "$.name", "expected a string")]
         public void WrongTypesAreRejected(string json, string path, string words)
         {
-            var e = Reject(json);
-            Assert.That(e.Path, Is.EqualTo(path));
-            Assert.That(e.Message, Does.Contain(words));
+            AssertRejectedAt(json, path, words);
         }
 
         [TestCase("{\"rope\":{\"segments\":0}}", "$.rope.segments")]
@@ -58,8 +62,7 @@ namespace HookeRope.Lab.Tests
         [TestCase("{\"end\":{\"type\":\"keyframes\",\"keys\":[{\"time\":1,\"position\":[0,0,0]},{\"time\":0.5,\"position\":[0,0,0]}]}}", "$.end.keys[1].time")]
         public void OutOfRangeValuesAreRejected(string json, string path)
         {
-            var e = Reject(json);
-            Assert.That(e.Path, Is.EqualTo(path));
+            AssertRejectedAt(json, path);
         }
 
         [Test]
@@ -93,8 +96,7 @@ namespace HookeRope.Lab.Tests
         [TestCase("{\"rope\":{},\"rope\":{}}", "$.rope")]
         public void ContradictionsAreRejected(string json, string path)
         {
-            var e = Reject(json);
-            Assert.That(e.Path, Is.EqualTo(path));
+            AssertRejectedAt(json, path);
         }
 
         [Test]

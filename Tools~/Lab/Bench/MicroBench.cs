@@ -173,20 +173,20 @@ namespace HookeRope.Lab.Bench
             actions.Add(() => collider.Rope.Step(dt));
 
             var radiusOff = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), true);
-            radiusOff.Radius.Settings.PoissonEnabled = false;
-            radiusOff.Radius.Settings.NeckMode = HookeRope.Radius.NeckMode.Off;
-            radiusOff.Radius.Settings.BreakEnabled = false;
+            radiusOff.Simulation.RadiusModel.Settings.PoissonEnabled = false;
+            radiusOff.Simulation.RadiusModel.Settings.NeckMode = HookeRope.Radius.NeckMode.Off;
+            radiusOff.Simulation.RadiusModel.Settings.BreakEnabled = false;
             names.Add("radius model present, all parts off");
             actions.Add(() => radiusOff.Step(dt));
 
             var poisson = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), true);
-            poisson.Radius.Settings.NeckMode = HookeRope.Radius.NeckMode.Off;
+            poisson.Simulation.RadiusModel.Settings.NeckMode = HookeRope.Radius.NeckMode.Off;
             names.Add("radius on (Poisson thinning + break test)");
             actions.Add(() => poisson.Step(dt));
 
             var necking = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), true);
-            necking.Radius.Settings.NeckMode = HookeRope.Radius.NeckMode.Zone;
-            necking.Radius.Settings.RMinFraction = 0.999f;
+            necking.Simulation.RadiusModel.Settings.NeckMode = HookeRope.Radius.NeckMode.Zone;
+            necking.Simulation.RadiusModel.Settings.RMinFraction = 0.999f;
             names.Add("radius + necking (zone neck active)");
             actions.Add(() => necking.Step(dt));
 

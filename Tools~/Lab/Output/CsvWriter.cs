@@ -28,18 +28,12 @@ namespace HookeRope.Lab.Output
             foreach (var s in result.Samples)
             {
                 line.Clear();
-                Append(line, s.Time).Append(',');
-                Append(line, s.X).Append(',');
-                Append(line, s.Y).Append(',');
-                Append(line, s.Z).Append(',');
-                Append(line, s.VX).Append(',');
-                Append(line, s.VY).Append(',');
-                Append(line, s.VZ).Append(',');
-                Append(line, s.TopTension).Append(',');
-                Append(line, s.BottomTension).Append(',');
-                Append(line, s.Elongation).Append(',');
-                Append(line, s.MinRadius).Append(',');
-                Append(line, s.NeckRadius).Append(',');
+                foreach (double value in new[]
+                {
+                    s.Time, s.X, s.Y, s.Z, s.VX, s.VY, s.VZ,
+                    s.TopTension, s.BottomTension, s.Elongation, s.MinRadius, s.NeckRadius,
+                })
+                    Append(line, value).Append(',');
                 line.Append(s.Broken ? '1' : '0').Append(',');
                 Append(line, s.Residual).Append(',');
                 Append(line, s.Energy);

@@ -64,6 +64,11 @@ namespace HookeRope.Lab.Scenarios
     /// <summary>rope {…} block.</summary>
     public sealed class RopeSpec
     {
+        /// <summary>Young's modulus in Pa used when neither youngsModulus nor axialStiffness is given.</summary>
+        public const double DefaultYoungsModulus = 1e9;
+        /// <summary>Density in kg/m³ used when neither density nor linearDensity is given.</summary>
+        public const double DefaultDensity = 1140.0;
+
         /// <summary>Rest length in m.</summary>
         public double RestLength = 2.0;
         /// <summary>Number of segments.</summary>
@@ -96,9 +101,9 @@ namespace HookeRope.Lab.Scenarios
         /// <summary>Cross-section area πR² in m².</summary>
         public double Area => System.Math.PI * Radius * Radius;
         /// <summary>E·A in N, from whichever of the two was given.</summary>
-        public double ResolvedAxialStiffness => AxialStiffness ?? (YoungsModulus ?? 1e9) * Area;
+        public double ResolvedAxialStiffness => AxialStiffness ?? (YoungsModulus ?? DefaultYoungsModulus) * Area;
         /// <summary>μ in kg/m, from whichever of the two was given.</summary>
-        public double ResolvedLinearDensity => LinearDensity ?? (Density ?? 1140.0) * Area;
+        public double ResolvedLinearDensity => LinearDensity ?? (Density ?? DefaultDensity) * Area;
         /// <summary>Total rope mass in kg.</summary>
         public double Mass => ResolvedLinearDensity * RestLength;
     }
@@ -147,6 +152,9 @@ namespace HookeRope.Lab.Scenarios
         public Float3 Velocity;
         /// <summary>Pin compliance in m/N (0 = rigid).</summary>
         public double Compliance;
+
+        /// <summary>Mass hanging on this end in kg: <see cref="Mass"/> for a body, 0 otherwise.</summary>
+        public double LoadMass => Kind == AttachmentKind.Body ? Mass : 0;
 
         /// <summary>A fixed anchor.</summary>
         public static AttachmentSpec FixedAt(Float3 p) => new AttachmentSpec { Kind = AttachmentKind.Fixed, Position = p };

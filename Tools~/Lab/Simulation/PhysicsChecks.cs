@@ -1,6 +1,8 @@
 using System;
 using System.Collections.Generic;
 using HookeRope.Lab.Scenarios;
+using HookeRope.Mathematics;
+using HookeRope.Radius;
 
 namespace HookeRope.Lab.Simulation
 {
@@ -74,11 +76,10 @@ namespace HookeRope.Lab.Simulation
 
         /// <summary>Poisson radius ratio r/R = sqrt(1 + 2ν(L/l − 1)) at strain ε = l/L − 1.</summary>
         public static double PoissonRadiusRatio(double nu, double strain) =>
-            Math.Sqrt(Math.Max(0, 1 + 2 * nu * (1 / (1 + strain) - 1)));
+            PoissonRadius.Ratio(1.0, 1.0 + strain, nu, slackKeepsRestRadius: false);
 
         /// <summary>Neck waist a = (sqrt(l² + 16 r²) − l)/4, written without cancellation, m.</summary>
-        public static double NeckWaist(double length, double rMin) =>
-            4 * rMin * rMin / (Math.Sqrt(length * length + 16 * rMin * rMin) + length);
+        public static double NeckWaist(double length, double rMin) => NeckHyperbola.WaistRadius(length, rMin);
 
         /// <summary>Mean period (s) of a series sampled every <paramref name="dt"/> s, from upward crossings of its mean after <paramref name="skip"/> samples.</summary>
         public static double Period(double[] series, double dt, int skip = 0)
@@ -117,15 +118,13 @@ namespace HookeRope.Lab.Simulation
             return count > 0 ? sum / count : double.NaN;
         }
 
-        static double LoadMass(AttachmentSpec a) => a.Kind == AttachmentKind.Body ? a.Mass : 0;
-
         /// <summary>The checks that apply to a run (empty when the scenario has none).</summary>
         public static List<CheckResult> Evaluate(RunResult r)
         {
             var s = r.Scenario;
             var rope = s.Rope;
             double g = G(s), ea = rope.ResolvedAxialStiffness, length = rope.RestLength, mr = rope.Mass;
-            double load = LoadMass(s.End);
+            double load = s.End.LoadMass;
             var list = new List<CheckResult>();
             switch (s.Expect.Check)
             {
@@ -293,14 +292,14 @@ namespace HookeRope.Lab.Simulation
             var a = s.Start.PositionAt(s.Duration);
             var b = s.End.PositionAt(s.Duration);
             var c = s.Colliders[0].Kind == ColliderKind.Capsule
-                ? HookeRope.Mathematics.Float3.Lerp(s.Colliders[0].Center, s.Colliders[0].PointB, 0.5f)
+                ? Float3.Lerp(s.Colliders[0].Center, s.Colliders[0].PointB, 0.5f)
                 : s.Colliders[0].Center;
             double radius = s.Colliders[0].Radius + s.Rope.Radius;
-            var ex = (b - a).NormalizedOr(new HookeRope.Mathematics.Float3(1f, 0f, 0f));
+            var ex = (b - a).NormalizedOr(new Float3(1f, 0f, 0f));
             var up = -ScenarioGeometry.DownDirection(s.Gravity);
-            var ey = (up - ex * HookeRope.Mathematics.Float3.Dot(up, ex)).NormalizedOr(new HookeRope.Mathematics.Float3(0f, 1f, 0f));
-            double ax = HookeRope.Mathematics.Float3.Dot(a - c, ex), ay = HookeRope.Mathematics.Float3.Dot(a - c, ey);
-            double bx = HookeRope.Mathematics.Float3.Dot(b - c, ex), by = HookeRope.Mathematics.Float3.Dot(b - c, ey);
+            var ey = (up - ex * Float3.Dot(up, ex)).NormalizedOr(new Float3(0f, 1f, 0f));
+            double ax = Float3.Dot(a - c, ex), ay = Float3.Dot(a - c, ey);
+            double bx = Float3.Dot(b - c, ex), by = Float3.Dot(b - c, ey);
             double da = Math.Sqrt(ax * ax + ay * ay), db = Math.Sqrt(bx * bx + by * by);
             double tangentA = Math.Acos(radius / da), tangentB = Math.Acos(radius / db);
             double angleA = Math.Atan2(ay, ax);               // A on the left: measure its angle in [0, 2π)

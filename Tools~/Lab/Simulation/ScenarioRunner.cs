@@ -38,9 +38,9 @@ namespace HookeRope.Lab.Simulation
             settings.SegmentCount = r.Segments;
             settings.Radius = (float)r.Radius;
             if (r.AxialStiffness.HasValue) settings.AxialStiffness = (float)r.AxialStiffness.Value;
-            else settings.YoungsModulus = (float)(r.YoungsModulus ?? 1e9);
+            else settings.YoungsModulus = (float)(r.YoungsModulus ?? RopeSpec.DefaultYoungsModulus);
             if (r.LinearDensity.HasValue) settings.LinearDensity = (float)r.LinearDensity.Value;
-            else settings.Density = (float)(r.Density ?? 1140.0);
+            else settings.Density = (float)(r.Density ?? RopeSpec.DefaultDensity);
             settings.Damping = (float)s.Solver.Damping;
             settings.Gravity = s.Gravity;
             settings.Substeps = s.Solver.Substeps;
@@ -136,7 +136,7 @@ namespace HookeRope.Lab.Simulation
             var result = new RunResult { Scenario = s };
             int n = rope.SegmentCount;
             int last = rope.ParticleCount - 1;
-            double weight = (s.End.Kind == AttachmentKind.Body ? s.End.Mass : 0) * s.Gravity.Length;
+            double weight = s.End.LoadMass * s.Gravity.Length;
             var down = ScenarioGeometry.DownDirection(s.Gravity);
             var releasePosition = rope.GetPosition(last);
             double lowest = 0, tautDrop = double.NaN;
@@ -163,8 +163,11 @@ namespace HookeRope.Lab.Simulation
             int nextProfile = 0, nextMesh = 0;
             var profileTimes = Sorted(s.Outputs.ProfileTimes);
             var meshTimes = Sorted(s.Outputs.GltfTimes);
-            if (options.RecordSamples) result.Samples.Add(Measure(setup, 0, default, options, out _));
-            if (options.RecordSamples) nextSample = sampleInterval;
+            if (options.RecordSamples)
+            {
+                result.Samples.Add(Measure(setup, 0, default, options));
+                nextSample = sampleInterval;
+            }
             var watch = Stopwatch.StartNew();
             for (int k = 0; k < steps; k++)
             {
@@ -182,8 +185,8 @@ namespace HookeRope.Lab.Simulation
                 }
                 double extent = (load - releasePosition).Length;
                 if (extent > result.MaxExtent) result.MaxExtent = extent;
-                double top = rope.IsSegmentBroken(0) ? 0 : rope.Tensions[0];
-                double bottom = rope.IsSegmentBroken(n - 1) ? 0 : rope.Tensions[n - 1];
+                double top = IntactTension(rope, 0);
+                double bottom = IntactTension(rope, n - 1);
                 if (top > result.PeakTopForce) result.PeakTopForce = top;
                 if (setup.EndLoad >= 0)
                 {
@@ -222,7 +225,7 @@ namespace HookeRope.Lab.Simulation
                 options.Progress?.Invoke(k);
                 if (options.RecordSamples && t >= nextSample - 1e-9)
                 {
-                    result.Samples.Add(Measure(setup, t, report, options, out _, broken));
+                    result.Samples.Add(Measure(setup, t, report, options, broken));
                     nextSample += sampleInterval;
                     if (sampleInterval > 0 && nextSample < t) nextSample = t + sampleInterval;
                 }
@@ -248,9 +251,6 @@ namespace HookeRope.Lab.Simulation
                 Array.Resize(ref result.ElongationSeries, result.Steps);
                 Array.Resize(ref result.TopTensionSeries, result.Steps);
             }
-            if (options.Captures)
-                while (nextProfile < profileTimes.Length && profileTimes[nextProfile] <= 1e-9)
-                    nextProfile++;
             result.TotalDrop = lowest;
             result.ArrestDistance = double.IsNaN(tautDrop) ? 0 : lowest - tautDrop;
             Final(setup, result);
@@ -274,6 +274,9 @@ namespace HookeRope.Lab.Simulation
             return true;
         }
 
+        /// <summary>Tension of segment <paramref name="segment"/> in N, 0 once it is broken.</summary>
+        static double IntactTension(Rope rope, int segment) => rope.IsSegmentBroken(segment) ? 0 : rope.Tensions[segment];
+
         /// <summary>Current length of the intact segments minus their rest length, m.</summary>
         public static double Elongation(Rope rope)
         {
@@ -285,28 +288,26 @@ namespace HookeRope.Lab.Simulation
             return sum;
         }
 
-        static Sample Measure(RopeSetup setup, double t, StepReport report, RunOptions options, out double energy, bool broken = false)
+        static Sample Measure(RopeSetup setup, double t, StepReport report, RunOptions options, bool broken = false)
         {
             var rope = setup.Rope;
             int last = rope.ParticleCount - 1;
             int n = rope.SegmentCount;
             var p = rope.GetPosition(last);
             var v = rope.GetVelocity(last);
-            energy = options.TrackEnergy ? rope.TotalEnergy() : 0;
-            double min = setup.MinRadius();
             return new Sample
             {
                 Time = t,
                 X = p.X, Y = p.Y, Z = p.Z,
                 VX = v.X, VY = v.Y, VZ = v.Z,
-                TopTension = rope.IsSegmentBroken(0) ? 0 : rope.Tensions[0],
-                BottomTension = rope.IsSegmentBroken(n - 1) ? 0 : rope.Tensions[n - 1],
+                TopTension = IntactTension(rope, 0),
+                BottomTension = IntactTension(rope, n - 1),
                 Elongation = Elongation(rope),
-                MinRadius = min,
-                NeckRadius = setup.NeckRadius(),
+                MinRadius = setup.Simulation.MinRadius,
+                NeckRadius = setup.Simulation.NeckRadius,
                 Broken = broken,
                 Residual = report.Residual,
-                Energy = energy,
+                Energy = options.TrackEnergy ? rope.TotalEnergy() : 0,
             };
         }
 
@@ -315,7 +316,8 @@ namespace HookeRope.Lab.Simulation
             var rope = setup.Rope;
             var rest = rope.RestLengths;
             const int perSegment = 8;
-            if (setup.Radius == null)
+            var model = setup.Simulation.RadiusModel;
+            if (model == null)
             {
                 var radius = rope.ParticleRadius;
                 var plain = new RadiusProfile { Time = t, Arc = new double[radius.Length], Radius = new double[radius.Length] };
@@ -337,12 +339,12 @@ namespace HookeRope.Lab.Simulation
                 {
                     float f = (float)k / perSegment;
                     profile.Arc[j * perSegment + k] = start + rest[j] * f;
-                    profile.Radius[j * perSegment + k] = setup.Radius.RadiusAt(j, f);
+                    profile.Radius[j * perSegment + k] = model.RadiusAt(j, f);
                 }
                 start += rest[j];
             }
             profile.Arc[n * perSegment] = start;
-            profile.Radius[n * perSegment] = setup.Radius.RadiusAt(n - 1, 1f);
+            profile.Radius[n * perSegment] = model.RadiusAt(n - 1, 1f);
             return profile;
         }
 
@@ -350,17 +352,16 @@ namespace HookeRope.Lab.Simulation
         {
             var rope = setup.Rope;
             result.FinalPositions = new double[rope.ParticleCount * 3];
+            result.FinalRadii = new double[rope.ParticleCount];
             for (int i = 0; i < rope.ParticleCount; i++)
             {
                 var p = rope.GetPosition(i);
                 result.FinalPositions[3 * i] = p.X;
                 result.FinalPositions[3 * i + 1] = p.Y;
                 result.FinalPositions[3 * i + 2] = p.Z;
-            }
-            result.FinalRadii = new double[rope.ParticleCount];
-            for (int i = 0; i < rope.ParticleCount; i++) result.FinalRadii[i] = rope.ParticleRadius[i];
-            for (int i = 0; i < rope.ParticleCount; i++)
+                result.FinalRadii[i] = rope.ParticleRadius[i];
                 result.FinalMaxSpeed = Math.Max(result.FinalMaxSpeed, rope.GetVelocity(i).Length);
+            }
             result.FinalTensions = new double[rope.SegmentCount];
             for (int j = 0; j < rope.SegmentCount; j++) result.FinalTensions[j] = rope.Tensions[j];
             if (setup.StartPin >= 0) Copy(rope.GetPinForce(setup.StartPin), result.StartPinForce);
@@ -393,19 +394,10 @@ namespace HookeRope.Lab.Simulation
         /// <summary>The core facade: solver + radius model + tube mesh.</summary>
         public RopeSimulation Simulation;
 
-        /// <summary>The radius model, or null when the run has it off.</summary>
-        public RadiusModel Radius => Simulation.RadiusModel;
-
         /// <summary>One host step of the facade (solver, then radii, neck break), s.</summary>
         public StepReport Step(float hostDeltaTime) => Simulation.Step(hostDeltaTime);
 
         /// <summary>The radius half of <see cref="Step"/> alone (used to measure its allocations).</summary>
         public void UpdateRadii() => Simulation.UpdateRadii();
-
-        /// <summary>Radius at the defect (neck included), or the smallest particle radius without a radius model, m.</summary>
-        public double NeckRadius() => Simulation.NeckRadius;
-
-        /// <summary>Smallest radius along the rope (neck waist included), m.</summary>
-        public double MinRadius() => Simulation.MinRadius;
     }
 }

@@ -40,7 +40,7 @@ namespace HookeRope.Lab.Stability
         /// <summary>NaN, energy blow-up or explosion (not accuracy or settling).</summary>
         public bool Unstable => NonFinite || EnergyBlowUp || Exploded;
 
-        /// <summary>The case counts as a failure: unstable and not a documented limit of its solver.</summary>
+        /// <summary>The case counts as a failure: the same as <see cref="Unstable"/> (no case is excused as a known limit).</summary>
         public bool Failed => Unstable;
     }
 
@@ -131,7 +131,7 @@ namespace HookeRope.Lab.Stability
         {
             var s = c.Scenario;
             var r = ScenarioRunner.Run(s, new RunOptions { RecordSamples = false, Captures = false, TrackEnergy = true });
-            double mass = s.Rope.Mass + (s.End.Kind == AttachmentKind.Body ? s.End.Mass : 0);
+            double mass = s.Rope.Mass + s.End.LoadMass;
             double scale = mass * s.Gravity.Length * s.Rope.RestLength * (1 + s.Initial.Stretch) + Math.Abs(r.InitialEnergy);
             // Blow-up: the motion energy (kinetic + gravitational) rises above all the energy the rope
             // started with AND is still growing, i.e. the second half of the run reaches above everything
