@@ -11,6 +11,8 @@ namespace HookeRope.Lab.Tests
     {
         static RunResult Run(Scenario s) => ScenarioRunner.Run(s, new RunOptions { TrackEnergy = false });
 
+        static RunResult Run(string builtIn) => Run(BuiltInScenarios.Load(builtIn));
+
         static void AssertChecks(RunResult r, int count)
         {
             Assert.That(r.NonFinite, Is.False, r.Scenario.Name + ": NaN or ∞ in positions");
@@ -27,7 +29,7 @@ namespace HookeRope.Lab.Tests
         [Test]
         public void FallArrestPeakForceMatchesTheEnergyBalance()
         {
-            var r = Run(BuiltInScenarios.Load("fall-arrest"));
+            var r = Run("fall-arrest");
             // F = Mg + sqrt((Mg)² + 2Mgkh) = 5518 N for 100 kg, k = 2500 N/m, h = 4 m: within 5 %.
             Assert.That(r.PeakTopForce, Is.EqualTo(PhysicsChecks.FallArrestForce(100, 9.81, 2500, 4)).Within(5).Percent);
             Assert.That(r.TautTime, Is.EqualTo(System.Math.Sqrt(2 * 4 / 9.81)).Within(0.05));
@@ -35,16 +37,16 @@ namespace HookeRope.Lab.Tests
         }
 
         [Test]
-        public void StaticHangElongationAndTopTension() => AssertChecks(Run(BuiltInScenarios.Load("static-hang")), 2);
+        public void StaticHangElongationAndTopTension() => AssertChecks(Run("static-hang"), 2);
 
         [Test]
-        public void SpringOscillatorPeriod() => AssertChecks(Run(BuiltInScenarios.Load("spring-oscillator")), 2);
+        public void SpringOscillatorPeriod() => AssertChecks(Run("spring-oscillator"), 2);
 
         [Test]
-        public void HeavyMassRatioHangsAtTheStaticElongation() => AssertChecks(Run(BuiltInScenarios.Load("heavy-mass-ratio")), 2);
+        public void HeavyMassRatioHangsAtTheStaticElongation() => AssertChecks(Run("heavy-mass-ratio"), 2);
 
         [Test]
-        public void SteelCableFundamentalAndMeanElongation() => AssertChecks(Run(BuiltInScenarios.Load("steel-cable")), 2);
+        public void SteelCableFundamentalAndMeanElongation() => AssertChecks(Run("steel-cable"), 2);
 
         [TestCase(0.0)]
         [TestCase(0.25)]
@@ -60,12 +62,12 @@ namespace HookeRope.Lab.Tests
         }
 
         [Test]
-        public void NeckingFormsAtTheDefectBelowTheOnsetRadius() => AssertChecks(Run(BuiltInScenarios.Load("necking")), 3);
+        public void NeckingFormsAtTheDefectBelowTheOnsetRadius() => AssertChecks(Run("necking"), 3);
 
         [Test]
         public void FractureBreaksAtTheBreakStrainTension()
         {
-            var r = Run(BuiltInScenarios.Load("fracture"));
+            var r = Run("fracture");
             Assert.That(double.IsNaN(r.BreakTime), Is.False, "the cord must break");
             // The end moves at 0.5 m/s from 1 m: 50 % strain is reached at t ≈ 1 s.
             Assert.That(r.BreakTime, Is.EqualTo(1.0).Within(0.05));
@@ -77,11 +79,11 @@ namespace HookeRope.Lab.Tests
         {
             // No penetration (1 % of the collision radius), length = tangent + arc + tangent,
             // reported tension and both anchor forces = E·A·strain.
-            AssertChecks(Run(BuiltInScenarios.Load("collision-bend")), 4);
+            AssertChecks(Run("collision-bend"), 4);
         }
 
         [Test]
-        public void CatenarySagAndHorizontalTension() => AssertChecks(Run(BuiltInScenarios.Load("catenary")), 2);
+        public void CatenarySagAndHorizontalTension() => AssertChecks(Run("catenary"), 2);
 
         [Test]
         public void EveryBuiltInScenarioHasAPhysicsTest()

@@ -108,15 +108,13 @@ namespace HookeRope.Lab.Report
         public static List<SolverConfig> Grid(bool quick)
         {
             var list = new List<SolverConfig>();
-            int[] gsSteps = quick ? new[] { 1, 4 } : new[] { 1, 2, 4, 8, 16, 32 };
-            int[] gsIterations = quick ? new[] { 1, 4 } : new[] { 1, 2, 4, 8, 16, 32 };
-            foreach (int it in gsIterations)
-                foreach (int sub in gsSteps)
+            int[] counts = quick ? new[] { 1, 4 } : new[] { 1, 2, 4, 8, 16, 32 };  // substeps of both, GS iterations
+            foreach (int it in counts)
+                foreach (int sub in counts)
                     list.Add(new SolverConfig { Method = SolverMethod.GaussSeidel, Iterations = it, Substeps = sub });
-            int[] exactSteps = quick ? new[] { 1, 4 } : new[] { 1, 2, 4, 8, 16, 32 };
             int[] exactIterations = quick ? new[] { 1 } : new[] { 1, 2, 4 };
             foreach (int it in exactIterations)
-                foreach (int sub in exactSteps)
+                foreach (int sub in counts)
                     list.Add(new SolverConfig { Method = SolverMethod.ExactChain, Iterations = it, Substeps = sub });
             return list;
         }
@@ -146,8 +144,8 @@ namespace HookeRope.Lab.Report
                         times.Add(run.WallSeconds / s.Duration * 1000);
                         if (r == 0)
                         {
-                            error = PrimaryError(run);
                             var checks = PhysicsChecks.Evaluate(run);
+                            error = PrimaryError(run, checks);
                             if (checks.Count > 0) result.Quantities[k] = checks[0].Quantity;
                         }
                     }
@@ -160,10 +158,12 @@ namespace HookeRope.Lab.Report
         }
 
         /// <summary>Relative error of the first check of a run; +∞ when the run went non-finite.</summary>
-        public static double PrimaryError(RunResult run)
+        public static double PrimaryError(RunResult run) =>
+            run.NonFinite ? double.PositiveInfinity : PrimaryError(run, PhysicsChecks.Evaluate(run));
+
+        static double PrimaryError(RunResult run, List<CheckResult> checks)
         {
             if (run.NonFinite) return double.PositiveInfinity;
-            var checks = PhysicsChecks.Evaluate(run);
             if (checks.Count == 0) return double.NaN;
             double e = checks[0].Error;
             return double.IsFinite(e) ? e : double.PositiveInfinity;

@@ -206,22 +206,7 @@ namespace HookeRope.Lab.Simulation
                     tautDrop = drop;
                     result.TautTime = t;
                 }
-                if (options.TrackEnergy)
-                {
-                    double motion = rope.KineticEnergy() + rope.GravitationalEnergy();
-                    double energy = motion + rope.ElasticEnergy();
-                    if (energy > result.MaxEnergy) result.MaxEnergy = energy;
-                    if (k >= steps / 2)
-                    {
-                        if (energy > result.LateMaxEnergy) result.LateMaxEnergy = energy;
-                        if (motion > result.LateMaxMotionEnergy) result.LateMaxMotionEnergy = motion;
-                    }
-                    else
-                    {
-                        if (energy > result.EarlyMaxEnergy) result.EarlyMaxEnergy = energy;
-                        if (motion > result.EarlyMaxMotionEnergy) result.EarlyMaxMotionEnergy = motion;
-                    }
-                }
+                if (options.TrackEnergy) RecordEnergy(rope, result, late: k >= steps / 2);
                 options.Progress?.Invoke(k);
                 if (options.RecordSamples && t >= nextSample - 1e-9)
                 {
@@ -255,6 +240,24 @@ namespace HookeRope.Lab.Simulation
             result.ArrestDistance = double.IsNaN(tautDrop) ? 0 : lowest - tautDrop;
             Final(setup, result);
             return result;
+        }
+
+        /// <summary>Updates the energy maxima of <paramref name="result"/> (J) for the second half of the run when <paramref name="late"/>, else the first.</summary>
+        static void RecordEnergy(Rope rope, RunResult result, bool late)
+        {
+            double motion = rope.KineticEnergy() + rope.GravitationalEnergy();  // the same sum as Rope.TotalEnergy, split
+            double energy = motion + rope.ElasticEnergy();
+            if (energy > result.MaxEnergy) result.MaxEnergy = energy;
+            if (late)
+            {
+                if (energy > result.LateMaxEnergy) result.LateMaxEnergy = energy;
+                if (motion > result.LateMaxMotionEnergy) result.LateMaxMotionEnergy = motion;
+            }
+            else
+            {
+                if (energy > result.EarlyMaxEnergy) result.EarlyMaxEnergy = energy;
+                if (motion > result.EarlyMaxMotionEnergy) result.EarlyMaxMotionEnergy = motion;
+            }
         }
 
         static double[] Sorted(System.Collections.Generic.List<double> times)
