@@ -5,6 +5,7 @@ using HookeRope.Geometry;
 using HookeRope.Lab.Report;
 using HookeRope.Lab.Scenarios;
 using HookeRope.Lab.Simulation;
+using HookeRope.Lab.Stability;
 using HookeRope.Mathematics;
 using HookeRope.Solver;
 
@@ -44,15 +45,13 @@ namespace HookeRope.Lab.Bench
 
         static Scenario Hanging(int segments, SolverMethod method, int substeps, int iterations)
         {
-            var s = StabilitySweep_Base();
+            var s = StabilitySweep.Base(SolverMethod.ExactChain, 1.0);
             s.Rope.Segments = segments;
             s.Solver.Method = method;
             s.Solver.Substeps = substeps;
             s.Solver.Iterations = iterations;
             return s;
         }
-
-        static Scenario StabilitySweep_Base() => HookeRope.Lab.Stability.StabilitySweep.Base(SolverMethod.ExactChain, 1.0);
 
         /// <summary>Median wall time in ns of <paramref name="steps"/> calls of <paramref name="step"/> over 5 repeats (after a warm-up).</summary>
         static double TimeNs(Action step, int steps)

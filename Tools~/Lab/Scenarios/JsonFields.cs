@@ -64,11 +64,8 @@ namespace HookeRope.Lab.Scenarios
             return Has(name) ? new JsonFields(Get(name), Child(name)) : null;
         }
 
-        public double Number(string name, double fallback, double min, double max, bool minExclusive = false)
-        {
-            if (!Has(name)) return fallback;
-            return ReadNumber(Get(name), Child(name), min, max, minExclusive);
-        }
+        public double Number(string name, double fallback, double min, double max, bool minExclusive = false) =>
+            OptionalNumber(name, min, max, minExclusive) ?? fallback;
 
         public double? OptionalNumber(string name, double min, double max, bool minExclusive = false)
         {
@@ -111,11 +108,7 @@ namespace HookeRope.Lab.Scenarios
             return text;
         }
 
-        public Float3 Vector(string name, Float3 fallback, double limit = 1e6)
-        {
-            if (!Has(name)) return fallback;
-            return ReadVector(Get(name), Child(name), limit);
-        }
+        public Float3 Vector(string name, Float3 fallback, double limit = 1e6) => OptionalVector(name, limit) ?? fallback;
 
         public Float3? OptionalVector(string name, double limit = 1e6)
         {

@@ -77,8 +77,8 @@ namespace HookeRope.Lab.Scenarios
             if (solver != null) ReadSolver(solver, s.Solver);
             var rope = root.Object("rope");
             if (rope != null) ReadRope(rope, s.Rope);
-            s.Start = ReadAttachment(root.Object("start"), "$.start", s.Start, s.Duration);
-            s.End = ReadAttachment(root.Object("end"), "$.end", s.End, s.Duration);
+            s.Start = ReadAttachment(root.Object("start"), s.Start);
+            s.End = ReadAttachment(root.Object("end"), s.End);
             var initial = root.Object("initial");
             if (initial != null) ReadInitial(initial, s.Initial);
             var colliders = root.Array("colliders", MaxColliders);
@@ -140,7 +140,7 @@ namespace HookeRope.Lab.Scenarios
             f.RejectUnknown();
         }
 
-        static AttachmentSpec ReadAttachment(JsonFields f, string path, AttachmentSpec fallback, double duration)
+        static AttachmentSpec ReadAttachment(JsonFields f, AttachmentSpec fallback)
         {
             if (f == null) return fallback;
             var a = new AttachmentSpec();
@@ -274,8 +274,6 @@ namespace HookeRope.Lab.Scenarios
             }
             if (s.Initial.Stretch > 0 && s.End.Position.HasValue)
                 throw new ScenarioException("$.initial.stretch", "applies only when end.position is not given (the end is placed at L·(1 + stretch) below the start)");
-            foreach (var t in s.Outputs.GltfTimes)
-                if (t > s.Duration) throw new ScenarioException("$.outputs.gltfTimes", "instants must lie within duration");
         }
     }
 }
