@@ -36,7 +36,7 @@ namespace HookeRope
         [SerializeField, Tooltip("Material density ρ (kg/m³); rope mass per metre = ρ·πR². Polyamide ≈ 1140, steel ≈ 7850.")]
         float m_Density = 1140f;
 
-        [SerializeField, Range(-1f, 0.5f), Tooltip("Poisson ratio ν (dimensionless, −1 to 0.5): how much the rope thins as it stretches. 0.5 keeps the volume; negative values thicken (auxetic).")]
+        [SerializeField, Range(RopeParameterLimits.MinPoisson, RopeParameterLimits.MaxPoisson), Tooltip("Poisson ratio ν (dimensionless, −1 to 0.5): how much the rope thins as it stretches. 0.5 keeps the volume; negative values thicken (auxetic).")]
         float m_PoissonRatio = 0.3f;
 
         [SerializeField, Tooltip("XPBD constraint damping β (s): removes axial vibration without moving the static sag. 0 = undamped.")]
@@ -104,10 +104,10 @@ namespace HookeRope
         [SerializeField, Tooltip("Zone: a neck over a few diameters around the defect that deepens smoothly (default). Paper: Chen et al.'s hyperbola over the whole length (eq. 18); at onset the waist jumps to about 2·r_min²/l.")]
         NeckMode m_NeckMode = NeckMode.Zone;
 
-        [SerializeField, Range(0.01f, 1f), Tooltip("Neck onset radius r_min as a fraction of the rest radius R (dimensionless, 0.01–1).")]
+        [SerializeField, Range(RopeParameterLimits.MinNeckFraction, RopeParameterLimits.MaxNeckFraction), Tooltip("Neck onset radius r_min as a fraction of the rest radius R (dimensionless, 0.01–1).")]
         float m_NeckRadiusFraction = 0.75f;
 
-        [SerializeField, Range(0f, 1f), Tooltip("Where the material defect sits, as a fraction of the rest length from the start (0–1). The neck and the break form there.")]
+        [SerializeField, Range(RopeParameterLimits.MinDefectPosition, RopeParameterLimits.MaxDefectPosition), Tooltip("Where the material defect sits, as a fraction of the rest length from the start (0–1). The neck and the break form there.")]
         float m_DefectPosition = 0.5f;
 
         [SerializeField, Tooltip("Let the rope break. Off costs nothing.")]
@@ -116,7 +116,7 @@ namespace HookeRope
         [SerializeField, Tooltip("Break threshold: the strain l/L − 1 (dimensionless) of the defect segment at which the rope breaks.")]
         float m_BreakStrain = 0.6f;
 
-        [SerializeField, Range(0f, 0.99f), Tooltip("The rope also breaks when the neck radius falls below this fraction of R (dimensionless, 0–0.99; 0 = off). Needs necking.")]
+        [SerializeField, Range(RopeParameterLimits.MinBreakRadiusFraction, RopeParameterLimits.MaxBreakRadiusFraction), Tooltip("The rope also breaks when the neck radius falls below this fraction of R (dimensionless, 0–0.99; 0 = off). Needs necking.")]
         float m_BreakRadiusFraction = 0.25f;
 
         // ---- Events ---------------------------------------------------------------------------------------
@@ -332,7 +332,7 @@ namespace HookeRope
         public float DefectPosition
         {
             get => m_DefectPosition;
-            set { m_DefectPosition = RopeParameterLimits.Check(value, 0f, 1f, nameof(DefectPosition), ""); ApplySettings(); }
+            set { m_DefectPosition = RopeParameterLimits.Check(value, RopeParameterLimits.MinDefectPosition, RopeParameterLimits.MaxDefectPosition, nameof(DefectPosition), ""); ApplySettings(); }
         }
 
         /// <summary>Break strain l/L − 1 (dimensionless), 1e-3 … 10; used when <see cref="Fracture"/> is on.</summary>
@@ -358,7 +358,7 @@ namespace HookeRope
         public float BreakRadiusFraction
         {
             get => m_BreakRadiusFraction;
-            set { m_BreakRadiusFraction = RopeParameterLimits.Check(value, 0f, 0.99f, nameof(BreakRadiusFraction), ""); ApplySettings(); }
+            set { m_BreakRadiusFraction = RopeParameterLimits.Check(value, RopeParameterLimits.MinBreakRadiusFraction, RopeParameterLimits.MaxBreakRadiusFraction, nameof(BreakRadiusFraction), ""); ApplySettings(); }
         }
 
         /// <summary>The core radius model, or null when thinning, necking and fracture are all off.</summary>
@@ -431,9 +431,9 @@ namespace HookeRope
             Report(RopeParameterLimits.Clamp(ref m_Friction, RopeParameterLimits.MinFriction, RopeParameterLimits.MaxFriction, 0.3f, "Friction", ""));
             Report(RopeParameterLimits.Clamp(ref m_AttachmentCompliance, RopeParameterLimits.MinCompliance, RopeParameterLimits.MaxCompliance, 0f, "Attachment compliance", "m/N"));
             Report(RopeParameterLimits.Clamp(ref m_NeckRadiusFraction, RopeParameterLimits.MinNeckFraction, RopeParameterLimits.MaxNeckFraction, 0.75f, "Neck radius fraction r_min/R", ""));
-            Report(RopeParameterLimits.Clamp(ref m_DefectPosition, 0f, 1f, 0.5f, "Defect position", ""));
+            Report(RopeParameterLimits.Clamp(ref m_DefectPosition, RopeParameterLimits.MinDefectPosition, RopeParameterLimits.MaxDefectPosition, 0.5f, "Defect position", ""));
             Report(RopeParameterLimits.Clamp(ref m_BreakStrain, RopeParameterLimits.MinBreakStrain, RopeParameterLimits.MaxBreakStrain, 0.6f, "Break strain", ""));
-            Report(RopeParameterLimits.Clamp(ref m_BreakRadiusFraction, 0f, 0.99f, 0.25f, "Break radius fraction", ""));
+            Report(RopeParameterLimits.Clamp(ref m_BreakRadiusFraction, RopeParameterLimits.MinBreakRadiusFraction, RopeParameterLimits.MaxBreakRadiusFraction, 0.25f, "Break radius fraction", ""));
             if (m_NeckMode != NeckMode.Zone && m_NeckMode != NeckMode.Paper)
             {
                 m_NeckMode = NeckMode.Zone;
@@ -462,24 +462,13 @@ namespace HookeRope
         {
             if (_rope != null && _onCoreBroken != null) _rope.Broken -= _onCoreBroken;
             _settings = new RopeSettings();
-            WriteSettings(_settings);
-            _settings.SegmentCount = m_SegmentCount;
-
-            Vector3 here = transform.position;
-            Vector3 start = m_Start.WorldPosition(here);
-            Vector3 end = m_End.WorldPosition(new Vector3(start.x, start.y - m_RestLength, start.z));
-            _origin = start;
-            var rope = new Rope(_settings, Sim(start), Sim(end));
-            _rope = rope;
-            int last = _rope.ParticleCount - 1;
-
-            _startPin = _endPin = _startLoad = _endLoad = -1;
-            AttachEnd(m_Start, 0, ref _startPin, ref _startLoad);
-            AttachEnd(m_End, last, ref _endPin, ref _endLoad);
+            _rope = CreateCoreRope(_settings, out _origin);
+            AttachEnd(_rope, m_Start, 0, _origin, out _startPin, out _startLoad);
+            AttachEnd(_rope, m_End, _rope.ParticleCount - 1, _origin, out _endPin, out _endLoad);
 
             RegisterColliders();
             WriteRadiusSettings(_radiusSettings);
-            _simulation = new RopeSimulation(rope, RadiusFeaturesOn ? _radiusSettings : null);
+            _simulation = new RopeSimulation(_rope, RadiusFeaturesOn ? _radiusSettings : null);
 
             _onCoreBroken ??= OnCoreBroken;
             _rope.Broken += _onCoreBroken;
@@ -508,8 +497,8 @@ namespace HookeRope
                 throw new ArgumentOutOfRangeException(nameof(deltaTime), deltaTime, "deltaTime must be in (0, +inf) seconds");
             if (_rope == null || _rebuildPending) Rebuild();
 
-            CopyAttachmentsIn(m_Start, 0, _startPin, _startLoad);
-            CopyAttachmentsIn(m_End, _rope.ParticleCount - 1, _endPin, _endLoad);
+            CopyAttachmentsIn(m_Start, _startPin, _startLoad);
+            CopyAttachmentsIn(m_End, _endPin, _endLoad);
             if (m_CollisionMode == RopeCollisionMode.LayerMask) RefreshLayerColliders();
             _colliderBinding.UpdatePoses(_rope, _origin);
 
@@ -609,16 +598,10 @@ namespace HookeRope
         {
             if (!(seconds > 0f) || float.IsInfinity(seconds))
                 throw new ArgumentOutOfRangeException(nameof(seconds), seconds, "seconds must be in (0, +inf)");
-            var settings = new RopeSettings();
-            WriteSettings(settings);
-            settings.SegmentCount = m_SegmentCount;
-            settings.BreakStrain = float.PositiveInfinity;
-            Vector3 start = m_Start.WorldPosition(transform.position);
-            Vector3 end = m_End.WorldPosition(new Vector3(start.x, start.y - m_RestLength, start.z));
-            var rope = new Rope(settings, (start - start).ToFloat3(), (end - start).ToFloat3());
+            var rope = CreateCoreRope(new RopeSettings(), out Vector3 start);
             int last = rope.ParticleCount - 1;
-            PreviewEnd(rope, m_Start, 0, start);
-            PreviewEnd(rope, m_End, last, start);
+            AttachEnd(rope, m_Start, 0, start, out _, out _);
+            AttachEnd(rope, m_End, last, start, out _, out _);
             const float dt = 1f / 60f;
             int steps = (int)Math.Ceiling(seconds / dt);
             for (int s = 0; s < steps; s++)
@@ -692,33 +675,37 @@ namespace HookeRope
             ApplySettings();
         }
 
-        void AttachEnd(RopeEnd end, int particle, ref int pin, ref int load)
+        /// <summary>
+        /// Writes every live setting and the segment count into <paramref name="settings"/> and builds a core rope from
+        /// them, particles evenly from the start attachment to the end attachment (or straight down from this object by
+        /// the rest length). <paramref name="origin"/> is the start in world space (m): the origin of the rope's frame.
+        /// </summary>
+        Rope CreateCoreRope(RopeSettings settings, out Vector3 origin)
         {
+            WriteSettings(settings);
+            settings.SegmentCount = m_SegmentCount;
+            Vector3 start = m_Start.WorldPosition(transform.position);
+            Vector3 end = m_End.WorldPosition(new Vector3(start.x, start.y - m_RestLength, start.z));
+            origin = start;
+            return new Rope(settings, (start - origin).ToFloat3(), (end - origin).ToFloat3());
+        }
+
+        /// <summary>Pins (Transform end) or loads (Rigidbody end) <paramref name="particle"/>; the id not created is -1.</summary>
+        void AttachEnd(Rope rope, RopeEnd end, int particle, Vector3 origin, out int pin, out int load)
+        {
+            pin = load = -1;
             switch (end.Kind)
             {
                 case RopeEndKind.Transform:
-                    pin = _rope.AddPin(particle, Sim(end.Point.position), m_AttachmentCompliance);
+                    pin = rope.AddPin(particle, (end.Point.position - origin).ToFloat3(), m_AttachmentCompliance);
                     break;
                 case RopeEndKind.Rigidbody:
-                    load = _rope.AddLoad(particle, end.Body.mass);
+                    load = rope.AddLoad(particle, end.Body.mass);
                     break;
             }
         }
 
-        void PreviewEnd(Rope rope, RopeEnd end, int particle, Vector3 origin)
-        {
-            switch (end.Kind)
-            {
-                case RopeEndKind.Transform:
-                    rope.AddPin(particle, (end.Point.position - origin).ToFloat3(), m_AttachmentCompliance);
-                    break;
-                case RopeEndKind.Rigidbody:
-                    rope.AddLoad(particle, end.Body.mass);
-                    break;
-            }
-        }
-
-        void CopyAttachmentsIn(RopeEnd end, int particle, int pin, int load)
+        void CopyAttachmentsIn(RopeEnd end, int pin, int load)
         {
             if (pin >= 0 && end.Point != null)
             {
@@ -743,16 +730,19 @@ namespace HookeRope
             switch (m_CollisionMode)
             {
                 case RopeCollisionMode.Off:
-                    _colliderBinding.Register(_rope, Array.Empty<Collider>(), 0, Array.Empty<Transform>(), _origin, m_Friction, m_Start.Body, m_End.Body, this, false);
+                    RegisterColliders(Array.Empty<Collider>(), 0, Array.Empty<Transform>(), false);
                     break;
                 case RopeCollisionMode.ListedColliders:
-                    _colliderBinding.Register(_rope, m_Colliders, m_Colliders.Length, m_Planes, _origin, m_Friction, m_Start.Body, m_End.Body, this, true);
+                    RegisterColliders(m_Colliders, m_Colliders.Length, m_Planes, true);
                     break;
                 case RopeCollisionMode.LayerMask:
-                    _colliderBinding.Register(_rope, _overlapBuffer, QueryLayerColliders(), m_Planes, _origin, m_Friction, m_Start.Body, m_End.Body, this, true);
+                    RegisterColliders(_overlapBuffer, QueryLayerColliders(), m_Planes, true);
                     break;
             }
         }
+
+        void RegisterColliders(Collider[] colliders, int count, Transform[] planes, bool warnUnsupported) =>
+            _colliderBinding.Register(_rope, colliders, count, planes, _origin, m_Friction, m_Start.Body, m_End.Body, this, warnUnsupported);
 
         /// <summary>
         /// Layer Mask mode: colliders come and go (a worker walks past a beam), so each step re-queries the
@@ -763,7 +753,7 @@ namespace HookeRope
         {
             int count = QueryLayerColliders();
             if (!_colliderBinding.HasSameColliders(_overlapBuffer, count, m_Start.Body, m_End.Body))
-                _colliderBinding.Register(_rope, _overlapBuffer, count, m_Planes, _origin, m_Friction, m_Start.Body, m_End.Body, this, false);
+                RegisterColliders(_overlapBuffer, count, m_Planes, false);
         }
 
         /// <summary>Colliders on <see cref="CollisionLayers"/> within the rope's reach, into the overlap buffer (grown when full).</summary>

@@ -22,9 +22,6 @@ namespace HookeRope
         int _colliderCount;
         int _planeCount;
 
-        /// <summary>Number of shapes registered with the rope.</summary>
-        public int Count => _colliderCount + _planeCount;
-
         /// <summary>
         /// Replaces the rope's colliders with every supported collider and plane given; unsupported colliders (mesh,
         /// terrain…) are skipped (and reported when <paramref name="warnUnsupported"/>), triggers and colliders of

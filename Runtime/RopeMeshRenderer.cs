@@ -39,7 +39,9 @@ namespace HookeRope
         const MeshUpdateFlags FrameFlags = MeshUpdateFlags.DontValidateIndices | MeshUpdateFlags.DontRecalculateBounds |
                                            MeshUpdateFlags.DontResetBoneBounds;
 
-        [SerializeField, Range(3, 64), Tooltip("Vertices around the tube (3–64). 8 is cheap, 16 smooth, 32 for close-ups.")]
+        const int MinRadialSegments = 3, MaxRadialSegments = 64;
+
+        [SerializeField, Range(MinRadialSegments, MaxRadialSegments), Tooltip("Vertices around the tube (3–64). 8 is cheap, 16 smooth, 32 for close-ups.")]
         int m_RadialSegments = 12;
 
         [SerializeField, Tooltip("Generate the burr-strand material with the procedural burr texture when the renderer has no second material.")]
@@ -64,7 +66,7 @@ namespace HookeRope
             get => m_RadialSegments;
             set
             {
-                m_RadialSegments = RopeParameterLimits.Check(value, 3, 64, nameof(RadialSegments));
+                m_RadialSegments = RopeParameterLimits.Check(value, MinRadialSegments, MaxRadialSegments, nameof(RadialSegments));
                 _tube = null;
             }
         }
@@ -74,7 +76,7 @@ namespace HookeRope
 
         void OnValidate()
         {
-            string message = RopeParameterLimits.Clamp(ref m_RadialSegments, 3, 64, "Radial segments");
+            string message = RopeParameterLimits.Clamp(ref m_RadialSegments, MinRadialSegments, MaxRadialSegments, "Radial segments");
             if (message != null) Debug.LogWarning("RopeMeshRenderer '" + name + "': " + message, this);
             if (_tube != null && _tube.RadialSegments != m_RadialSegments) _tube = null;
         }

@@ -25,6 +25,10 @@ namespace HookeRope
         public const float MinPoisson = -1f, MaxPoisson = 0.5f;
         /// <summary>Neck onset radius r_min as a fraction of the rest radius R.</summary>
         public const float MinNeckFraction = 0.01f, MaxNeckFraction = 1f;
+        /// <summary>Material defect position as a fraction of the rest length from the start.</summary>
+        public const float MinDefectPosition = 0f, MaxDefectPosition = 1f;
+        /// <summary>Break radius as a fraction of the rest radius R (0 = off).</summary>
+        public const float MinBreakRadiusFraction = 0f, MaxBreakRadiusFraction = 0.99f;
         /// <summary>Break strain range (l/L − 1, dimensionless).</summary>
         public const float MinBreakStrain = 1e-3f, MaxBreakStrain = 10f;
         /// <summary>XPBD damping coefficient β range in seconds.</summary>

@@ -22,7 +22,6 @@ namespace HookeRope
         float[] _x = Array.Empty<float>(), _y = Array.Empty<float>(), _z = Array.Empty<float>();
         float[] _ringRadii = Array.Empty<float>();
         bool[] _broken = Array.Empty<bool>();
-        int[] _indicesUploaded;
 
         /// <summary>Tube for <paramref name="radialSegments"/> vertices around (3 … 64).</summary>
         public RopeTube(int radialSegments)
@@ -113,12 +112,11 @@ namespace HookeRope
             var max = new Vector3(update.BoundsMax.X + ox, update.BoundsMax.Y + oy, update.BoundsMax.Z + oz);
             Bounds = new Bounds((min + max) * 0.5f, max - min);
 
-            bool changed = resized || update.TopologyChanged || VertexCount != update.VertexCount || IndexCount != update.IndexCount
-                           || !ReferenceEquals(_indicesUploaded, _indices);
+            // A new index array always comes with resized = true, so the uploaded indices are the current ones otherwise.
+            bool changed = resized || update.TopologyChanged || VertexCount != update.VertexCount || IndexCount != update.IndexCount;
             VertexCount = update.VertexCount;
             IndexCount = update.IndexCount;
             TubeIndexCount = update.TubeIndexCount;
-            _indicesUploaded = _indices;
             return changed;
         }
 

@@ -27,7 +27,7 @@ namespace HookeRope.Samples.CollisionBend
         float m_Friction = 0.2f;
 
         Transform[] _grips = Array.Empty<Transform>();
-        float _startHeight = 2f;
+        const float StartHeight = 2f;
         float _time;
 
         void OnValidate()
@@ -59,9 +59,9 @@ namespace HookeRope.Samples.CollisionBend
         void BuildRope(string name, float z, Collider shape, int gripIndex)
         {
             var left = new GameObject(name + " left grip");
-            left.transform.position = new Vector3(-1.2f, _startHeight, z);
+            left.transform.position = new Vector3(-1.2f, StartHeight, z);
             var right = new GameObject(name + " right grip");
-            right.transform.position = new Vector3(1.2f, _startHeight, z);
+            right.transform.position = new Vector3(1.2f, StartHeight, z);
             _grips[gripIndex] = left.transform;
             _grips[gripIndex + 1] = right.transform;
 
@@ -84,7 +84,7 @@ namespace HookeRope.Samples.CollisionBend
         {
             _time += Time.fixedDeltaTime;
             float t = Math.Min(1f, _time / m_LowerTime);
-            float height = _startHeight + (m_GripHeight - _startHeight) * t;
+            float height = StartHeight + (m_GripHeight - StartHeight) * t;
             for (int i = 0; i < _grips.Length; i++)
             {
                 if (_grips[i] == null) continue;

@@ -25,7 +25,7 @@ namespace HookeRope.Samples.PoissonSweep
         float m_Period = 6f;
 
         Transform[] _grips = Array.Empty<Transform>();
-        float _topHeight = 3f;
+        const float TopHeight = 3f;
         float _time;
 
         void OnValidate()
@@ -43,9 +43,9 @@ namespace HookeRope.Samples.PoissonSweep
             {
                 float x = (i - 1.5f) * 0.6f;
                 var top = new GameObject("Top ν=" + s_PoissonRatios[i]);
-                top.transform.position = new Vector3(x, _topHeight, 0f);
+                top.transform.position = new Vector3(x, TopHeight, 0f);
                 var grip = new GameObject("Grip ν=" + s_PoissonRatios[i]);
-                grip.transform.position = new Vector3(x, _topHeight - m_RestLength, 0f);
+                grip.transform.position = new Vector3(x, TopHeight - m_RestLength, 0f);
                 _grips[i] = grip.transform;
 
                 var go = new GameObject("Rope ν=" + s_PoissonRatios[i], typeof(MeshFilter), typeof(MeshRenderer), typeof(ElasticRope), typeof(RopeMeshRenderer));
@@ -71,7 +71,7 @@ namespace HookeRope.Samples.PoissonSweep
             for (int i = 0; i < _grips.Length; i++)
             {
                 var p = _grips[i].position;
-                _grips[i].position = new Vector3(p.x, _topHeight - m_RestLength * (1f + strain), p.z);
+                _grips[i].position = new Vector3(p.x, TopHeight - m_RestLength * (1f + strain), p.z);
             }
         }
     }
