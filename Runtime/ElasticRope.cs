@@ -736,8 +736,12 @@ namespace HookeRope
                     RegisterColliders(m_Colliders, m_Colliders.Length, m_Planes, true);
                     break;
                 case RopeCollisionMode.LayerMask:
-                    RegisterColliders(_overlapBuffer, QueryLayerColliders(), m_Planes, true);
+                {
+                    // query first: it creates (or grows) the buffer that is passed on
+                    int count = QueryLayerColliders();
+                    RegisterColliders(_overlapBuffer, count, m_Planes, true);
                     break;
+                }
             }
         }
 

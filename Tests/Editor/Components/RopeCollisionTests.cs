@@ -78,6 +78,17 @@ namespace HookeRope.Tests.Components
             }
         }
 
+        [Test]
+        public void LayerMaskFindsASphereAlreadyInReachWhenTheRopeIsBuilt()
+        {
+            var sphereObject = _scene.Track(new GameObject("Sphere"));
+            sphereObject.transform.position = new Vector3(0f, 1f, 0f);
+            sphereObject.AddComponent<SphereCollider>().radius = 0.3f;
+            var rope = LowerableRope(RopeCollisionMode.LayerMask, new Collider[0], out var left, out var right);
+            Lower(rope, left, right);
+            Assert.That(rope.GetParticlePosition(rope.ParticleCount / 2).y, Is.GreaterThan(1.2f), "the rope drapes over the sphere");
+        }
+
         static float Mathf_Min(float a, float b) => a < b ? a : b;
     }
 }
