@@ -82,10 +82,10 @@ namespace HookeRope
         public float RestRadius => Rope.Settings.Radius;
 
         /// <summary>Smallest radius along the rope in metres (R without a radius model).</summary>
-        public float MinRadius => IsModelActive ? radiusModel.MinRadius : Rope.Settings.Radius;
+        public float MinRadius => IsModelActive ? radiusModel.MinRadius : RestRadius;
 
         /// <summary>Radius at the defect in metres, neck included (R without a radius model).</summary>
-        public float NeckRadius => IsModelActive ? radiusModel.NeckRadius : Rope.Settings.Radius;
+        public float NeckRadius => IsModelActive ? radiusModel.NeckRadius : RestRadius;
 
         /// <summary>True once any segment has broken (by the radius model, the solver's strain limit or a pin).</summary>
         public bool IsBroken => brokenCount > 0;
@@ -134,7 +134,7 @@ namespace HookeRope
         /// </summary>
         public void UpdateRadii()
         {
-            if (radiusModel == null || !radiusModel.IsActive) return;
+            if (!IsModelActive) return;
             radiusModel.Update(Rope.SegmentLengths, brokenFlags);
             if (RadiusSettings.PoissonEnabled || RadiusSettings.NeckMode != NeckMode.Off)
                 radiusModel.ParticleRadii.CopyTo(Rope.ParticleRadius);
@@ -153,9 +153,10 @@ namespace HookeRope
         public int GetIndexCount() => EnsureMesh().GetIndexCount(brokenFlags);
 
         /// <summary>Computes the radius of every mesh ring (m) into <see cref="RingRadii"/>.</summary>
-        public void FillRingRadii()
+        public void FillRingRadii() => ComputeRingRadii(EnsureMesh());
+
+        private void ComputeRingRadii(TubeMeshBuilder builder)
         {
-            TubeMeshBuilder builder = EnsureMesh();
             if (IsModelActive)
             {
                 RingLayout layout = builder.Layout;
@@ -176,7 +177,7 @@ namespace HookeRope
         public TubeMeshUpdate FillMesh(TubeVertex[] vertices, int[] indices)
         {
             TubeMeshBuilder builder = EnsureMesh();
-            FillRingRadii();
+            ComputeRingRadii(builder);
             TubeMeshUpdate u = builder.BuildWithRingRadii(Rope.PositionX, Rope.PositionY, Rope.PositionZ, Rope.RestLengths,
                 ringRadii, brokenFlags, vertices, indices);
             return new TubeMeshUpdate(u.VertexCount, u.IndexCount, u.TubeIndexCount, u.TopologyChanged,
@@ -212,21 +213,25 @@ namespace HookeRope
         private TubeMeshBuilder EnsureMesh()
         {
             TubeMeshSettings s = MeshSettings;
+            RadiusSettings r = RadiusSettings;
+            NeckMode neckMode = r == null ? NeckMode.Off : r.NeckMode;
+            float defect = r == null ? 0f : r.DefectPosition;
+            float zone = r == null ? 0f : r.NeckZoneDiameters;
             if (meshBuilder != null
                 && meshBuilder.RadialSegments == s.RadialSegments
                 && meshSettingsRings == s.RingsPerSegment
                 && meshCaps == s.CapEnds
                 && meshBurr == s.Burr.Enabled
-                && meshNeckMode == (RadiusSettings == null ? NeckMode.Off : RadiusSettings.NeckMode)
-                && meshDefect == (RadiusSettings == null ? 0f : RadiusSettings.DefectPosition)
-                && meshZone == (RadiusSettings == null ? 0f : RadiusSettings.NeckZoneDiameters))
+                && meshNeckMode == neckMode
+                && meshDefect == defect
+                && meshZone == zone)
                 return meshBuilder;
             meshSettingsRings = s.RingsPerSegment;
             meshCaps = s.CapEnds;
             meshBurr = s.Burr.Enabled;
-            meshNeckMode = RadiusSettings == null ? NeckMode.Off : RadiusSettings.NeckMode;
-            meshDefect = RadiusSettings == null ? 0f : RadiusSettings.DefectPosition;
-            meshZone = RadiusSettings == null ? 0f : RadiusSettings.NeckZoneDiameters;
+            meshNeckMode = neckMode;
+            meshDefect = defect;
+            meshZone = zone;
             RingLayout layout = meshNeckMode == NeckMode.Zone && radiusModel != null
                 ? RingLayout.Refined(Rope.RestLengths, s.RingsPerSegment, radiusModel.DefectRestArc, radiusModel.NeckZoneRestLength, RingsInNeckZone)
                 : new RingLayout(Rope.SegmentCount, s.RingsPerSegment);

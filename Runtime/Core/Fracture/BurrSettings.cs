@@ -21,24 +21,14 @@ namespace HookeRope.Fracture
         public float Length
         {
             get => length;
-            set
-            {
-                if (!float.IsFinite(value) || !(value > 0f) || value > 20f)
-                    throw new ArgumentOutOfRangeException(nameof(Length), value, "Length must be finite and in (0, 20] end radii.");
-                length = value;
-            }
+            set => length = Require.InOpenClosedRange(value, 0f, 20f, nameof(Length), "end radii");
         }
 
         /// <summary>Largest outward tilt of a strand from the rope axis in radians, range [0, 1.4]. Default 0.6.</summary>
         public float Spread
         {
             get => spread;
-            set
-            {
-                if (!float.IsFinite(value) || value < 0f || value > 1.4f)
-                    throw new ArgumentOutOfRangeException(nameof(Spread), value, "Spread must be finite and in [0, 1.4] rad.");
-                spread = value;
-            }
+            set => spread = Require.InClosedRange(value, 0f, 1.4f, nameof(Spread), "rad");
         }
     }
 }

@@ -69,10 +69,8 @@ namespace HookeRope.Fracture
 
         private static void CheckSize(int width, int height)
         {
-            if (width < 1 || width > MaxSize)
-                throw new ArgumentOutOfRangeException(nameof(width), width, "width must be in [1, 4096] px.");
-            if (height < 1 || height > MaxSize)
-                throw new ArgumentOutOfRangeException(nameof(height), height, "height must be in [1, 4096] px.");
+            Require.InRange(width, 1, MaxSize, nameof(width), "px");
+            Require.InRange(height, 1, MaxSize, nameof(height), "px");
         }
     }
 }

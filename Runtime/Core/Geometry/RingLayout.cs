@@ -104,8 +104,7 @@ namespace HookeRope.Geometry
         {
             if (segmentCount < 1)
                 throw new ArgumentOutOfRangeException(nameof(segmentCount), segmentCount, "segmentCount must be in [1, +inf).");
-            if (ringsPerSegment < 1 || ringsPerSegment > MaxRingsPerSegment)
-                throw new ArgumentOutOfRangeException(nameof(ringsPerSegment), ringsPerSegment, "ringsPerSegment must be in [1, 1024].");
+            Require.InRange(ringsPerSegment, 1, MaxRingsPerSegment, nameof(ringsPerSegment));
             int[] counts = new int[segmentCount];
             Array.Fill(counts, ringsPerSegment);
             return counts;

@@ -252,7 +252,7 @@ namespace HookeRope.Geometry
             int first = layout.FirstRing(a);
             int last = layout.FirstRing(b);
             ComputeCenters(a, b, first, last, x, y, z, origin);
-            ComputeFrames(a, b, first, last, x, y, z);
+            ComputeFrames(first, last);
             ComputeSlopes(first, last);
 
             bool startBroken = a > 0, endBroken = b < n;
@@ -326,7 +326,7 @@ namespace HookeRope.Geometry
             }
         }
 
-        private void ComputeFrames(int a, int b, int first, int last, ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z)
+        private void ComputeFrames(int first, int last)
         {
             Float3 previousTangent = (centers[last] - centers[first]).NormalizedOr(new Float3(1f, 0f, 0f));
             for (int k = first; k <= last; k++)

@@ -19,36 +19,21 @@ namespace HookeRope.Geometry
         public int RadialSegments
         {
             get => radialSegments;
-            set
-            {
-                if (value < 3 || value > 64)
-                    throw new ArgumentOutOfRangeException(nameof(RadialSegments), value, "RadialSegments must be in [3, 64].");
-                radialSegments = value;
-            }
+            set => radialSegments = Require.InRange(value, 3, 64, nameof(RadialSegments));
         }
 
         /// <summary>Rings per rope segment along the smooth curve, range [1, 64]. Default 4.</summary>
         public int RingsPerSegment
         {
             get => ringsPerSegment;
-            set
-            {
-                if (value < 1 || value > 64)
-                    throw new ArgumentOutOfRangeException(nameof(RingsPerSegment), value, "RingsPerSegment must be in [1, 64].");
-                ringsPerSegment = value;
-            }
+            set => ringsPerSegment = Require.InRange(value, 1, 64, nameof(RingsPerSegment));
         }
 
         /// <summary>Texture v per metre of rest arc length (1/m), range (0, 10000]; the texture stretches with the material. Default 10.</summary>
         public float VPerMetre
         {
             get => vPerMetre;
-            set
-            {
-                if (!float.IsFinite(value) || !(value > 0f) || value > 10000f)
-                    throw new ArgumentOutOfRangeException(nameof(VPerMetre), value, "VPerMetre must be finite and in (0, 10000] 1/m.");
-                vPerMetre = value;
-            }
+            set => vPerMetre = Require.InOpenClosedRange(value, 0f, 10000f, nameof(VPerMetre), "1/m");
         }
 
         /// <summary>Close the two intact ends of the rope with flat caps (the intact mesh is then watertight). Default true. Broken ends are always closed.</summary>

@@ -25,7 +25,7 @@ namespace HookeRope.Radius
         public float PoissonRatio
         {
             get => poissonRatio;
-            set => poissonRatio = Check(value, -1f, 0.5f, nameof(PoissonRatio), "[-1, 0.5]", true, true);
+            set => poissonRatio = Require.InClosedRange(value, -1f, 0.5f, nameof(PoissonRatio));
         }
 
         /// <summary>
@@ -39,7 +39,7 @@ namespace HookeRope.Radius
         public float RMinFraction
         {
             get => rMinFraction;
-            set => rMinFraction = Check(value, 0f, 1f, nameof(RMinFraction), "(0, 1]", false, true);
+            set => rMinFraction = Require.InOpenClosedRange(value, 0f, 1f, nameof(RMinFraction));
         }
 
         /// <summary>Neck model: <see cref="HookeRope.Radius.NeckMode.Off"/>, Paper or Zone (default).</summary>
@@ -61,7 +61,7 @@ namespace HookeRope.Radius
         public float DefectPosition
         {
             get => defectPosition;
-            set => defectPosition = Check(value, 0f, 1f, nameof(DefectPosition), "[0, 1]", true, true);
+            set => defectPosition = Require.InClosedRange(value, 0f, 1f, nameof(DefectPosition));
         }
 
         /// <summary>
@@ -71,7 +71,7 @@ namespace HookeRope.Radius
         public float NeckZoneDiameters
         {
             get => neckZoneDiameters;
-            set => neckZoneDiameters = Check(value, 0.5f, 1000f, nameof(NeckZoneDiameters), "[0.5, 1000]", true, true);
+            set => neckZoneDiameters = Require.InClosedRange(value, 0.5f, 1000f, nameof(NeckZoneDiameters));
         }
 
         /// <summary>
@@ -81,7 +81,7 @@ namespace HookeRope.Radius
         public float NeckGrowthStrain
         {
             get => neckGrowthStrain;
-            set => neckGrowthStrain = Check(value, 0f, 100f, nameof(NeckGrowthStrain), "(0, 100]", false, true);
+            set => neckGrowthStrain = Require.InOpenClosedRange(value, 0f, 100f, nameof(NeckGrowthStrain));
         }
 
         /// <summary>Break decision on. Off: the model never asks for a break and skips the test. Default true.</summary>
@@ -94,7 +94,7 @@ namespace HookeRope.Radius
         public float BreakRadiusFraction
         {
             get => breakRadiusFraction;
-            set => breakRadiusFraction = Check(value, 0f, 1f, nameof(BreakRadiusFraction), "[0, 1)", true, false);
+            set => breakRadiusFraction = Require.InClosedOpenRange(value, 0f, 1f, nameof(BreakRadiusFraction));
         }
 
         /// <summary>
@@ -114,14 +114,5 @@ namespace HookeRope.Radius
 
         /// <summary>True when any part (thinning, neck, break) is on; when false the model does no per-step work.</summary>
         public bool AnyEnabled => PoissonEnabled || neckMode != NeckMode.Off || BreakEnabled;
-
-        private static float Check(float value, float min, float max, string name, string range, bool minInclusive, bool maxInclusive)
-        {
-            bool ok = float.IsFinite(value)
-                && (minInclusive ? value >= min : value > min)
-                && (maxInclusive ? value <= max : value < max);
-            if (!ok) throw new ArgumentOutOfRangeException(name, value, name + " must be finite and in " + range + ".");
-            return value;
-        }
     }
 }
