@@ -34,8 +34,8 @@ namespace HookeRope.Solver
         public readonly bool[] Broken;
         public readonly float[] DirX, DirY, DirZ; // last valid unit direction x_j → x_{j+1}
 
-        // scratch for the exact solve (double)
-        public readonly double[] Lower, Diagonal, Upper, Rhs, Delta, Scratch, FullDiagonal, FullLower, FullUpper, FullRhs;
+        // exact solve (double): the tridiagonal system (Full*), the Thomas sweep's c′ and d′ (Upper, Rhs), its solution Δλ (Delta)
+        public readonly double[] Upper, Rhs, Delta, FullDiagonal, FullLower, FullUpper, FullRhs;
         public readonly bool[] Active;
 
         // transverse stabilisation (see UpdateTransverseMass)
@@ -67,8 +67,7 @@ namespace HookeRope.Solver
             RestLength = new float[s]; Compliance = new float[s]; Lambda = new double[s];
             Tension = new float[s]; Length = new float[s]; Broken = new bool[s];
             DirX = new float[s]; DirY = new float[s]; DirZ = new float[s];
-            Lower = new double[s]; Diagonal = new double[s]; Upper = new double[s];
-            Rhs = new double[s]; Delta = new double[s]; Scratch = new double[s];
+            Upper = new double[s]; Rhs = new double[s]; Delta = new double[s];
             FullDiagonal = new double[s]; FullLower = new double[s]; FullUpper = new double[s]; FullRhs = new double[s];
             Active = new bool[s];
             TransverseInverseMass = new float[n]; TangentX = new float[n]; TangentY = new float[n]; TangentZ = new float[n];
