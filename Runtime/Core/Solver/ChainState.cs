@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.CompilerServices;
 
 namespace HookeRope.Solver
 {
@@ -33,8 +34,8 @@ namespace HookeRope.Solver
         public readonly bool[] Broken;
         public readonly float[] DirX, DirY, DirZ; // last valid unit direction x_j → x_{j+1}
 
-        // scratch for the exact solve (double)
-        public readonly double[] Lower, Diagonal, Upper, Rhs, Delta, Scratch, FullDiagonal, FullLower, FullUpper, FullRhs;
+        // exact solve (double): the tridiagonal system (Full*), the Thomas sweep's c′ and d′ (Upper, Rhs), its solution Δλ (Delta)
+        public readonly double[] Upper, Rhs, Delta, FullDiagonal, FullLower, FullUpper, FullRhs;
         public readonly bool[] Active;
 
         // transverse stabilisation (see UpdateTransverseMass)
@@ -66,8 +67,7 @@ namespace HookeRope.Solver
             RestLength = new float[s]; Compliance = new float[s]; Lambda = new double[s];
             Tension = new float[s]; Length = new float[s]; Broken = new bool[s];
             DirX = new float[s]; DirY = new float[s]; DirZ = new float[s];
-            Lower = new double[s]; Diagonal = new double[s]; Upper = new double[s];
-            Rhs = new double[s]; Delta = new double[s]; Scratch = new double[s];
+            Upper = new double[s]; Rhs = new double[s]; Delta = new double[s];
             FullDiagonal = new double[s]; FullLower = new double[s]; FullUpper = new double[s]; FullRhs = new double[s];
             Active = new bool[s];
             TransverseInverseMass = new float[n]; TangentX = new float[n]; TangentY = new float[n]; TangentZ = new float[n];
@@ -197,23 +197,35 @@ namespace HookeRope.Solver
             ContactCount = 0;
         }
 
-        /// <summary>Unit direction of segment j (live positions Prev + D) into (nx, ny, nz) and its length; keeps the last valid direction when the ends coincide.</summary>
-        public float Direction(int j, out float nx, out float ny, out float nz)
+        /// <summary>
+        /// Multiplier change (N·s²) d of a segment whose accumulated multiplier is lambda (≤ 0 pulls): a tension-only segment
+        /// stops at λ + d = 0 instead of pushing; otherwise d unchanged.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double LimitToPulling(double lambda, double d, bool tensionOnly) => tensionOnly && lambda + d > 0.0 ? -lambda : d;
+
+        /// <summary>
+        /// Length (m) of segment j from the live positions Prev + D, and its unit direction into (nx, ny, nz), which it also
+        /// stores as the segment's last valid direction; when the ends coincide (or the length is not finite) the last valid
+        /// direction is kept and a non-finite length reads 0. (ddx, ddy, ddz) is the segment's change over the substep,
+        /// D_{j+1} − D_j (m), which the damping term needs.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public float Direction(int j, out float nx, out float ny, out float nz, out float ddx, out float ddy, out float ddz)
         {
-            float dx = (PrevX[j + 1] - PrevX[j]) + (DX[j + 1] - DX[j]);
-            float dy = (PrevY[j + 1] - PrevY[j]) + (DY[j + 1] - DY[j]);
-            float dz = (PrevZ[j + 1] - PrevZ[j]) + (DZ[j + 1] - DZ[j]);
-            float len = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
-            if (len > 1e-12f && float.IsFinite(len))
+            ddx = DX[j + 1] - DX[j]; ddy = DY[j + 1] - DY[j]; ddz = DZ[j + 1] - DZ[j];
+            float ex = (PrevX[j + 1] - PrevX[j]) + ddx, ey = (PrevY[j + 1] - PrevY[j]) + ddy, ez = (PrevZ[j + 1] - PrevZ[j]) + ddz;
+            float len = MathF.Sqrt(ex * ex + ey * ey + ez * ez);
+            if (len > 1e-12f && len <= float.MaxValue)
             {
                 float inv = 1f / len;
-                nx = dx * inv; ny = dy * inv; nz = dz * inv;
+                nx = ex * inv; ny = ey * inv; nz = ez * inv;
                 DirX[j] = nx; DirY[j] = ny; DirZ[j] = nz;
             }
             else
             {
                 nx = DirX[j]; ny = DirY[j]; nz = DirZ[j];
-                if (!float.IsFinite(len)) len = 0f;
+                if (!(len <= float.MaxValue)) len = 0f;
             }
             return len;
         }

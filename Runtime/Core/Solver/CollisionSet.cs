@@ -21,7 +21,7 @@ namespace HookeRope.Solver
         {
             if (Count == shapes.Length)
             {
-                int size = Math.Max(4, Count * 2);
+                int size = ArrayGrowth.NextCapacity(Count);
                 Array.Resize(ref shapes, size);
                 Array.Resize(ref startPosition, size);
                 Array.Resize(ref endPosition, size);

@@ -27,8 +27,6 @@ namespace HookeRope.Solver
             double invH2 = 1.0 / (h * h);
             double gammaAll = beta / h; // γ = α̃·β̃/h with β̃ = h²·β·k, k = 1/α
             float[] w = c.InverseMass, rest = c.RestLength, compliance = c.Compliance, length = c.Length;
-            float[] px = c.PrevX, py = c.PrevY, pz = c.PrevZ, dx = c.DX, dy = c.DY, dz = c.DZ;
-            float[] nxs = c.DirX, nys = c.DirY, nzs = c.DirZ;
             double[] fd = c.FullDiagonal, fl = c.FullLower, fu = c.FullUpper, fr = c.FullRhs;
             double[] lambda = c.Lambda;
             bool[] active = c.Active, broken = c.Broken;
@@ -50,21 +48,7 @@ namespace HookeRope.Solver
                     if (augmented) left = TransverseMobility.Of(c, j + 1); // the chain restarts at particle j + 1
                     continue;
                 }
-                float ddx = dx[j + 1] - dx[j], ddy = dy[j + 1] - dy[j], ddz = dz[j + 1] - dz[j];
-                float ex = (px[j + 1] - px[j]) + ddx, ey = (py[j + 1] - py[j]) + ddy, ez = (pz[j + 1] - pz[j]) + ddz;
-                float len = MathF.Sqrt(ex * ex + ey * ey + ez * ez);
-                float nx, ny, nz;
-                if (len > 1e-12f && len <= float.MaxValue)
-                {
-                    float inv = 1f / len;
-                    nx = ex * inv; ny = ey * inv; nz = ez * inv;
-                    nxs[j] = nx; nys[j] = ny; nzs[j] = nz;
-                }
-                else
-                {
-                    nx = nxs[j]; ny = nys[j]; nz = nzs[j];
-                    if (!(len <= float.MaxValue)) len = 0f;
-                }
+                float len = c.Direction(j, out float nx, out float ny, out float nz, out float ddx, out float ddy, out float ddz);
                 length[j] = len;
                 double alpha = compliance[j];
                 double alphaTilde = alpha * invH2;
@@ -189,7 +173,7 @@ namespace HookeRope.Solver
             {
                 float wRight = w[j + 1];
                 double d = delta[j];
-                if (tensionOnly && lambda[j] + d > 0.0) d = -lambda[j];
+                d = ChainState.LimitToPulling(lambda[j], d, tensionOnly);
                 if (d != 0.0)
                 {
                     lambda[j] += d;
@@ -218,7 +202,7 @@ namespace HookeRope.Solver
             for (int j = 0; j < s; j++)
             {
                 double d = delta[j];
-                if (tensionOnly && lambda[j] + d > 0.0) d = -lambda[j];
+                d = ChainState.LimitToPulling(lambda[j], d, tensionOnly);
                 lambda[j] += d;
                 delta[j] = d;
                 double qx = nxs[j] * d, qy = nys[j] * d, qz = nzs[j] * d;
@@ -374,13 +358,13 @@ namespace HookeRope.Solver
             if (i > 0 && !c.Broken[i - 1])
             {
                 double d = delta[i - 1];
-                if (clamp && tensionOnly && lambda[i - 1] + d > 0.0) d = -lambda[i - 1];
+                d = ChainState.LimitToPulling(lambda[i - 1], d, clamp && tensionOnly);
                 fx += d * c.DirX[i - 1]; fy += d * c.DirY[i - 1]; fz += d * c.DirZ[i - 1];
             }
             if (i < s && !c.Broken[i])
             {
                 double d = delta[i];
-                if (clamp && tensionOnly && lambda[i] + d > 0.0) d = -lambda[i];
+                d = ChainState.LimitToPulling(lambda[i], d, clamp && tensionOnly);
                 fx -= d * c.DirX[i]; fy -= d * c.DirY[i]; fz -= d * c.DirZ[i];
             }
         }

@@ -14,12 +14,11 @@ namespace HookeRope.Solver
             double invH2 = 1.0 / (h * h);
             double gamma = beta / h; // γ = α̃·β̃/h with β̃ = h²·β·k, k = 1/α
             float[] w = c.InverseMass, rest = c.RestLength, compliance = c.Compliance;
-            float[] px = c.PrevX, py = c.PrevY, pz = c.PrevZ, dx = c.DX, dy = c.DY, dz = c.DZ;
-            float[] nxs = c.DirX, nys = c.DirY, nzs = c.DirZ;
+            float[] dx = c.DX, dy = c.DY, dz = c.DZ;
             bool[] broken = c.Broken;
             double[] lambda = c.Lambda;
-            if (w.Length < s + 1 || px.Length < s + 1 || dx.Length < s + 1 || dy.Length < s + 1 || dz.Length < s + 1 || py.Length < s + 1 || pz.Length < s + 1) return;
-            if (rest.Length < s || compliance.Length < s || nxs.Length < s || nys.Length < s || nzs.Length < s || broken.Length < s || lambda.Length < s) return;
+            if (w.Length < s + 1 || dx.Length < s + 1 || dy.Length < s + 1 || dz.Length < s + 1) return;
+            if (rest.Length < s || compliance.Length < s || broken.Length < s || lambda.Length < s) return;
             bool contacts = c.ContactCount > 0;
             float wa = w[0];
             for (int j = 0; j < s; j++)
@@ -29,21 +28,7 @@ namespace HookeRope.Solver
                 double alpha = compliance[j];
                 double wSum = (double)wa + wb;
                 if (wSum == 0.0 && alpha == 0.0) { wa = wb; continue; }
-                float ddx = dx[j + 1] - dx[j], ddy = dy[j + 1] - dy[j], ddz = dz[j + 1] - dz[j];
-                float ex = (px[j + 1] - px[j]) + ddx, ey = (py[j + 1] - py[j]) + ddy, ez = (pz[j + 1] - pz[j]) + ddz;
-                float len = MathF.Sqrt(ex * ex + ey * ey + ez * ez);
-                float nx, ny, nz;
-                if (len > 1e-12f && len <= float.MaxValue)
-                {
-                    float inv = 1f / len;
-                    nx = ex * inv; ny = ey * inv; nz = ez * inv;
-                    nxs[j] = nx; nys[j] = ny; nzs[j] = nz;
-                }
-                else
-                {
-                    nx = nxs[j]; ny = nys[j]; nz = nzs[j];
-                    if (!(len <= float.MaxValue)) len = 0f;
-                }
+                float len = c.Direction(j, out float nx, out float ny, out float nz, out float ddx, out float ddy, out float ddz);
                 double alphaTilde = alpha * invH2;
                 double g = alpha > 0.0 ? gamma : 0.0;
                 double rel = g > 0.0 ? nx * ddx + ny * ddy + nz * ddz : 0.0;
@@ -55,7 +40,7 @@ namespace HookeRope.Solver
                     continue;
                 }
                 double d = numerator / ((1.0 + g) * wSum + alphaTilde);
-                if (tensionOnly && lambda[j] + d > 0.0) d = -lambda[j];
+                d = ChainState.LimitToPulling(lambda[j], d, tensionOnly);
                 if (d != 0.0)
                 {
                     lambda[j] += d;
@@ -88,7 +73,7 @@ namespace HookeRope.Solver
                 double wbe = holdB ? wb * (1.0 - cnb * cnb) : wb;
                 double denominator = (1.0 + g) * (wae + wbe) + alphaTilde;
                 d = denominator > 0.0 ? numerator / denominator : 0.0;
-                if (tensionOnly && lambda[j] + d > 0.0) d = -lambda[j];
+                d = ChainState.LimitToPulling(lambda[j], d, tensionOnly);
                 // end a moves by −wa·n·d, end b by +wb·n·d: a held end whose normal motion would be outward is let go
                 if (holdA && -cna * d > 0.0) { holdA = false; continue; }
                 if (holdB && cnb * d > 0.0) { holdB = false; continue; }

@@ -44,7 +44,7 @@ namespace HookeRope.Solver
             if (float.IsNaN(breakForce) || breakForce <= 0f) throw new ArgumentOutOfRangeException(nameof(breakForce), breakForce, "breakForce must be in (0, +inf] N");
             if (pinCount == pinParticle.Length)
             {
-                int size = Math.Max(4, pinCount * 2);
+                int size = ArrayGrowth.NextCapacity(pinCount);
                 Array.Resize(ref pinParticle, size);
                 Array.Resize(ref pinStart, size);
                 Array.Resize(ref pinEnd, size);
@@ -134,7 +134,7 @@ namespace HookeRope.Solver
             if (!float.IsFinite(mass) || mass <= 0f) throw new ArgumentOutOfRangeException(nameof(mass), mass, "mass must be finite and in (0, +inf) kg");
             if (loadCount == loadParticle.Length)
             {
-                int size = Math.Max(4, loadCount * 2);
+                int size = ArrayGrowth.NextCapacity(loadCount);
                 Array.Resize(ref loadParticle, size);
                 Array.Resize(ref loadMass, size);
                 Array.Resize(ref loadStartVelocity, size);

@@ -102,7 +102,7 @@ namespace HookeRope.Solver
             {
                 if (pinBroken[p] || pinCompliance[p] != 0f) continue;
                 int i = pinParticle[p];
-                Float3 target = Float3.Lerp(pinStart[p], pinEnd[p], t);
+                Float3 target = PinTarget(p, t);
                 chain.DX[i] = target.X - chain.PrevX[i];
                 chain.DY[i] = target.Y - chain.PrevY[i];
                 chain.DZ[i] = target.Z - chain.PrevZ[i];
@@ -135,11 +135,12 @@ namespace HookeRope.Solver
                 if (w == 0.0) continue;
                 double alphaTilde = pinCompliance[p] * invH2;
                 double denominator = w + alphaTilde;
-                Float3 target = Float3.Lerp(pinStart[p], pinEnd[p], t);
+                Float3 target = PinTarget(p, t);
                 int b = 3 * p;
-                double dx = (-((double)chain.PrevX[i] - target.X + chain.DX[i]) - alphaTilde * pinLambda[b]) / denominator;
-                double dy = (-((double)chain.PrevY[i] - target.Y + chain.DY[i]) - alphaTilde * pinLambda[b + 1]) / denominator;
-                double dz = (-((double)chain.PrevZ[i] - target.Z + chain.DZ[i]) - alphaTilde * pinLambda[b + 2]) / denominator;
+                PinOffset(i, target, out double cx, out double cy, out double cz);
+                double dx = (-cx - alphaTilde * pinLambda[b]) / denominator;
+                double dy = (-cy - alphaTilde * pinLambda[b + 1]) / denominator;
+                double dz = (-cz - alphaTilde * pinLambda[b + 2]) / denominator;
                 chain.DX[i] += (float)(w * dx); chain.DY[i] += (float)(w * dy); chain.DZ[i] += (float)(w * dz);
                 chain.InverseMass[i] = (float)(w * alphaTilde / denominator);
                 any = true;
@@ -157,13 +158,25 @@ namespace HookeRope.Solver
                 if (chain.Kinematic[i]) continue;
                 chain.InverseMass[i] = 1f / chain.Mass[i];
                 double alphaTilde = pinCompliance[p] * invH2;
-                Float3 target = Float3.Lerp(pinStart[p], pinEnd[p], t);
+                Float3 target = PinTarget(p, t);
                 int b = 3 * p;
                 // compliance-consistent multiplier: C + α̃·λ = 0
-                pinLambda[b] = -((double)chain.PrevX[i] - target.X + chain.DX[i]) / alphaTilde;
-                pinLambda[b + 1] = -((double)chain.PrevY[i] - target.Y + chain.DY[i]) / alphaTilde;
-                pinLambda[b + 2] = -((double)chain.PrevZ[i] - target.Z + chain.DZ[i]) / alphaTilde;
+                PinOffset(i, target, out double cx, out double cy, out double cz);
+                pinLambda[b] = -cx / alphaTilde;
+                pinLambda[b + 1] = -cy / alphaTilde;
+                pinLambda[b + 2] = -cz / alphaTilde;
             }
+        }
+
+        /// <summary>Target (rope-local m) of pin p at substep fraction t of the host step.</summary>
+        private Float3 PinTarget(int p, float t) => Float3.Lerp(pinStart[p], pinEnd[p], t);
+
+        /// <summary>Pin constraint C = x_i − target (m, double) from particle i's live position Prev + D.</summary>
+        private void PinOffset(int i, Float3 target, out double cx, out double cy, out double cz)
+        {
+            cx = (double)chain.PrevX[i] - target.X + chain.DX[i];
+            cy = (double)chain.PrevY[i] - target.Y + chain.DY[i];
+            cz = (double)chain.PrevZ[i] - target.Z + chain.DZ[i];
         }
 
         private void UpdateVelocities(float h)
