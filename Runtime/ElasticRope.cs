@@ -133,6 +133,7 @@ namespace HookeRope
         Action<RopeBreakEvent> _onCoreBroken;
         Vector3 _origin;
         int _startPin = -1, _endPin = -1, _startLoad = -1, _endLoad = -1;
+        Vector3 _startVelocityCorrection, _endVelocityCorrection;
         float[] _previous = Array.Empty<float>();
         float[] _current = Array.Empty<float>();
         bool _rebuildPending;
@@ -480,6 +481,7 @@ namespace HookeRope
             Array.Copy(_current, _previous, n);
 
             IsBroken = false;
+            _startVelocityCorrection = _endVelocityCorrection = Vector3.zero;
             _breakPending = false;
             _rebuildPending = false;
             ResetPeaks();
@@ -497,6 +499,8 @@ namespace HookeRope
                 throw new ArgumentOutOfRangeException(nameof(deltaTime), deltaTime, "deltaTime must be in (0, +inf) seconds");
             if (_rope == null || _rebuildPending) Rebuild();
 
+            CorrectBodyVelocity(m_Start, ref _startVelocityCorrection);
+            CorrectBodyVelocity(m_End, ref _endVelocityCorrection);
             CopyAttachmentsIn(m_Start, _startPin, _startLoad);
             CopyAttachmentsIn(m_End, _endPin, _endLoad);
             if (m_CollisionMode == RopeCollisionMode.LayerMask) RefreshLayerColliders();
@@ -510,8 +514,8 @@ namespace HookeRope
             Residual = report.Residual;
             CopyPositions(_current);
 
-            ApplyForceToBody(m_Start, _startLoad);
-            ApplyForceToBody(m_End, _endLoad);
+            ApplyForceToBody(m_Start, _startLoad, ref _startVelocityCorrection);
+            ApplyForceToBody(m_End, _endLoad, ref _endVelocityCorrection);
             UpdateReadouts();
 
             if (_breakPending)
@@ -718,11 +722,24 @@ namespace HookeRope
             }
         }
 
-        void ApplyForceToBody(RopeEnd end, int load)
+        /// <summary>
+        /// Two-way coupling, after the rope step: the force that brings the body (integrated by the physics engine
+        /// with semi-implicit Euler) to where the rope's load particle ended, and the velocity correction that the
+        /// next step adds before it reads the body back (see <see cref="Rope.GetLoadHostForce"/>).
+        /// </summary>
+        void ApplyForceToBody(RopeEnd end, int load, ref Vector3 velocityCorrection)
         {
-            if (load < 0 || end.Body == null) return;
-            Vector3 force = _rope.GetLoadForce(load).ToVector3();
+            velocityCorrection = Vector3.zero;
+            if (load < 0 || end.Body == null || end.Body.isKinematic) return;
+            Vector3 force = _rope.GetLoadHostForce(load).ToVector3();
             end.Body.AddForceAtPosition(force, end.WorldPosition(end.Body.position), ForceMode.Force);
+            velocityCorrection = _rope.GetLoadHostVelocityCorrection(load).ToVector3();
+        }
+
+        static void CorrectBodyVelocity(RopeEnd end, ref Vector3 velocityCorrection)
+        {
+            if (end.Body != null && !end.Body.isKinematic) end.Body.velocity += velocityCorrection;
+            velocityCorrection = Vector3.zero;
         }
 
         void RegisterColliders()
@@ -746,7 +763,7 @@ namespace HookeRope
         }
 
         void RegisterColliders(Collider[] colliders, int count, Transform[] planes, bool warnUnsupported) =>
-            _colliderBinding.Register(_rope, colliders, count, planes, _origin, m_Friction, m_Start.Body, m_End.Body, this, warnUnsupported);
+            _colliderBinding.Register(_rope, colliders, count, planes, _origin, m_Friction, m_Start, m_End, this, warnUnsupported);
 
         /// <summary>
         /// Layer Mask mode: colliders come and go (a worker walks past a beam), so each step re-queries the
@@ -756,7 +773,7 @@ namespace HookeRope
         void RefreshLayerColliders()
         {
             int count = QueryLayerColliders();
-            if (!_colliderBinding.HasSameColliders(_overlapBuffer, count, m_Start.Body, m_End.Body))
+            if (!_colliderBinding.HasSameColliders(_overlapBuffer, count, m_Start, m_End))
                 RegisterColliders(_overlapBuffer, count, m_Planes, false);
         }
 

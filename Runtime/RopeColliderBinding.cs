@@ -24,12 +24,11 @@ namespace HookeRope
 
         /// <summary>
         /// Replaces the rope's colliders with every supported collider and plane given; unsupported colliders (mesh,
-        /// terrain…) are skipped (and reported when <paramref name="warnUnsupported"/>), triggers and colliders of
-        /// the rope's own attached bodies (<paramref name="ownBodyA"/>, <paramref name="ownBodyB"/>) are skipped
-        /// silently. Allocates only when more shapes arrive than ever before.
+        /// terrain…) are skipped (and reported when <paramref name="warnUnsupported"/>); triggers and the rope's own
+        /// colliders (see <see cref="IsOwn"/>) are skipped silently. Allocates only when more shapes arrive than ever before.
         /// </summary>
         public void Register(Rope rope, Collider[] colliders, int colliderCount, Transform[] planes, Vector3 origin, float friction,
-            Rigidbody ownBodyA, Rigidbody ownBodyB, UnityEngine.Object context, bool warnUnsupported)
+            RopeEnd start, RopeEnd end, UnityEngine.Object context, bool warnUnsupported)
         {
             rope.ClearColliders();
             Reserve(ref _colliders, ref _colliderIds, colliderCount);
@@ -37,7 +36,7 @@ namespace HookeRope
             for (int i = 0; i < colliderCount; i++)
             {
                 var collider = colliders[i];
-                if (!Accepts(collider, ownBodyA, ownBodyB)) continue;
+                if (!Accepts(collider, start, end)) continue;
                 if (!TryShape(collider, origin, friction, out var shape))
                 {
                     if (warnUnsupported)
@@ -68,24 +67,32 @@ namespace HookeRope
         /// are exactly the registered ones (in any order), so a layer-mask query that found the same set needs no
         /// re-registration (which would also forget the current contacts). Allocation-free.
         /// </summary>
-        public bool HasSameColliders(Collider[] colliders, int count, Rigidbody ownBodyA, Rigidbody ownBodyB)
+        public bool HasSameColliders(Collider[] colliders, int count, RopeEnd start, RopeEnd end)
         {
             int accepted = 0;
             for (int i = 0; i < count; i++)
             {
                 var collider = colliders[i];
-                if (!Accepts(collider, ownBodyA, ownBodyB) || !IsSupported(collider)) continue;
+                if (!Accepts(collider, start, end) || !IsSupported(collider)) continue;
                 accepted++;
                 if (Array.IndexOf(_colliders, collider, 0, _colliderCount) < 0) return false;
             }
             return accepted == _colliderCount;
         }
 
-        static bool Accepts(Collider collider, Rigidbody ownBodyA, Rigidbody ownBodyB)
+        static bool Accepts(Collider collider, RopeEnd start, RopeEnd end) =>
+            collider != null && !collider.isTrigger && !IsOwn(collider, start) && !IsOwn(collider, end);
+
+        /// <summary>
+        /// True for a collider the rope end is fixed in: on the end's Rigidbody (the worker's own capsule), or on the
+        /// GameObject of the end's Transform (the anchor's or hand's own collider). A particle pinned inside such a
+        /// collider would be pushed out every step and kink the rope at the end.
+        /// </summary>
+        static bool IsOwn(Collider collider, RopeEnd end)
         {
-            if (collider == null || collider.isTrigger) return false;
             var body = collider.attachedRigidbody;
-            return body == null || (body != ownBodyA && body != ownBodyB);
+            if (body != null && end.Body != null && body == end.Body) return true;
+            return end.Point != null && collider.gameObject == end.Point.gameObject;
         }
 
         static bool IsSupported(Collider collider) => collider is SphereCollider || collider is CapsuleCollider || collider is BoxCollider;

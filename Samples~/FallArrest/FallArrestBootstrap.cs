@@ -47,21 +47,28 @@ namespace HookeRope.Samples.FallArrest
             ground.name = "Ground";
             ground.transform.localScale = new Vector3(2f, 1f, 2f);
 
-            var anchor = GameObject.CreatePrimitive(PrimitiveType.Cube);
-            anchor.name = "Anchor";
+            // The anchor ring stands 5 cm off a wall plate (a 20 cm cube whose face is at x = −0.05 m); the lanyard is
+            // tied to the ring.
+            var plate = GameObject.CreatePrimitive(PrimitiveType.Cube);
+            plate.name = "Anchor Plate";
+            plate.transform.position = new Vector3(-0.15f, m_AnchorHeight, 0f);
+            plate.transform.localScale = new Vector3(0.2f, 0.2f, 0.2f);
+            var anchor = new GameObject("Anchor");
             anchor.transform.position = new Vector3(0f, m_AnchorHeight, 0f);
-            anchor.transform.localScale = new Vector3(0.2f, 0.2f, 0.2f);
 
-            // Capsule primitive: 2 m tall, 0.5 m radius; the D-ring sits 0.7 m above its centre.
+            // Capsule primitive: 2 m tall, 0.5 m radius, rotation frozen as for a character rig. The harness D-ring sits
+            // on its side 0.7 m above its centre, straight above the anchor ring: the worker falls past the plate with
+            // 5 cm to spare and the lanyard pulls straight up (a free fall of exactly m_FreeFall before it goes taut).
             var worker = GameObject.CreatePrimitive(PrimitiveType.Capsule);
             worker.name = "Worker";
             float dRingHeight = m_AnchorHeight + (m_FreeFall - m_LanyardLength);
-            worker.transform.position = new Vector3(0.05f, dRingHeight - 0.7f, 0f);
+            worker.transform.position = new Vector3(0.5f, dRingHeight - 0.7f, 0f);
             var body = worker.AddComponent<Rigidbody>();
             body.mass = m_WorkerMass;
+            body.constraints = RigidbodyConstraints.FreezeRotation;
             var dRing = new GameObject("Harness D-Ring");
             dRing.transform.SetParent(worker.transform, false);
-            dRing.transform.localPosition = new Vector3(0f, 0.7f, 0f);
+            dRing.transform.localPosition = new Vector3(-0.5f, 0.7f, 0f);
 
             var lanyard = new GameObject("Lanyard", typeof(MeshFilter), typeof(MeshRenderer), typeof(ElasticRope), typeof(RopeMeshRenderer));
             lanyard.transform.position = anchor.transform.position;

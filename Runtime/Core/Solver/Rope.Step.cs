@@ -35,6 +35,7 @@ namespace HookeRope.Solver
             {
                 int i = loadParticle[l];
                 loadStartVelocity[l] = new Float3(chain.VelX[i], chain.VelY[i], chain.VelZ[i]);
+                loadStartPosition[l] = new Float3(chain.X[i], chain.Y[i], chain.Z[i]);
             }
 
             for (int k = 0; k < substeps; k++)

@@ -89,6 +89,37 @@ namespace HookeRope.Tests.Components
             Assert.That(rope.GetParticlePosition(rope.ParticleCount / 2).y, Is.GreaterThan(1.2f), "the rope drapes over the sphere");
         }
 
+        [Test]
+        public void LayerMaskIgnoresTheAnchorsOwnCollider()
+        {
+            // a 20 cm anchor block with a BoxCollider; the rope hangs from its centre in Layer Mask mode (all layers)
+            var anchor = _scene.Point("Anchor block", new Vector3(0f, 2f, 0f));
+            anchor.gameObject.AddComponent<BoxCollider>().size = new Vector3(0.2f, 0.2f, 0.2f);
+            var beam = _scene.Track(new GameObject("Beam"));
+            beam.transform.position = new Vector3(0.3f, 1.2f, 0f);
+            beam.AddComponent<SphereCollider>().radius = 0.1f;
+
+            var rope = _scene.Rope("Rope", anchor.position);
+            rope.RestLength = 1.5f;
+            rope.SegmentCount = 30;
+            rope.Fracture = false;
+            rope.Damping = 0.02f;
+            rope.CollisionMode = RopeCollisionMode.LayerMask;
+            rope.StartAttachment.Point = anchor;
+            rope.Rebuild();
+            for (int step = 0; step < 300; step++) rope.Simulate(0.01f);
+
+            Assert.That(rope.Core.ColliderCount, Is.EqualTo(1), "the beam in reach is registered, the anchor's own block is not");
+            // hanging straight down from the pin: no particle pushed out of the block (which would need |x| or |z| >= 0.1 m)
+            for (int i = 0; i < rope.ParticleCount; i++)
+            {
+                var p = rope.GetParticlePosition(i);
+                Assert.That(System.Math.Abs(p.x) + System.Math.Abs(p.z), Is.LessThan(1e-3f), "particle " + i + " at " + p);
+            }
+            float weight = rope.LinearDensity * rope.RestLength * 9.81f;
+            Assert.That(rope.TopTension, Is.EqualTo(weight).Within(0.02f * weight));
+        }
+
         static float Mathf_Min(float a, float b) => a < b ? a : b;
     }
 }

@@ -2,7 +2,7 @@ using System;
 
 namespace UnityEditor
 {
-    /// <summary>Shim of UnityEditor.CanEditMultipleObjects: attribute used to make a custom editor support multi-object editing.</summary>
+    /// <summary>Stand-in of UnityEditor.CanEditMultipleObjects: attribute used to make a custom editor support multi-object editing.</summary>
     [AttributeUsage(AttributeTargets.Class)]
     public sealed class CanEditMultipleObjects : Attribute
     {

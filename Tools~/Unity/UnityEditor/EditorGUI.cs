@@ -1,15 +1,21 @@
+using HookeRope.StandIn;
+
 namespace UnityEditor
 {
-    /// <summary>Shim of UnityEditor.EditorGUI: these work pretty much like the normal GUI functions - and also have matching implementations in EditorGUILayout.</summary>
+    /// <summary>Stand-in of UnityEditor.EditorGUI: IMGUI controls, which need a GUI event the stand-in does not have.</summary>
     public sealed class EditorGUI
     {
         /// <summary>The indent level of the field labels.</summary>
-        public static int indentLevel { get => throw Shim.NotRun; set => throw Shim.NotRun; }
+        public static int indentLevel
+        {
+            get => throw StandInError.Unsupported("EditorGUI.indentLevel (IMGUI)");
+            set => throw StandInError.Unsupported("EditorGUI.indentLevel (IMGUI)");
+        }
 
         /// <summary>Create a group of controls that can be disabled.</summary>
-        public static void BeginDisabledGroup(bool disabled) => throw Shim.NotRun;
+        public static void BeginDisabledGroup(bool disabled) => throw StandInError.Unsupported("EditorGUI.BeginDisabledGroup (IMGUI)");
 
         /// <summary>Ends a disabled group started with BeginDisabledGroup.</summary>
-        public static void EndDisabledGroup() => throw Shim.NotRun;
+        public static void EndDisabledGroup() => throw StandInError.Unsupported("EditorGUI.EndDisabledGroup (IMGUI)");
     }
 }

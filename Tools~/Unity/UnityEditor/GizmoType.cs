@@ -1,6 +1,6 @@
 namespace UnityEditor
 {
-    /// <summary>Shim of UnityEditor.GizmoType: determines how a gizmo is drawn or picked in the Unity editor.</summary>
+    /// <summary>Stand-in of UnityEditor.GizmoType: determines how a gizmo is drawn or picked in the Unity editor.</summary>
     [System.Flags]
     public enum GizmoType
     {

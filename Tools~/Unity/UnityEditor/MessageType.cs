@@ -1,6 +1,6 @@
 namespace UnityEditor
 {
-    /// <summary>Shim of UnityEditor.MessageType: user message types.</summary>
+    /// <summary>Stand-in of UnityEditor.MessageType: user message types.</summary>
     public enum MessageType
     {
         /// <summary>Neutral message.</summary>

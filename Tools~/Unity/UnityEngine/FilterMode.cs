@@ -1,6 +1,6 @@
 namespace UnityEngine
 {
-    /// <summary>Shim of UnityEngine.FilterMode: filtering mode for textures.</summary>
+    /// <summary>Stand-in of UnityEngine.FilterMode: filtering mode for textures.</summary>
     public enum FilterMode
     {
         /// <summary>Point filtering - texture pixels become blocky up close.</summary>

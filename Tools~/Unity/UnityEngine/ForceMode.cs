@@ -1,6 +1,6 @@
 namespace UnityEngine
 {
-    /// <summary>Shim of UnityEngine.ForceMode: use ForceMode to specify how to apply a force using Rigidbody.AddForce or ArticulationBody.AddForce.</summary>
+    /// <summary>Stand-in of UnityEngine.ForceMode: use ForceMode to specify how to apply a force using Rigidbody.AddForce or ArticulationBody.AddForce.</summary>
     public enum ForceMode
     {
         /// <summary>Add a continuous force to the rigidbody, using its mass.</summary>

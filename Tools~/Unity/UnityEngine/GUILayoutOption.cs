@@ -1,6 +1,6 @@
 namespace UnityEngine
 {
-    /// <summary>Shim of UnityEngine.GUILayoutOption: class internally used to pass layout options into GUILayout functions.</summary>
+    /// <summary>Stand-in of UnityEngine.GUILayoutOption: class internally used to pass layout options into GUILayout functions.</summary>
     public sealed class GUILayoutOption
     {
         internal GUILayoutOption() { }

@@ -1,6 +1,6 @@
 namespace UnityEngine
 {
-    /// <summary>Shim of UnityEngine.HeaderAttribute: use this PropertyAttribute to add a header above some fields in the Inspector.</summary>
+    /// <summary>Stand-in of UnityEngine.HeaderAttribute: use this PropertyAttribute to add a header above some fields in the Inspector.</summary>
     [System.AttributeUsage(System.AttributeTargets.Field, Inherited = true, AllowMultiple = true)]
     public class HeaderAttribute : PropertyAttribute
     {

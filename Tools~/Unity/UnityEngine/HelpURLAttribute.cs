@@ -1,6 +1,6 @@
 namespace UnityEngine
 {
-    /// <summary>Shim of UnityEngine.HelpURLAttribute: provide a custom documentation URL for a class.</summary>
+    /// <summary>Stand-in of UnityEngine.HelpURLAttribute: provide a custom documentation URL for a class.</summary>
     [System.AttributeUsage(System.AttributeTargets.Class, AllowMultiple = false)]
     public class HelpURLAttribute : System.Attribute
     {

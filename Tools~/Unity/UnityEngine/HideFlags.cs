@@ -1,6 +1,6 @@
 namespace UnityEngine
 {
-    /// <summary>Shim of UnityEngine.HideFlags: bit mask that controls object destruction, saving and visibility in inspectors.</summary>
+    /// <summary>Stand-in of UnityEngine.HideFlags: bit mask that controls object destruction, saving and visibility in inspectors.</summary>
     [System.Flags]
     public enum HideFlags
     {

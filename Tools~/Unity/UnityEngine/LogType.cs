@@ -1,6 +1,6 @@
 namespace UnityEngine
 {
-    /// <summary>Shim of UnityEngine.LogType: the type of the log message in Debug.unityLogger.Log or delegate registered with Application.RegisterLogCallback.</summary>
+    /// <summary>Stand-in of UnityEngine.LogType: the type of the log message in Debug.unityLogger.Log or delegate registered with Application.RegisterLogCallback.</summary>
     public enum LogType
     {
         /// <summary>LogType used for Errors.</summary>

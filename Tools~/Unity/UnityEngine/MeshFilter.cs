@@ -1,9 +1,15 @@
 namespace UnityEngine
 {
-    /// <summary>Shim of UnityEngine.MeshFilter.</summary>
+    /// <summary>Stand-in of UnityEngine.MeshFilter: holds the Mesh its MeshRenderer draws.</summary>
     public sealed class MeshFilter : Component
     {
+        Mesh m_Mesh;
+
         /// <summary>Returns the shared mesh of the mesh filter.</summary>
-        public Mesh sharedMesh { get => throw Shim.NotRun; set => throw Shim.NotRun; }
+        public Mesh sharedMesh
+        {
+            get { EnsureAlive(); return m_Mesh; }
+            set { EnsureAlive(); m_Mesh = value; }
+        }
     }
 }

@@ -1,6 +1,6 @@
 namespace UnityEngine
 {
-    /// <summary>Shim of UnityEngine.MeshTopology: topology of Mesh faces.</summary>
+    /// <summary>Stand-in of UnityEngine.MeshTopology: topology of Mesh faces.</summary>
     public enum MeshTopology
     {
         /// <summary>Mesh is made from triangles.</summary>

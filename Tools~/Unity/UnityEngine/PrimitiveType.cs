@@ -1,6 +1,6 @@
 namespace UnityEngine
 {
-    /// <summary>Shim of UnityEngine.PrimitiveType: the various primitives that can be created using GameObject.CreatePrimitive.</summary>
+    /// <summary>Stand-in of UnityEngine.PrimitiveType: the various primitives that can be created using GameObject.CreatePrimitive.</summary>
     public enum PrimitiveType
     {
         /// <summary>A sphere primitive.</summary>

@@ -1,6 +1,6 @@
 namespace UnityEngine
 {
-    /// <summary>Shim of UnityEngine.QueryTriggerInteraction: overrides the global Physics.queriesHitTriggers.</summary>
+    /// <summary>Stand-in of UnityEngine.QueryTriggerInteraction: overrides the global Physics.queriesHitTriggers.</summary>
     public enum QueryTriggerInteraction
     {
         /// <summary>Queries use the global Physics.queriesHitTriggers setting.</summary>

@@ -1,6 +1,6 @@
 namespace UnityEngine
 {
-    /// <summary>Shim of UnityEngine.RangeAttribute: make a float or int variable in a script be restricted to a specific range.</summary>
+    /// <summary>Stand-in of UnityEngine.RangeAttribute: make a float or int variable in a script be restricted to a specific range.</summary>
     [System.AttributeUsage(System.AttributeTargets.Field, Inherited = true, AllowMultiple = false)]
     public sealed class RangeAttribute : PropertyAttribute
     {

@@ -1,6 +1,6 @@
 namespace UnityEngine
 {
-    /// <summary>Shim of UnityEngine.SerializeField: force Unity to serialize a private field.</summary>
+    /// <summary>Stand-in of UnityEngine.SerializeField: force Unity to serialize a private field.</summary>
     [System.AttributeUsage(System.AttributeTargets.Field)]
     public sealed class SerializeField : System.Attribute
     {

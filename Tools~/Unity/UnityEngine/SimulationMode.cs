@@ -1,6 +1,6 @@
 namespace UnityEngine
 {
-    /// <summary>Shim of UnityEngine.SimulationMode: a selection of modes that control when Unity executes the physics simulation.</summary>
+    /// <summary>Stand-in of UnityEngine.SimulationMode: a selection of modes that control when Unity executes the physics simulation.</summary>
     public enum SimulationMode
     {
         /// <summary>Execute the physics simulation immediately after the MonoBehaviour.FixedUpdate.</summary>

@@ -1,6 +1,6 @@
 namespace UnityEngine
 {
-    /// <summary>Shim of UnityEngine.TextureWrapMode: wrap mode for textures.</summary>
+    /// <summary>Stand-in of UnityEngine.TextureWrapMode: wrap mode for textures.</summary>
     public enum TextureWrapMode
     {
         /// <summary>Tiles the texture, creating a repeating pattern.</summary>

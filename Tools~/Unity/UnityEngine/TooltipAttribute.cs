@@ -1,6 +1,6 @@
 namespace UnityEngine
 {
-    /// <summary>Shim of UnityEngine.TooltipAttribute: specify a tooltip for a field in the Inspector window.</summary>
+    /// <summary>Stand-in of UnityEngine.TooltipAttribute: specify a tooltip for a field in the Inspector window.</summary>
     [System.AttributeUsage(System.AttributeTargets.Field, Inherited = true, AllowMultiple = false)]
     public class TooltipAttribute : PropertyAttribute
     {

@@ -1,6 +1,6 @@
 namespace UnityEngine
 {
-    /// <summary>Shim of UnityEngine.WaitForFixedUpdate: waits until next fixed frame rate update function.</summary>
+    /// <summary>Stand-in of UnityEngine.WaitForFixedUpdate: waits until next fixed frame rate update function.</summary>
     public sealed class WaitForFixedUpdate : YieldInstruction
     {
     }

@@ -1,6 +1,6 @@
 namespace UnityEngine
 {
-    /// <summary>Shim of UnityEngine.YieldInstruction: base class for all yield instructions.</summary>
+    /// <summary>Stand-in of UnityEngine.YieldInstruction: base class for all yield instructions.</summary>
     public class YieldInstruction
     {
     }

@@ -1,5 +1,5 @@
 namespace UnityEngine.Events
 {
-    /// <summary>Shim of UnityEngine.Events.UnityAction&lt;T0,T1&gt;: two argument delegate used by UnityEvents.</summary>
+    /// <summary>Stand-in of UnityEngine.Events.UnityAction&lt;T0,T1&gt;: two argument delegate used by UnityEvents.</summary>
     public delegate void UnityAction<T0, T1>(T0 arg0, T1 arg1);
 }

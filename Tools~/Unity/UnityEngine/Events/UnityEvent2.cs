@@ -1,19 +1,26 @@
+using System;
+
 namespace UnityEngine.Events
 {
-    /// <summary>Shim of UnityEngine.Events.UnityEvent&lt;T0,T1&gt;: two argument version of UnityEvent.</summary>
-    [System.Serializable]
+    /// <summary>Stand-in of UnityEngine.Events.UnityEvent&lt;T0,T1&gt;: two argument version of UnityEvent.</summary>
+    [Serializable]
     public class UnityEvent<T0, T1> : UnityEventBase
     {
+        static readonly Type[] s_Types = { typeof(T0), typeof(T1) };
+
         /// <summary>Constructor.</summary>
         public UnityEvent() { }
 
         /// <summary>Add a non persistent listener to the UnityEvent.</summary>
-        public void AddListener(UnityAction<T0, T1> call) => throw Shim.NotRun;
+        public void AddListener(UnityAction<T0, T1> call) => AddRuntime(call);
 
         /// <summary>Remove a non persistent listener from the UnityEvent.</summary>
-        public void RemoveListener(UnityAction<T0, T1> call) => throw Shim.NotRun;
+        public void RemoveListener(UnityAction<T0, T1> call) => RemoveRuntime(call);
 
         /// <summary>Invoke all registered callbacks (runtime and persistent).</summary>
-        public void Invoke(T0 arg0, T1 arg1) => throw Shim.NotRun;
+        public void Invoke(T0 arg0, T1 arg1) =>
+            InvokeAll(new object[] { arg0, arg1 }, call => ((UnityAction<T0, T1>)call)(arg0, arg1));
+
+        internal override Type[] EventTypes => s_Types;
     }
 }

@@ -1,6 +1,6 @@
 namespace UnityEngine.Rendering
 {
-    /// <summary>Shim of UnityEngine.Rendering.IndexFormat: format of the mesh index buffer data.</summary>
+    /// <summary>Stand-in of UnityEngine.Rendering.IndexFormat: format of the mesh index buffer data.</summary>
     public enum IndexFormat
     {
         /// <summary>16 bit mesh index buffer format.</summary>

@@ -1,6 +1,6 @@
 namespace UnityEngine.Rendering
 {
-    /// <summary>Shim of UnityEngine.Rendering.MeshUpdateFlags: flags that control how Mesh data is updated.</summary>
+    /// <summary>Stand-in of UnityEngine.Rendering.MeshUpdateFlags: flags that control how Mesh data is updated.</summary>
     [System.Flags]
     public enum MeshUpdateFlags
     {

@@ -1,0 +1,93 @@
+using NUnit.Framework;
+using UnityEngine;
+
+namespace HookeRope.StandIn.Facts
+{
+    /// <summary>
+    /// The stand-in's Transform against documented Unity facts: world = parent · T · R · S (Transform.TransformPoint,
+    /// localToWorldMatrix), Quaternion.Euler applies z, then x, then y (Quaternion.Euler page), rotations in a
+    /// left-handed frame (rotating +X by 90° about +Y gives −Z), SetParent(parent, worldPositionStays).
+    /// </summary>
+    [TestFixture]
+    public sealed class TransformFactsTests
+    {
+        [SetUp] public void SetUp() => World.Reset();
+        [TearDown] public void TearDown() => World.Reset();
+
+        static void AssertVector(Vector3 actual, Vector3 expected, float tolerance = 1e-5f)
+        {
+            Assert.That(actual.x, Is.EqualTo(expected.x).Within(tolerance), "x of " + actual);
+            Assert.That(actual.y, Is.EqualTo(expected.y).Within(tolerance), "y of " + actual);
+            Assert.That(actual.z, Is.EqualTo(expected.z).Within(tolerance), "z of " + actual);
+        }
+
+        [Test]
+        public void RotatingXBy90DegreesAboutYGivesMinusZ()
+        {
+            AssertVector(Quaternion.Euler(0f, 90f, 0f) * Vector3.right, new Vector3(0f, 0f, -1f));
+            AssertVector(Quaternion.Euler(90f, 0f, 0f) * Vector3.up, new Vector3(0f, 0f, 1f));
+        }
+
+        [Test]
+        public void EulerAppliesZThenXThenY()
+        {
+            var composed = Quaternion.Euler(0f, 30f, 0f) * Quaternion.Euler(20f, 0f, 0f) * Quaternion.Euler(0f, 0f, 10f);
+            var v = new Vector3(0.3f, -1.2f, 2f);
+            AssertVector(Quaternion.Euler(20f, 30f, 10f) * v, composed * v);
+        }
+
+        [Test]
+        public void ChildWorldPositionComposesParentTranslationRotationScale()
+        {
+            var parent = new GameObject("Parent").transform;
+            parent.position = new Vector3(1f, 2f, 3f);
+            parent.rotation = Quaternion.Euler(0f, 90f, 0f);
+            parent.localScale = new Vector3(2f, 2f, 2f);
+            var child = new GameObject("Child").transform;
+            child.SetParent(parent, false);
+            child.localPosition = new Vector3(1f, 0f, 0f);
+
+            AssertVector(child.position, new Vector3(1f, 2f, 1f));
+            AssertVector(parent.TransformPoint(new Vector3(0f, 0.5f, 0f)), new Vector3(1f, 3f, 3f));
+            AssertVector(parent.TransformDirection(Vector3.right), new Vector3(0f, 0f, -1f));
+            AssertVector(parent.TransformVector(Vector3.right), new Vector3(0f, 0f, -2f));
+            AssertVector(parent.InverseTransformPoint(child.position), child.localPosition);
+            AssertVector(parent.InverseTransformVector(new Vector3(0f, 0f, -2f)), Vector3.right);
+            AssertVector(parent.InverseTransformDirection(new Vector3(0f, 0f, -1f)), Vector3.right);
+            AssertVector(child.lossyScale, new Vector3(2f, 2f, 2f));
+        }
+
+        [Test]
+        public void SetParentKeepsTheWorldPoseOnlyWhenAsked()
+        {
+            var parent = new GameObject("Parent").transform;
+            parent.position = new Vector3(0f, 5f, 0f);
+            parent.localScale = new Vector3(1f, 4f, 1f);
+            var kept = new GameObject("Kept").transform;
+            kept.position = new Vector3(1f, 1f, 1f);
+            kept.SetParent(parent, true);
+            AssertVector(kept.position, new Vector3(1f, 1f, 1f));
+            AssertVector(kept.localPosition, new Vector3(1f, -1f, 1f));
+            AssertVector(kept.lossyScale, Vector3.one);
+
+            var moved = new GameObject("Moved").transform;
+            moved.position = new Vector3(1f, 1f, 1f);
+            moved.SetParent(parent, false);
+            AssertVector(moved.localPosition, new Vector3(1f, 1f, 1f));
+            AssertVector(moved.position, new Vector3(1f, 9f, 1f));
+            Assert.That(parent.childCount, Is.EqualTo(2));
+            Assert.That(parent.GetChild(1), Is.SameAs(moved));
+        }
+
+        [Test]
+        public void LossyScaleMultipliesAlongAlignedAxes()
+        {
+            var parent = new GameObject("Parent").transform;
+            parent.localScale = new Vector3(2f, 3f, 4f);
+            var child = new GameObject("Child").transform;
+            child.SetParent(parent, false);
+            child.localScale = new Vector3(0.5f, 2f, -1f);
+            AssertVector(child.lossyScale, new Vector3(1f, 6f, -4f));
+        }
+    }
+}

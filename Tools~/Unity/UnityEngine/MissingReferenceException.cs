@@ -1,0 +1,11 @@
+using System;
+
+namespace UnityEngine
+{
+    /// <summary>Stand-in of UnityEngine.MissingReferenceException: thrown when a destroyed object is accessed.</summary>
+    public class MissingReferenceException : SystemException
+    {
+        /// <summary>Creates the exception with a message.</summary>
+        public MissingReferenceException(string message) : base(message) { }
+    }
+}
