@@ -6,7 +6,7 @@ using UnityEngine.TestTools;
 namespace HookeRope.Tests
 {
     /// <summary>
-    /// Unity only (play mode): the component's own lifecycle — Awake builds the rope, FixedUpdate steps it,
+    /// Play mode (in Unity and headless through the Unity stand-in's player loop): the component's own lifecycle — Awake builds the rope, FixedUpdate steps it,
     /// LateUpdate renders it. A rope hanging from an anchor under its own weight reaches the static top tension
     /// μ·L·g and its mesh is finite.
     /// </summary>

@@ -5,7 +5,7 @@ using UnityEngine;
 namespace HookeRope.Tests.Components
 {
     /// <summary>
-    /// Unity only (edit mode): parameter changes on a built rope apply at the next step without a new core rope;
+    /// Edit mode (in Unity and headless on the Unity stand-in): parameter changes on a built rope apply at the next step without a new core rope;
     /// only a new segment count rebuilds it; bad values throw naming the parameter.
     /// </summary>
     [TestFixture]

@@ -4,7 +4,7 @@ using HookeRope.Editor;
 
 namespace HookeRope.Tests.Components
 {
-    /// <summary>Unity only (edit mode): GameObject &gt; 3D Object &gt; Elastic Rope builds a rope between two child anchors whose default length sags.</summary>
+    /// <summary>Edit mode (in Unity and headless on the Unity stand-in): GameObject &gt; 3D Object &gt; Elastic Rope builds a rope between two child anchors whose default length sags.</summary>
     [TestFixture]
     public sealed class ElasticRopeMenuTests
     {

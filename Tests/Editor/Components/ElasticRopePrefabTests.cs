@@ -6,7 +6,7 @@ using UnityEngine;
 namespace HookeRope.Tests.Components
 {
     /// <summary>
-    /// Unity only (edit mode): the package's prefab, loaded as an asset and instantiated as the Editor does, carries the
+    /// Edit mode (in Unity and headless on the Unity stand-in): the package's prefab, loaded as an asset and instantiated as the Editor does, carries the
     /// settings written in its YAML (so a renamed serialized field shows up here), references its own Anchor child,
     /// and the rope it builds hangs with the textbook top tension μ·L·g (less the pinned particle's half segment).
     /// </summary>

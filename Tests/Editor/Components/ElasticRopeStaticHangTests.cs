@@ -4,7 +4,7 @@ using UnityEngine;
 namespace HookeRope.Tests.Components
 {
     /// <summary>
-    /// Unity only (edit mode): a 100 kg Rigidbody hangs on an ElasticRope pinned to an anchor Transform, coupled
+    /// Edit mode (in Unity and headless on the Unity stand-in): a 100 kg Rigidbody hangs on an ElasticRope pinned to an anchor Transform, coupled
     /// two-way through Unity physics. The body must settle where statics put it and the read-outs must match
     /// the textbook tensions.
     /// </summary>

@@ -4,7 +4,7 @@ using UnityEngine;
 namespace HookeRope.Tests.Components
 {
     /// <summary>
-    /// Unity only (edit mode): a 100 kg Rigidbody falls 4 m on a 2 m lanyard. The peak arrest force read-out must
+    /// Edit mode (in Unity and headless on the Unity stand-in): a 100 kg Rigidbody falls 4 m on a 2 m lanyard. The peak arrest force read-out must
     /// match the energy balance of a light linear lanyard, F = M·g + sqrt((M·g)² + 2·M·g·k·h) with k = E·A/L, and
     /// the EN 355 / ANSI Z359.13 verdicts must follow from it.
     /// </summary>

@@ -3,7 +3,7 @@ using UnityEngine;
 
 namespace HookeRope.Tests.Components
 {
-    /// <summary>Unity only (edit mode): a rope lowered onto a SphereCollider stays outside it (to its particle radius), listed or found by layer mask.</summary>
+    /// <summary>Edit mode (in Unity and headless on the Unity stand-in): a rope lowered onto a SphereCollider stays outside it (to its particle radius), listed or found by layer mask.</summary>
     [TestFixture]
     public sealed class RopeCollisionTests
     {

@@ -4,7 +4,7 @@ using UnityEngine;
 namespace HookeRope.Tests.Components
 {
     /// <summary>
-    /// Unity only (edit mode): the rope mesh built from a stepped rope has finite vertices that stay near the rope
+    /// Edit mode (in Unity and headless on the Unity stand-in): the rope mesh built from a stepped rope has finite vertices that stay near the rope
     /// and inside the bounds set on the mesh, also after a break changed the topology.
     /// </summary>
     [TestFixture]

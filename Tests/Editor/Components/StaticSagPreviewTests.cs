@@ -5,7 +5,7 @@ using UnityEngine;
 namespace HookeRope.Tests.Components
 {
     /// <summary>
-    /// Unity only (edit mode): the inspector's static-sag preview of a nearly inextensible rope between two anchors
+    /// Edit mode (in Unity and headless on the Unity stand-in): the inspector's static-sag preview of a nearly inextensible rope between two anchors
     /// at the same height matches the catenary y = a·cosh(x/a) with 2·a·sinh(D/(2a)) = L.
     /// </summary>
     [TestFixture]

@@ -361,6 +361,11 @@ namespace HookeRope.StandIn.Facts
             Assert.That(AssetDatabase.LoadAssetAtPath<GameObject>(PrefabAssetPath), Is.SameAs(prefab), "loaded once");
             Assert.That(World.Live<ElasticRope>(), Is.Empty, "an asset is not in the scene");
             Assert.That(rope.IsBuilt, Is.False, "no Awake for assets");
+            Assert.That(prefab.activeSelf, Is.True, "a prefab asset keeps its own active state");
+            Assert.That(prefab.activeInHierarchy, Is.False, "an asset is in no scene hierarchy");
+            LogAssert.Expect(LogType.Error, "Destroying assets is not permitted to avoid data loss.\nIf you really want to remove an asset use DestroyImmediate (theObject, true);");
+            Object.DestroyImmediate(prefab);
+            Assert.That(prefab == null, Is.False, "assets are destroyed only with allowDestroyingAssets");
             Assert.That(AssetDatabase.LoadAssetAtPath<GameObject>("Packages/com.hookerope.elastic-rope/Runtime/Prefabs/Missing.prefab"), Is.Null);
 
             var instance = (GameObject)PrefabUtility.InstantiatePrefab(prefab);

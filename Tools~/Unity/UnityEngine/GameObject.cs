@@ -57,7 +57,8 @@ namespace UnityEngine
         /// <summary>The local active state of this GameObject (Read Only).</summary>
         public bool activeSelf
         {
-            get { EnsureAlive(); return m_ActiveSelf; }
+            // a clone being built or a loaded prefab asset is held inactive outside the scene: report its own state
+            get { EnsureAlive(); return SceneHooks.ActiveSelf(this); }
         }
 
         /// <summary>Defines whether the GameObject is active in the Scene: active itself and all its parents.</summary>
@@ -175,6 +176,9 @@ namespace UnityEngine
         // ---- stand-in internals -----------------------------------------------------------------------------
         /// <summary>The components in the order they were added; the Transform is first.</summary>
         internal List<Component> ComponentList => m_Components;
+
+        /// <summary>The stored active flag (held false while a clone is built or for a prefab asset).</summary>
+        internal bool ActiveSelfCore => m_ActiveSelf;
 
         /// <summary>Active itself and every parent active.</summary>
         internal bool IsActiveInHierarchy

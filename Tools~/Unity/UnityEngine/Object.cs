@@ -48,6 +48,7 @@ namespace UnityEngine
                 Debug.LogError(TransformDestroyMessage(transform));
                 return;
             }
+            if (RefusesAssetDestroy(obj, false)) return;
             World.QueueDestroy(obj, t);
         }
 
@@ -60,6 +61,7 @@ namespace UnityEngine
                 Debug.LogError(TransformDestroyMessage(transform));
                 return;
             }
+            if (RefusesAssetDestroy(obj, allowDestroyingAssets)) return;
             obj.DestroyNow();
         }
 
@@ -122,6 +124,15 @@ namespace UnityEngine
             if (rhsNull) return !lhs.m_Alive;
             if (lhsNull) return !rhs.m_Alive;
             return lhs.m_InstanceID == rhs.m_InstanceID;
+        }
+
+        /// <summary>A loaded prefab asset (or one of its components) is destroyed only with allowDestroyingAssets; otherwise Unity's error.</summary>
+        static bool RefusesAssetDestroy(Object obj, bool allowDestroyingAssets)
+        {
+            var go = obj as GameObject ?? (obj as Component)?.Owner;
+            if (allowDestroyingAssets || go is null || !SceneHooks.IsAsset(go)) return false;
+            Debug.LogError("Destroying assets is not permitted to avoid data loss.\nIf you really want to remove an asset use DestroyImmediate (theObject, true);");
+            return true;
         }
 
         static string TransformDestroyMessage(Transform transform) =>

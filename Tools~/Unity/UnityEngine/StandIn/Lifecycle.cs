@@ -56,7 +56,7 @@ namespace HookeRope.StandIn
         static void CollectBehaviours(Transform t, List<MonoBehaviour> into, bool onlyActive)
         {
             var go = t.gameObject;
-            if (onlyActive && !go.activeSelf) return;
+            if (onlyActive && !go.ActiveSelfCore) return;
             go.CollectComponents(into);
             var children = t.ChildList;
             for (int i = 0; i < children.Count; i++) CollectBehaviours(children[i], into, onlyActive);

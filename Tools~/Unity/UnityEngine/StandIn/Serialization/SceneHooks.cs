@@ -28,7 +28,7 @@ namespace HookeRope.StandIn
 
         /// <summary>The activeSelf a GameObject has (or, detached, will have once attached).</summary>
         internal static bool ActiveSelf(GameObject go) =>
-            s_IntendedActive.TryGetValue(go, out var intended) ? (bool)intended : go.activeSelf;
+            s_IntendedActive.TryGetValue(go, out var intended) ? (bool)intended : go.ActiveSelfCore;
 
         /// <summary>Sets the activeSelf a detached GameObject will get.</summary>
         internal static void SetIntendedActive(GameObject go, bool active) => s_IntendedActive.AddOrUpdate(go, active);
@@ -47,6 +47,7 @@ namespace HookeRope.StandIn
         {
             var objects = Hierarchy(root);
             foreach (var go in objects) World.Add(go);
+            PhysicsWorld.HierarchyPlaced(root.transform);
             for (int i = objects.Count - 1; i >= 1; i--) Activate(objects[i]);
             Activate(root);
         }
