@@ -2,7 +2,7 @@ using NUnit.Framework;
 
 namespace HookeRope.Tests.Components
 {
-    /// <summary>Unity only (edit mode, HookeRope assembly): OnValidate's clamp names the value, its range and unit.</summary>
+    /// <summary>Edit mode, HookeRope assembly (in Unity and headless on the Unity stand-in): OnValidate's clamp names the value, its range and unit.</summary>
     [TestFixture]
     public sealed class RopeParameterLimitsTests
     {

@@ -4,7 +4,7 @@ using HookeRope.Solver;
 
 namespace HookeRope.Tests.Components
 {
-    /// <summary>Unity only (edit mode, Editor assembly): the inspector's stretch-error estimate behaves like the solvers' convergence.</summary>
+    /// <summary>Edit mode, Editor assembly (in Unity and headless on the Unity stand-in): the inspector's stretch-error estimate behaves like the solvers' convergence.</summary>
     [TestFixture]
     public sealed class StretchErrorEstimateTests
     {
