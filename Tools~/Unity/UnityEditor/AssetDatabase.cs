@@ -10,7 +10,7 @@ namespace UnityEditor
     /// Stand-in of UnityEditor.AssetDatabase: loads the package's prefabs from their YAML ("Packages/&lt;package
     /// name&gt;/…prefab"); other asset types are outside the stand-in.
     /// </summary>
-    public sealed class AssetDatabase
+    public class AssetDatabase
     {
         /// <summary>Returns the first asset object of type type at given path assetPath (null when there is none).</summary>
         public static Object LoadAssetAtPath(string assetPath, Type type)

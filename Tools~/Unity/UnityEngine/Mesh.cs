@@ -10,7 +10,7 @@ namespace UnityEngine
     /// Stand-in of UnityEngine.Mesh: a CPU data holder for the advanced mesh API (vertex/index buffer params and
     /// data, sub-meshes, bounds) with readback of what was uploaded (vertices, normals, triangles, indices, the
     /// vertex layout). Nothing is drawn. Argument checks written in C# in Unity 2022.3 (Mesh.cs) are reproduced with
-    /// their exception types; checks done natively follow the documentation (see Tools~/Unity/notes/rendering.md).
+    /// their exception types; checks done natively follow the documentation (see Tools~/Unity/STAND-IN.md (Rendering)).
     /// Every change is recorded with its MeshUpdateFlags in an internal log the stand-in's tests read.
     /// </summary>
     public sealed class Mesh : Object

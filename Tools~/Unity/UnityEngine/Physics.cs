@@ -5,7 +5,7 @@ namespace UnityEngine
 {
     /// <summary>
     /// Stand-in of UnityEngine.Physics: global physics properties and helper methods. The scene, the step and the
-    /// queries live in <see cref="PhysicsWorld"/>; what the stand-in approximates is listed in Tools~/Unity/notes/physics.md.
+    /// queries live in <see cref="PhysicsWorld"/>; what the stand-in approximates is listed in Tools~/Unity/STAND-IN.md (Physics).
     /// </summary>
     public class Physics
     {

@@ -5,7 +5,7 @@ namespace UnityEngine
 {
     /// <summary>
     /// Stand-in of UnityEngine.Rigidbody: a body the physics step moves (PhysX 4 integration, see
-    /// <see cref="PhysicsWorld"/> and Tools~/Unity/notes/physics.md). Forces from AddForce/AddTorque are accumulated
+    /// <see cref="PhysicsWorld"/> and Tools~/Unity/STAND-IN.md (Physics)). Forces from AddForce/AddTorque are accumulated
     /// and applied at the next step, as PhysX does; the body's pose is its own (the Transform is read at the start of
     /// a step when it was changed, and written after the step); mass properties come from the attached colliders.
     /// </summary>

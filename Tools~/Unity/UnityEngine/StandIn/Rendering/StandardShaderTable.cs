@@ -5,7 +5,7 @@ namespace HookeRope.StandIn
     /// <summary>
     /// Not part of Unity: the Built-in render pipeline's "Standard" shader — the Properties block of
     /// DefaultResourcesExtra/Standard.shader (Unity built-in shader source, MIT; read from a public mirror of the
-    /// built-in shaders, see notes/rendering.md). No Queue tag: render queue 2000 (Geometry). No [MainTexture] /
+    /// built-in shaders, see Tools~/Unity/STAND-IN.md). No Queue tag: render queue 2000 (Geometry). No [MainTexture] /
     /// [MainColor] tags: Material.mainTexture / color fall back to _MainTex / _Color.
     /// </summary>
     internal static class StandardShaderTable
