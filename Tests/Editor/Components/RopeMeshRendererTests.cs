@@ -64,6 +64,34 @@ namespace HookeRope.Tests.Components
         }
 
         [Test]
+        public void BuiltInPipelineGetsAnOrangeTubeAndAnAlphaClippedBurrMaterial()
+        {
+            if (UnityEngine.Rendering.GraphicsSettings.currentRenderPipeline != null)
+                Assert.Ignore("the generated materials checked here are the Built-in pipeline's");
+            var (rope, renderer, _) = Build();
+            renderer.Render(1f);
+            var materials = renderer.GetComponent<MeshRenderer>().sharedMaterials;
+            Assert.That(materials.Length, Is.EqualTo(2), "submesh 0 tube, submesh 1 burr strands");
+            Assert.That(renderer.Mesh.subMeshCount, Is.EqualTo(2));
+            var tube = materials[0];
+            Assert.That(tube.shader.name, Is.EqualTo("Standard"));
+            var orange = tube.GetColor("_Color");
+            Assert.That(orange.r, Is.EqualTo(0.93f).Within(1e-6f));
+            Assert.That(orange.g, Is.EqualTo(0.5f).Within(1e-6f));
+            Assert.That(orange.b, Is.EqualTo(0.12f).Within(1e-6f));
+            var burr = materials[1];
+            Assert.That(burr.IsKeywordEnabled("_ALPHATEST_ON"), Is.True);
+            Assert.That(burr.GetFloat("_Cutoff"), Is.EqualTo(0.5f));
+            Assert.That(burr.renderQueue, Is.EqualTo(2450), "AlphaTest queue");
+            var texture = burr.GetTexture("_MainTex");
+            Assert.That(texture, Is.Not.Null);
+            Assert.That(texture.width, Is.EqualTo(256));
+            Assert.That(texture.height, Is.EqualTo(64));
+            Assert.That(texture.isReadable, Is.False, "the CPU copy is released after the upload");
+            Assert.That(rope.IsBuilt, Is.True);
+        }
+
+        [Test]
         public void MeshStaysFiniteAfterTheRopeBreaks()
         {
             var (rope, renderer, grip) = Build();
