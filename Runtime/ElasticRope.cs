@@ -127,21 +127,18 @@ namespace HookeRope
         Rope _rope;
         RopeSettings _settings;
         readonly RopeColliderBinding _colliderBinding = new RopeColliderBinding();
+        readonly RopeAttachmentBinding _attachments = new RopeAttachmentBinding();
         readonly RadiusSettings _radiusSettings = new RadiusSettings();
         RopeSimulation _simulation;
         readonly Stopwatch _stopwatch = new Stopwatch();
         Action<RopeBreakEvent> _onCoreBroken;
         Vector3 _origin;
-        int _startPin = -1, _endPin = -1, _startLoad = -1, _endLoad = -1;
-        Vector3 _startVelocityCorrection, _endVelocityCorrection;
         float[] _previous = Array.Empty<float>();
         float[] _current = Array.Empty<float>();
         bool _rebuildPending;
         bool _breakPending;
         Vector3 _breakPosition;
         float _breakTension;
-        Collider[] _overlapBuffer;
-        Vector3[] _preview = Array.Empty<Vector3>();
 
         // ---- Read-outs ------------------------------------------------------------------------------------
         /// <summary>Raised when the rope breaks: world position (m) and peak tension just before (N).</summary>
@@ -197,9 +194,6 @@ namespace HookeRope
 
         /// <summary>Particles in the built rope (segments + 1), or 0 before the build.</summary>
         public int ParticleCount => _rope?.ParticleCount ?? 0;
-
-        /// <summary>Static sag computed by <see cref="PreviewStaticSag"/> in world space (m); empty until then.</summary>
-        public Vector3[] StaticSagPreview => _preview;
 
         // ---- Settings properties (validated; changes apply at the next step) ------------------------------
         /// <summary>Young's modulus E (Pa), 1e3 … 1e12. Setting it switches the stiffness input to E.</summary>
@@ -463,13 +457,10 @@ namespace HookeRope
         {
             if (_rope != null && _onCoreBroken != null) _rope.Broken -= _onCoreBroken;
             _settings = new RopeSettings();
-            _rope = CreateCoreRope(_settings, out _origin);
-            AttachEnd(_rope, m_Start, 0, _origin, out _startPin, out _startLoad);
-            AttachEnd(_rope, m_End, _rope.ParticleCount - 1, _origin, out _endPin, out _endLoad);
-
-            RegisterColliders();
             WriteRadiusSettings(_radiusSettings);
-            _simulation = new RopeSimulation(_rope, RadiusFeaturesOn ? _radiusSettings : null);
+            _simulation = BuildSimulation(_settings, _attachments, RadiusFeaturesOn ? _radiusSettings : null, out _origin);
+            _rope = _simulation.Rope;
+            _colliderBinding.Bind(_rope, m_CollisionMode, m_Colliders, m_CollisionLayers, m_Planes, m_Friction, _origin, m_Start, m_End, Reach, this);
 
             _onCoreBroken ??= OnCoreBroken;
             _rope.Broken += _onCoreBroken;
@@ -481,7 +472,6 @@ namespace HookeRope
             Array.Copy(_current, _previous, n);
 
             IsBroken = false;
-            _startVelocityCorrection = _endVelocityCorrection = Vector3.zero;
             _breakPending = false;
             _rebuildPending = false;
             ResetPeaks();
@@ -499,12 +489,8 @@ namespace HookeRope
                 throw new ArgumentOutOfRangeException(nameof(deltaTime), deltaTime, "deltaTime must be in (0, +inf) seconds");
             if (_rope == null || _rebuildPending) Rebuild();
 
-            CorrectBodyVelocity(m_Start, ref _startVelocityCorrection);
-            CorrectBodyVelocity(m_End, ref _endVelocityCorrection);
-            CopyAttachmentsIn(m_Start, _startPin, _startLoad);
-            CopyAttachmentsIn(m_End, _endPin, _endLoad);
-            if (m_CollisionMode == RopeCollisionMode.LayerMask) RefreshLayerColliders();
-            _colliderBinding.UpdatePoses(_rope, _origin);
+            _attachments.CopyIn(_rope, _origin);
+            _colliderBinding.BeforeStep(_rope, _origin, Reach);
 
             Array.Copy(_current, _previous, _current.Length);
             _stopwatch.Restart();
@@ -514,8 +500,7 @@ namespace HookeRope
             Residual = report.Residual;
             CopyPositions(_current);
 
-            ApplyForceToBody(m_Start, _startLoad, ref _startVelocityCorrection);
-            ApplyForceToBody(m_End, _endLoad, ref _endVelocityCorrection);
+            _attachments.ApplyForces(_rope);
             UpdateReadouts();
 
             if (_breakPending)
@@ -591,37 +576,8 @@ namespace HookeRope
         /// <summary>True when segment <paramref name="segment"/> has broken.</summary>
         public bool IsSegmentBroken(int segment) => _rope != null && _rope.IsSegmentBroken(segment);
 
-        /// <summary>
-        /// Computes the static sag of the current settings between the current attachment positions without
-        /// entering Play (for the inspector's preview button): a separate core rope relaxes for
-        /// <paramref name="seconds"/> of simulated time with its velocities scaled by 0.85 every 1/60 s step (a
-        /// near-critical damping of the swing of a metre-scale rope), so it settles into the static shape; long
-        /// ropes swing slowly and need more seconds. The result is in <see cref="StaticSagPreview"/> (world, m).
-        /// </summary>
-        public Vector3[] PreviewStaticSag(float seconds = 6f)
-        {
-            if (!(seconds > 0f) || float.IsInfinity(seconds))
-                throw new ArgumentOutOfRangeException(nameof(seconds), seconds, "seconds must be in (0, +inf)");
-            var rope = CreateCoreRope(new RopeSettings(), out Vector3 start);
-            int last = rope.ParticleCount - 1;
-            AttachEnd(rope, m_Start, 0, start, out _, out _);
-            AttachEnd(rope, m_End, last, start, out _, out _);
-            const float dt = 1f / 60f;
-            int steps = (int)Math.Ceiling(seconds / dt);
-            for (int s = 0; s < steps; s++)
-            {
-                rope.Step(dt);
-                for (int i = 0; i <= last; i++) rope.SetVelocity(i, rope.GetVelocity(i) * 0.85f);
-            }
-            if (_preview.Length != rope.ParticleCount) _preview = new Vector3[rope.ParticleCount];
-            for (int i = 0; i <= last; i++) _preview[i] = start + rope.GetPosition(i).ToVector3();
-            return _preview;
-        }
-
         // ---- Internals ------------------------------------------------------------------------------------
         static float Area(float radius) => MathF.PI * radius * radius;
-
-        Float3 Sim(Vector3 world) => new Float3(world.x - _origin.x, world.y - _origin.y, world.z - _origin.z);
 
         void Report(string message)
         {
@@ -680,118 +636,34 @@ namespace HookeRope
         }
 
         /// <summary>
-        /// Writes every live setting and the segment count into <paramref name="settings"/> and builds a core rope from
-        /// them, particles evenly from the start attachment to the end attachment (or straight down from this object by
-        /// the rest length). <paramref name="origin"/> is the start in world space (m): the origin of the rope's frame.
+        /// Writes every live setting and the segment count into <paramref name="settings"/> and builds a core
+        /// simulation from them: particles evenly from the start attachment to the end attachment (or straight down
+        /// from this object by the rest length), the ends attached through <paramref name="attachments"/>, and a
+        /// radius model when <paramref name="radiusSettings"/> is not null. <paramref name="origin"/> is the start in
+        /// world space (m): the origin of the rope's frame.
         /// </summary>
-        Rope CreateCoreRope(RopeSettings settings, out Vector3 origin)
+        RopeSimulation BuildSimulation(RopeSettings settings, RopeAttachmentBinding attachments, RadiusSettings radiusSettings, out Vector3 origin)
         {
             WriteSettings(settings);
             settings.SegmentCount = m_SegmentCount;
             Vector3 start = m_Start.WorldPosition(transform.position);
             Vector3 end = m_End.WorldPosition(new Vector3(start.x, start.y - m_RestLength, start.z));
             origin = start;
-            return new Rope(settings, (start - origin).ToFloat3(), (end - origin).ToFloat3());
-        }
-
-        /// <summary>Pins (Transform end) or loads (Rigidbody end) <paramref name="particle"/>; the id not created is -1.</summary>
-        void AttachEnd(Rope rope, RopeEnd end, int particle, Vector3 origin, out int pin, out int load)
-        {
-            pin = load = -1;
-            switch (end.Kind)
-            {
-                case RopeEndKind.Transform:
-                    pin = rope.AddPin(particle, (end.Point.position - origin).ToFloat3(), m_AttachmentCompliance);
-                    break;
-                case RopeEndKind.Rigidbody:
-                    load = rope.AddLoad(particle, end.Body.mass);
-                    break;
-            }
-        }
-
-        void CopyAttachmentsIn(RopeEnd end, int pin, int load)
-        {
-            if (pin >= 0 && end.Point != null)
-            {
-                _rope.SetPinTarget(pin, Sim(end.Point.position));
-            }
-            else if (load >= 0 && end.Body != null)
-            {
-                Vector3 point = end.WorldPosition(end.Body.position);
-                _rope.SetLoadState(load, Sim(point), end.Body.GetPointVelocity(point).ToFloat3());
-            }
+            var rope = new Rope(settings, (start - origin).ToFloat3(), (end - origin).ToFloat3());
+            attachments.Attach(rope, m_Start, m_End, origin, m_AttachmentCompliance);
+            return new RopeSimulation(rope, radiusSettings);
         }
 
         /// <summary>
-        /// Two-way coupling, after the rope step: the force that brings the body (integrated by the physics engine
-        /// with semi-implicit Euler) to where the rope's load particle ended, and the velocity correction that the
-        /// next step adds before it reads the body back (see <see cref="Rope.GetLoadHostForce"/>).
+        /// A simulation of the current settings and attachment poses that this component does not own or step
+        /// (no radius model, no colliders): the editor's static-sag preview relaxes it. <paramref name="origin"/> is
+        /// the world position (m) of its frame's origin.
         /// </summary>
-        void ApplyForceToBody(RopeEnd end, int load, ref Vector3 velocityCorrection)
-        {
-            velocityCorrection = Vector3.zero;
-            if (load < 0 || end.Body == null || end.Body.isKinematic) return;
-            Vector3 force = _rope.GetLoadHostForce(load).ToVector3();
-            end.Body.AddForceAtPosition(force, end.WorldPosition(end.Body.position), ForceMode.Force);
-            velocityCorrection = _rope.GetLoadHostVelocityCorrection(load).ToVector3();
-        }
+        internal RopeSimulation CreateDetachedSimulation(out Vector3 origin) =>
+            BuildSimulation(new RopeSettings(), new RopeAttachmentBinding(), radiusSettings: null, out origin);
 
-        static void CorrectBodyVelocity(RopeEnd end, ref Vector3 velocityCorrection)
-        {
-            if (end.Body != null && !end.Body.isKinematic) end.Body.velocity += velocityCorrection;
-            velocityCorrection = Vector3.zero;
-        }
-
-        void RegisterColliders()
-        {
-            switch (m_CollisionMode)
-            {
-                case RopeCollisionMode.Off:
-                    RegisterColliders(Array.Empty<Collider>(), 0, Array.Empty<Transform>(), false);
-                    break;
-                case RopeCollisionMode.ListedColliders:
-                    RegisterColliders(m_Colliders, m_Colliders.Length, m_Planes, true);
-                    break;
-                case RopeCollisionMode.LayerMask:
-                {
-                    // query first: it creates (or grows) the buffer that is passed on
-                    int count = QueryLayerColliders();
-                    RegisterColliders(_overlapBuffer, count, m_Planes, true);
-                    break;
-                }
-            }
-        }
-
-        void RegisterColliders(Collider[] colliders, int count, Transform[] planes, bool warnUnsupported) =>
-            _colliderBinding.Register(_rope, colliders, count, planes, _origin, m_Friction, m_Start, m_End, this, warnUnsupported);
-
-        /// <summary>
-        /// Layer Mask mode: colliders come and go (a worker walks past a beam), so each step re-queries the
-        /// colliders within the rope's reach and re-registers them only when the set changed. Allocation-free
-        /// unless more colliders are in reach than ever before.
-        /// </summary>
-        void RefreshLayerColliders()
-        {
-            int count = QueryLayerColliders();
-            if (!_colliderBinding.HasSameColliders(_overlapBuffer, count, m_Start, m_End))
-                RegisterColliders(_overlapBuffer, count, m_Planes, false);
-        }
-
-        /// <summary>Colliders on <see cref="CollisionLayers"/> within the rope's reach, into the overlap buffer (grown when full).</summary>
-        int QueryLayerColliders()
-        {
-            _overlapBuffer ??= new Collider[16];
-            Vector3 start = GetParticlePosition(0), end = GetParticlePosition(_rope.ParticleCount - 1);
-            Vector3 center = (start + end) * 0.5f;
-            // every particle lies within half the (longest expected) rope length of an end, and each end within half the span of the centre
-            float reach = 0.5f * (Vector3.Distance(start, end) + m_RestLength * (1f + (m_Fracture ? m_BreakStrain : 1f))) + m_Radius;
-            while (true)
-            {
-                int count = Physics.OverlapSphereNonAlloc(center, reach, _overlapBuffer, m_CollisionLayers, QueryTriggerInteraction.Ignore);
-                if (count < _overlapBuffer.Length) return count;
-                _overlapBuffer = new Collider[_overlapBuffer.Length * 2];
-            }
-        }
+        /// <summary>How far the Layer Mask collider query reaches: the rest length stretched to the break strain (or doubled), plus R.</summary>
+        ColliderReach Reach => new ColliderReach(m_RestLength * (1f + (m_Fracture ? m_BreakStrain : 1f)), m_Radius);
 
         void CopyPositions(float[] destination)
         {
@@ -831,7 +703,7 @@ namespace HookeRope
             NeckRadius = _simulation.NeckRadius;
             if (_simulation.MinRadius < MinRadius) MinRadius = _simulation.MinRadius;
 
-            ArrestForce = _endLoad >= 0 ? _rope.GetLoadForce(_endLoad).Length : BottomTension;
+            ArrestForce = _attachments.EndLoad >= 0 ? _rope.GetLoadForce(_attachments.EndLoad).Length : BottomTension;
             if (ArrestForce > PeakArrestForce) PeakArrestForce = ArrestForce;
         }
 

@@ -126,7 +126,7 @@ namespace HookeRope
             const int width = 256, height = 64;
             var pixels = new byte[BurrTextureGenerator.ByteCount(width, height)];
             BurrTextureGenerator.Generate(width, height, 16, 1u, 214, 200, 160, pixels);
-            var texture = new Texture2D(width, height, TextureFormat.RGBA32, false)
+            var texture = new Texture2D(width, height, TextureFormat.RGBA32, mipChain: false)
             {
                 name = "Elastic Rope Burr (generated)",
                 hideFlags = HideFlags.DontSave,
@@ -134,7 +134,7 @@ namespace HookeRope
                 filterMode = FilterMode.Bilinear,
             };
             texture.SetPixelData(pixels, 0);
-            texture.Apply(false, true);
+            texture.Apply(updateMipmaps: false, makeNoLongerReadable: true);
             return texture;
         }
     }
