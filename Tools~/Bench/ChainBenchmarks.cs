@@ -26,7 +26,9 @@ namespace HookeRope.Bench
         [GlobalSetup]
         public void Setup()
         {
-            var settings = new RopeSettings { RestLength = 10f, SegmentCount = Segments, Substeps = 1, Iterations = IterationCount, Solver = Solver };
+            var settings = LegacySettings.Create(10f, Segments, Solver);
+            settings.Substeps = 1;
+            settings.Iterations = IterationCount;
             rope = new Rope(settings, Float3.Zero, new Float3(0f, -10f, 0f));
             rope.AddPin(0, Float3.Zero);
             rope.AddLoad(Segments, 50f);

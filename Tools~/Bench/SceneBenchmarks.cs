@@ -17,7 +17,7 @@ namespace HookeRope.Bench
         [Params(ConstraintSolverKind.GaussSeidel, ConstraintSolverKind.ExactChain)]
         public ConstraintSolverKind Solver { get; set; }
 
-        public double Units => (double)RopeCount * SegmentCount * RopeSettings.DefaultSubsteps;
+        public double Units => (double)RopeCount * SegmentCount * LegacySettings.Substeps;
 
         [GlobalSetup]
         public void Setup()
@@ -25,7 +25,7 @@ namespace HookeRope.Bench
             ropes = new Rope[RopeCount];
             for (int r = 0; r < RopeCount; r++)
             {
-                var settings = new RopeSettings { RestLength = 2f, SegmentCount = SegmentCount, Solver = Solver };
+                var settings = LegacySettings.Create(2f, SegmentCount, Solver);
                 var start = new Float3(r * 0.5f, 2f, 0f);
                 var end = new Float3(r * 0.5f + 1.8f, 2f, 0f);
                 ropes[r] = new Rope(settings, start, end);

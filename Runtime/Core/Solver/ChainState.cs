@@ -15,6 +15,8 @@ namespace HookeRope.Solver
         // particles (rope-local metres, m/s, kg, 1/kg)
         public readonly float[] X, Y, Z;
         public readonly float[] PrevX, PrevY, PrevZ;
+        // positions at the start of the last host step (or where the host last placed them), for interpolation
+        public readonly float[] StepStartX, StepStartY, StepStartZ;
         // displacement over the current substep: live position = Prev + D. Kept separately so that
         // velocities D/h keep full float precision however small h is.
         public readonly float[] DX, DY, DZ;
@@ -32,6 +34,7 @@ namespace HookeRope.Solver
         public readonly float[] Tension;          // N, ≥ 0 pulls
         public readonly float[] Length;           // m, current
         public readonly bool[] Broken;
+        public int BrokenCount;                   // segments with Broken set
         public readonly float[] DirX, DirY, DirZ; // last valid unit direction x_j → x_{j+1}
 
         // exact solve (double): the tridiagonal system (Full*), the Thomas sweep's c′ and d′ (Upper, Rhs), its solution Δλ (Delta)
@@ -60,6 +63,7 @@ namespace HookeRope.Solver
             int n = ParticleCount, s = segmentCount;
             X = new float[n]; Y = new float[n]; Z = new float[n];
             PrevX = new float[n]; PrevY = new float[n]; PrevZ = new float[n];
+            StepStartX = new float[n]; StepStartY = new float[n]; StepStartZ = new float[n];
             DX = new float[n]; DY = new float[n]; DZ = new float[n];
             VelX = new float[n]; VelY = new float[n]; VelZ = new float[n];
             Mass = new float[n]; InverseMass = new float[n]; LoadMass = new float[n];

@@ -64,9 +64,9 @@ namespace HookeRope.Solver
             pinBroken[p] = false;
             if (compliance == 0f)
             {
-                chain.X[particle] = chain.PrevX[particle] = local.X;
-                chain.Y[particle] = chain.PrevY[particle] = local.Y;
-                chain.Z[particle] = chain.PrevZ[particle] = local.Z;
+                chain.X[particle] = chain.PrevX[particle] = chain.StepStartX[particle] = local.X;
+                chain.Y[particle] = chain.PrevY[particle] = chain.StepStartY[particle] = local.Y;
+                chain.Z[particle] = chain.PrevZ[particle] = chain.StepStartZ[particle] = local.Z;
                 chain.VelX[particle] = chain.VelY[particle] = chain.VelZ[particle] = 0f;
                 RefreshKinematic();
                 RefreshLengths();

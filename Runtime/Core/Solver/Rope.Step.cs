@@ -30,6 +30,10 @@ namespace HookeRope.Solver
             Float3 g = settings.Gravity;
             bool hasColliders = colliders.Count > 0;
             int compliantPins = CountCompliantPins();
+            int particles = chain.ParticleCount;
+            Array.Copy(chain.X, chain.StepStartX, particles);
+            Array.Copy(chain.Y, chain.StepStartY, particles);
+            Array.Copy(chain.Z, chain.StepStartZ, particles);
 
             for (int l = 0; l < loadCount; l++)
             {

@@ -43,9 +43,9 @@ namespace HookeRope.Solver
             for (int i = 0; i <= s; i++)
             {
                 Float3 p = span * ((float)i / s);
-                chain.X[i] = chain.PrevX[i] = p.X;
-                chain.Y[i] = chain.PrevY[i] = p.Y;
-                chain.Z[i] = chain.PrevZ[i] = p.Z;
+                chain.X[i] = chain.PrevX[i] = chain.StepStartX[i] = p.X;
+                chain.Y[i] = chain.PrevY[i] = chain.StepStartY[i] = p.Y;
+                chain.Z[i] = chain.PrevZ[i] = chain.StepStartZ[i] = p.Z;
             }
             for (int j = 0; j < s; j++) { chain.DirX[j] = dir.X; chain.DirY[j] = dir.Y; chain.DirZ[j] = dir.Z; }
             ApplySettings();
@@ -85,6 +85,53 @@ namespace HookeRope.Solver
         /// <summary>Collision radius of each particle in metres (default: the rest radius; the radius model writes it).</summary>
         public Span<float> ParticleRadius => chain.Radius;
 
+        /// <summary>Writes the particles' collision radii in metres (the radius model's output); length must be <see cref="ParticleCount"/>.</summary>
+        internal void SetParticleRadii(ReadOnlySpan<float> radii)
+        {
+            if (radii.Length != chain.ParticleCount)
+                throw new ArgumentException("radii must hold one radius per particle (" + chain.ParticleCount + ")", nameof(radii));
+            radii.CopyTo(chain.Radius);
+        }
+
+        /// <summary>Broken flag of each segment (true = broken; its two sides move independently).</summary>
+        public ReadOnlySpan<bool> BrokenSegments => chain.Broken;
+
+        /// <summary>Number of broken segments (0 = intact).</summary>
+        public int BrokenSegmentCount => chain.BrokenCount;
+
+        /// <summary>
+        /// Writes the particle positions (m, rope-local frame: world = <see cref="Origin"/> + local) interpolated between
+        /// the start and the end of the last host step: alpha 0 = start, 1 = now (clamped to [0, 1]). Before the first
+        /// step, or for particles the host placed since, start and end coincide. Each span needs at least
+        /// <see cref="ParticleCount"/> entries. Allocation-free.
+        /// </summary>
+        public void Interpolate(float alpha, Span<float> x, Span<float> y, Span<float> z)
+        {
+            int n = chain.ParticleCount;
+            if (x.Length < n || y.Length < n || z.Length < n)
+                throw new ArgumentException("x, y and z must each hold at least ParticleCount (" + n + ") values");
+            float a = ClampAlpha(alpha);
+            float[] sx = chain.StepStartX, sy = chain.StepStartY, sz = chain.StepStartZ;
+            float[] ex = chain.X, ey = chain.Y, ez = chain.Z;
+            for (int i = 0; i < n; i++)
+            {
+                x[i] = sx[i] + (ex[i] - sx[i]) * a;
+                y[i] = sy[i] + (ey[i] - sy[i]) * a;
+                z[i] = sz[i] + (ez[i] - sz[i]) * a;
+            }
+        }
+
+        /// <summary>World position (m) of a particle interpolated between the start (alpha 0) and the end (alpha 1) of the last host step; alpha is clamped to [0, 1].</summary>
+        public Float3 GetInterpolatedPosition(int particle, float alpha)
+        {
+            CheckParticle(particle);
+            float a = ClampAlpha(alpha);
+            float sx = chain.StepStartX[particle], sy = chain.StepStartY[particle], sz = chain.StepStartZ[particle];
+            return Origin + new Float3(sx + (chain.X[particle] - sx) * a, sy + (chain.Y[particle] - sy) * a, sz + (chain.Z[particle] - sz) * a);
+        }
+
+        private static float ClampAlpha(float alpha) => alpha >= 1f ? 1f : alpha > 0f ? alpha : 0f;
+
         /// <summary>World position of a particle in metres.</summary>
         public Float3 GetPosition(int particle)
         {
@@ -98,9 +145,9 @@ namespace HookeRope.Solver
             CheckParticle(particle);
             CheckFinite(position, nameof(position), "a finite position in metres");
             Float3 local = position - Origin;
-            chain.X[particle] = chain.PrevX[particle] = local.X;
-            chain.Y[particle] = chain.PrevY[particle] = local.Y;
-            chain.Z[particle] = chain.PrevZ[particle] = local.Z;
+            chain.X[particle] = chain.PrevX[particle] = chain.StepStartX[particle] = local.X;
+            chain.Y[particle] = chain.PrevY[particle] = chain.StepStartY[particle] = local.Y;
+            chain.Z[particle] = chain.PrevZ[particle] = chain.StepStartZ[particle] = local.Z;
             RefreshLengths();
         }
 
@@ -142,6 +189,7 @@ namespace HookeRope.Solver
             if (chain.Broken[segment]) return;
             float tension = chain.Tension[segment];
             chain.Broken[segment] = true;
+            chain.BrokenCount++;
             chain.Lambda[segment] = 0.0;
             chain.Tension[segment] = 0f;
             var midpoint = new Float3(

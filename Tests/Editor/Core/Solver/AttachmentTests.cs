@@ -12,7 +12,7 @@ namespace HookeRope.Tests.Solver
         {
             // a 5 kg load on a stiff rope hanging from a soft pin (compliance 1 mm/N)
             const float Compliance = 1e-3f, Load = 5f;
-            var settings = new RopeSettings { RestLength = 1f, SegmentCount = 8 };
+            var settings = RopeTestKit.Legacy(length: 1f, segments: 8);
             double weight = (Load + settings.LinearDensity * 1.0) * RopeTestKit.G;
             float sag = (float)(weight * Compliance);
             var rope = new Rope(settings, new Float3(0f, -sag, 0f), new Float3(0f, -1f - sag, 0f)); // start near equilibrium
@@ -35,7 +35,7 @@ namespace HookeRope.Tests.Solver
         [Test]
         public void PinBreaksWhenItsForcePassesTheBreakForce()
         {
-            var settings = new RopeSettings { RestLength = 1f, SegmentCount = 8 };
+            var settings = RopeTestKit.Legacy(length: 1f, segments: 8);
             var rope = new Rope(settings, Float3.Zero, new Float3(0f, -1f, 0f));
             int pin = rope.AddPin(0, Float3.Zero, 0f, 200f);
             rope.AddLoad(8, 10f);
@@ -51,7 +51,7 @@ namespace HookeRope.Tests.Solver
         [Test]
         public void MovingPinIsFollowedAcrossSubstepsAndItsParticleReachesTheTarget()
         {
-            var settings = new RopeSettings { RestLength = 1f, SegmentCount = 10 };
+            var settings = RopeTestKit.Legacy(length: 1f, segments: 10);
             var rope = RopeTestKit.Hanging(settings, 0f, out _);
             int hand = rope.AddPinAtFraction(0.5f, new Float3(0f, -0.5f, 0f));
             Assert.That(rope.GetPinTarget(hand), Is.EqualTo(new Float3(0f, -0.5f, 0f)));

@@ -39,7 +39,7 @@ namespace HookeRope.Tests.Solver
         [TestCase(ConstraintSolverKind.GaussSeidel)]
         public void BreakSegmentSplitsTheChainIntoTwoIndependentRopes(ConstraintSolverKind solver)
         {
-            var settings = new RopeSettings { RestLength = 2f, SegmentCount = 20, Solver = solver };
+            var settings = RopeTestKit.Legacy(length: 2f, segments: 20, solver: solver);
             var rope = new Rope(settings, new Float3(-1f, 0f, 0f), new Float3(1f, 0f, 0f));
             rope.AddPin(0, new Float3(-1f, 0f, 0f));
             rope.AddPin(20, new Float3(1f, 0f, 0f));

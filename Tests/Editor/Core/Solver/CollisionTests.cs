@@ -11,7 +11,7 @@ namespace HookeRope.Tests.Solver
 
         private static Rope LooseRope(float length, int segments, Float3 start, Float3 end)
         {
-            var settings = new RopeSettings { RestLength = length, SegmentCount = segments, Radius = RopeRadius };
+            var settings = RopeTestKit.Legacy(length: length, segments: segments, radius: RopeRadius);
             settings.YoungsModulus = 1e9f;
             return new Rope(settings, start, end);
         }
@@ -115,7 +115,7 @@ namespace HookeRope.Tests.Solver
         public void MovingSpherePushesTheRopeAlong()
         {
             // a hanging rope; a sphere sweeps through its lower half in +X and carries it along
-            var settings = new RopeSettings { RestLength = 1f, SegmentCount = 20, Radius = RopeRadius };
+            var settings = RopeTestKit.Legacy(length: 1f, segments: 20, radius: RopeRadius);
             var rope = RopeTestKit.Hanging(settings, 0f, out _);
             int sphere = rope.AddCollider(ColliderShape.Sphere(new Float3(-0.3f, -0.8f, 0f), 0.1f));
             for (int i = 0; i < 45; i++)
@@ -135,11 +135,10 @@ namespace HookeRope.Tests.Solver
         private static void PullOverBar(int substeps, int iterations, out double expected, out double path, out Rope rope, out int left, out int right)
         {
             const float BarRadius = 0.1f, CordRadius = 0.005f, Length = 1.2f;
-            var settings = new RopeSettings
-            {
-                RestLength = Length, SegmentCount = 80, Radius = CordRadius, AxialStiffness = 200f, LinearDensity = 0.05f,
-                Gravity = Float3.Zero, Substeps = substeps, Iterations = iterations,
-            };
+            var settings = RopeTestKit.Legacy(length: Length, segments: 80, radius: CordRadius, substeps: substeps, iterations: iterations);
+            settings.AxialStiffness = 200f;
+            settings.LinearDensity = 0.05f;
+            settings.Gravity = Float3.Zero;
             Float3 a0 = new Float3(-0.5f, 0.2f, 0f), b0 = new Float3(0.5f, 0.2f, 0f);
             rope = new Rope(settings, a0, b0);
             left = rope.AddPin(0, a0);
@@ -194,7 +193,7 @@ namespace HookeRope.Tests.Solver
         /// <summary>A free rope resting on a floor plane (y = 0) for 1 s, with a sphere far away as a second collider.</summary>
         private static Rope RopeOnTheFloor(out float restingY)
         {
-            var settings = new RopeSettings { RestLength = 1f, SegmentCount = 16, Radius = RopeRadius, Damping = 0.01f };
+            var settings = RopeTestKit.Legacy(length: 1f, segments: 16, radius: RopeRadius, damping: 0.01f);
             var rope = new Rope(settings, new Float3(-0.5f, RopeRadius, 0f), new Float3(0.5f, RopeRadius, 0f));
             rope.AddCollider(ColliderShape.Plane(Float3.Zero, new Float3(0f, 1f, 0f)));
             rope.AddCollider(ColliderShape.Sphere(new Float3(0f, 0f, 10f), 1f));

@@ -32,7 +32,7 @@ namespace HookeRope.Tests.Solver
 
         static Rope Lanyard(out int load, out HostBody body)
         {
-            var settings = new RopeSettings { RestLength = Length, SegmentCount = 24, Radius = 0.008f, Density = 1140f, Damping = 0f };
+            var settings = RopeTestKit.Legacy(length: Length, segments: 24, radius: 0.008f, density: 1140f, damping: 0f);
             settings.AxialStiffness = AxialStiffness;
             // the body starts FreeFall − L above the anchor with the lanyard laid straight up to it
             var top = new Float3(0.01f, FreeFall - Length, 0f);

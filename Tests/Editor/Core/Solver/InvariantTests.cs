@@ -10,7 +10,7 @@ namespace HookeRope.Tests.Solver
     {
         private static Rope Scene(ConstraintSolverKind solver, out int hand)
         {
-            var settings = new RopeSettings { RestLength = 3f, SegmentCount = 48, Solver = solver, Damping = 0.001f, BreakStrain = 5f };
+            var settings = RopeTestKit.Legacy(length: 3f, segments: 48, solver: solver, damping: 0.001f); settings.BreakStrain = 5f;
             var rope = new Rope(settings, new Float3(100f, 2f, -50f), new Float3(103f, 2f, -50f));
             hand = rope.AddPin(0, new Float3(100f, 2f, -50f));
             rope.AddPinAtFraction(1f, new Float3(103f, 2f, -50f), 1e-4f, 5000f);
@@ -80,7 +80,7 @@ namespace HookeRope.Tests.Solver
         public void RopeLocalFrameKeepsPrecisionFarFromTheWorldOrigin()
         {
             // the same hanging rope at the origin and 10 km away stretches by the same amount
-            var near = new RopeSettings { RestLength = 2f, SegmentCount = 16 };
+            var near = RopeTestKit.Legacy(length: 2f, segments: 16);
             var far = near.Clone();
             var a = new Rope(near, Float3.Zero, new Float3(0f, -2f, 0f));
             var b = new Rope(far, new Float3(10000f, 0f, 10000f), new Float3(10000f, -2f, 10000f));

@@ -21,10 +21,35 @@ namespace HookeRope.Tests.Solver
 
         public static RopeSettings Settings(float length, int segments, float axialStiffness, float ropeMass)
         {
-            var s = new RopeSettings { RestLength = length, SegmentCount = segments };
+            var s = Legacy(length, segments);
             s.AxialStiffness = axialStiffness;
             s.LinearDensity = ropeMass / length;
             return s;
+        }
+
+        /// <summary>
+        /// Settings with the core's pre-issue-12 defaults stated explicitly (R 5 mm, E 1 GPa, ρ 1140 kg/m³, β 0 s,
+        /// L 1 m, 16 segments, 8 substeps, 1 iteration, g = −9.81 m/s² on Y, exact chain, tension only), so that no
+        /// solver test number moves when <see cref="RopeSettings"/> takes the parameter table's defaults.
+        /// </summary>
+        public static RopeSettings Legacy(
+            float length = 1f, int segments = 16, float radius = 0.005f, float youngsModulus = 1e9f, float density = 1140f,
+            float damping = 0f, int substeps = 8, int iterations = 1, ConstraintSolverKind solver = ConstraintSolverKind.ExactChain)
+        {
+            return new RopeSettings
+            {
+                RestLength = length,
+                SegmentCount = segments,
+                Radius = radius,
+                YoungsModulus = youngsModulus,
+                Density = density,
+                Damping = damping,
+                Gravity = new Float3(0f, -9.81f, 0f),
+                Substeps = substeps,
+                Iterations = iterations,
+                Solver = solver,
+                Tension = TensionModel.TensionOnly,
+            };
         }
 
         public static float Bottom(Rope rope) => rope.GetPosition(rope.ParticleCount - 1).Y;

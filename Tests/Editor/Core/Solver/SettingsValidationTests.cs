@@ -51,7 +51,7 @@ namespace HookeRope.Tests.Solver
         [Test]
         public void InfiniteYoungsModulusMeansAnInextensibleRope()
         {
-            var settings = new RopeSettings { YoungsModulus = float.PositiveInfinity, SegmentCount = 8, RestLength = 1f };
+            var settings = RopeTestKit.Legacy(length: 1f, segments: 8, youngsModulus: float.PositiveInfinity);
             var rope = RopeTestKit.Hanging(settings, 10f, out _);
             for (int i = 0; i < 90; i++) rope.Step(RopeTestKit.HostStep);
             Assert.That(-RopeTestKit.Bottom(rope), Is.EqualTo(1.0).Within(1e-5));
@@ -100,7 +100,7 @@ namespace HookeRope.Tests.Solver
         [Test]
         public void NaNPinTargetIsRejectedWithoutCorruptingTheRope()
         {
-            var settings = new RopeSettings { SegmentCount = 8 };
+            var settings = RopeTestKit.Legacy(segments: 8);
             var rope = RopeTestKit.Hanging(settings, 1f, out _);
             var twin = RopeTestKit.Hanging(settings.Clone(), 1f, out _);
             for (int i = 0; i < 10; i++) { rope.Step(RopeTestKit.HostStep); twin.Step(RopeTestKit.HostStep); }

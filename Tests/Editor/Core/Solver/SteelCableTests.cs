@@ -9,7 +9,7 @@ namespace HookeRope.Tests.Solver
         [Test]
         public void SteelCableWithHalfATonneIsStableAndSettlesToItsStaticElongation()
         {
-            var settings = new RopeSettings { RestLength = 10f, SegmentCount = 64, Radius = 0.005f, YoungsModulus = 200e9f, Density = 7850f };
+            var settings = RopeTestKit.Legacy(length: 10f, segments: 64, radius: 0.005f, youngsModulus: 200e9f, density: 7850f);
             var rope = RopeTestKit.Hanging(settings, 500f, out _);
             double ropeMass = settings.LinearDensity * 10.0;
             double expected = (500.0 + ropeMass / 2.0) * RopeTestKit.G * 10.0 / settings.AxialStiffness;

@@ -1,16 +1,18 @@
 using System;
 using HookeRope.Mathematics;
+using HookeRope.Solver;
 
-namespace HookeRope.Solver
+namespace HookeRope.Tests.Solver
 {
     /// <summary>
-    /// One extreme case of the stability matrix (tests and the lab's stability command): a rope of
+    /// One extreme case of the stability matrix (the solver stability tests): a rope of
     /// <see cref="RestLength"/> hanging from a rigid pin at the world origin, optionally with a load at the
     /// bottom, laid straight down stretched by <see cref="Stretch"/> (or with every particle on the pin
     /// when <see cref="Coincident"/>), and optionally an anchor teleport. <see cref="Run"/> steps it and
-    /// measures finiteness, energy growth and recovery.
+    /// measures finiteness, energy growth and recovery. States every rope value explicitly (the pre-issue-12
+    /// core defaults where the matrix does not vary it).
     /// </summary>
-    public sealed class StabilityCase
+    internal sealed class StabilityCase
     {
         /// <summary>Young's modulus in Pa (1e6 … 2e11 in the matrix; +inf allowed).</summary>
         public float YoungsModulus { get; set; } = 1e9f;
@@ -29,7 +31,7 @@ namespace HookeRope.Solver
         /// <summary>Constraint solver.</summary>
         public ConstraintSolverKind Solver { get; set; } = ConstraintSolverKind.ExactChain;
         /// <summary>Substeps per host step.</summary>
-        public int Substeps { get; set; } = RopeSettings.DefaultSubsteps;
+        public int Substeps { get; set; } = 8;
         /// <summary>Rest length in metres.</summary>
         public float RestLength { get; set; } = 1f;
         /// <summary>Rope radius in metres.</summary>
@@ -47,6 +49,10 @@ namespace HookeRope.Solver
                 Radius = Radius,
                 YoungsModulus = YoungsModulus,
                 Density = Density,
+                Damping = 0f,
+                Gravity = new Float3(0f, -9.81f, 0f),
+                Iterations = 1,
+                Tension = TensionModel.TensionOnly,
                 Solver = Solver,
                 Substeps = Substeps,
             };
@@ -118,7 +124,7 @@ namespace HookeRope.Solver
     }
 
     /// <summary>What <see cref="StabilityCase.Run"/> measured.</summary>
-    public struct StabilityResult
+    internal struct StabilityResult
     {
         /// <summary>True when positions, velocities, tensions and energy stayed finite throughout.</summary>
         public bool Finite;
