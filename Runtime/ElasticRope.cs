@@ -133,8 +133,6 @@ namespace HookeRope
         readonly Stopwatch _stopwatch = new Stopwatch();
         Action<RopeBreakEvent> _onCoreBroken;
         Vector3 _origin;
-        float[] _previous = Array.Empty<float>();
-        float[] _current = Array.Empty<float>();
         bool _rebuildPending;
         bool _breakPending;
         Vector3 _breakPosition;
@@ -465,12 +463,6 @@ namespace HookeRope
             _onCoreBroken ??= OnCoreBroken;
             _rope.Broken += _onCoreBroken;
 
-            int n = _rope.ParticleCount * 3;
-            _previous = new float[n];
-            _current = new float[n];
-            CopyPositions(_current);
-            Array.Copy(_current, _previous, n);
-
             IsBroken = false;
             _breakPending = false;
             _rebuildPending = false;
@@ -492,13 +484,11 @@ namespace HookeRope
             _attachments.CopyIn(_rope, _origin);
             _colliderBinding.BeforeStep(_rope, _origin, Reach);
 
-            Array.Copy(_current, _previous, _current.Length);
             _stopwatch.Restart();
             var report = _simulation.Step(deltaTime);
             _stopwatch.Stop();
             StepMilliseconds = (float)_stopwatch.Elapsed.TotalMilliseconds;
             Residual = report.Residual;
-            CopyPositions(_current);
 
             _attachments.ApplyForces(_rope);
             UpdateReadouts();
@@ -525,17 +515,21 @@ namespace HookeRope
         public int GetInterpolatedPositions(float alpha, float[] destination)
         {
             if (_rope == null) return 0;
-            if (destination == null || destination.Length < _current.Length)
+            int particles = _rope.ParticleCount;
+            if (destination == null || destination.Length < particles * 3)
                 throw new ArgumentException("destination must hold 3 × ParticleCount floats", nameof(destination));
-            alpha = alpha < 0f ? 0f : alpha > 1f ? 1f : alpha;
-            for (int i = 0; i < _current.Length; i += 3)
+            for (int i = 0, j = 0; i < particles; i++, j += 3)
             {
-                destination[i] = _origin.x + _previous[i] + (_current[i] - _previous[i]) * alpha;
-                destination[i + 1] = _origin.y + _previous[i + 1] + (_current[i + 1] - _previous[i + 1]) * alpha;
-                destination[i + 2] = _origin.z + _previous[i + 2] + (_current[i + 2] - _previous[i + 2]) * alpha;
+                Vector3 p = _origin + _rope.GetInterpolatedPosition(i, alpha).ToVector3();
+                destination[j] = p.x;
+                destination[j + 1] = p.y;
+                destination[j + 2] = p.z;
             }
-            return _rope.ParticleCount;
+            return particles;
         }
+
+        /// <summary>World position (m) of the origin of the core rope's frame: world = origin + <see cref="Rope.GetPosition"/>.</summary>
+        internal Vector3 SimulationOrigin => _origin;
 
         /// <summary>World position of particle <paramref name="particle"/> after the last step (m).</summary>
         public Vector3 GetParticlePosition(int particle)
@@ -664,19 +658,6 @@ namespace HookeRope
 
         /// <summary>How far the Layer Mask collider query reaches: the rest length stretched to the break strain (or doubled), plus R.</summary>
         ColliderReach Reach => new ColliderReach(m_RestLength * (1f + (m_Fracture ? m_BreakStrain : 1f)), m_Radius);
-
-        void CopyPositions(float[] destination)
-        {
-            var x = _rope.PositionX;
-            var y = _rope.PositionY;
-            var z = _rope.PositionZ;
-            for (int i = 0, j = 0; i < x.Length; i++, j += 3)
-            {
-                destination[j] = x[i];
-                destination[j + 1] = y[i];
-                destination[j + 2] = z[i];
-            }
-        }
 
         void UpdateReadouts()
         {
