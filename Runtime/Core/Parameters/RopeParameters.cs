@@ -1,0 +1,920 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using ConstraintSolverKind = HookeRope.Solver.ConstraintSolverKind;
+using NeckModeKind = HookeRope.Radius.NeckMode;
+using TensionModelKind = HookeRope.Solver.TensionModel;
+
+namespace HookeRope
+{
+    /// <summary>
+    /// The one table of user-facing rope parameters: for each, its name, label, SI unit, valid range, default (the
+    /// component and prefab value), tooltip and lab JSON name. Each parameter is a nested static class of consts, so
+    /// Unity attributes can use them (<c>[Range(RopeParameters.Radius.Min, RopeParameters.Radius.Max)]</c>), and a
+    /// <see cref="ParameterInfo"/> row in <see cref="All"/>. The component, the core settings and the lab parser
+    /// read their ranges and defaults from here; <see cref="Check(float, ParameterInfo)"/> is the setter check and
+    /// <see cref="Clamp(ref float, ParameterInfo)"/> the inspector clamp.
+    /// </summary>
+    public static class RopeParameters
+    {
+        // ---- Material ---------------------------------------------------------------------------------------
+
+        /// <summary>Whether the stiffness is edited as Young's modulus E or as axial stiffness E·A (0 = E, 1 = E·A).</summary>
+        public static class StiffnessInput
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(StiffnessInput);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Stiffness input";
+            /// <summary>Unit (none).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name (none: the lab takes youngsModulus or axialStiffness).</summary>
+            public const string Json = null;
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Edit the stiffness as Young's modulus E (Pa) or as axial stiffness E·A (N); the other follows from A = πR².";
+            /// <summary>Default: 0 = Young's modulus.</summary>
+            public const int Default = 0;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Material, ParameterKind.Enum, 0, 1, Default, Tooltip, Json, true);
+        }
+
+        /// <summary>Young's modulus E in pascals; +∞ = inextensible (core only).</summary>
+        public static class YoungsModulus
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(YoungsModulus);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Young's modulus";
+            /// <summary>Unit.</summary>
+            public const string Unit = "Pa";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "youngsModulus";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Young's modulus E of the rope material (Pa). Polyamide lanyard ≈ 1e8–1e9, steel ≈ 2e11.";
+            /// <summary>Exclusive lower bound in Pa.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound in Pa (finite; the core also accepts +∞).</summary>
+            public const float Max = 1e13f;
+            /// <summary>Default in Pa (polyamide lanyard).</summary>
+            public const float Default = 1.5e8f;
+            /// <summary>The lower bound is exclusive.</summary>
+            public const bool MinExclusive = true;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Material, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true, minExclusive: true, allowsPositiveInfinity: true);
+        }
+
+        /// <summary>Axial stiffness E·A in newtons; +∞ = inextensible (core only).</summary>
+        public static class AxialStiffness
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(AxialStiffness);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Axial stiffness";
+            /// <summary>Unit.</summary>
+            public const string Unit = "N";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "axialStiffness";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Axial stiffness E·A (N): force per unit strain. Used when the stiffness input is Axial Stiffness.";
+            /// <summary>Exclusive lower bound in N.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound in N (finite; the core also accepts +∞).</summary>
+            public const float Max = 1e12f;
+            /// <summary>Default in N: the default E times π·R² of the default radius (1.5e8 Pa · π · (0.008 m)²).</summary>
+            public const float Default = 30159f;
+            /// <summary>The lower bound is exclusive.</summary>
+            public const bool MinExclusive = true;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Material, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true, minExclusive: true, allowsPositiveInfinity: true);
+        }
+
+        /// <summary>Material density ρ in kg/m³.</summary>
+        public static class Density
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(Density);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Density";
+            /// <summary>Unit.</summary>
+            public const string Unit = "kg/m³";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "density";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Material density ρ (kg/m³); rope mass per metre = ρ·πR². Polyamide ≈ 1140, steel ≈ 7850.";
+            /// <summary>Exclusive lower bound in kg/m³.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound in kg/m³.</summary>
+            public const float Max = 1e5f;
+            /// <summary>Default in kg/m³ (polyamide).</summary>
+            public const float Default = 1140f;
+            /// <summary>The lower bound is exclusive.</summary>
+            public const bool MinExclusive = true;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Material, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true, minExclusive: true);
+        }
+
+        /// <summary>Mass per unit rest length μ = ρ·π·R² in kg/m (core and lab; the inspector edits ρ).</summary>
+        public static class LinearDensity
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(LinearDensity);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Linear density";
+            /// <summary>Unit.</summary>
+            public const string Unit = "kg/m";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "linearDensity";
+            /// <summary>Tooltip.</summary>
+            public const string Tooltip = "Rope mass per metre of rest length μ (kg/m); setting it sets ρ = μ/(πR²).";
+            /// <summary>Exclusive lower bound in kg/m.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound in kg/m.</summary>
+            public const float Max = 1e4f;
+            /// <summary>Default in kg/m: the default ρ times π·R² of the default radius (1140 · π · (0.008 m)²).</summary>
+            public const float Default = 0.22921059f;
+            /// <summary>The lower bound is exclusive.</summary>
+            public const bool MinExclusive = true;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Material, ParameterKind.Float, Min, Max, Default, Tooltip, Json, false, minExclusive: true);
+        }
+
+        /// <summary>Poisson ratio ν (dimensionless); 0.5 keeps the volume.</summary>
+        public static class PoissonRatio
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(PoissonRatio);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Poisson ratio";
+            /// <summary>Unit (dimensionless).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "poissonRatio";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Poisson ratio ν (dimensionless, −1 to 0.5): how much the rope thins as it stretches. 0.5 keeps the volume; negative values thicken (auxetic).";
+            /// <summary>Lower bound.</summary>
+            public const float Min = -1f;
+            /// <summary>Upper bound.</summary>
+            public const float Max = 0.5f;
+            /// <summary>Default.</summary>
+            public const float Default = 0.3f;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Material, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
+        }
+
+        /// <summary>XPBD constraint damping β in seconds.</summary>
+        public static class Damping
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(Damping);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Damping";
+            /// <summary>Unit.</summary>
+            public const string Unit = "s";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "damping";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "XPBD constraint damping β (s): removes axial vibration without moving the static sag. 0 = undamped.";
+            /// <summary>Lower bound in s.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound in s.</summary>
+            public const float Max = 10f;
+            /// <summary>Default in s.</summary>
+            public const float Default = 0.002f;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Material, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
+        }
+
+        // ---- Geometry ---------------------------------------------------------------------------------------
+
+        /// <summary>Rest (unstretched) length L in metres.</summary>
+        public static class RestLength
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(RestLength);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Rest length";
+            /// <summary>Unit.</summary>
+            public const string Unit = "m";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "restLength";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Rest (unstretched) length L (m).";
+            /// <summary>Lower bound in m.</summary>
+            public const float Min = 0.01f;
+            /// <summary>Upper bound in m.</summary>
+            public const float Max = 10000f;
+            /// <summary>Default in m.</summary>
+            public const float Default = 2f;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Geometry, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
+        }
+
+        /// <summary>Rest radius R of the cross-section in metres.</summary>
+        public static class Radius
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(Radius);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Radius";
+            /// <summary>Unit.</summary>
+            public const string Unit = "m";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "radius";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Rest radius R (m) of the rope's cross-section.";
+            /// <summary>Exclusive lower bound in m.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound in m.</summary>
+            public const float Max = 1f;
+            /// <summary>Default in m (a 16 mm rope).</summary>
+            public const float Default = 0.008f;
+            /// <summary>The lower bound is exclusive.</summary>
+            public const bool MinExclusive = true;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Geometry, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true, minExclusive: true);
+        }
+
+        /// <summary>Number of segments (particles = segments + 1).</summary>
+        public static class SegmentCount
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(SegmentCount);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Segment count";
+            /// <summary>Unit (a count).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "segments";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Number of segments (particles = segments + 1). Changing it during Play rebuilds the rope.";
+            /// <summary>Lower bound.</summary>
+            public const int Min = 1;
+            /// <summary>Upper bound.</summary>
+            public const int Max = 10000;
+            /// <summary>Default.</summary>
+            public const int Default = 24;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Geometry, ParameterKind.Int, Min, Max, Default, Tooltip, Json, true);
+        }
+
+        // ---- Solver -----------------------------------------------------------------------------------------
+
+        /// <summary>The constraint solver (Gauss–Seidel or exact chain).</summary>
+        public static class Solver
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(Solver);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Solver";
+            /// <summary>Unit (none).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name (in the solver object: exact-chain or gauss-seidel).</summary>
+            public const string Json = "method";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Exact Chain solves the whole chain at once each iteration (right stretch under heavy loads); Gauss-Seidel is cheaper per iteration but stretches under heavy loads.";
+            /// <summary>Default.</summary>
+            public const ConstraintSolverKind Default = ConstraintSolverKind.ExactChain;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Solver, ParameterKind.Enum, (int)ConstraintSolverKind.GaussSeidel, (int)ConstraintSolverKind.ExactChain, (int)Default, Tooltip, Json, true);
+        }
+
+        /// <summary>Substeps per host (physics) step.</summary>
+        public static class Substeps
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(Substeps);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Substeps";
+            /// <summary>Unit (a count).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "substeps";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Substeps per physics step (1–1000). More substeps = stiffer, more accurate, slower.";
+            /// <summary>Lower bound.</summary>
+            public const int Min = 1;
+            /// <summary>Upper bound.</summary>
+            public const int Max = 1000;
+            /// <summary>Default.</summary>
+            public const int Default = 8;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Solver, ParameterKind.Int, Min, Max, Default, Tooltip, Json, true);
+        }
+
+        /// <summary>Constraint iterations per substep.</summary>
+        public static class Iterations
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(Iterations);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Iterations";
+            /// <summary>Unit (a count).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "iterations";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Constraint iterations per substep (1–1000).";
+            /// <summary>Lower bound.</summary>
+            public const int Min = 1;
+            /// <summary>Upper bound.</summary>
+            public const int Max = 1000;
+            /// <summary>Default.</summary>
+            public const int Default = 1;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Solver, ParameterKind.Int, Min, Max, Default, Tooltip, Json, true);
+        }
+
+        /// <summary>Rope (tension only) or rod (bilateral).</summary>
+        public static class TensionModel
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(TensionModel);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Tension model";
+            /// <summary>Unit (none).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name (in the solver object: tension-only or bilateral).</summary>
+            public const string Json = "tension";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Tension Only: a rope pulls but never pushes. Bilateral: a rod that also pushes.";
+            /// <summary>Default.</summary>
+            public const TensionModelKind Default = TensionModelKind.TensionOnly;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Solver, ParameterKind.Enum, (int)TensionModelKind.TensionOnly, (int)TensionModelKind.Bilateral, (int)Default, Tooltip, Json, true);
+        }
+
+        /// <summary>Gravity acceleration acting on the rope in m/s²; each component finite.</summary>
+        public static class Gravity
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(Gravity);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Gravity";
+            /// <summary>Unit.</summary>
+            public const string Unit = "m/s²";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "gravity";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Gravity acting on the rope (m/s²).";
+            /// <summary>Lower bound of each component in m/s².</summary>
+            public const float Min = -1000f;
+            /// <summary>Upper bound of each component in m/s².</summary>
+            public const float Max = 1000f;
+            /// <summary>Default x component in m/s².</summary>
+            public const float DefaultX = 0f;
+            /// <summary>Default y component in m/s² (standard gravity, down).</summary>
+            public const float DefaultY = -9.81f;
+            /// <summary>Default z component in m/s².</summary>
+            public const float DefaultZ = 0f;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Solver, ParameterKind.Vector, Min, Max, double.NaN, Tooltip, Json, true, defaultComponents: new[] { DefaultX, DefaultY, DefaultZ });
+        }
+
+        // ---- Attachments and collisions ---------------------------------------------------------------------
+
+        /// <summary>Compliance of the Transform (kinematic) attachments in m/N; 0 = rigid.</summary>
+        public static class AttachmentCompliance
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(AttachmentCompliance);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Attachment compliance";
+            /// <summary>Unit.</summary>
+            public const string Unit = "m/N";
+            /// <summary>Lab JSON name (in an attachment object).</summary>
+            public const string Json = "compliance";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Compliance of the Transform attachments (m/N); 0 = rigid.";
+            /// <summary>Lower bound in m/N.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound in m/N.</summary>
+            public const float Max = 1f;
+            /// <summary>Default in m/N (rigid).</summary>
+            public const float Default = 0f;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Attachments, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
+        }
+
+        /// <summary>Coulomb friction coefficient μ between rope and colliders (dimensionless).</summary>
+        public static class Friction
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(Friction);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Friction";
+            /// <summary>Unit (dimensionless).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name (in a collider object).</summary>
+            public const string Json = "friction";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Coulomb friction coefficient μ between rope and colliders (dimensionless, 0–2).";
+            /// <summary>Lower bound.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound.</summary>
+            public const float Max = 10f;
+            /// <summary>Default.</summary>
+            public const float Default = 0.3f;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Collisions, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
+        }
+
+        // ---- Radius -----------------------------------------------------------------------------------------
+
+        /// <summary>Poisson thinning on: the radius follows the strain (eq. 16).</summary>
+        public static class PoissonThinning
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(PoissonThinning);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Poisson thinning";
+            /// <summary>Unit (none).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "poissonThinning";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Thin the rope as it stretches (Poisson ratio). Off costs nothing; the radius stays R.";
+            /// <summary>Default.</summary>
+            public const bool Default = true;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Radius, ParameterKind.Bool, 0, 1, 1, Tooltip, Json, true);
+        }
+
+        /// <summary>Necking on: a neck forms at the defect once the radius falls below r_min.</summary>
+        public static class Necking
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(Necking);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Necking";
+            /// <summary>Unit (none).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "necking";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Form a neck at the defect once the radius falls below r_min. Needs the radius model.";
+            /// <summary>Default.</summary>
+            public const bool Default = true;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Radius, ParameterKind.Bool, 0, 1, 1, Tooltip, Json, true);
+        }
+
+        /// <summary>The neck model used when necking is on (Paper = 1, Zone = 2).</summary>
+        public static class NeckMode
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(NeckMode);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Neck mode";
+            /// <summary>Unit (none).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name (zone or paper).</summary>
+            public const string Json = "neckMode";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Zone: a neck over a few diameters around the defect that deepens smoothly (default). Paper: Chen et al.'s hyperbola over the whole length (eq. 18); at onset the waist jumps to about 2·r_min²/l.";
+            /// <summary>Default.</summary>
+            public const NeckModeKind Default = NeckModeKind.Zone;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Radius, ParameterKind.Enum, (int)NeckModeKind.Paper, (int)NeckModeKind.Zone, (int)Default, Tooltip, Json, true);
+        }
+
+        /// <summary>Neck onset radius r_min as a fraction of the rest radius R (dimensionless).</summary>
+        public static class NeckRadiusFraction
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(NeckRadiusFraction);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Neck radius fraction r_min/R";
+            /// <summary>Unit (dimensionless).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "neckRadiusFraction";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Neck onset radius r_min as a fraction of the rest radius R (dimensionless, 0.01–1).";
+            /// <summary>Lower bound.</summary>
+            public const float Min = 0.01f;
+            /// <summary>Upper bound.</summary>
+            public const float Max = 1f;
+            /// <summary>Default.</summary>
+            public const float Default = 0.75f;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Radius, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
+        }
+
+        /// <summary>Defect position as a fraction of the rest length from the start (dimensionless).</summary>
+        public static class DefectPosition
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(DefectPosition);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Defect position";
+            /// <summary>Unit (dimensionless).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "defectPosition";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Where the material defect sits, as a fraction of the rest length from the start (0–1). The neck and the break form there.";
+            /// <summary>Lower bound.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound.</summary>
+            public const float Max = 1f;
+            /// <summary>Default (the middle).</summary>
+            public const float Default = 0.5f;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Radius, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
+        }
+
+        /// <summary>Zone mode: rest length of the neck zone in rope diameters 2R (dimensionless; core only).</summary>
+        public static class NeckZoneDiameters
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(NeckZoneDiameters);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Neck zone diameters";
+            /// <summary>Unit (rope diameters).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name (none).</summary>
+            public const string Json = null;
+            /// <summary>Tooltip.</summary>
+            public const string Tooltip = "Zone mode: rest length of the neck zone in rope diameters 2R, centred on the defect.";
+            /// <summary>Lower bound.</summary>
+            public const float Min = 0.5f;
+            /// <summary>Upper bound.</summary>
+            public const float Max = 1000f;
+            /// <summary>Default (a zone of 8·R).</summary>
+            public const float Default = 4f;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Radius, ParameterKind.Float, Min, Max, Default, Tooltip, Json, false);
+        }
+
+        /// <summary>Zone mode: strain beyond onset over which the neck deepens to the full hyperbola (dimensionless; core only).</summary>
+        public static class NeckGrowthStrain
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(NeckGrowthStrain);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Neck growth strain";
+            /// <summary>Unit (dimensionless).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name (none).</summary>
+            public const string Json = null;
+            /// <summary>Tooltip.</summary>
+            public const string Tooltip = "Zone mode: strain beyond onset over which the neck deepens from zero to the full hyperbola.";
+            /// <summary>Exclusive lower bound.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound.</summary>
+            public const float Max = 100f;
+            /// <summary>Default.</summary>
+            public const float Default = 0.2f;
+            /// <summary>The lower bound is exclusive.</summary>
+            public const bool MinExclusive = true;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Radius, ParameterKind.Float, Min, Max, Default, Tooltip, Json, false, minExclusive: true);
+        }
+
+        /// <summary>A segment shorter than its rest length keeps the rest radius (core only).</summary>
+        public static class SlackKeepsRestRadius
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(SlackKeepsRestRadius);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Slack keeps rest radius";
+            /// <summary>Unit (none).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name (none).</summary>
+            public const string Json = null;
+            /// <summary>Tooltip.</summary>
+            public const string Tooltip = "A segment shorter than its rest length keeps the rest radius: a tension-only rope goes slack instead of being compressed.";
+            /// <summary>Default.</summary>
+            public const bool Default = true;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Radius, ParameterKind.Bool, 0, 1, 1, Tooltip, Json, false);
+        }
+
+        // ---- Fracture ---------------------------------------------------------------------------------------
+
+        /// <summary>Fracture on: the rope can break at the defect.</summary>
+        public static class Fracture
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(Fracture);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Fracture";
+            /// <summary>Unit (none).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "fracture";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Let the rope break. Off costs nothing.";
+            /// <summary>Default.</summary>
+            public const bool Default = true;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Fracture, ParameterKind.Bool, 0, 1, 1, Tooltip, Json, true);
+        }
+
+        /// <summary>Strain l/L − 1 of the defect segment at which the rope breaks (dimensionless).</summary>
+        public static class BreakStrain
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(BreakStrain);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Break strain";
+            /// <summary>Unit (dimensionless).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "breakStrain";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Break threshold: the strain l/L − 1 (dimensionless) of the defect segment at which the rope breaks.";
+            /// <summary>Exclusive lower bound.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound.</summary>
+            public const float Max = 1000f;
+            /// <summary>Default.</summary>
+            public const float Default = 0.6f;
+            /// <summary>The lower bound is exclusive.</summary>
+            public const bool MinExclusive = true;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Fracture, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true, minExclusive: true);
+        }
+
+        /// <summary>The rope also breaks when the neck radius falls below this fraction of R (dimensionless; 0 = off; needs necking).</summary>
+        public static class BreakRadiusFraction
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(BreakRadiusFraction);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Break radius fraction";
+            /// <summary>Unit (dimensionless).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "breakRadiusFraction";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "The rope also breaks when the neck radius falls below this fraction of R (dimensionless, 0–0.99; 0 = off). Needs necking.";
+            /// <summary>Lower bound.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound.</summary>
+            public const float Max = 0.99f;
+            /// <summary>Default.</summary>
+            public const float Default = 0.25f;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Fracture, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
+        }
+
+        // ---- Mesh -------------------------------------------------------------------------------------------
+
+        /// <summary>Vertices around the tube.</summary>
+        public static class RadialSegments
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(RadialSegments);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Radial segments";
+            /// <summary>Unit (a count).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "radialSegments";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Vertices around the tube (3–64). 8 is cheap, 16 smooth, 32 for close-ups.";
+            /// <summary>Lower bound.</summary>
+            public const int Min = 3;
+            /// <summary>Upper bound.</summary>
+            public const int Max = 64;
+            /// <summary>Default.</summary>
+            public const int Default = 12;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Mesh, ParameterKind.Int, Min, Max, Default, Tooltip, Json, true);
+        }
+
+        /// <summary>Rings per rope segment along the smooth curve (core only).</summary>
+        public static class RingsPerSegment
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(RingsPerSegment);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Rings per segment";
+            /// <summary>Unit (a count).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name (none).</summary>
+            public const string Json = null;
+            /// <summary>Tooltip.</summary>
+            public const string Tooltip = "Rings per rope segment along the smooth curve.";
+            /// <summary>Lower bound.</summary>
+            public const int Min = 1;
+            /// <summary>Upper bound.</summary>
+            public const int Max = 64;
+            /// <summary>Default.</summary>
+            public const int Default = 4;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Mesh, ParameterKind.Int, Min, Max, Default, Tooltip, Json, false);
+        }
+
+        /// <summary>Texture v per metre of rest arc length in 1/m (core only).</summary>
+        public static class VPerMetre
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(VPerMetre);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Texture v per metre";
+            /// <summary>Unit.</summary>
+            public const string Unit = "1/m";
+            /// <summary>Lab JSON name (none).</summary>
+            public const string Json = null;
+            /// <summary>Tooltip.</summary>
+            public const string Tooltip = "Texture v per metre of rest arc length (1/m); the texture stretches with the material.";
+            /// <summary>Exclusive lower bound in 1/m.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound in 1/m.</summary>
+            public const float Max = 10000f;
+            /// <summary>Default in 1/m.</summary>
+            public const float Default = 10f;
+            /// <summary>The lower bound is exclusive.</summary>
+            public const bool MinExclusive = true;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Mesh, ParameterKind.Float, Min, Max, Default, Tooltip, Json, false, minExclusive: true);
+        }
+
+        /// <summary>Close the two intact ends with flat caps (core only).</summary>
+        public static class CapEnds
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(CapEnds);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Cap ends";
+            /// <summary>Unit (none).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name (none).</summary>
+            public const string Json = null;
+            /// <summary>Tooltip.</summary>
+            public const string Tooltip = "Close the two intact ends of the rope with flat caps (the intact mesh is then watertight). Broken ends are always closed.";
+            /// <summary>Default.</summary>
+            public const bool Default = true;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Mesh, ParameterKind.Bool, 0, 1, 1, Tooltip, Json, false);
+        }
+
+        /// <summary>Seed of the burr strands at broken ends (core <c>BurrSettings.Seed</c>, lab <c>seed</c>).</summary>
+        public static class BurrSeed
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(BurrSeed);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Burr seed";
+            /// <summary>Unit (none).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "seed";
+            /// <summary>Tooltip.</summary>
+            public const string Tooltip = "Seed of the burr strand lengths and directions; the same seed gives the same burr.";
+            /// <summary>Lower bound.</summary>
+            public const int Min = 0;
+            /// <summary>Upper bound.</summary>
+            public const int Max = int.MaxValue;
+            /// <summary>Default.</summary>
+            public const int Default = 1;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Mesh, ParameterKind.Int, Min, Max, Default, Tooltip, Json, false);
+        }
+
+        /// <summary>Generate the burr-strand material with the procedural burr texture (renderer).</summary>
+        public static class BurrTexture
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(BurrTexture);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Burr texture";
+            /// <summary>Unit (none).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name (none).</summary>
+            public const string Json = null;
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Generate the burr-strand material with the procedural burr texture when the renderer has no second material.";
+            /// <summary>Default.</summary>
+            public const bool Default = true;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Mesh, ParameterKind.Bool, 0, 1, 1, Tooltip, Json, true);
+        }
+
+        /// <summary>Colour of the generated tube material (renderer), RGBA in [0, 1].</summary>
+        public static class Color
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(Color);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Colour";
+            /// <summary>Unit (none).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name (none).</summary>
+            public const string Json = null;
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Colour of the generated tube material (used only when the renderer has no material). Safety orange by default.";
+            /// <summary>Lower bound of each channel.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound of each channel.</summary>
+            public const float Max = 1f;
+            /// <summary>Default red channel (safety orange).</summary>
+            public const float DefaultR = 0.93f;
+            /// <summary>Default green channel.</summary>
+            public const float DefaultG = 0.5f;
+            /// <summary>Default blue channel.</summary>
+            public const float DefaultB = 0.12f;
+            /// <summary>Default alpha channel.</summary>
+            public const float DefaultA = 1f;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Mesh, ParameterKind.Color, Min, Max, double.NaN, Tooltip, Json, true, defaultComponents: new[] { DefaultR, DefaultG, DefaultB, DefaultA });
+        }
+
+        // ---- The table and its checks -----------------------------------------------------------------------
+
+        /// <summary>Every row, grouped in inspector order.</summary>
+        public static IReadOnlyList<ParameterInfo> All { get; } = new[]
+        {
+            StiffnessInput.Row, YoungsModulus.Row, AxialStiffness.Row, Density.Row, LinearDensity.Row, PoissonRatio.Row, Damping.Row,
+            RestLength.Row, Radius.Row, SegmentCount.Row,
+            Solver.Row, Substeps.Row, Iterations.Row, TensionModel.Row, Gravity.Row,
+            AttachmentCompliance.Row,
+            Friction.Row,
+            PoissonThinning.Row, Necking.Row, NeckMode.Row, NeckRadiusFraction.Row, DefectPosition.Row, NeckZoneDiameters.Row, NeckGrowthStrain.Row, SlackKeepsRestRadius.Row,
+            Fracture.Row, BreakStrain.Row, BreakRadiusFraction.Row,
+            RadialSegments.Row, RingsPerSegment.Row, VPerMetre.Row, CapEnds.Row, BurrSeed.Row, BurrTexture.Row, Color.Row,
+        };
+
+        /// <summary>The row named <paramref name="name"/> (ordinal), or null.</summary>
+        public static ParameterInfo Find(string name)
+        {
+            var all = All;
+            for (int i = 0; i < all.Count; i++)
+                if (string.Equals(all[i].Name, name, StringComparison.Ordinal)) return all[i];
+            return null;
+        }
+
+        /// <summary>True when <paramref name="value"/> lies in the row's range (+∞ only where the row allows it; never NaN).</summary>
+        public static bool Contains(ParameterInfo row, double value)
+        {
+            if (row == null) throw new ArgumentNullException(nameof(row));
+            if (double.IsNaN(value)) return false;
+            if (double.IsPositiveInfinity(value)) return row.AllowsPositiveInfinity;
+            return (row.MinExclusive ? value > row.Min : value >= row.Min) && value <= row.Max;
+        }
+
+        /// <summary>
+        /// Returns <paramref name="value"/>, or throws <see cref="ArgumentOutOfRangeException"/> whose message names the
+        /// parameter, its range and unit, e.g. "RestLength must be in [0.01, 10000] m.".
+        /// </summary>
+        public static float Check(float value, ParameterInfo row)
+        {
+            if (!Contains(row, value)) throw OutOfRange(row, value);
+            return value;
+        }
+
+        /// <summary>Integer variant of <see cref="Check(float, ParameterInfo)"/>.</summary>
+        public static int Check(int value, ParameterInfo row)
+        {
+            if (!Contains(row, value)) throw OutOfRange(row, value);
+            return value;
+        }
+
+        /// <summary>
+        /// Clamps <paramref name="value"/> into the row's finite range for the inspector: above Max (or +∞) becomes Max,
+        /// below Min becomes Min, and NaN or a value at or below an exclusive Min becomes the row's Default. Returns the
+        /// message to log when it had to change the value (naming the label, range and unit), else null.
+        /// </summary>
+        public static string Clamp(ref float value, ParameterInfo row)
+        {
+            if (row == null) throw new ArgumentNullException(nameof(row));
+            float before = value;
+            if (float.IsNaN(value)) value = (float)row.Default;
+            else if (value > row.Max) value = (float)row.Max;
+            else if (row.MinExclusive ? value <= row.Min : value < row.Min) value = row.MinExclusive ? (float)row.Default : (float)row.Min;
+            if (before.Equals(value)) return null;
+            return Message(row, Format(before), Format(value));
+        }
+
+        /// <summary>Integer variant of <see cref="Clamp(ref float, ParameterInfo)"/>.</summary>
+        public static string Clamp(ref int value, ParameterInfo row)
+        {
+            if (row == null) throw new ArgumentNullException(nameof(row));
+            int before = value;
+            if (value > row.Max) value = (int)row.Max;
+            else if (row.MinExclusive ? value <= row.Min : value < row.Min) value = row.MinExclusive ? (int)row.Default : (int)row.Min;
+            if (before == value) return null;
+            return Message(row, before.ToString(CultureInfo.InvariantCulture), value.ToString(CultureInfo.InvariantCulture));
+        }
+
+        internal static string FormatRange(ParameterInfo row)
+        {
+            string min = row.Kind == ParameterKind.Int ? ((long)row.Min).ToString(CultureInfo.InvariantCulture) : Format((float)row.Min);
+            string max = row.Kind == ParameterKind.Int ? ((long)row.Max).ToString(CultureInfo.InvariantCulture) : Format((float)row.Max);
+            if (row.AllowsPositiveInfinity) max += " or +inf";
+            return (row.MinExclusive ? "(" : "[") + min + ", " + max + "]" + Suffix(row.Unit);
+        }
+
+        static ArgumentOutOfRangeException OutOfRange(ParameterInfo row, object value) =>
+            new ArgumentOutOfRangeException(row.Name, value, row.Name + " must be in " + FormatRange(row) + ".");
+
+        static string Message(ParameterInfo row, string before, string after) =>
+            row.Label + " = " + before + Suffix(row.Unit) + " is outside " + FormatRange(row) + "; clamped to " + after + Suffix(row.Unit) + ".";
+
+        static string Format(float value) => value.ToString(CultureInfo.InvariantCulture);
+
+        static string Suffix(string unit) => string.IsNullOrEmpty(unit) ? "" : " " + unit;
+    }
+}
