@@ -24,49 +24,49 @@ namespace HookeRope
         public const string DocumentationUrl = "https://github.com/hookerope/com.hookerope.elastic-rope/blob/main/Documentation~/index.md";
 
         // ---- Material -------------------------------------------------------------------------------------
-        [SerializeField, Tooltip("Edit the stiffness as Young's modulus E (Pa) or as axial stiffness E·A (N); the other follows from A = πR².")]
-        RopeStiffnessInput m_StiffnessInput = RopeStiffnessInput.YoungsModulus;
+        [SerializeField, Tooltip(RopeParameters.StiffnessInput.Tooltip)]
+        RopeStiffnessInput m_StiffnessInput = (RopeStiffnessInput)RopeParameters.StiffnessInput.Default;
 
-        [SerializeField, Tooltip("Young's modulus E of the rope material (Pa). Polyamide lanyard ≈ 1e8–1e9, steel ≈ 2e11.")]
-        float m_YoungsModulus = 1.5e8f;
+        [SerializeField, Tooltip(RopeParameters.YoungsModulus.Tooltip)]
+        float m_YoungsModulus = RopeParameters.YoungsModulus.Default;
 
-        [SerializeField, Tooltip("Axial stiffness E·A (N): force per unit strain. Used when the stiffness input is Axial Stiffness.")]
-        float m_AxialStiffness = 30159f;
+        [SerializeField, Tooltip(RopeParameters.AxialStiffness.Tooltip)]
+        float m_AxialStiffness = RopeParameters.AxialStiffness.Default;
 
-        [SerializeField, Tooltip("Material density ρ (kg/m³); rope mass per metre = ρ·πR². Polyamide ≈ 1140, steel ≈ 7850.")]
-        float m_Density = 1140f;
+        [SerializeField, Tooltip(RopeParameters.Density.Tooltip)]
+        float m_Density = RopeParameters.Density.Default;
 
-        [SerializeField, Range(RopeParameterLimits.MinPoisson, RopeParameterLimits.MaxPoisson), Tooltip("Poisson ratio ν (dimensionless, −1 to 0.5): how much the rope thins as it stretches. 0.5 keeps the volume; negative values thicken (auxetic).")]
-        float m_PoissonRatio = 0.3f;
+        [SerializeField, Range(RopeParameters.PoissonRatio.Min, RopeParameters.PoissonRatio.Max), Tooltip(RopeParameters.PoissonRatio.Tooltip)]
+        float m_PoissonRatio = RopeParameters.PoissonRatio.Default;
 
-        [SerializeField, Tooltip("XPBD constraint damping β (s): removes axial vibration without moving the static sag. 0 = undamped.")]
-        float m_Damping = 0.002f;
+        [SerializeField, Tooltip(RopeParameters.Damping.Tooltip)]
+        float m_Damping = RopeParameters.Damping.Default;
 
         // ---- Geometry -------------------------------------------------------------------------------------
-        [SerializeField, Tooltip("Rest (unstretched) length L (m).")]
-        float m_RestLength = 2f;
+        [SerializeField, Tooltip(RopeParameters.RestLength.Tooltip)]
+        float m_RestLength = RopeParameters.RestLength.Default;
 
-        [SerializeField, Tooltip("Rest radius R (m) of the rope's cross-section.")]
-        float m_Radius = 0.008f;
+        [SerializeField, Tooltip(RopeParameters.Radius.Tooltip)]
+        float m_Radius = RopeParameters.Radius.Default;
 
-        [SerializeField, Tooltip("Number of segments (particles = segments + 1). Changing it during Play rebuilds the rope.")]
-        int m_SegmentCount = 24;
+        [SerializeField, Tooltip(RopeParameters.SegmentCount.Tooltip)]
+        int m_SegmentCount = RopeParameters.SegmentCount.Default;
 
         // ---- Solver ---------------------------------------------------------------------------------------
-        [SerializeField, Tooltip("Exact Chain solves the whole chain at once each iteration (right stretch under heavy loads); Gauss-Seidel is cheaper per iteration but stretches under heavy loads.")]
-        ConstraintSolverKind m_Solver = ConstraintSolverKind.ExactChain;
+        [SerializeField, Tooltip(RopeParameters.Solver.Tooltip)]
+        ConstraintSolverKind m_Solver = RopeParameters.Solver.Default;
 
-        [SerializeField, Tooltip("Substeps per physics step (1–1000). More substeps = stiffer, more accurate, slower.")]
-        int m_Substeps = 8;
+        [SerializeField, Tooltip(RopeParameters.Substeps.Tooltip)]
+        int m_Substeps = RopeParameters.Substeps.Default;
 
-        [SerializeField, Tooltip("Constraint iterations per substep (1–1000).")]
-        int m_Iterations = 1;
+        [SerializeField, Tooltip(RopeParameters.Iterations.Tooltip)]
+        int m_Iterations = RopeParameters.Iterations.Default;
 
-        [SerializeField, Tooltip("Tension Only: a rope pulls but never pushes. Bilateral: a rod that also pushes.")]
-        TensionModel m_TensionModel = TensionModel.TensionOnly;
+        [SerializeField, Tooltip(RopeParameters.TensionModel.Tooltip)]
+        TensionModel m_TensionModel = RopeParameters.TensionModel.Default;
 
-        [SerializeField, Tooltip("Gravity acting on the rope (m/s²).")]
-        Vector3 m_Gravity = new Vector3(0f, -9.81f, 0f);
+        [SerializeField, Tooltip(RopeParameters.Gravity.Tooltip)]
+        Vector3 m_Gravity = new Vector3(RopeParameters.Gravity.DefaultX, RopeParameters.Gravity.DefaultY, RopeParameters.Gravity.DefaultZ);
 
         // ---- Attachments ----------------------------------------------------------------------------------
         [SerializeField, Tooltip("Start of the rope (first particle): a Transform to follow, a Rigidbody to pull two-way, or nothing.")]
@@ -75,8 +75,8 @@ namespace HookeRope
         [SerializeField, Tooltip("End of the rope (last particle): a Transform to follow, a Rigidbody to pull two-way (e.g. a harness D-ring), or nothing.")]
         RopeEnd m_End = new RopeEnd();
 
-        [SerializeField, Tooltip("Compliance of the Transform attachments (m/N); 0 = rigid.")]
-        float m_AttachmentCompliance;
+        [SerializeField, Tooltip(RopeParameters.AttachmentCompliance.Tooltip)]
+        float m_AttachmentCompliance = RopeParameters.AttachmentCompliance.Default;
 
         // ---- Collisions -----------------------------------------------------------------------------------
         [SerializeField, Tooltip("Off costs nothing. Listed Colliders: the colliders and planes below. Layer Mask: Sphere/Capsule/Box colliders on these layers within the rope's reach, re-queried every physics step.")]
@@ -91,33 +91,33 @@ namespace HookeRope
         [SerializeField, Tooltip("Infinite planes the rope stays above: each Transform's position is a point on the plane, its up axis the normal.")]
         Transform[] m_Planes = Array.Empty<Transform>();
 
-        [SerializeField, Tooltip("Coulomb friction coefficient μ between rope and colliders (dimensionless, 0–2).")]
-        float m_Friction = 0.3f;
+        [SerializeField, Tooltip(RopeParameters.Friction.Tooltip)]
+        float m_Friction = RopeParameters.Friction.Default;
 
         // ---- Radius, necking and fracture -----------------------------------------------------------------
-        [SerializeField, Tooltip("Thin the rope as it stretches (Poisson ratio). Off costs nothing; the radius stays R.")]
-        bool m_RadiusModel = true;
+        [SerializeField, Tooltip(RopeParameters.PoissonThinning.Tooltip)]
+        bool m_RadiusModel = RopeParameters.PoissonThinning.Default;
 
-        [SerializeField, Tooltip("Form a neck at the defect once the radius falls below r_min. Needs the radius model.")]
-        bool m_Necking = true;
+        [SerializeField, Tooltip(RopeParameters.Necking.Tooltip)]
+        bool m_Necking = RopeParameters.Necking.Default;
 
-        [SerializeField, Tooltip("Zone: a neck over a few diameters around the defect that deepens smoothly (default). Paper: Chen et al.'s hyperbola over the whole length (eq. 18); at onset the waist jumps to about 2·r_min²/l.")]
-        NeckMode m_NeckMode = NeckMode.Zone;
+        [SerializeField, Tooltip(RopeParameters.NeckMode.Tooltip)]
+        NeckMode m_NeckMode = RopeParameters.NeckMode.Default;
 
-        [SerializeField, Range(RopeParameterLimits.MinNeckFraction, RopeParameterLimits.MaxNeckFraction), Tooltip("Neck onset radius r_min as a fraction of the rest radius R (dimensionless, 0.01–1).")]
-        float m_NeckRadiusFraction = 0.75f;
+        [SerializeField, Range(RopeParameters.NeckRadiusFraction.Min, RopeParameters.NeckRadiusFraction.Max), Tooltip(RopeParameters.NeckRadiusFraction.Tooltip)]
+        float m_NeckRadiusFraction = RopeParameters.NeckRadiusFraction.Default;
 
-        [SerializeField, Range(RopeParameterLimits.MinDefectPosition, RopeParameterLimits.MaxDefectPosition), Tooltip("Where the material defect sits, as a fraction of the rest length from the start (0–1). The neck and the break form there.")]
-        float m_DefectPosition = 0.5f;
+        [SerializeField, Range(RopeParameters.DefectPosition.Min, RopeParameters.DefectPosition.Max), Tooltip(RopeParameters.DefectPosition.Tooltip)]
+        float m_DefectPosition = RopeParameters.DefectPosition.Default;
 
-        [SerializeField, Tooltip("Let the rope break. Off costs nothing.")]
-        bool m_Fracture = true;
+        [SerializeField, Tooltip(RopeParameters.Fracture.Tooltip)]
+        bool m_Fracture = RopeParameters.Fracture.Default;
 
-        [SerializeField, Tooltip("Break threshold: the strain l/L − 1 (dimensionless) of the defect segment at which the rope breaks.")]
-        float m_BreakStrain = 0.6f;
+        [SerializeField, Tooltip(RopeParameters.BreakStrain.Tooltip)]
+        float m_BreakStrain = RopeParameters.BreakStrain.Default;
 
-        [SerializeField, Range(RopeParameterLimits.MinBreakRadiusFraction, RopeParameterLimits.MaxBreakRadiusFraction), Tooltip("The rope also breaks when the neck radius falls below this fraction of R (dimensionless, 0–0.99; 0 = off). Needs necking.")]
-        float m_BreakRadiusFraction = 0.25f;
+        [SerializeField, Range(RopeParameters.BreakRadiusFraction.Min, RopeParameters.BreakRadiusFraction.Max), Tooltip(RopeParameters.BreakRadiusFraction.Tooltip)]
+        float m_BreakRadiusFraction = RopeParameters.BreakRadiusFraction.Default;
 
         // ---- Events ---------------------------------------------------------------------------------------
         [SerializeField, Tooltip("Raised when the rope breaks, with the break position (world, m) and the peak tension just before it (N).")]
@@ -194,82 +194,82 @@ namespace HookeRope
         public int ParticleCount => _rope?.ParticleCount ?? 0;
 
         // ---- Settings properties (validated; changes apply at the next step) ------------------------------
-        /// <summary>Young's modulus E (Pa), 1e3 … 1e12. Setting it switches the stiffness input to E.</summary>
+        /// <summary>Young's modulus E (Pa), range <see cref="RopeParameters.YoungsModulus"/>. Setting it switches the stiffness input to E.</summary>
         public float YoungsModulus
         {
             get => m_StiffnessInput == RopeStiffnessInput.YoungsModulus ? m_YoungsModulus : m_AxialStiffness / Area(m_Radius);
             set
             {
-                m_YoungsModulus = RopeParameterLimits.Check(value, RopeParameterLimits.MinYoungsModulus, RopeParameterLimits.MaxYoungsModulus, nameof(YoungsModulus), "Pa");
+                m_YoungsModulus = RopeParameters.Check(value, RopeParameters.YoungsModulus.Row);
                 m_StiffnessInput = RopeStiffnessInput.YoungsModulus;
                 m_AxialStiffness = m_YoungsModulus * Area(m_Radius);
                 ApplySettings();
             }
         }
 
-        /// <summary>Axial stiffness E·A (N), 1 … 1e10. Setting it switches the stiffness input to E·A.</summary>
+        /// <summary>Axial stiffness E·A (N), range <see cref="RopeParameters.AxialStiffness"/>. Setting it switches the stiffness input to E·A.</summary>
         public float AxialStiffness
         {
             get => m_StiffnessInput == RopeStiffnessInput.AxialStiffness ? m_AxialStiffness : m_YoungsModulus * Area(m_Radius);
             set
             {
-                m_AxialStiffness = RopeParameterLimits.Check(value, RopeParameterLimits.MinAxialStiffness, RopeParameterLimits.MaxAxialStiffness, nameof(AxialStiffness), "N");
+                m_AxialStiffness = RopeParameters.Check(value, RopeParameters.AxialStiffness.Row);
                 m_StiffnessInput = RopeStiffnessInput.AxialStiffness;
                 m_YoungsModulus = m_AxialStiffness / Area(m_Radius);
                 ApplySettings();
             }
         }
 
-        /// <summary>Material density ρ (kg/m³), 1 … 20000.</summary>
+        /// <summary>Material density ρ (kg/m³), range <see cref="RopeParameters.Density"/>.</summary>
         public float Density
         {
             get => m_Density;
-            set { m_Density = RopeParameterLimits.Check(value, RopeParameterLimits.MinDensity, RopeParameterLimits.MaxDensity, nameof(Density), "kg/m³"); ApplySettings(); }
+            set { m_Density = RopeParameters.Check(value, RopeParameters.Density.Row); ApplySettings(); }
         }
 
         /// <summary>Rope mass per metre ρ·πR² (kg/m).</summary>
         public float LinearDensity => m_Density * Area(m_Radius);
 
-        /// <summary>Poisson ratio ν (dimensionless), −1 … 0.5.</summary>
+        /// <summary>Poisson ratio ν (dimensionless), range <see cref="RopeParameters.PoissonRatio"/>.</summary>
         public float PoissonRatio
         {
             get => m_PoissonRatio;
-            set { m_PoissonRatio = RopeParameterLimits.Check(value, RopeParameterLimits.MinPoisson, RopeParameterLimits.MaxPoisson, nameof(PoissonRatio), ""); ApplySettings(); }
+            set { m_PoissonRatio = RopeParameters.Check(value, RopeParameters.PoissonRatio.Row); ApplySettings(); }
         }
 
-        /// <summary>XPBD damping coefficient β (s), 0 … 1.</summary>
+        /// <summary>XPBD damping coefficient β (s), range <see cref="RopeParameters.Damping"/>.</summary>
         public float Damping
         {
             get => m_Damping;
-            set { m_Damping = RopeParameterLimits.Check(value, RopeParameterLimits.MinDamping, RopeParameterLimits.MaxDamping, nameof(Damping), "s"); ApplySettings(); }
+            set { m_Damping = RopeParameters.Check(value, RopeParameters.Damping.Row); ApplySettings(); }
         }
 
-        /// <summary>Rest length L (m), 0.01 … 1000.</summary>
+        /// <summary>Rest length L (m), range <see cref="RopeParameters.RestLength"/>.</summary>
         public float RestLength
         {
             get => m_RestLength;
-            set { m_RestLength = RopeParameterLimits.Check(value, RopeParameterLimits.MinRestLength, RopeParameterLimits.MaxRestLength, nameof(RestLength), "m"); ApplySettings(); }
+            set { m_RestLength = RopeParameters.Check(value, RopeParameters.RestLength.Row); ApplySettings(); }
         }
 
-        /// <summary>Rest radius R (m), 1e-4 … 1. With E·A as the stiffness input, E·A is kept and E follows.</summary>
+        /// <summary>Rest radius R (m), range <see cref="RopeParameters.Radius"/>. With E·A as the stiffness input, E·A is kept and E follows.</summary>
         public float Radius
         {
             get => m_Radius;
             set
             {
-                m_Radius = RopeParameterLimits.Check(value, RopeParameterLimits.MinRadius, RopeParameterLimits.MaxRadius, nameof(Radius), "m");
+                m_Radius = RopeParameters.Check(value, RopeParameters.Radius.Row);
                 SyncStiffness();
                 ApplySettings();
             }
         }
 
-        /// <summary>Segment count, 1 … 1000. A new value rebuilds the rope at the next step.</summary>
+        /// <summary>Segment count, range <see cref="RopeParameters.SegmentCount"/>. A new value rebuilds the rope at the next step.</summary>
         public int SegmentCount
         {
             get => m_SegmentCount;
             set
             {
-                m_SegmentCount = RopeParameterLimits.Check(value, RopeParameterLimits.MinSegments, RopeParameterLimits.MaxSegments, nameof(SegmentCount));
+                m_SegmentCount = RopeParameters.Check(value, RopeParameters.SegmentCount.Row);
                 if (_rope != null && _rope.SegmentCount != m_SegmentCount) _rebuildPending = true;
             }
         }
@@ -281,18 +281,18 @@ namespace HookeRope
             set { m_Solver = value; ApplySettings(); }
         }
 
-        /// <summary>Substeps per physics step, 1 … 1000.</summary>
+        /// <summary>Substeps per physics step, range <see cref="RopeParameters.Substeps"/>.</summary>
         public int Substeps
         {
             get => m_Substeps;
-            set { m_Substeps = RopeParameterLimits.Check(value, RopeParameterLimits.MinSubsteps, RopeParameterLimits.MaxSubsteps, nameof(Substeps)); ApplySettings(); }
+            set { m_Substeps = RopeParameters.Check(value, RopeParameters.Substeps.Row); ApplySettings(); }
         }
 
-        /// <summary>Iterations per substep, 1 … 1000.</summary>
+        /// <summary>Iterations per substep, range <see cref="RopeParameters.Iterations"/>.</summary>
         public int Iterations
         {
             get => m_Iterations;
-            set { m_Iterations = RopeParameterLimits.Check(value, RopeParameterLimits.MinIterations, RopeParameterLimits.MaxIterations, nameof(Iterations)); ApplySettings(); }
+            set { m_Iterations = RopeParameters.Check(value, RopeParameters.Iterations.Row); ApplySettings(); }
         }
 
         /// <summary>Rope (pulls only) or rod (also pushes).</summary>
@@ -308,31 +308,33 @@ namespace HookeRope
             get => m_Gravity;
             set
             {
-                if (!value.ToFloat3().IsFinite) throw new ArgumentException("Gravity must be finite (m/s²).", nameof(Gravity));
+                RopeParameters.Check(value.x, RopeParameters.Gravity.Row);
+                RopeParameters.Check(value.y, RopeParameters.Gravity.Row);
+                RopeParameters.Check(value.z, RopeParameters.Gravity.Row);
                 m_Gravity = value;
                 ApplySettings();
             }
         }
 
-        /// <summary>Neck onset radius r_min as a fraction of R, 0.01 … 1.</summary>
+        /// <summary>Neck onset radius r_min as a fraction of R, range <see cref="RopeParameters.NeckRadiusFraction"/>.</summary>
         public float NeckRadiusFraction
         {
             get => m_NeckRadiusFraction;
-            set { m_NeckRadiusFraction = RopeParameterLimits.Check(value, RopeParameterLimits.MinNeckFraction, RopeParameterLimits.MaxNeckFraction, nameof(NeckRadiusFraction), ""); ApplySettings(); }
+            set { m_NeckRadiusFraction = RopeParameters.Check(value, RopeParameters.NeckRadiusFraction.Row); ApplySettings(); }
         }
 
-        /// <summary>Defect position as a fraction of the rest length from the start, 0 … 1.</summary>
+        /// <summary>Defect position as a fraction of the rest length from the start, range <see cref="RopeParameters.DefectPosition"/>.</summary>
         public float DefectPosition
         {
             get => m_DefectPosition;
-            set { m_DefectPosition = RopeParameterLimits.Check(value, RopeParameterLimits.MinDefectPosition, RopeParameterLimits.MaxDefectPosition, nameof(DefectPosition), ""); ApplySettings(); }
+            set { m_DefectPosition = RopeParameters.Check(value, RopeParameters.DefectPosition.Row); ApplySettings(); }
         }
 
-        /// <summary>Break strain l/L − 1 (dimensionless), 1e-3 … 10; used when <see cref="Fracture"/> is on.</summary>
+        /// <summary>Break strain l/L − 1 (dimensionless), range <see cref="RopeParameters.BreakStrain"/>; used when <see cref="Fracture"/> is on.</summary>
         public float BreakStrain
         {
             get => m_BreakStrain;
-            set { m_BreakStrain = RopeParameterLimits.Check(value, RopeParameterLimits.MinBreakStrain, RopeParameterLimits.MaxBreakStrain, nameof(BreakStrain), ""); ApplySettings(); }
+            set { m_BreakStrain = RopeParameters.Check(value, RopeParameters.BreakStrain.Row); ApplySettings(); }
         }
 
         /// <summary>Neck model used when <see cref="Necking"/> is on (Zone or Paper).</summary>
@@ -341,17 +343,17 @@ namespace HookeRope
             get => m_NeckMode;
             set
             {
-                if (value != NeckMode.Zone && value != NeckMode.Paper) throw new ArgumentOutOfRangeException(nameof(NeckMode), value, "NeckMode must be Zone or Paper (turn necking off with Necking = false)");
+                if (!RopeParameters.Contains(RopeParameters.NeckMode.Row, (int)value)) throw new ArgumentOutOfRangeException(nameof(NeckMode), value, "NeckMode must be Zone or Paper (turn necking off with Necking = false)");
                 m_NeckMode = value;
                 ApplySettings();
             }
         }
 
-        /// <summary>Neck radius below which the rope breaks, as a fraction of R, 0 … 0.99 (0 = off).</summary>
+        /// <summary>Neck radius below which the rope breaks, as a fraction of R, range <see cref="RopeParameters.BreakRadiusFraction"/> (0 = off).</summary>
         public float BreakRadiusFraction
         {
             get => m_BreakRadiusFraction;
-            set { m_BreakRadiusFraction = RopeParameterLimits.Check(value, RopeParameterLimits.MinBreakRadiusFraction, RopeParameterLimits.MaxBreakRadiusFraction, nameof(BreakRadiusFraction), ""); ApplySettings(); }
+            set { m_BreakRadiusFraction = RopeParameters.Check(value, RopeParameters.BreakRadiusFraction.Row); ApplySettings(); }
         }
 
         /// <summary>The core radius model, or null when thinning, necking and fracture are all off.</summary>
@@ -381,18 +383,18 @@ namespace HookeRope
         /// <summary>Colliders used in <see cref="RopeCollisionMode.ListedColliders"/> mode; takes effect at the next <see cref="Rebuild"/>.</summary>
         public Collider[] Colliders { get => m_Colliders; set { m_Colliders = value ?? Array.Empty<Collider>(); _rebuildPending |= _rope != null; } }
 
-        /// <summary>Coulomb friction coefficient between rope and colliders (dimensionless), 0 … 2; takes effect at the next <see cref="Rebuild"/>.</summary>
+        /// <summary>Coulomb friction coefficient between rope and colliders (dimensionless), range <see cref="RopeParameters.Friction"/>; takes effect at the next <see cref="Rebuild"/>.</summary>
         public float Friction
         {
             get => m_Friction;
-            set { m_Friction = RopeParameterLimits.Check(value, RopeParameterLimits.MinFriction, RopeParameterLimits.MaxFriction, nameof(Friction), ""); _rebuildPending |= _rope != null; }
+            set { m_Friction = RopeParameters.Check(value, RopeParameters.Friction.Row); _rebuildPending |= _rope != null; }
         }
 
-        /// <summary>Compliance of the Transform attachments (m/N), 0 … 1; takes effect at the next <see cref="Rebuild"/>.</summary>
+        /// <summary>Compliance of the Transform attachments (m/N), range <see cref="RopeParameters.AttachmentCompliance"/>; takes effect at the next <see cref="Rebuild"/>.</summary>
         public float AttachmentCompliance
         {
             get => m_AttachmentCompliance;
-            set { m_AttachmentCompliance = RopeParameterLimits.Check(value, RopeParameterLimits.MinCompliance, RopeParameterLimits.MaxCompliance, nameof(AttachmentCompliance), "m/N"); _rebuildPending |= _rope != null; }
+            set { m_AttachmentCompliance = RopeParameters.Check(value, RopeParameters.AttachmentCompliance.Row); _rebuildPending |= _rope != null; }
         }
 
         /// <summary>Plane Transforms (up axis = normal); takes effect at the next <see cref="Rebuild"/>.</summary>
@@ -411,32 +413,35 @@ namespace HookeRope
 
         void OnValidate()
         {
-            Report(RopeParameterLimits.Clamp(ref m_RestLength, RopeParameterLimits.MinRestLength, RopeParameterLimits.MaxRestLength, 2f, "Rest length", "m"));
-            Report(RopeParameterLimits.Clamp(ref m_Radius, RopeParameterLimits.MinRadius, RopeParameterLimits.MaxRadius, 0.008f, "Radius", "m"));
-            Report(RopeParameterLimits.Clamp(ref m_SegmentCount, RopeParameterLimits.MinSegments, RopeParameterLimits.MaxSegments, "Segment count"));
-            Report(RopeParameterLimits.Clamp(ref m_YoungsModulus, RopeParameterLimits.MinYoungsModulus, RopeParameterLimits.MaxYoungsModulus, 1.5e8f, "Young's modulus", "Pa"));
-            Report(RopeParameterLimits.Clamp(ref m_AxialStiffness, RopeParameterLimits.MinAxialStiffness, RopeParameterLimits.MaxAxialStiffness, 30159f, "Axial stiffness", "N"));
-            Report(RopeParameterLimits.Clamp(ref m_Density, RopeParameterLimits.MinDensity, RopeParameterLimits.MaxDensity, 1140f, "Density", "kg/m³"));
-            Report(RopeParameterLimits.Clamp(ref m_PoissonRatio, RopeParameterLimits.MinPoisson, RopeParameterLimits.MaxPoisson, 0.3f, "Poisson ratio", ""));
-            Report(RopeParameterLimits.Clamp(ref m_Damping, RopeParameterLimits.MinDamping, RopeParameterLimits.MaxDamping, 0f, "Damping", "s"));
-            Report(RopeParameterLimits.Clamp(ref m_Substeps, RopeParameterLimits.MinSubsteps, RopeParameterLimits.MaxSubsteps, "Substeps"));
-            Report(RopeParameterLimits.Clamp(ref m_Iterations, RopeParameterLimits.MinIterations, RopeParameterLimits.MaxIterations, "Iterations"));
-            Report(RopeParameterLimits.Clamp(ref m_Friction, RopeParameterLimits.MinFriction, RopeParameterLimits.MaxFriction, 0.3f, "Friction", ""));
-            Report(RopeParameterLimits.Clamp(ref m_AttachmentCompliance, RopeParameterLimits.MinCompliance, RopeParameterLimits.MaxCompliance, 0f, "Attachment compliance", "m/N"));
-            Report(RopeParameterLimits.Clamp(ref m_NeckRadiusFraction, RopeParameterLimits.MinNeckFraction, RopeParameterLimits.MaxNeckFraction, 0.75f, "Neck radius fraction r_min/R", ""));
-            Report(RopeParameterLimits.Clamp(ref m_DefectPosition, RopeParameterLimits.MinDefectPosition, RopeParameterLimits.MaxDefectPosition, 0.5f, "Defect position", ""));
-            Report(RopeParameterLimits.Clamp(ref m_BreakStrain, RopeParameterLimits.MinBreakStrain, RopeParameterLimits.MaxBreakStrain, 0.6f, "Break strain", ""));
-            Report(RopeParameterLimits.Clamp(ref m_BreakRadiusFraction, RopeParameterLimits.MinBreakRadiusFraction, RopeParameterLimits.MaxBreakRadiusFraction, 0.25f, "Break radius fraction", ""));
-            if (m_NeckMode != NeckMode.Zone && m_NeckMode != NeckMode.Paper)
+            Report(RopeParameters.Clamp(ref m_RestLength, RopeParameters.RestLength.Row));
+            Report(RopeParameters.Clamp(ref m_Radius, RopeParameters.Radius.Row));
+            Report(RopeParameters.Clamp(ref m_SegmentCount, RopeParameters.SegmentCount.Row));
+            Report(RopeParameters.Clamp(ref m_YoungsModulus, RopeParameters.YoungsModulus.Row));
+            Report(RopeParameters.Clamp(ref m_AxialStiffness, RopeParameters.AxialStiffness.Row));
+            Report(RopeParameters.Clamp(ref m_Density, RopeParameters.Density.Row));
+            Report(RopeParameters.Clamp(ref m_PoissonRatio, RopeParameters.PoissonRatio.Row));
+            Report(RopeParameters.Clamp(ref m_Damping, RopeParameters.Damping.Row));
+            Report(RopeParameters.Clamp(ref m_Substeps, RopeParameters.Substeps.Row));
+            Report(RopeParameters.Clamp(ref m_Iterations, RopeParameters.Iterations.Row));
+            Report(RopeParameters.Clamp(ref m_Friction, RopeParameters.Friction.Row));
+            Report(RopeParameters.Clamp(ref m_AttachmentCompliance, RopeParameters.AttachmentCompliance.Row));
+            Report(RopeParameters.Clamp(ref m_NeckRadiusFraction, RopeParameters.NeckRadiusFraction.Row));
+            Report(RopeParameters.Clamp(ref m_DefectPosition, RopeParameters.DefectPosition.Row));
+            Report(RopeParameters.Clamp(ref m_BreakStrain, RopeParameters.BreakStrain.Row));
+            Report(RopeParameters.Clamp(ref m_BreakRadiusFraction, RopeParameters.BreakRadiusFraction.Row));
+            if (!RopeParameters.Contains(RopeParameters.NeckMode.Row, (int)m_NeckMode))
             {
-                m_NeckMode = NeckMode.Zone;
+                m_NeckMode = RopeParameters.NeckMode.Default;
                 Report("Neck mode must be Zone or Paper; set to Zone (use the Necking toggle to turn necking off).");
             }
             if (!m_Gravity.ToFloat3().IsFinite)
             {
-                m_Gravity = new Vector3(0f, -9.81f, 0f);
+                m_Gravity = new Vector3(RopeParameters.Gravity.DefaultX, RopeParameters.Gravity.DefaultY, RopeParameters.Gravity.DefaultZ);
                 Report("Gravity was not finite; reset to (0, -9.81, 0) m/s².");
             }
+            Report(RopeParameters.Clamp(ref m_Gravity.x, RopeParameters.Gravity.Row));
+            Report(RopeParameters.Clamp(ref m_Gravity.y, RopeParameters.Gravity.Row));
+            Report(RopeParameters.Clamp(ref m_Gravity.z, RopeParameters.Gravity.Row));
             SyncStiffness();
             if (m_Colliders == null) m_Colliders = Array.Empty<Collider>();
             if (m_Planes == null) m_Planes = Array.Empty<Transform>();

@@ -39,16 +39,14 @@ namespace HookeRope
         const MeshUpdateFlags FrameFlags = MeshUpdateFlags.DontValidateIndices | MeshUpdateFlags.DontRecalculateBounds |
                                            MeshUpdateFlags.DontResetBoneBounds;
 
-        const int MinRadialSegments = 3, MaxRadialSegments = 64;
+        [SerializeField, Range(RopeParameters.RadialSegments.Min, RopeParameters.RadialSegments.Max), Tooltip(RopeParameters.RadialSegments.Tooltip)]
+        int m_RadialSegments = RopeParameters.RadialSegments.Default;
 
-        [SerializeField, Range(MinRadialSegments, MaxRadialSegments), Tooltip("Vertices around the tube (3–64). 8 is cheap, 16 smooth, 32 for close-ups.")]
-        int m_RadialSegments = 12;
+        [SerializeField, Tooltip(RopeParameters.BurrTexture.Tooltip)]
+        bool m_BurrTexture = RopeParameters.BurrTexture.Default;
 
-        [SerializeField, Tooltip("Generate the burr-strand material with the procedural burr texture when the renderer has no second material.")]
-        bool m_BurrTexture = true;
-
-        [SerializeField, Tooltip("Colour of the generated tube material (used only when the renderer has no material). Safety orange by default.")]
-        Color m_Color = new Color(0.93f, 0.5f, 0.12f, 1f);
+        [SerializeField, Tooltip(RopeParameters.Color.Tooltip)]
+        Color m_Color = new Color(RopeParameters.Color.DefaultR, RopeParameters.Color.DefaultG, RopeParameters.Color.DefaultB, RopeParameters.Color.DefaultA);
 
         ElasticRope _rope;
         MeshFilter _filter;
@@ -60,13 +58,13 @@ namespace HookeRope
         Material _generatedBurrMaterial;
         Texture2D _generatedTexture;
 
-        /// <summary>Vertices around the tube, 3 … 64. A new value rebuilds the tube topology at the next frame.</summary>
+        /// <summary>Vertices around the tube, range <see cref="RopeParameters.RadialSegments"/>. A new value rebuilds the tube topology at the next frame.</summary>
         public int RadialSegments
         {
             get => m_RadialSegments;
             set
             {
-                m_RadialSegments = RopeParameterLimits.Check(value, MinRadialSegments, MaxRadialSegments, nameof(RadialSegments));
+                m_RadialSegments = RopeParameters.Check(value, RopeParameters.RadialSegments.Row);
                 _tube = null;
             }
         }
@@ -76,7 +74,7 @@ namespace HookeRope
 
         void OnValidate()
         {
-            string message = RopeParameterLimits.Clamp(ref m_RadialSegments, MinRadialSegments, MaxRadialSegments, "Radial segments");
+            string message = RopeParameters.Clamp(ref m_RadialSegments, RopeParameters.RadialSegments.Row);
             if (message != null) Debug.LogWarning("RopeMeshRenderer '" + name + "': " + message, this);
             if (_tube != null && _tube.RadialSegments != m_RadialSegments) _tube = null;
         }
