@@ -142,8 +142,9 @@ namespace HookeRope
         /// <summary>Raised when the rope breaks: world position (m) and peak tension just before (N).</summary>
         public RopeBreakUnityEvent OnBreak => m_OnBreak;
 
-        /// <summary>The core rope, or null before the first build (Awake in Play, or <see cref="Rebuild"/>).</summary>
-        public Rope Core => _rope;
+        /// <summary>The core rope, or null before the first build. Use <c>Simulation.Rope</c>.</summary>
+        [Obsolete("Use Simulation.Rope (the one way into the core); Core is removed in 0.2.")]
+        public Rope Core => _simulation?.Rope;
 
         /// <summary>True once the core rope exists.</summary>
         public bool IsBuilt => _rope != null;
@@ -356,14 +357,22 @@ namespace HookeRope
             set { m_BreakRadiusFraction = RopeParameters.Check(value, RopeParameters.BreakRadiusFraction.Row); ApplySettings(); }
         }
 
-        /// <summary>The core radius model, or null when thinning, necking and fracture are all off.</summary>
+        /// <summary>The core radius model, or null when thinning, necking and fracture are all off. Use <c>Simulation.RadiusModel</c>.</summary>
+        [Obsolete("Use Simulation.RadiusModel (the one way into the core); RadiusModelCore is removed in 0.2.")]
         public HookeRope.Radius.RadiusModel RadiusModelCore => _simulation?.RadiusModel;
 
-        /// <summary>The core facade (solver rope + radius model), or null before the first build.</summary>
+        /// <summary>
+        /// The core facade, or null before the first build (Awake in Play, or <see cref="Rebuild"/>): the one way into
+        /// the core (solver rope, radius model, read-outs, mesh).
+        /// </summary>
         public RopeSimulation Simulation => _simulation;
 
-        /// <summary>Whether the radius follows the Poisson ratio.</summary>
-        public bool RadiusModel { get => m_RadiusModel; set { m_RadiusModel = value; ApplyFeatureToggles(); } }
+        /// <summary>Whether the radius thins with the Poisson ratio as the rope stretches (off: the radius stays R).</summary>
+        public bool PoissonThinning { get => m_RadiusModel; set { m_RadiusModel = value; ApplyFeatureToggles(); } }
+
+        /// <summary>Whether the radius follows the Poisson ratio. Use <see cref="PoissonThinning"/>.</summary>
+        [Obsolete("Use PoissonThinning; RadiusModel (a bool named like the core type) is removed in 0.2.")]
+        public bool RadiusModel { get => PoissonThinning; set => PoissonThinning = value; }
 
         /// <summary>Whether a neck forms at the defect below r_min.</summary>
         public bool Necking { get => m_Necking; set { m_Necking = value; ApplyFeatureToggles(); } }

@@ -57,7 +57,7 @@ namespace HookeRope
         /// </summary>
         public bool Update(ElasticRope rope, float[] world, int particles, Transform frame)
         {
-            var core = rope.Core;
+            var core = rope.Simulation.Rope;
             int segments = particles - 1;
             bool resized = false;
             // The facade's ring layout: uniform, or refined around the neck zone in Zone neck mode.
