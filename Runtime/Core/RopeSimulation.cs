@@ -8,33 +8,20 @@ namespace HookeRope
 {
     /// <summary>
     /// The facade the Unity layer and the headless lab use: a <see cref="Solver.Rope"/> plus an optional
-    /// <see cref="Radius.RadiusModel"/> and the tube mesh. <see cref="Step"/> steps the solver, updates the radii,
-    /// writes them into <see cref="Rope.ParticleRadius"/> (colliders see the thinning rope) and breaks the rope at
-    /// the defect when the radius model says so. Allocation-free per step and per mesh fill after warm-up (a break
-    /// or a change of rest length, rest radius or mesh topology settings reallocates once).
+    /// <see cref="Radius.RadiusModel"/>, the read-outs and the tube mesh. <see cref="Step"/> steps the solver,
+    /// updates the radii, writes them into the rope's particle radii (colliders see the thinning rope), breaks the
+    /// rope at the defect when the model's fracture decision says so, and updates <see cref="Readouts"/>.
+    /// <see cref="FillMesh(ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{float}, TubeVertex[], int[], float)"/>
+    /// is the one mesh path. Allocation-free per step and per mesh fill after warm-up (a change of rest length, rest
+    /// radius or mesh topology settings reallocates once).
     /// </summary>
     public sealed class RopeSimulation
     {
-        /// <summary>Rings placed inside the Zone-mode neck zone (the ring layout is refined there).</summary>
-        public const int RingsInNeckZone = 16;
-
-        private readonly bool[] brokenFlags;
-        private readonly float[] restRadiusSegments;
-        private readonly float[] restRadiusParticles;
+        private readonly RopeMesh mesh;
         private RadiusModel radiusModel;
-        private TubeMeshBuilder meshBuilder;
-        private float[] ringRadii;
         private int settingsVersion;
         private float modelRestRadius;
         private float modelRestLength;
-        private int topologyVersion;
-        private int brokenCount;
-        private int meshSettingsRings;
-        private bool meshCaps;
-        private bool meshBurr;
-        private NeckMode meshNeckMode;
-        private float meshDefect;
-        private float meshZone;
 
         /// <summary>
         /// Builds a rope from <paramref name="ropeSettings"/> between world points <paramref name="start"/> and
@@ -51,19 +38,12 @@ namespace HookeRope
         {
             Rope = rope ?? throw new ArgumentNullException(nameof(rope));
             RadiusSettings = radiusSettings;
-            MeshSettings = meshSettings ?? new TubeMeshSettings();
-            int n = rope.SegmentCount;
-            brokenFlags = new bool[n];
-            restRadiusSegments = new float[n];
-            restRadiusParticles = new float[n + 1];
-            for (int j = 0; j < n; j++)
-            {
-                brokenFlags[j] = rope.IsSegmentBroken(j);
-                if (brokenFlags[j]) brokenCount++;
-            }
+            mesh = new RopeMesh(this, meshSettings ?? new TubeMeshSettings());
+            Readouts = new RopeReadouts(this);
             rope.Broken += OnRopeBroken;
             RebuildModel();
             UpdateRadii();
+            Readouts.Update(0f);
         }
 
         /// <summary>The solver rope (positions in its rope-local frame, world = Rope.Origin + local).</summary>
@@ -72,8 +52,11 @@ namespace HookeRope
         /// <summary>Radius settings, or null when the rope has no radius model.</summary>
         public RadiusSettings RadiusSettings { get; }
 
-        /// <summary>Mesh settings (topology values are picked up at the next mesh fill).</summary>
-        public TubeMeshSettings MeshSettings { get; }
+        /// <summary>Mesh settings (topology values are picked up at the next mesh fill or count).</summary>
+        public TubeMeshSettings MeshSettings => mesh.Settings;
+
+        /// <summary>The read-outs (tensions, elongation, strain, arrest force, radii, residual, first break), updated by <see cref="Step"/>.</summary>
+        public RopeReadouts Readouts { get; }
 
         /// <summary>The radius model, or null when <see cref="RadiusSettings"/> is null.</summary>
         public RadiusModel RadiusModel => radiusModel;
@@ -87,32 +70,27 @@ namespace HookeRope
         /// <summary>Radius at the defect in metres, neck included (R without a radius model).</summary>
         public float NeckRadius => IsModelActive ? radiusModel.NeckRadius : RestRadius;
 
-        /// <summary>True once any segment has broken (by the radius model, the solver's strain limit or a pin).</summary>
-        public bool IsBroken => brokenCount > 0;
+        /// <summary>True once any segment has broken (by the radius model's fracture decision, a cut or a pin).</summary>
+        public bool IsBroken => Rope.BrokenSegmentCount > 0;
 
-        /// <summary>Per-segment broken flags, as the mesh sees them.</summary>
-        public ReadOnlySpan<bool> BrokenSegments => brokenFlags;
+        /// <summary>Radius at each particle in metres, neck included: what the colliders use (the rope's own array).</summary>
+        public ReadOnlySpan<float> ParticleRadii => Rope.ParticleRadius;
 
-        /// <summary>Radius of each segment in metres (Poisson; R without a radius model).</summary>
-        public ReadOnlySpan<float> SegmentRadii => IsModelActive ? radiusModel.SegmentRadii : restRadiusSegments;
+        /// <summary>Incremented whenever the mesh topology changes (a break, new mesh settings): re-query the buffer sizes and re-upload the indices.</summary>
+        public int MeshTopologyVersion => mesh.TopologyVersion;
 
-        /// <summary>Radius at each particle in metres, neck included: what the colliders use.</summary>
-        public ReadOnlySpan<float> ParticleRadii => IsModelActive ? radiusModel.ParticleRadii : restRadiusParticles;
+        /// <summary>Ring layout of the mesh (refined around the neck zone in Zone mode). Kept for the 0.1 renderer; removed with the issue 12 contract step.</summary>
+        public RingLayout RingLayout => mesh.Layout;
 
-        /// <summary>Incremented whenever the mesh topology changes (a break, new mesh settings): re-query the buffer sizes.</summary>
-        public int TopologyVersion => topologyVersion;
-
-        /// <summary>Ring layout of the mesh (refined around the neck zone in Zone mode).</summary>
-        public RingLayout RingLayout => EnsureMesh().Layout;
-
-        /// <summary>Radius at each mesh ring in metres (after the last <see cref="FillMesh"/> or <see cref="FillRingRadii"/>).</summary>
-        public ReadOnlySpan<float> RingRadii { get { EnsureMesh(); return ringRadii; } }
+        /// <summary>The mesh (layout, builder, ring radii), for the package's own assemblies.</summary>
+        internal RopeMesh Mesh => mesh;
 
         private bool IsModelActive => radiusModel != null && radiusModel.IsActive;
 
         /// <summary>
         /// Steps the solver by <paramref name="hostDeltaTime"/> seconds, then (when the radius model is on) updates
-        /// the radii, writes the particle radii into the rope and breaks it at the defect when the model asks.
+        /// the radii, writes the particle radii into the rope and breaks it at the defect when the model asks; last,
+        /// updates <see cref="Readouts"/>.
         /// </summary>
         public StepReport Step(float hostDeltaTime)
         {
@@ -124,20 +102,22 @@ namespace HookeRope
                 if (settings.Radius != modelRestRadius || settings.RestLength != modelRestLength) RebuildModel();
             }
             UpdateRadii();
+            Readouts.Update(report.Residual);
             return report;
         }
 
         /// <summary>
         /// Updates the radii from the rope's current segment lengths, writes them into the rope's collision radii and
-        /// breaks the rope at the defect when the model asks. <see cref="Step"/> calls it; call it yourself after
-        /// moving particles by hand (the constructor calls it once). Does nothing without an active radius model.
+        /// breaks the rope at the defect when the model's fracture decision says so (the only fracture path).
+        /// <see cref="Step"/> calls it; call it yourself after moving particles by hand (the constructor calls it
+        /// once). Does nothing without an active radius model.
         /// </summary>
         public void UpdateRadii()
         {
             if (!IsModelActive) return;
-            radiusModel.Update(Rope.SegmentLengths, brokenFlags);
-            if (RadiusSettings.PoissonEnabled || RadiusSettings.NeckMode != NeckMode.Off)
-                radiusModel.ParticleRadii.CopyTo(Rope.ParticleRadius);
+            radiusModel.Update(Rope.SegmentLengths, Rope.BrokenSegments);
+            if (RadiusSettings.PoissonThinning || RadiusSettings.Necking)
+                Rope.SetParticleRadii(radiusModel.ParticleRadii);
             if (radiusModel.ShouldBreak)
             {
                 int defect = radiusModel.DefectSegment;
@@ -146,51 +126,44 @@ namespace HookeRope
             }
         }
 
-        /// <summary>Vertices the mesh needs now.</summary>
-        public int GetVertexCount() => EnsureMesh().GetVertexCount(brokenFlags);
+        /// <summary>Vertices the mesh needs now (the broken segments change it).</summary>
+        public int GetVertexCount() => mesh.GetVertexCount();
 
-        /// <summary>Indices the mesh needs now.</summary>
-        public int GetIndexCount() => EnsureMesh().GetIndexCount(brokenFlags);
+        /// <summary>Indices the mesh needs now (the broken segments change it).</summary>
+        public int GetIndexCount() => mesh.GetIndexCount();
 
-        /// <summary>Computes the radius of every mesh ring (m) into <see cref="RingRadii"/>.</summary>
-        public void FillRingRadii() => ComputeRingRadii(EnsureMesh());
-
-        private void ComputeRingRadii(TubeMeshBuilder builder)
+        /// <summary>
+        /// The one mesh path. Fills caller-owned buffers (at least <see cref="GetVertexCount"/> and
+        /// <see cref="GetIndexCount"/> long) with the tube mesh through the particle positions
+        /// <paramref name="x"/>, <paramref name="y"/>, <paramref name="z"/> (m, ParticleCount each) given in the
+        /// caller's frame (e.g. renderer-local); vertices and bounds are written in that same frame. Ring radii come
+        /// from the radius model (R without one) times <paramref name="radiusScale"/> (e.g. 1/|lossyScale.x|); broken
+        /// segments come from the rope. Indices are rewritten only when the topology changed
+        /// (<see cref="TubeMeshUpdate.TopologyChanged"/>). Allocation-free after warm-up.
+        /// </summary>
+        public TubeMeshUpdate FillMesh(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
+            TubeVertex[] vertices, int[] indices, float radiusScale = 1f)
         {
-            if (IsModelActive)
-            {
-                RingLayout layout = builder.Layout;
-                radiusModel.FillRingRadii(layout.RingSegments, layout.RingFractions, ringRadii);
-            }
-            else
-            {
-                Array.Fill(ringRadii, Rope.Settings.Radius);
-            }
+            if (!float.IsFinite(radiusScale) || !(radiusScale > 0f))
+                throw new ArgumentOutOfRangeException(nameof(radiusScale), radiusScale, "radiusScale must be finite and in (0, +inf).");
+            return mesh.Fill(x, y, z, vertices, indices, radiusScale);
         }
 
         /// <summary>
-        /// Fills caller-owned buffers (at least <see cref="GetVertexCount"/> and <see cref="GetIndexCount"/> long)
-        /// with the tube mesh. Vertex positions are relative to the first particle; the returned
-        /// <see cref="TubeMeshUpdate.Origin"/> is that particle's world position (m). Indices are rewritten only
-        /// when the topology changed (see <see cref="TubeMeshUpdate.TopologyChanged"/>).
+        /// <see cref="FillMesh(ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{float}, TubeVertex[], int[], float)"/>
+        /// through the rope's own positions: vertices in the rope-local frame (world = <see cref="Solver.Rope.Origin"/> + v).
         /// </summary>
         public TubeMeshUpdate FillMesh(TubeVertex[] vertices, int[] indices)
         {
-            TubeMeshBuilder builder = EnsureMesh();
-            ComputeRingRadii(builder);
-            TubeMeshUpdate u = builder.BuildWithRingRadii(Rope.PositionX, Rope.PositionY, Rope.PositionZ, Rope.RestLengths,
-                ringRadii, brokenFlags, vertices, indices);
-            return new TubeMeshUpdate(u.VertexCount, u.IndexCount, u.TubeIndexCount, u.TopologyChanged,
-                Rope.Origin + u.Origin, u.BoundsMin, u.BoundsMax);
+            TubeMeshUpdate u = mesh.Fill(Rope.PositionX, Rope.PositionY, Rope.PositionZ, vertices, indices, 1f);
+            return new TubeMeshUpdate(u.VertexCount, u.IndexCount, u.TubeIndexCount, u.TopologyChanged, Rope.Origin, u.BoundsMin, u.BoundsMax);
         }
 
         private void OnRopeBroken(RopeBreakEvent e)
         {
-            if (e.Segment < 0 || e.Segment >= brokenFlags.Length || brokenFlags[e.Segment]) return;
-            brokenFlags[e.Segment] = true;
-            brokenCount++;
-            topologyVersion++;
+            mesh.TopologyChanged();
             if (radiusModel != null && !radiusModel.IsBroken) radiusModel.MarkBroken();
+            Readouts.RecordBreak(e);
         }
 
         private void RebuildModel()
@@ -199,46 +172,13 @@ namespace HookeRope
             settingsVersion = settings.Version;
             modelRestRadius = settings.Radius;
             modelRestLength = settings.RestLength;
-            Array.Fill(restRadiusSegments, settings.Radius);
-            Array.Fill(restRadiusParticles, settings.Radius);
             if (RadiusSettings != null)
             {
                 bool wasBroken = radiusModel != null && radiusModel.IsBroken;
                 radiusModel = new RadiusModel(RadiusSettings, settings.Radius, Rope.RestLengths);
-                if (wasBroken || brokenCount > 0) radiusModel.MarkBroken();
+                if (wasBroken || Rope.BrokenSegmentCount > 0) radiusModel.MarkBroken();
             }
-            meshBuilder = null;
-        }
-
-        private TubeMeshBuilder EnsureMesh()
-        {
-            TubeMeshSettings s = MeshSettings;
-            RadiusSettings r = RadiusSettings;
-            NeckMode neckMode = r == null ? NeckMode.Off : r.NeckMode;
-            float defect = r == null ? 0f : r.DefectPosition;
-            float zone = r == null ? 0f : r.NeckZoneDiameters;
-            if (meshBuilder != null
-                && meshBuilder.RadialSegments == s.RadialSegments
-                && meshSettingsRings == s.RingsPerSegment
-                && meshCaps == s.CapEnds
-                && meshBurr == s.Burr.Enabled
-                && meshNeckMode == neckMode
-                && meshDefect == defect
-                && meshZone == zone)
-                return meshBuilder;
-            meshSettingsRings = s.RingsPerSegment;
-            meshCaps = s.CapEnds;
-            meshBurr = s.Burr.Enabled;
-            meshNeckMode = neckMode;
-            meshDefect = defect;
-            meshZone = zone;
-            RingLayout layout = meshNeckMode == NeckMode.Zone && radiusModel != null
-                ? RingLayout.Refined(Rope.RestLengths, s.RingsPerSegment, radiusModel.DefectRestArc, radiusModel.NeckZoneRestLength, RingsInNeckZone)
-                : new RingLayout(Rope.SegmentCount, s.RingsPerSegment);
-            meshBuilder = new TubeMeshBuilder(s, layout);
-            ringRadii = new float[layout.RingCount];
-            topologyVersion++;
-            return meshBuilder;
+            mesh.Invalidate();
         }
     }
 }

@@ -34,6 +34,7 @@ namespace HookeRope.Geometry
         private readonly float[] particleRadii;
         private readonly bool[] lastBroken;
         private int[] lastIndices;
+        private Float3 frameOrigin;
         private bool topologyValid;
 
         /// <summary>Builder for <paramref name="segmentCount"/> segments (≥ 1) with settings.RingsPerSegment rings in each.</summary>
@@ -187,8 +188,11 @@ namespace HookeRope.Geometry
                 ringRadii[k] = float.IsFinite(r) && r > 1e-6f ? r : 1e-6f;
             }
 
+            // Geometry is computed relative to the first particle (precision far from the origin); SetVertex adds the
+            // origin back, so vertices and bounds are in the frame of the input positions.
             Float3 origin = new Float3(x[0], y[0], z[0]);
             if (!origin.IsFinite) origin = Float3.Zero;
+            frameOrigin = origin;
             var bounds = new Bounds(true);
             int vertexBase = 0;
             int tubeCursor = 0;
@@ -202,8 +206,9 @@ namespace HookeRope.Geometry
 
             if (topologyChanged) { lastIndices = indices; topologyValid = true; }
             if (vertexCount == 0) bounds = new Bounds(false);
+            else { bounds.Min = bounds.Min + origin; bounds.Max = bounds.Max + origin; }
             return new TubeMeshUpdate(vertexCount, tubeIndexCount + burrIndexCount, tubeIndexCount, topologyChanged,
-                origin, bounds.Min, bounds.Max);
+                Float3.Zero, bounds.Min, bounds.Max);
         }
 
         /// <summary>
@@ -379,7 +384,7 @@ namespace HookeRope.Geometry
                 Float3 p = c + radialDirection * r;
                 Float3 normal = (radialDirection - t * slope) * inverse;
                 ref TubeVertex vertex = ref vertices[ringBase + i];
-                vertex.PX = p.X; vertex.PY = p.Y; vertex.PZ = p.Z;
+                vertex.PX = p.X + frameOrigin.X; vertex.PY = p.Y + frameOrigin.Y; vertex.PZ = p.Z + frameOrigin.Z;
                 vertex.NX = normal.X; vertex.NY = normal.Y; vertex.NZ = normal.Z;
                 vertex.TX = around.X; vertex.TY = around.Y; vertex.TZ = around.Z; vertex.TW = 1f;
                 vertex.U = (float)i / radial;
@@ -468,7 +473,7 @@ namespace HookeRope.Geometry
             vertexBase += radial * 9;
         }
 
-        private static void WriteStrandFace(TubeVertex[] vertices, int v, Float3 p0, Float3 p1, Float3 tip, Float3 fallback, ref Bounds bounds)
+        private void WriteStrandFace(TubeVertex[] vertices, int v, Float3 p0, Float3 p1, Float3 tip, Float3 fallback, ref Bounds bounds)
         {
             Float3 edge = p1 - p0;
             Float3 normal = Float3.Cross(edge, tip - p0).NormalizedOr(fallback);
@@ -479,10 +484,10 @@ namespace HookeRope.Geometry
             bounds.Add(tip);
         }
 
-        private static void SetVertex(TubeVertex[] vertices, int index, Float3 p, Float3 normal, Float3 tangent, float u, float v)
+        private void SetVertex(TubeVertex[] vertices, int index, Float3 p, Float3 normal, Float3 tangent, float u, float v)
         {
             ref TubeVertex vertex = ref vertices[index];
-            vertex.PX = p.X; vertex.PY = p.Y; vertex.PZ = p.Z;
+            vertex.PX = p.X + frameOrigin.X; vertex.PY = p.Y + frameOrigin.Y; vertex.PZ = p.Z + frameOrigin.Z;
             vertex.NX = normal.X; vertex.NY = normal.Y; vertex.NZ = normal.Z;
             vertex.TX = tangent.X; vertex.TY = tangent.Y; vertex.TZ = tangent.Z; vertex.TW = 1f;
             vertex.U = u; vertex.V = v;

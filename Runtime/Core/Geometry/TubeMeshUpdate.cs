@@ -15,11 +15,16 @@ namespace HookeRope.Geometry
         public readonly int BurrIndexCount;
         /// <summary>True when the index buffer was rewritten by this build (first build, break, new buffer).</summary>
         public readonly bool TopologyChanged;
-        /// <summary>Position of the rope's first particle in metres: vertex positions are relative to it.</summary>
+        /// <summary>
+        /// Offset in metres to add to the vertex positions and bounds to reach the world frame: zero from
+        /// <see cref="TubeMeshBuilder"/> and the span overload of RopeSimulation.FillMesh (vertices are in the input
+        /// frame), <see cref="HookeRope.Solver.Rope.Origin"/> from RopeSimulation.FillMesh(vertices, indices). Removed with
+        /// the issue 12 contract step.
+        /// </summary>
         public readonly Float3 Origin;
-        /// <summary>Lower corner in metres (relative to <see cref="Origin"/>) of a box holding every vertex (tight to within the ring polygons' circumcircles).</summary>
+        /// <summary>Lower corner in metres (in the frame of the vertices) of a box holding every vertex (tight to within the ring polygons' circumcircles).</summary>
         public readonly Float3 BoundsMin;
-        /// <summary>Upper corner in metres (relative to <see cref="Origin"/>) of a box holding every vertex.</summary>
+        /// <summary>Upper corner in metres (in the frame of the vertices) of a box holding every vertex.</summary>
         public readonly Float3 BoundsMax;
 
         /// <summary>Creates the report.</summary>

@@ -6,10 +6,10 @@ namespace HookeRope.Radius
         /// <summary>The rope does not break (yet).</summary>
         None = 0,
 
-        /// <summary>The strain of the defect segment passed <see cref="RadiusSettings.BreakElongation"/>.</summary>
-        Elongation = 1,
+        /// <summary>The strain of the defect segment reached <see cref="RadiusSettings.BreakStrain"/>.</summary>
+        Strain = 1,
 
-        /// <summary>The neck radius fell below <see cref="RadiusSettings.BreakRadiusFraction"/> times the rest radius.</summary>
+        /// <summary>The neck radius fell below <see cref="RadiusSettings.BreakRadiusFraction"/> times the rest radius (only with necking on).</summary>
         NeckRadius = 2,
     }
 }

@@ -15,7 +15,6 @@ namespace HookeRope.Radius
         private readonly float[] restArc;
         private readonly float[] currentArc;
         private readonly float[] segmentStretch;
-        private readonly bool[] brokenCopy;
         private readonly float restRadius;
         private int defectSegment;
         private float defectT;
@@ -47,7 +46,6 @@ namespace HookeRope.Radius
             this.restRadius = restRadius;
             segmentRadii = new float[n];
             segmentStretch = new float[n];
-            brokenCopy = new bool[n];
             baseParticleRadii = new float[n + 1];
             particleRadii = new float[n + 1];
             restArc = new float[n + 1];
@@ -148,16 +146,15 @@ namespace HookeRope.Radius
                 float rest = restArc[j + 1] - restArc[j];
                 float current = currentLengths[j];
                 bool isBroken = hasBroken && brokenSegments[j];
-                brokenCopy[j] = isBroken;
                 if (isBroken || !float.IsFinite(current)) current = rest;
                 segmentStretch[j] = current / rest;
                 arc += current;
                 currentArc[j + 1] = (float)arc;
-                segmentRadii[j] = s.PoissonEnabled && !isBroken
+                segmentRadii[j] = s.PoissonThinning && !isBroken
                     ? (float)(restRadius * PoissonRadius.Ratio(rest, current, nu, slack))
                     : restRadius;
             }
-            SmoothToParticles();
+            SmoothToParticles(hasBroken ? brokenSegments : default);
             LocateDefect();
             UpdateNeck();
             float smallest = float.PositiveInfinity;
@@ -168,7 +165,7 @@ namespace HookeRope.Radius
                 if (r < smallest) smallest = r;
             }
             neckRadius = RadiusAt(defectSegment, defectT);
-            if (s.NeckMode == NeckMode.Paper && paperNecking) neckRadius = Math.Min(neckRadius, paperWaist);
+            if (s.Necking && s.Mode == NeckMode.Paper && paperNecking) neckRadius = Math.Min(neckRadius, paperWaist);
             minRadius = Math.Min(smallest, neckRadius);
             DecideBreak();
         }
@@ -184,7 +181,7 @@ namespace HookeRope.Radius
             if (t < 0f) t = 0f; else if (t > 1f) t = 1f;
             float baseRadius = baseParticleRadii[segment] + (baseParticleRadii[segment + 1] - baseParticleRadii[segment]) * t;
             if (neckDepth <= 0f) return baseRadius;
-            if (Settings.NeckMode == NeckMode.Zone)
+            if (Settings.Mode == NeckMode.Zone)
             {
                 float zone = NeckZoneRestLength;
                 float s = restArc[segment] + (restArc[segment + 1] - restArc[segment]) * t;
@@ -194,7 +191,7 @@ namespace HookeRope.Radius
                 if (profile > 1f) profile = 1f;
                 return baseRadius * (1f - neckDepth * (1f - profile));
             }
-            if (Settings.NeckMode == NeckMode.Paper && paperNecking)
+            if (Settings.Mode == NeckMode.Paper && paperNecking)
             {
                 float c = currentArc[segment] + (currentArc[segment + 1] - currentArc[segment]) * t;
                 float y = c - paperCenter;
@@ -223,16 +220,17 @@ namespace HookeRope.Radius
             broken = true;
             breakReason = BreakReason.None;
             paperNecking = false;
-            if (Settings.NeckMode == NeckMode.Paper) neckDepth = 0f;
+            if (Settings.Mode == NeckMode.Paper) neckDepth = 0f;
         }
 
-        private void SmoothToParticles()
+        private void SmoothToParticles(ReadOnlySpan<bool> brokenSegments)
         {
             int n = segmentRadii.Length;
+            bool any = brokenSegments.Length > 0;
             for (int i = 0; i <= n; i++)
             {
-                bool left = i > 0 && !brokenCopy[i - 1];
-                bool right = i < n && !brokenCopy[i];
+                bool left = i > 0 && !(any && brokenSegments[i - 1]);
+                bool right = i < n && !(any && brokenSegments[i]);
                 float r;
                 if (left && right) r = 0.5f * (segmentRadii[i - 1] + segmentRadii[i]);
                 else if (left) r = segmentRadii[i - 1];
@@ -245,7 +243,7 @@ namespace HookeRope.Radius
         private void LocateDefect()
         {
             int n = segmentRadii.Length;
-            float position = Settings.NeckMode == NeckMode.Paper ? 0.5f : Settings.DefectPosition;
+            float position = Settings.Necking && Settings.Mode == NeckMode.Paper ? 0.5f : Settings.DefectPosition;
             float target = position * restArc[n];
             int j = 0;
             while (j < n - 1 && restArc[j + 1] <= target) j++;
@@ -259,12 +257,12 @@ namespace HookeRope.Radius
         private void UpdateNeck()
         {
             RadiusSettings s = Settings;
-            if (s.NeckMode == NeckMode.Off) { neckDepth = 0f; paperNecking = false; return; }
+            if (!s.Necking) { neckDepth = 0f; paperNecking = false; return; }
             if (broken) return;
             double strain = segmentStretch[defectSegment] - 1.0;
-            double onset = PoissonRadius.StrainAtRatio(s.RMinFraction, s.PoissonRatio);
-            float rMin = s.RMinFraction * restRadius;
-            if (s.NeckMode == NeckMode.Zone)
+            double onset = PoissonRadius.StrainAtRatio(s.NeckRadiusFraction, s.PoissonRatio);
+            float rMin = s.NeckRadiusFraction * restRadius;
+            if (s.Mode == NeckMode.Zone)
             {
                 double depth = (strain - onset) / s.NeckGrowthStrain;
                 neckDepth = depth > 0.0 ? (depth < 1.0 ? (float)depth : 1f) : 0f;
@@ -285,13 +283,18 @@ namespace HookeRope.Radius
             paperCenter = 0.5f * length;
         }
 
+        /// <summary>
+        /// The one fracture criterion: with <see cref="RadiusSettings.Fracture"/> on, the defect segment breaks when
+        /// its strain reaches <see cref="RadiusSettings.BreakStrain"/>, or, only with <see cref="RadiusSettings.Necking"/>
+        /// on, when the neck radius falls below <see cref="RadiusSettings.BreakRadiusFraction"/>·R.
+        /// </summary>
         private void DecideBreak()
         {
             RadiusSettings s = Settings;
             breakReason = BreakReason.None;
-            if (!s.BreakEnabled || broken) return;
-            if (segmentStretch[defectSegment] - 1f >= s.BreakElongation) breakReason = BreakReason.Elongation;
-            else if (neckRadius < s.BreakRadiusFraction * restRadius) breakReason = BreakReason.NeckRadius;
+            if (!s.Fracture || broken) return;
+            if (segmentStretch[defectSegment] - 1f >= s.BreakStrain) breakReason = BreakReason.Strain;
+            else if (s.Necking && neckRadius < s.BreakRadiusFraction * restRadius) breakReason = BreakReason.NeckRadius;
         }
     }
 }

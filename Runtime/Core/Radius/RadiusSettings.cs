@@ -3,29 +3,31 @@ using System;
 namespace HookeRope.Radius
 {
     /// <summary>
-    /// Validated settings of the radius model (Poisson thinning, necking at a defect, break decision).
-    /// Setters throw <see cref="ArgumentOutOfRangeException"/> naming the property and its valid range.
-    /// Changes take effect at the next <see cref="RadiusModel.Update"/>.
+    /// Validated settings of the radius model: Poisson thinning, necking at a defect and the fracture decision.
+    /// Ranges, units and messages come from <see cref="RopeParameters"/>: setters throw
+    /// <see cref="ArgumentOutOfRangeException"/> naming the property, its range and unit. Changes take effect at
+    /// the next <see cref="RadiusModel.Update"/>.
     /// </summary>
     public sealed class RadiusSettings
     {
         private float poissonRatio = 0.5f;
-        private float rMinFraction = 0.8f;
+        private float neckRadiusFraction = 0.8f;
+        private bool necking = true;
         private NeckMode neckMode = NeckMode.Zone;
-        private float defectPosition = 0.5f;
-        private float neckZoneDiameters = 4f;
-        private float neckGrowthStrain = 0.2f;
-        private float breakRadiusFraction = 0.25f;
-        private float breakElongation = float.PositiveInfinity;
+        private float defectPosition = RopeParameters.DefectPosition.Default;
+        private float neckZoneDiameters = RopeParameters.NeckZoneDiameters.Default;
+        private float neckGrowthStrain = RopeParameters.NeckGrowthStrain.Default;
+        private float breakRadiusFraction = RopeParameters.BreakRadiusFraction.Default;
+        private float breakStrain = float.PositiveInfinity;
 
         /// <summary>Poisson thinning on (eq. 16). Off: every segment keeps the rest radius R and no per-segment work is done. Default true.</summary>
-        public bool PoissonEnabled { get; set; } = true;
+        public bool PoissonThinning { get; set; } = RopeParameters.PoissonThinning.Default;
 
-        /// <summary>Poisson ratio ν (unitless), range [−1, 0.5]; 0.5 keeps the volume (rubber). Default 0.5.</summary>
+        /// <summary>Poisson ratio ν (dimensionless), range [−1, 0.5]; 0.5 keeps the volume (rubber). Default 0.5.</summary>
         public float PoissonRatio
         {
             get => poissonRatio;
-            set => poissonRatio = Require.InClosedRange(value, -1f, 0.5f, nameof(PoissonRatio));
+            set => poissonRatio = RopeParameters.Check(value, RopeParameters.PoissonRatio.Row);
         }
 
         /// <summary>
@@ -33,86 +35,114 @@ namespace HookeRope.Radius
         /// goes slack and buckles instead of being compressed. When false, eq. 16 is applied to compression too
         /// (with the clamps documented on <see cref="HookeRope.Radius.PoissonRadius.Ratio"/>).
         /// </summary>
-        public bool SlackKeepsRestRadius { get; set; } = true;
+        public bool SlackKeepsRestRadius { get; set; } = RopeParameters.SlackKeepsRestRadius.Default;
 
-        /// <summary>Neck onset radius r_min as a fraction of the rest radius R (unitless), range (0, 1]. Default 0.8.</summary>
-        public float RMinFraction
+        /// <summary>Necking on: a neck forms at the defect once the radius falls below r_min (<see cref="NeckRadiusFraction"/>·R). Default true.</summary>
+        public bool Necking
         {
-            get => rMinFraction;
-            set => rMinFraction = Require.InOpenClosedRange(value, 0f, 1f, nameof(RMinFraction));
-        }
-
-        /// <summary>Neck model: <see cref="HookeRope.Radius.NeckMode.Off"/>, Paper or Zone (default).</summary>
-        public NeckMode NeckMode
-        {
-            get => neckMode;
-            set
-            {
-                if (value != NeckMode.Off && value != NeckMode.Paper && value != NeckMode.Zone)
-                    throw new ArgumentOutOfRangeException(nameof(NeckMode), value, "NeckMode must be Off, Paper or Zone.");
-                neckMode = value;
-            }
+            get => necking;
+            set => necking = value;
         }
 
         /// <summary>
-        /// Defect position as a fraction of the rest length from the first particle (unitless), range [0, 1];
+        /// Neck model used when <see cref="Necking"/> is on: <see cref="HookeRope.Radius.NeckMode.Zone"/> (default) or
+        /// Paper. Reads <see cref="HookeRope.Radius.NeckMode.Off"/> while necking is off. Setting Off turns necking off;
+        /// setting Paper or Zone turns it on (the 0.1 meaning, kept until Off is removed; set <see cref="Necking"/>
+        /// after the mode).
+        /// </summary>
+        public NeckMode NeckMode
+        {
+            get => necking ? neckMode : NeckMode.Off;
+            set
+            {
+                if (value == NeckMode.Off) { necking = false; return; }
+                if (value != NeckMode.Paper && value != NeckMode.Zone)
+                    throw new ArgumentOutOfRangeException(nameof(NeckMode), value, "NeckMode must be Paper or Zone (turn necking off with Necking = false).");
+                neckMode = value;
+                necking = true;
+            }
+        }
+
+        /// <summary>Neck onset radius r_min as a fraction of the rest radius R (dimensionless), range [0.01, 1]. Default 0.8.</summary>
+        public float NeckRadiusFraction
+        {
+            get => neckRadiusFraction;
+            set => neckRadiusFraction = RopeParameters.Check(value, RopeParameters.NeckRadiusFraction.Row);
+        }
+
+        /// <summary>
+        /// Defect position as a fraction of the rest length from the first particle (dimensionless), range [0, 1];
         /// the neck forms and the rope breaks there. Default 0.5. Paper mode always uses the middle (eq. 18).
         /// </summary>
         public float DefectPosition
         {
             get => defectPosition;
-            set => defectPosition = Require.InClosedRange(value, 0f, 1f, nameof(DefectPosition));
+            set => defectPosition = RopeParameters.Check(value, RopeParameters.DefectPosition.Row);
         }
 
         /// <summary>
-        /// Zone mode: rest length of the neck zone in rope diameters 2R (unitless), range [0.5, 1000]. Default 4,
+        /// Zone mode: rest length of the neck zone in rope diameters 2R (dimensionless), range [0.5, 1000]. Default 4,
         /// i.e. a zone of 8·R of rest length centred on the defect.
         /// </summary>
         public float NeckZoneDiameters
         {
             get => neckZoneDiameters;
-            set => neckZoneDiameters = Require.InClosedRange(value, 0.5f, 1000f, nameof(NeckZoneDiameters));
+            set => neckZoneDiameters = RopeParameters.Check(value, RopeParameters.NeckZoneDiameters.Row);
         }
 
         /// <summary>
-        /// Zone mode: strain beyond onset (unitless) over which the neck deepens from zero to the full
+        /// Zone mode: strain beyond onset (dimensionless) over which the neck deepens from zero to the full
         /// hyperbola, range (0, 100]. Default 0.2.
         /// </summary>
         public float NeckGrowthStrain
         {
             get => neckGrowthStrain;
-            set => neckGrowthStrain = Require.InOpenClosedRange(value, 0f, 100f, nameof(NeckGrowthStrain));
+            set => neckGrowthStrain = RopeParameters.Check(value, RopeParameters.NeckGrowthStrain.Row);
         }
 
-        /// <summary>Break decision on. Off: the model never asks for a break and skips the test. Default true.</summary>
-        public bool BreakEnabled { get; set; } = true;
+        /// <summary>Fracture on: the defect segment breaks when a criterion is met. Off: the model never asks for a break and skips the test. Default true.</summary>
+        public bool Fracture { get; set; } = RopeParameters.Fracture.Default;
 
         /// <summary>
-        /// The rope breaks when the neck radius falls below this fraction of R (unitless), range [0, 1); 0 turns
-        /// this criterion off. Default 0.25.
+        /// The rope breaks when the strain l/L − 1 of the defect segment reaches this value (dimensionless, the
+        /// elongation at break), range (0, 1000]. Default +∞ (this criterion off) until the 0.2 default change.
+        /// </summary>
+        public float BreakStrain
+        {
+            get => breakStrain;
+            set => breakStrain = RopeParameters.Check(value, RopeParameters.BreakStrain.Row);
+        }
+
+        /// <summary>
+        /// The rope also breaks when the neck radius falls below this fraction of R (dimensionless), range [0, 0.99];
+        /// 0 turns this criterion off. Needs <see cref="Necking"/>. Default 0.25.
         /// </summary>
         public float BreakRadiusFraction
         {
             get => breakRadiusFraction;
-            set => breakRadiusFraction = Require.InClosedOpenRange(value, 0f, 1f, nameof(BreakRadiusFraction));
+            set => breakRadiusFraction = RopeParameters.Check(value, RopeParameters.BreakRadiusFraction.Row);
         }
 
-        /// <summary>
-        /// The rope breaks when the strain l/L − 1 of the defect segment reaches this value (unitless, the
-        /// elongation at break), range (0, +∞]; +∞ (default) turns this criterion off.
-        /// </summary>
+        /// <summary>Old name of <see cref="PoissonThinning"/> (removed with the issue 12 contract step).</summary>
+        public bool PoissonEnabled { get => PoissonThinning; set => PoissonThinning = value; }
+
+        /// <summary>Old name of <see cref="NeckRadiusFraction"/> (removed with the issue 12 contract step).</summary>
+        public float RMinFraction { get => NeckRadiusFraction; set => NeckRadiusFraction = value; }
+
+        /// <summary>Old name of <see cref="Fracture"/> (removed with the issue 12 contract step).</summary>
+        public bool BreakEnabled { get => Fracture; set => Fracture = value; }
+
+        /// <summary>Old name of <see cref="BreakStrain"/>, which also accepts +∞ (criterion off); removed with the issue 12 contract step.</summary>
         public float BreakElongation
         {
-            get => breakElongation;
-            set
-            {
-                if (float.IsNaN(value) || !(value > 0f))
-                    throw new ArgumentOutOfRangeException(nameof(BreakElongation), value, "BreakElongation must be in (0, +inf].");
-                breakElongation = value;
-            }
+            get => breakStrain;
+            set => breakStrain = float.IsPositiveInfinity(value) ? value : RopeParameters.Check(value, RopeParameters.BreakStrain.Row);
         }
 
-        /// <summary>True when any part (thinning, neck, break) is on; when false the model does no per-step work.</summary>
-        public bool AnyEnabled => PoissonEnabled || neckMode != NeckMode.Off || BreakEnabled;
+        /// <summary>True when any part (thinning, neck, fracture) is on; when false the model does no per-step work.</summary>
+        public bool AnyEnabled => PoissonThinning || necking || Fracture;
+
+        /// <summary>The neck mode whether or not necking is on (Paper or Zone).</summary>
+        internal NeckMode Mode => neckMode;
     }
 }

@@ -54,7 +54,7 @@ namespace HookeRope.Tests.Core.Geometry
         public void MeshVolumeAtOnePointSixStretchFollowsPoissonRatio(double nu, double expectedRatio)
         {
             const int n = 20;
-            var settings = new RadiusSettings { PoissonRatio = (float)nu, NeckMode = NeckMode.Off, BreakEnabled = false };
+            var settings = new RadiusSettings { NeckRadiusFraction = 0.8f, PoissonRatio = (float)nu, Necking = false, Fracture = false };
             var rest = RopeShape.Straight(n, 0.1f, 1f, 0.3f, -1f, 0.2f);
             var stretched = RopeShape.Straight(n, 0.1f, 1.6f, 0.3f, -1f, 0.2f);
             double restVolume = Volume(settings, rest);
@@ -151,7 +151,7 @@ namespace HookeRope.Tests.Core.Geometry
             Assert.That(MeshChecks.AllFiniteAndUnit(vertices, update.VertexCount), Is.True);
             Assert.That(float.IsFinite(update.BoundsMin.X) && float.IsFinite(update.BoundsMax.Y), Is.True);
 
-            var model = new RadiusModel(new RadiusSettings(), R, shape.Rest);
+            var model = new RadiusModel(new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f }, R, shape.Rest);
             var lengths = new float[12];
             Array.Fill(lengths, 0.06f);
             lengths[3] = float.NaN;
@@ -242,22 +242,25 @@ namespace HookeRope.Tests.Core.Geometry
         }
 
         [Test]
-        public void PositionsAreRelativeToTheFirstParticleFarFromTheOrigin()
+        public void VerticesAndBoundsAreInTheFrameOfTheInputPositions()
         {
-            var builder = new TubeMeshBuilder(new TubeMeshSettings(), 8);
+            var builder = new TubeMeshBuilder(new TubeMeshSettings { RadialSegments = 16 }, 8);
             var near = RopeShape.Straight(8, 0.125f, 1f, 1f, 0f, 0f);
             var far = RopeShape.Straight(8, 0.125f, 1f, 1f, 0f, 0f, 8192f, -4096f, 16384f);
             var a = TubeMeshTopologyTests.Build(builder, near, R, new bool[8], out var nearVertices, out _);
             var b = TubeMeshTopologyTests.Build(builder, far, R, new bool[8], out var farVertices, out _);
-            Assert.That(b.Origin.X, Is.EqualTo(8192f));
-            Assert.That(b.Origin.Z, Is.EqualTo(16384f));
+            Assert.That(b.Origin.X, Is.EqualTo(0f), "nothing left for the caller to add");
             Assert.That(nearVertices[0].PX, Is.EqualTo(0f));
+            // Far out, a float holds 2^-9 m at 16384 m: the vertices are the near ones, shifted, to that precision.
             for (int i = 0; i < a.VertexCount; i++)
             {
-                Assert.That(farVertices[i].PX, Is.EqualTo(nearVertices[i].PX).Within(1e-7));
-                Assert.That(farVertices[i].PY, Is.EqualTo(nearVertices[i].PY).Within(1e-7));
-                Assert.That(farVertices[i].PZ, Is.EqualTo(nearVertices[i].PZ).Within(1e-7));
+                Assert.That(farVertices[i].PX, Is.EqualTo(nearVertices[i].PX + 8192f).Within(2e-3));
+                Assert.That(farVertices[i].PY, Is.EqualTo(nearVertices[i].PY - 4096f).Within(2e-3));
+                Assert.That(farVertices[i].PZ, Is.EqualTo(nearVertices[i].PZ + 16384f).Within(2e-3));
+                Assert.That(farVertices[i].PX, Is.InRange(b.BoundsMin.X, b.BoundsMax.X));
+                Assert.That(farVertices[i].PZ, Is.InRange(b.BoundsMin.Z, b.BoundsMax.Z));
             }
+            Assert.That(a.BoundsMin.X, Is.EqualTo(b.BoundsMin.X - 8192f).Within(2e-3));
         }
     }
 }

@@ -69,7 +69,7 @@ namespace HookeRope.Tests.Core.Geometry
         [Test]
         public void IndicesAreRewrittenOnlyWhenTheTopologyChanges()
         {
-            var builder = new TubeMeshBuilder(new TubeMeshSettings(), 8);
+            var builder = new TubeMeshBuilder(new TubeMeshSettings { RadialSegments = 16 }, 8);
             var shape = RopeShape.Straight(8, 0.1f, 1.2f, 1f, 0f, 0f);
             var broken = new bool[8];
             var radii = new float[8];
@@ -92,7 +92,7 @@ namespace HookeRope.Tests.Core.Geometry
         [Test]
         public void MeshUpdateAllocatesNothing()
         {
-            var builder = new TubeMeshBuilder(new TubeMeshSettings(), 50);
+            var builder = new TubeMeshBuilder(new TubeMeshSettings { RadialSegments = 16 }, 50);
             var shape = RopeShape.Helix(50, 0.05f, 0.2f, 0.1f);
             var broken = new bool[50];
             broken[20] = true;
@@ -112,7 +112,7 @@ namespace HookeRope.Tests.Core.Geometry
         [Test]
         public void BadInputThrowsNamingTheParameterAndRange()
         {
-            var settings = new TubeMeshSettings();
+            var settings = new TubeMeshSettings { RadialSegments = 16 };
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => settings.RadialSegments = 2).Message, Does.Contain("RadialSegments").And.Contain("[3, 64]"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => settings.RadialSegments = 65).ParamName, Is.EqualTo("RadialSegments"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => settings.RingsPerSegment = 0).Message, Does.Contain("[1, 64]"));

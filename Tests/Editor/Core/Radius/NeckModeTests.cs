@@ -21,7 +21,7 @@ namespace HookeRope.Tests.Core.Radius
         [Test]
         public void PaperProfileEndsAtRMinHasAAtTheDefectAndIsSymmetricAndMonotonic()
         {
-            var settings = new RadiusSettings { NeckMode = NeckMode.Paper, BreakEnabled = false };
+            var settings = new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f, NeckMode = NeckMode.Paper, Fracture = false };
             var model = new RadiusModel(settings, R, Uniform(SegmentLength));
             const float stretch = 1.7f; // onset at 1/0.8² = 1.5625
             model.Update(Uniform(SegmentLength * stretch), ReadOnlySpan<bool>.Empty);
@@ -49,7 +49,7 @@ namespace HookeRope.Tests.Core.Radius
         [Test]
         public void PaperModeJumpsAtOnsetOverALongRope()
         {
-            var settings = new RadiusSettings { NeckMode = NeckMode.Paper, BreakEnabled = false };
+            var settings = new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f, NeckMode = NeckMode.Paper, Fracture = false };
             var model = new RadiusModel(settings, R, Uniform(SegmentLength));
             model.Update(Uniform(SegmentLength * 1.5624f), ReadOnlySpan<bool>.Empty);
             float before = model.NeckRadius;
@@ -63,7 +63,7 @@ namespace HookeRope.Tests.Core.Radius
         [Test]
         public void ZoneModeRadiusChangesAtMostOnePercentOfRPerStepThroughOnset()
         {
-            var settings = new RadiusSettings { NeckMode = NeckMode.Zone, BreakEnabled = false };
+            var settings = new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f, NeckMode = NeckMode.Zone, Fracture = false };
             var rest = Uniform(SegmentLength);
             var model = new RadiusModel(settings, R, rest);
             var layout = RingLayout.Refined(rest, 4, model.DefectRestArc, model.NeckZoneRestLength, 16);
@@ -101,7 +101,7 @@ namespace HookeRope.Tests.Core.Radius
         [Test]
         public void ZoneNeckSitsAtTheDefectPositionAndLeavesTheRestOfTheRopeAlone()
         {
-            var settings = new RadiusSettings { NeckMode = NeckMode.Zone, DefectPosition = 0.25f, BreakEnabled = false };
+            var settings = new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f, NeckMode = NeckMode.Zone, DefectPosition = 0.25f, Fracture = false };
             var model = new RadiusModel(settings, R, Uniform(SegmentLength));
             model.Update(Uniform(SegmentLength * 1.9f), ReadOnlySpan<bool>.Empty);
             Assert.That(model.DefectSegment, Is.EqualTo(5));
@@ -116,7 +116,7 @@ namespace HookeRope.Tests.Core.Radius
         [Test]
         public void NeckOffKeepsThePoissonRadiusAtTheDefect()
         {
-            var settings = new RadiusSettings { NeckMode = NeckMode.Off, BreakEnabled = false };
+            var settings = new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f, Necking = false, Fracture = false };
             var model = new RadiusModel(settings, R, Uniform(SegmentLength));
             model.Update(Uniform(SegmentLength * 2f), ReadOnlySpan<bool>.Empty);
             Assert.That(model.IsNecking, Is.False);

@@ -15,7 +15,7 @@ namespace HookeRope.Tests.Core.Radius
         [TestCase(0.5, 10.0)]
         public void SegmentRadiusMatchesEquation16(double nu, double stretch)
         {
-            var settings = new RadiusSettings { PoissonRatio = (float)nu, NeckMode = NeckMode.Off, BreakEnabled = false };
+            var settings = new RadiusSettings { NeckRadiusFraction = 0.8f, PoissonRatio = (float)nu, Necking = false, Fracture = false };
             const float restRadius = 0.006f;
             var rest = new[] { 0.1f, 0.1f, 0.1f };
             var model = new RadiusModel(settings, restRadius, rest);
@@ -107,7 +107,7 @@ namespace HookeRope.Tests.Core.Radius
                 rest[j] = 0.2f;
                 current[j] = 0.2f * (1f + 0.3f * (n - j - 0.5f) / n);
             }
-            var model = new RadiusModel(new RadiusSettings { NeckMode = NeckMode.Off }, 0.01f, rest);
+            var model = new RadiusModel(new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f, Necking = false }, 0.01f, rest);
             model.Update(current, ReadOnlySpan<bool>.Empty);
             for (int i = 1; i <= n; i++)
                 Assert.That(model.ParticleRadii[i], Is.GreaterThan(model.ParticleRadii[i - 1]));

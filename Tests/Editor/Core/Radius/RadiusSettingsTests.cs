@@ -13,54 +13,75 @@ namespace HookeRope.Tests.Core.Radius
         [TestCase(float.PositiveInfinity)]
         public void PoissonRatioOutsideRangeThrows(float value)
         {
-            var e = Assert.Throws<ArgumentOutOfRangeException>(() => new RadiusSettings().PoissonRatio = value);
+            var e = Assert.Throws<ArgumentOutOfRangeException>(() => new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f }.PoissonRatio = value);
             Assert.That(e.ParamName, Is.EqualTo("PoissonRatio"));
             Assert.That(e.Message, Does.Contain("[-1, 0.5]"));
         }
 
         [TestCase(0f)]
-        [TestCase(-0.1f)]
+        [TestCase(0.009f)]
         [TestCase(1.001f)]
         [TestCase(float.NaN)]
-        public void RMinFractionOutsideRangeThrows(float value)
+        public void NeckRadiusFractionOutsideRangeThrows(float value)
         {
-            var e = Assert.Throws<ArgumentOutOfRangeException>(() => new RadiusSettings().RMinFraction = value);
-            Assert.That(e.ParamName, Is.EqualTo("RMinFraction"));
-            Assert.That(e.Message, Does.Contain("(0, 1]"));
+            var e = Assert.Throws<ArgumentOutOfRangeException>(() => new RadiusSettings().NeckRadiusFraction = value);
+            Assert.That(e.ParamName, Is.EqualTo("NeckRadiusFraction"));
+            Assert.That(e.Message, Does.Contain("[0.01, 1]"));
         }
 
         [Test]
         public void OtherParametersNameThemselvesAndTheirRange()
         {
-            var s = new RadiusSettings();
+            var s = new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f };
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.DefectPosition = 1.5f).Message, Does.Contain("DefectPosition").And.Contain("[0, 1]"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.NeckZoneDiameters = 0.1f).Message, Does.Contain("NeckZoneDiameters").And.Contain("[0.5, 1000]"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.NeckGrowthStrain = 0f).Message, Does.Contain("NeckGrowthStrain").And.Contain("(0, 100]"));
-            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.BreakRadiusFraction = 1f).Message, Does.Contain("BreakRadiusFraction").And.Contain("[0, 1)"));
-            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.BreakElongation = float.NaN).Message, Does.Contain("BreakElongation").And.Contain("(0, +inf]"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.BreakRadiusFraction = 1f).Message, Does.Contain("BreakRadiusFraction").And.Contain("[0, 0.99]"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.BreakStrain = float.NaN).Message, Does.Contain("BreakStrain").And.Contain("(0, 1000]"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.BreakStrain = float.PositiveInfinity).ParamName, Is.EqualTo("BreakStrain"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.NeckMode = (NeckMode)7).ParamName, Is.EqualTo("NeckMode"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new RadiusModel(s, float.NaN, new[] { 1f })).ParamName, Is.EqualTo("restRadius"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new RadiusModel(s, 0.01f, new[] { 1f, 0f })).ParamName, Is.EqualTo("restLengths"));
         }
 
         [Test]
-        public void DefaultsAreDocumentedValues()
+        public void DefaultsAreTheLegacyCoreValues()
         {
+            // Pinned until the core defaults move to the RopeParameters table (issue 12 contract step).
             var s = new RadiusSettings();
             Assert.That(s.PoissonRatio, Is.EqualTo(0.5f));
-            Assert.That(s.RMinFraction, Is.EqualTo(0.8f));
+            Assert.That(s.NeckRadiusFraction, Is.EqualTo(0.8f));
+            Assert.That(s.PoissonThinning, Is.True);
+            Assert.That(s.Necking, Is.True);
+            Assert.That(s.Fracture, Is.True);
             Assert.That(s.NeckMode, Is.EqualTo(NeckMode.Zone));
             Assert.That(s.DefectPosition, Is.EqualTo(0.5f));
             Assert.That(s.NeckZoneDiameters, Is.EqualTo(4f));
             Assert.That(s.NeckGrowthStrain, Is.EqualTo(0.2f));
             Assert.That(s.BreakRadiusFraction, Is.EqualTo(0.25f));
-            Assert.That(s.BreakElongation, Is.EqualTo(float.PositiveInfinity));
+            Assert.That(s.BreakStrain, Is.EqualTo(float.PositiveInfinity));
+        }
+
+        [Test]
+        public void OldNamesForwardToTheNewOnes()
+        {
+            var s = new RadiusSettings { PoissonEnabled = false, RMinFraction = 0.7f, BreakEnabled = false, BreakElongation = 0.4f };
+            Assert.That(s.PoissonThinning, Is.False);
+            Assert.That(s.NeckRadiusFraction, Is.EqualTo(0.7f));
+            Assert.That(s.Fracture, Is.False);
+            Assert.That(s.BreakStrain, Is.EqualTo(0.4f));
+            s.NeckMode = NeckMode.Off;
+            Assert.That(s.Necking, Is.False);
+            Assert.That(s.NeckMode, Is.EqualTo(NeckMode.Off));
+            s.NeckMode = NeckMode.Paper;
+            Assert.That(s.Necking, Is.True);
+            Assert.That(s.NeckMode, Is.EqualTo(NeckMode.Paper));
         }
 
         [Test]
         public void EverythingOffDoesNoWork()
         {
-            var s = new RadiusSettings { PoissonEnabled = false, NeckMode = NeckMode.Off, BreakEnabled = false };
+            var s = new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f, PoissonThinning = false, Necking = false, Fracture = false };
             var model = new RadiusModel(s, 0.01f, new[] { 1f, 1f });
             Assert.That(model.IsActive, Is.False);
             // Returns before reading its inputs: even spans of the wrong length are not looked at.
@@ -76,7 +97,7 @@ namespace HookeRope.Tests.Core.Radius
             var current = new float[200];
             Array.Fill(rest, 0.01f);
             Array.Fill(current, 0.016f);
-            var model = new RadiusModel(new RadiusSettings(), 0.004f, rest);
+            var model = new RadiusModel(new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f }, 0.004f, rest);
             var broken = new bool[200];
             var radii = new float[201];
             var segments = new int[201];

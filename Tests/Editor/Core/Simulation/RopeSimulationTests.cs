@@ -27,7 +27,7 @@ namespace HookeRope.Tests.Core.Simulation
         {
             // 2 m, 2 kg rope of E·A = 200 N hanging from its top: static strain falls from ≈ 0.096 at the top to 0.
             var settings = Soft(2f, 20, 200f, 2f);
-            var radius = new RadiusSettings { NeckMode = NeckMode.Off, BreakEnabled = false };
+            var radius = new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f, Necking = false, Fracture = false };
             var sim = new RopeSimulation(settings, Float3.Zero, new Float3(0f, -2f, 0f), radius);
             sim.Rope.AddPin(0, Float3.Zero);
             for (int i = 0; i < 270; i++) sim.Step(Step);
@@ -38,13 +38,13 @@ namespace HookeRope.Tests.Core.Simulation
             for (int j = 0; j < sim.Rope.SegmentCount; j++)
             {
                 double expected = R * Math.Sqrt(sim.Rope.RestLengths[j] / sim.Rope.SegmentLengths[j]);
-                Assert.That(sim.SegmentRadii[j], Is.EqualTo(expected).Within(1e-6 * R));
+                Assert.That(sim.RadiusModel.SegmentRadii[j], Is.EqualTo(expected).Within(1e-6 * R));
             }
             // Top segment: static strain (m g (1 − 0.5/20))/(E·A) = 0.0956 → r = R/sqrt(1.0956) = 0.9554 R.
             double topStrain = 2.0 * 9.81 * (1.0 - 0.5 / 20.0) / 200.0;
-            TestContext.WriteLine("top radius " + (sim.SegmentRadii[0] / R).ToString("F4") + " R, static theory " + (1.0 / Math.Sqrt(1.0 + topStrain)).ToString("F4") + " R");
-            Assert.That(sim.SegmentRadii[0] / R, Is.EqualTo(1.0 / Math.Sqrt(1.0 + topStrain)).Within(0.002));
-            Assert.That(sim.SegmentRadii[19] / R, Is.GreaterThan(0.995));
+            TestContext.WriteLine("top radius " + (sim.RadiusModel.SegmentRadii[0] / R).ToString("F4") + " R, static theory " + (1.0 / Math.Sqrt(1.0 + topStrain)).ToString("F4") + " R");
+            Assert.That(sim.RadiusModel.SegmentRadii[0] / R, Is.EqualTo(1.0 / Math.Sqrt(1.0 + topStrain)).Within(0.002));
+            Assert.That(sim.RadiusModel.SegmentRadii[19] / R, Is.GreaterThan(0.995));
             // The collision radius is the radius model's particle radius.
             for (int i = 0; i < sim.Rope.ParticleCount; i++)
                 Assert.That(sim.Rope.ParticleRadius[i], Is.EqualTo(particle[i]));
@@ -55,8 +55,8 @@ namespace HookeRope.Tests.Core.Simulation
         {
             var settings = Soft(1f, 20, 500f, 0.05f);
             settings.Gravity = Float3.Zero;
-            var radius = new RadiusSettings { NeckMode = NeckMode.Zone, DefectPosition = 0.33f, BreakElongation = 0.5f, BreakRadiusFraction = 0f };
-            var sim = new RopeSimulation(settings, Float3.Zero, new Float3(1f, 0f, 0f), radius);
+            var radius = new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f, NeckMode = NeckMode.Zone, DefectPosition = 0.33f, BreakStrain = 0.5f, BreakRadiusFraction = 0f };
+            var sim = new RopeSimulation(settings, Float3.Zero, new Float3(1f, 0f, 0f), radius, new TubeMeshSettings { RadialSegments = 16 });
             sim.Rope.AddPin(0, Float3.Zero);
             int end = sim.Rope.AddPin(20, new Float3(1f, 0f, 0f));
             int brokenSegment = -1;
@@ -75,6 +75,9 @@ namespace HookeRope.Tests.Core.Simulation
             for (int j = 0; j < 20; j++) if (j != 6) Assert.That(sim.Rope.IsSegmentBroken(j), Is.False, "segment " + j);
             Assert.That(stretchAtBreak, Is.EqualTo(1.5f).Within(0.02f));
             Assert.That(sim.RadiusModel.IsBroken, Is.True);
+            Assert.That(sim.Readouts.FirstBreak.HasValue, Is.True);
+            Assert.That(sim.Readouts.FirstBreak.Value.Segment, Is.EqualTo(6));
+            Assert.That(sim.Rope.BrokenSegmentCount, Is.EqualTo(1));
             // The mesh now has two pieces with burrs at the break.
             var vertices = new TubeVertex[sim.GetVertexCount()];
             var indices = new int[sim.GetIndexCount()];
@@ -90,18 +93,18 @@ namespace HookeRope.Tests.Core.Simulation
             var settings = new RopeSettings { RestLength = 2f, SegmentCount = 20, Radius = radius };
             settings.AxialStiffness = 1000f;
             settings.Gravity = Float3.Zero;
-            var radiusSettings = new RadiusSettings { DefectPosition = 0.33f, BreakEnabled = false };
+            var radiusSettings = new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f, DefectPosition = 0.33f, Fracture = false };
             var sim = new RopeSimulation(settings, Float3.Zero, new Float3(3.6f, 0f, 0f), radiusSettings);
             sim.Rope.AddPin(0, Float3.Zero);
             sim.Rope.AddPin(20, new Float3(3.6f, 0f, 0f));
             for (int i = 0; i < 5; i++) sim.Step(Step);
             Assert.That(sim.RadiusModel.NeckDepth, Is.EqualTo(1f)); // 1.8× stretch: past onset + growth strain
-            sim.FillRingRadii();
+            sim.FillMesh(new TubeVertex[sim.GetVertexCount()], new int[sim.GetIndexCount()]);
             float smallestRing = float.MaxValue;
-            foreach (float r in sim.RingRadii) smallestRing = Math.Min(smallestRing, r);
+            foreach (float r in sim.Mesh.RingRadii) smallestRing = Math.Min(smallestRing, r);
             // 16 rings across the 4.8 cm zone: the deepest ring sits within 2 % of R of the waist...
             Assert.That(smallestRing, Is.EqualTo(sim.NeckRadius).Within(0.02f * radius));
-            Assert.That(sim.RingLayout.RingCount, Is.GreaterThan(20 * 4 + 1));
+            Assert.That(sim.Mesh.Layout.RingCount, Is.GreaterThan(20 * 4 + 1));
             // ...where 4 uniform rings per 10 cm segment would miss the neck by far.
             float uniformSmallest = float.MaxValue;
             for (int j = 0; j < 20; j++)
@@ -117,7 +120,7 @@ namespace HookeRope.Tests.Core.Simulation
             float r = R / MathF.Sqrt(1.5f);
             var settings = new RopeSettings { RestLength = 1f, SegmentCount = 20, Radius = R };
             settings.YoungsModulus = 1e7f;
-            var radius = new RadiusSettings { NeckMode = NeckMode.Off, BreakEnabled = false };
+            var radius = new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f, Necking = false, Fracture = false };
             var sim = new RopeSimulation(settings, new Float3(0f, r, 0f), new Float3(1.5f, r, 0f), radius);
             Assert.That(sim.Rope.ParticleRadius[10], Is.EqualTo(r).Within(1e-4 * R), "radii applied before the first step");
             sim.Rope.AddPin(0, new Float3(0f, r, 0f));
@@ -156,24 +159,103 @@ namespace HookeRope.Tests.Core.Simulation
             var indices = new int[sim.GetIndexCount()];
             var update = sim.FillMesh(vertices, indices);
             Assert.That(update.Origin.X, Is.EqualTo(0f).Within(1e-6));
-            for (int k = 0; k < sim.RingRadii.Length; k++) Assert.That(sim.RingRadii[k], Is.EqualTo(R));
+            for (int k = 0; k < sim.Mesh.RingRadii.Length; k++) Assert.That(sim.Mesh.RingRadii[k], Is.EqualTo(R));
         }
 
         [Test]
         public void StepAndMeshFillAllocateNothing()
         {
             var settings = Soft(2f, 40, 300f, 0.5f);
-            var sim = new RopeSimulation(settings, Float3.Zero, new Float3(0f, -2f, 0f), new RadiusSettings { BreakEnabled = false });
+            var sim = new RopeSimulation(settings, Float3.Zero, new Float3(0f, -2f, 0f), new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f, Fracture = false });
             sim.Rope.AddPin(0, Float3.Zero);
             sim.Rope.AddLoad(40, 3f);
             var vertices = new TubeVertex[sim.GetVertexCount()];
             var indices = new int[sim.GetIndexCount()];
+            var x = new float[41];
+            var y = new float[41];
+            var z = new float[41];
             long bytes = SteadyStateAllocation.Bytes(() =>
             {
                 sim.Step(Step);
                 sim.FillMesh(vertices, indices);
+                sim.Rope.Interpolate(0.5f, x, y, z);
+                sim.FillMesh(x, y, z, vertices, indices, 0.5f);
+                sim.GetVertexCount();
+                sim.GetIndexCount();
             }, 20);
             Assert.That(bytes, Is.EqualTo(0));
+        }
+
+        [Test]
+        public void FillMeshInTheCallersFrameEqualsTheRopeLocalMeshShifted()
+        {
+            var settings = Soft(1f, 12, 300f, 0.2f);
+            var sim = new RopeSimulation(settings, new Float3(1f, 2f, 3f), new Float3(2f, 1.5f, 3f), new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f });
+            sim.Rope.AddPin(0, new Float3(1f, 2f, 3f));
+            for (int i = 0; i < 20; i++) sim.Step(Step);
+            sim.Rope.BreakSegment(5);
+            var local = new TubeVertex[sim.GetVertexCount()];
+            var shifted = new TubeVertex[local.Length];
+            var li = new int[sim.GetIndexCount()];
+            var si = new int[li.Length];
+            var a = sim.FillMesh(local, li);
+            var offset = new Float3(-10f, 4f, 0.5f);
+            int n = sim.Rope.ParticleCount;
+            float[] x = new float[n], y = new float[n], z = new float[n];
+            for (int i = 0; i < n; i++)
+            {
+                x[i] = sim.Rope.PositionX[i] + offset.X;
+                y[i] = sim.Rope.PositionY[i] + offset.Y;
+                z[i] = sim.Rope.PositionZ[i] + offset.Z;
+            }
+            var b = sim.FillMesh(x, y, z, shifted, si);
+            Assert.That(b.VertexCount, Is.EqualTo(a.VertexCount));
+            Assert.That(b.BurrIndexCount, Is.GreaterThan(0), "the broken flags come from the rope");
+            Assert.That(b.Origin.X, Is.EqualTo(0f));
+            Assert.That(a.Origin.X, Is.EqualTo(sim.Rope.Origin.X), "the rope-local overload: world = Rope.Origin + v");
+            for (int v = 0; v < a.VertexCount; v++)
+            {
+                Assert.That(shifted[v].PX, Is.EqualTo(local[v].PX + offset.X).Within(1e-5));
+                Assert.That(shifted[v].PY, Is.EqualTo(local[v].PY + offset.Y).Within(1e-5));
+                Assert.That(shifted[v].PZ, Is.EqualTo(local[v].PZ + offset.Z).Within(1e-5));
+                Assert.That(shifted[v].NX, Is.EqualTo(local[v].NX).Within(1e-5));
+            }
+            for (int k = 0; k < li.Length; k++) Assert.That(si[k], Is.EqualTo(li[k]));
+            Assert.That(b.BoundsMin.X, Is.EqualTo(a.BoundsMin.X + offset.X).Within(1e-5));
+
+            // radiusScale scales the ring radii: the rings shrink around the same centres.
+            var half = new TubeVertex[local.Length];
+            sim.FillMesh(sim.Rope.PositionX, sim.Rope.PositionY, sim.Rope.PositionZ, half, si, 0.5f);
+            float full = DistanceFromAxis(local, 1, local[0]);
+            Assert.That(DistanceFromAxis(half, 1, half[0]), Is.EqualTo(0.5f * full).Within(1e-3f * full));
+        }
+
+        [Test]
+        public void FillMeshFarFromTheOriginEqualsTheRopeAtTheOrigin()
+        {
+            // The rope-local overload keeps full precision far out: the lab adds Rope.Origin once, in double if it likes.
+            var near = new RopeSimulation(Soft(1f, 8, 300f, 0.2f), Float3.Zero, new Float3(1f, 0f, 0f), meshSettings: new TubeMeshSettings { RadialSegments = 16 });
+            var far = new RopeSimulation(Soft(1f, 8, 300f, 0.2f), new Float3(8192f, -4096f, 16384f), new Float3(8193f, -4096f, 16384f), meshSettings: new TubeMeshSettings { RadialSegments = 16 });
+            var a = new TubeVertex[near.GetVertexCount()];
+            var b = new TubeVertex[far.GetVertexCount()];
+            var ia = new int[near.GetIndexCount()];
+            var ib = new int[far.GetIndexCount()];
+            var ua = near.FillMesh(a, ia);
+            var ub = far.FillMesh(b, ib);
+            Assert.That(ub.Origin.X, Is.EqualTo(8192f));
+            Assert.That(ub.VertexCount, Is.EqualTo(ua.VertexCount));
+            for (int v = 0; v < ua.VertexCount; v++)
+            {
+                Assert.That(b[v].PX, Is.EqualTo(a[v].PX).Within(1e-7));
+                Assert.That(b[v].PY, Is.EqualTo(a[v].PY).Within(1e-7));
+                Assert.That(b[v].PZ, Is.EqualTo(a[v].PZ).Within(1e-7));
+            }
+        }
+
+        private static float DistanceFromAxis(TubeVertex[] vertices, int index, TubeVertex centre)
+        {
+            float dx = vertices[index].PX - centre.PX, dy = vertices[index].PY - centre.PY, dz = vertices[index].PZ - centre.PZ;
+            return MathF.Sqrt(dx * dx + dy * dy + dz * dz);
         }
     }
 }

@@ -1,0 +1,109 @@
+using System;
+using HookeRope.Radius;
+using HookeRope.Solver;
+
+namespace HookeRope.Geometry
+{
+    /// <summary>
+    /// The tube mesh of a <see cref="RopeSimulation"/>: its ring layout (refined around the Zone-mode neck), the
+    /// builder and the ring-radius scratch. Allocates only when the topology settings, the neck mode, the defect or
+    /// the zone change (or the model is rebuilt); the fill itself is allocation-free.
+    /// </summary>
+    internal sealed class RopeMesh
+    {
+        /// <summary>Rings placed inside the Zone-mode neck zone (the ring layout is refined there).</summary>
+        internal const int RingsInNeckZone = 16;
+
+        private readonly RopeSimulation simulation;
+        private TubeMeshBuilder builder;
+        private float[] ringRadii = Array.Empty<float>();
+        private int rings;
+        private bool caps;
+        private bool burr;
+        private bool zoneLayout;
+        private float defect;
+        private float zone;
+
+        internal RopeMesh(RopeSimulation simulation, TubeMeshSettings settings)
+        {
+            this.simulation = simulation;
+            Settings = settings;
+        }
+
+        /// <summary>Mesh settings (topology values are picked up at the next fill or count).</summary>
+        internal TubeMeshSettings Settings { get; }
+
+        /// <summary>Incremented whenever the topology changes (a break, new mesh settings, a new layout).</summary>
+        internal int TopologyVersion { get; private set; }
+
+        /// <summary>The ring layout of the current builder.</summary>
+        internal RingLayout Layout => Ensure().Layout;
+
+        /// <summary>Radius at each ring in metres after the last fill.</summary>
+        internal ReadOnlySpan<float> RingRadii => ringRadii;
+
+        /// <summary>Drops the builder (the model or rest geometry changed): the next call rebuilds it.</summary>
+        internal void Invalidate() => builder = null;
+
+        /// <summary>Counts a topology change that the builder cannot see (a break).</summary>
+        internal void TopologyChanged() => TopologyVersion++;
+
+        internal int GetVertexCount() => Ensure().GetVertexCount(simulation.Rope.BrokenSegments);
+
+        internal int GetIndexCount() => Ensure().GetIndexCount(simulation.Rope.BrokenSegments);
+
+        /// <summary>Fills the mesh from positions in the caller's frame; ring radii are multiplied by <paramref name="radiusScale"/>.</summary>
+        internal TubeMeshUpdate Fill(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
+            TubeVertex[] vertices, int[] indices, float radiusScale)
+        {
+            TubeMeshBuilder b = Ensure();
+            ComputeRingRadii(b.Layout, radiusScale);
+            Rope rope = simulation.Rope;
+            return b.BuildWithRingRadii(x, y, z, rope.RestLengths, ringRadii, rope.BrokenSegments, vertices, indices);
+        }
+
+        private void ComputeRingRadii(RingLayout layout, float radiusScale)
+        {
+            RadiusModel model = simulation.RadiusModel;
+            if (model != null && model.IsActive)
+                model.FillRingRadii(layout.RingSegments, layout.RingFractions, ringRadii);
+            else
+                Array.Fill(ringRadii, simulation.RestRadius);
+            if (radiusScale != 1f)
+                for (int k = 0; k < ringRadii.Length; k++) ringRadii[k] *= radiusScale;
+        }
+
+        private TubeMeshBuilder Ensure()
+        {
+            TubeMeshSettings s = Settings;
+            RadiusSettings r = simulation.RadiusSettings;
+            RadiusModel model = simulation.RadiusModel;
+            bool zoneNeck = r != null && r.Necking && r.Mode == NeckMode.Zone && model != null;
+            float defectPosition = r == null ? 0f : r.DefectPosition;
+            float zoneDiameters = r == null ? 0f : r.NeckZoneDiameters;
+            if (builder != null
+                && builder.RadialSegments == s.RadialSegments
+                && rings == s.RingsPerSegment
+                && caps == s.CapEnds
+                && burr == s.Burr.Enabled
+                && zoneLayout == zoneNeck
+                && defect == defectPosition
+                && zone == zoneDiameters)
+                return builder;
+            rings = s.RingsPerSegment;
+            caps = s.CapEnds;
+            burr = s.Burr.Enabled;
+            zoneLayout = zoneNeck;
+            defect = defectPosition;
+            zone = zoneDiameters;
+            Rope rope = simulation.Rope;
+            RingLayout layout = zoneNeck
+                ? RingLayout.Refined(rope.RestLengths, s.RingsPerSegment, model.DefectRestArc, model.NeckZoneRestLength, RingsInNeckZone)
+                : new RingLayout(rope.SegmentCount, s.RingsPerSegment);
+            builder = new TubeMeshBuilder(s, layout);
+            ringRadii = new float[layout.RingCount];
+            TopologyVersion++;
+            return builder;
+        }
+    }
+}
