@@ -27,6 +27,9 @@ namespace HookeRope.Lab.Tests
             var fields = new SortedSet<string>();
             foreach (Match m in Regex.Matches(parser, "\\.(?:Number|OptionalNumber|Integer|Boolean|String|Choice|Vector|OptionalVector|Array|Numbers|Object|Has)\\(\"(\\w+)\""))
                 fields.Add(m.Groups[1].Value);
+            // the rope and solver fields are read through the parameter table (JsonFields.Parameter(row, …))
+            foreach (var row in RopeParameters.All)
+                if (row.Json != null) fields.Add(row.Json);
             Assert.That(fields.Count, Is.GreaterThan(30), "the parser's field names were found");
             var missing = new List<string>();
             foreach (var field in fields)

@@ -114,13 +114,14 @@ namespace HookeRope.Lab.Tests
             Assert.That(s.Duration, Is.EqualTo(5.0));
             Assert.That(s.HostStep, Is.EqualTo(1.0 / 90).Within(1e-12));
             Assert.That(s.Solver.Method, Is.EqualTo(SolverMethod.ExactChain));
-            Assert.That(s.Solver.Substeps, Is.EqualTo(HookeRope.Solver.RopeSettings.DefaultSubsteps));
-            Assert.That(s.Solver.Iterations, Is.EqualTo(HookeRope.Solver.RopeSettings.DefaultIterations));
-            Assert.That(s.Rope.Segments, Is.EqualTo(20));
+            Assert.That(s.Solver.Substeps, Is.EqualTo(RopeParameters.Substeps.Default));
+            Assert.That(s.Solver.Iterations, Is.EqualTo(RopeParameters.Iterations.Default));
+            Assert.That(s.Rope.Segments, Is.EqualTo(24));
             Assert.That(s.Rope.RestLength, Is.EqualTo(2.0));
             Assert.That(s.Gravity.Y, Is.EqualTo(-9.81f));
             Assert.That(s.Outputs.SampleRate, Is.EqualTo(200.0));
-            Assert.That(s.Rope.ResolvedAxialStiffness, Is.EqualTo(1e9 * System.Math.PI * 0.006 * 0.006).Within(1e-6));
+            double radius = RopeParameters.Radius.Default;
+            Assert.That(s.Rope.ResolvedAxialStiffness, Is.EqualTo(1.5e8 * System.Math.PI * radius * radius).Within(1e-6));
         }
 
         [Test]

@@ -99,15 +99,19 @@ namespace HookeRope.Solver
         public const float ContactMarginFraction = 0.1f;
 
         /// <summary>
-        /// Pushes every dynamic particle out of every collider (substep h in s). friction: apply Coulomb friction
-        /// (the last iteration), limited by μ times the particle's whole normal correction in this substep
-        /// (<see cref="ChainState.ContactLoad"/>: pushes plus the normal motion the chain solve's tangent-plane mass
-        /// withheld). detect: record for each particle the closest surface within
-        /// <see cref="ContactMarginFraction"/>·radius (normal, gap) as the contact set of the next chain solve;
-        /// startOfSubstep also resets the per-substep normal corrections.
+        /// Pushes every dynamic particle out of every collider (substep h in s). What else the pass does depends on where
+        /// in the substep it runs (<see cref="ContactPass"/>): before the last iteration it records for each particle the
+        /// closest surface within <see cref="ContactMarginFraction"/>·radius (normal, gap) as the contact set of the next
+        /// chain solve, and at the start of the substep it also resets the per-substep normal corrections; after the last
+        /// iteration it applies Coulomb friction instead, limited by μ times the particle's whole normal correction in
+        /// this substep (<see cref="ChainState.ContactLoad"/>: pushes plus the normal motion the chain solve's
+        /// tangent-plane mass withheld).
         /// </summary>
-        public void Project(ChainState c, float h, bool friction, bool detect, bool startOfSubstep)
+        public void Project(ChainState c, float h, ContactPass pass)
         {
+            bool friction = pass == ContactPass.LastIteration;
+            bool detect = pass != ContactPass.LastIteration;
+            bool startOfSubstep = pass == ContactPass.StartOfSubstep;
             int n = c.ParticleCount;
             float[] load = c.ContactLoad;
             if (detect) c.ClearContacts();

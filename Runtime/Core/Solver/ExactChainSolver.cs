@@ -23,14 +23,30 @@ namespace HookeRope.Solver
         /// </summary>
         public static bool Iterate(ChainState c, double h, double beta, bool tensionOnly)
         {
-            int s = c.SegmentCount;
             double invH2 = 1.0 / (h * h);
             double gammaAll = beta / h; // γ = α̃·β̃/h with β̃ = h²·β·k, k = 1/α
+            bool contacts = c.ContactCount > 0;
+            bool augmented = c.AugmentedCount > 0;
+            bool poor = Assemble(c, invH2, gammaAll);
+            if (contacts) AssembleContacts(c, invH2, gammaAll);
+            int passes = SolveActiveSet(c, tensionOnly, contacts, invH2, gammaAll, out bool activeSetChanged);
+            Apply(c, tensionOnly, contacts, augmented);
+            // a changed contact set alone does not call for the sweep (it would use the plain masses)
+            return poor || (contacts || augmented ? activeSetChanged : passes > 1);
+        }
+
+        /// <summary>
+        /// Linearises every segment along its current direction and writes the tridiagonal system (Full*) with the plain
+        /// or the transversely stabilised masses, without contacts. Returns true when the linearisation is poor somewhere
+        /// (a slack segment, or neighbouring segments at more than 90°).
+        /// </summary>
+        private static bool Assemble(ChainState c, double invH2, double gammaAll)
+        {
+            int s = c.SegmentCount;
             float[] w = c.InverseMass, rest = c.RestLength, compliance = c.Compliance, length = c.Length;
             double[] fd = c.FullDiagonal, fl = c.FullLower, fu = c.FullUpper, fr = c.FullRhs;
             double[] lambda = c.Lambda;
             bool[] active = c.Active, broken = c.Broken;
-            bool contacts = c.ContactCount > 0;
             bool augmented = c.AugmentedCount > 0;
             bool poor = false;
             float pnx = 0f, pny = 0f, pnz = 0f;
@@ -109,20 +125,32 @@ namespace HookeRope.Solver
                     leftAlongPrevious = rightAlong;
                 }
             }
+            return poor;
+        }
 
-            // held contacts: the general constrained mobility on the rows around each contact particle
-            if (contacts)
+        /// <summary>Held contacts: the general constrained mobility on the rows around each contact particle.</summary>
+        private static void AssembleContacts(ChainState c, double invH2, double gammaAll)
+        {
+            for (int k = 0; k < c.ContactCount; k++)
             {
-                for (int k = 0; k < c.ContactCount; k++)
-                {
-                    int i = c.ContactList[k];
-                    if (c.ContactActive[i]) RebuildAround(c, i, invH2, gammaAll);
-                }
+                int i = c.ContactList[k];
+                if (c.ContactActive[i]) RebuildAround(c, i, invH2, gammaAll);
             }
+        }
 
-            double[] delta = c.Delta;
+        /// <summary>
+        /// Solves the assembled system into Delta, then repeats on the same linearisation while the active set changes
+        /// (tension-only segments released or re-admitted, contacts released or held), at most <see cref="MaxPasses"/>
+        /// times. Returns the number of passes; activeSetChanged: some segment changed sides.
+        /// </summary>
+        private static int SolveActiveSet(ChainState c, bool tensionOnly, bool contacts, double invH2, double gammaAll, out bool activeSetChanged)
+        {
+            int s = c.SegmentCount;
+            double[] fd = c.FullDiagonal, fl = c.FullLower, fu = c.FullUpper, fr = c.FullRhs;
+            double[] lambda = c.Lambda, delta = c.Delta;
+            bool[] active = c.Active;
             int passes = 0;
-            bool activeSetChanged = false;
+            activeSetChanged = false;
             while (true)
             {
                 passes++;
@@ -151,12 +179,15 @@ namespace HookeRope.Solver
                 }
                 if (!changed) break;
             }
+            return passes;
+        }
 
+        /// <summary>Applies the solved multiplier changes to the multipliers and the particle displacements.</summary>
+        private static void Apply(ChainState c, bool tensionOnly, bool contacts, bool augmented)
+        {
             if (augmented) ApplyTransverse(c, tensionOnly, contacts);
-            else ApplyIsotropic(c, tensionOnly, contacts);
+            else ApplyIsotropic(c, tensionOnly, keepDelta: contacts);
             if (contacts) ApplyContactMobility(c);
-            // a changed contact set alone does not call for the sweep (it would use the plain masses)
-            return poor || (contacts || augmented ? activeSetChanged : passes > 1);
         }
 
         /// <summary>
@@ -216,15 +247,15 @@ namespace HookeRope.Solver
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static void MoveParticle(ChainState c, int i, double fx, double fy, double fz, bool contacts)
         {
-            double w = c.InverseMass[i];
-            double rx = w * fx, ry = w * fy, rz = w * fz;
-            if (c.Augmented[i] && !(contacts && c.ContactActive[i]))
+            double rx, ry, rz;
+            if (contacts && c.ContactActive[i])
             {
-                var m = TransverseMobility.Of(c, i);
-                double along = m.Anisotropy * m.Along(fx, fy, fz);
-                rx = m.Transverse * fx + along * m.TangentX;
-                ry = m.Transverse * fy + along * m.TangentY;
-                rz = m.Transverse * fz + along * m.TangentZ;
+                double w = c.InverseMass[i];
+                rx = w * fx; ry = w * fy; rz = w * fz;
+            }
+            else
+            {
+                TransverseMobility.Of(c, i).Apply(fx, fy, fz, out rx, out ry, out rz);
             }
             c.DX[i] += (float)rx; c.DY[i] += (float)ry; c.DZ[i] += (float)rz;
         }
@@ -273,31 +304,21 @@ namespace HookeRope.Solver
         /// </summary>
         private static void Mobility(ChainState c, int i, double vx, double vy, double vz, bool withContact, out double rx, out double ry, out double rz)
         {
-            Free(c, i, vx, vy, vz, out rx, out ry, out rz);
+            var free = TransverseMobility.Of(c, i);
+            free.Apply(vx, vy, vz, out rx, out ry, out rz);
             if (!withContact || c.ContactCollider == null || !c.ContactActive[i]) return;
             double cx = c.ContactNX[i], cy = c.ContactNY[i], cz = c.ContactNZ[i];
-            Free(c, i, cx, cy, cz, out double ux, out double uy, out double uz);
+            free.Apply(cx, cy, cz, out double ux, out double uy, out double uz);
             double cwc = cx * ux + cy * uy + cz * uz;
             if (!(cwc > 0.0)) return;
             double k = (ux * vx + uy * vy + uz * vz) / cwc;
             rx -= ux * k; ry -= uy * k; rz -= uz * k;
         }
 
-        private static void Free(ChainState c, int i, double vx, double vy, double vz, out double rx, out double ry, out double rz)
-        {
-            double w = c.InverseMass[i];
-            rx = w * vx; ry = w * vy; rz = w * vz;
-            if (c.AugmentedCount == 0 || !c.Augmented[i]) return;
-            double wt = Math.Min(c.TransverseInverseMass[i], w);
-            double tx = c.TangentX[i], ty = c.TangentY[i], tz = c.TangentZ[i];
-            double along = (w - wt) * (tx * vx + ty * vy + tz * vz);
-            rx = wt * vx + along * tx; ry = wt * vy + along * ty; rz = wt * vz + along * tz;
-        }
-
         /// <summary>n_aᵀ W_i n_b for unit directions a, b (1/kg).</summary>
         private static double Quadratic(ChainState c, int i, float ax, float ay, float az, float bx, float by, float bz)
         {
-            Mobility(c, i, bx, by, bz, true, out double rx, out double ry, out double rz);
+            Mobility(c, i, bx, by, bz, withContact: true, out double rx, out double ry, out double rz);
             return ax * rx + ay * ry + az * rz;
         }
 
@@ -373,7 +394,7 @@ namespace HookeRope.Solver
         private static double FreeNormalMotion(ChainState c, int i, bool tensionOnly, bool clamp)
         {
             ChainPull(c, i, tensionOnly, clamp, out double fx, out double fy, out double fz);
-            Mobility(c, i, fx, fy, fz, false, out double rx, out double ry, out double rz);
+            Mobility(c, i, fx, fy, fz, withContact: false, out double rx, out double ry, out double rz);
             return c.ContactNX[i] * rx + c.ContactNY[i] * ry + c.ContactNZ[i] * rz;
         }
 
@@ -388,7 +409,7 @@ namespace HookeRope.Solver
             for (int k = 0; k < c.ContactCount; k++)
             {
                 int i = c.ContactList[k];
-                double outward = FreeNormalMotion(c, i, tensionOnly, true);
+                double outward = FreeNormalMotion(c, i, tensionOnly, clamp: true);
                 if (c.ContactActive[i])
                 {
                     if (outward > 0.0)
@@ -419,9 +440,9 @@ namespace HookeRope.Solver
             {
                 int i = c.ContactList[k];
                 if (!c.ContactActive[i]) continue;
-                ChainPull(c, i, false, false, out double fx, out double fy, out double fz);
-                Mobility(c, i, fx, fy, fz, true, out double rx, out double ry, out double rz);
-                Mobility(c, i, fx, fy, fz, false, out double ux, out double uy, out double uz);
+                ChainPull(c, i, tensionOnly: false, clamp: false, out double fx, out double fy, out double fz);
+                Mobility(c, i, fx, fy, fz, withContact: true, out double rx, out double ry, out double rz);
+                Mobility(c, i, fx, fy, fz, withContact: false, out double ux, out double uy, out double uz);
                 double inward = -(c.ContactNX[i] * ux + c.ContactNY[i] * uy + c.ContactNZ[i] * uz);
                 if (inward > 0.0)
                 {

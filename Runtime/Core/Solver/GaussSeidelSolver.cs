@@ -1,4 +1,5 @@
 using System;
+using System.Diagnostics;
 
 namespace HookeRope.Solver
 {
@@ -17,8 +18,9 @@ namespace HookeRope.Solver
             float[] dx = c.DX, dy = c.DY, dz = c.DZ;
             bool[] broken = c.Broken;
             double[] lambda = c.Lambda;
-            if (w.Length < s + 1 || dx.Length < s + 1 || dy.Length < s + 1 || dz.Length < s + 1) return;
-            if (rest.Length < s || compliance.Length < s || broken.Length < s || lambda.Length < s) return;
+            // ChainState sizes every particle array from SegmentCount + 1 and every segment array from SegmentCount
+            Debug.Assert(w.Length == s + 1 && dx.Length == s + 1 && dy.Length == s + 1 && dz.Length == s + 1
+                && rest.Length == s && compliance.Length == s && broken.Length == s && lambda.Length == s, "ChainState arrays sized from SegmentCount");
             bool contacts = c.ContactCount > 0;
             float wa = w[0];
             for (int j = 0; j < s; j++)

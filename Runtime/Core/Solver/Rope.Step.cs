@@ -10,9 +10,10 @@ namespace HookeRope.Solver
 
         /// <summary>
         /// Advances the rope by one host step (s, in (0, 1]): <see cref="RopeSettings.Substeps"/> substeps of
-        /// h = Δt/substeps, each predicting with gravity, running <see cref="RopeSettings.Iterations"/>
-        /// constraint iterations (chain, compliant pins, colliders), then deriving velocities, tensions,
-        /// pin forces and breaks. Allocation-free.
+        /// h = Δt/substeps, each in four phases: predict (gravity, rigid pins), collide (push out, detect contacts),
+        /// solve (<see cref="RopeSettings.Iterations"/> constraint iterations: chain, compliant pins, colliders) and
+        /// finish (velocities, tensions, pin forces, breaks). The positions at the start of the step are kept for
+        /// <see cref="Interpolate"/>. Allocation-free.
         /// </summary>
         public StepReport Step(float hostDeltaTime)
         {
@@ -45,29 +46,11 @@ namespace HookeRope.Solver
             for (int k = 0; k < substeps; k++)
             {
                 float t = (float)(k + 1) / substeps;
-                if (hasColliders) colliders.PrepareSubstep(t, hostDeltaTime);
-                Predict(h, g);
-                MovePins(t);
-                Array.Clear(chain.Lambda, 0, chain.SegmentCount);
-                if (pinCount > 0) Array.Clear(pinLambda, 0, pinCount * 3);
+                PredictPhase(t, hostDeltaTime, h, g);
                 // push the prediction out of the colliders and find the contacts the chain solve folds in
-                if (hasColliders) colliders.Project(chain, h, false, true, true);
-                if (exact) chain.UpdateTransverseMass(hd); else chain.AugmentedCount = 0;
-                for (int it = 0; it < iterations; it++)
-                {
-                    bool softPins = compliantPins > 0 && ProjectCompliantPins(hd, t);
-                    // Gauss–Seidel is the solver itself, or a polish sweep after an exact solve whose
-                    // linearisation was poor somewhere (a fold); on a taut chain the sweep would change nothing
-                    bool sweep = !exact || ExactChainSolver.Iterate(chain, hd, beta, tensionOnly);
-                    if (sweep) GaussSeidelSolver.Iterate(chain, hd, beta, tensionOnly);
-                    if (softPins) ReleaseCompliantPins(hd, t);
-                    if (hasColliders) colliders.Project(chain, h, it == iterations - 1, it < iterations - 1, false);
-                }
-                UpdateVelocities(h);
-                time += hd;
-                UpdateTensions(hd, k == substeps - 1 || !float.IsPositiveInfinity(settings.BreakStrain));
-                if (pinCount > 0) UpdatePinForces(hd, g);
-                CheckStrainBreaks();
+                CollidePhase(h, ContactPass.StartOfSubstep);
+                SolvePhase(h, hd, t, beta, tensionOnly, exact, iterations, compliantPins > 0);
+                FinishPhase(h, hd, g, lastSubstep: k == substeps - 1);
             }
             if (hasColliders) colliders.EndStep();
             for (int p = 0; p < pinCount; p++) pinStart[p] = pinEnd[p];
@@ -82,6 +65,52 @@ namespace HookeRope.Solver
             }
 
             return new StepReport { Residual = ComputeResidual(), Iterations = iterations, Substeps = substeps };
+        }
+
+        /// <summary>Phase 1 of a substep (fraction t of the host step, h s): collider poses, prediction under gravity, rigid pins on their targets, multipliers cleared.</summary>
+        private void PredictPhase(float t, float hostDeltaTime, float h, Float3 g)
+        {
+            if (colliders.Count > 0) colliders.PrepareSubstep(t, hostDeltaTime);
+            Predict(h, g);
+            MovePins(t);
+            Array.Clear(chain.Lambda, 0, chain.SegmentCount);
+            if (pinCount > 0) Array.Clear(pinLambda, 0, pinCount * 3);
+        }
+
+        /// <summary>Phase 2 (and the end of each iteration): push the particles out of the colliders; the pass decides contact detection and friction.</summary>
+        private void CollidePhase(float h, ContactPass pass)
+        {
+            if (colliders.Count > 0) colliders.Project(chain, h, pass);
+        }
+
+        /// <summary>
+        /// Phase 3: the constraint iterations. The exact solver first gives taut particles their transverse inertia; each
+        /// iteration folds in the compliant pins, solves the chain (exact, plus a Gauss–Seidel polish sweep where its
+        /// linearisation was poor; or Gauss–Seidel alone), releases the pins and runs a collision pass.
+        /// </summary>
+        private void SolvePhase(float h, double hd, float t, double beta, bool tensionOnly, bool exact, int iterations, bool hasCompliantPins)
+        {
+            if (exact) chain.UpdateTransverseMass(hd); else chain.AugmentedCount = 0;
+            for (int it = 0; it < iterations; it++)
+            {
+                bool softPins = hasCompliantPins && ProjectCompliantPins(hd, t);
+                // Gauss–Seidel is the solver itself, or a polish sweep after an exact solve whose
+                // linearisation was poor somewhere (a fold); on a taut chain the sweep would change nothing
+                bool sweep = !exact || ExactChainSolver.Iterate(chain, hd, beta, tensionOnly);
+                if (sweep) GaussSeidelSolver.Iterate(chain, hd, beta, tensionOnly);
+                if (softPins) ReleaseCompliantPins(hd, t);
+                CollidePhase(h, it == iterations - 1 ? ContactPass.LastIteration : ContactPass.BetweenIterations);
+            }
+        }
+
+        /// <summary>Phase 4: velocities from the displacements, time, tensions (and segment lengths on the last substep, or every substep while strain breaks are on), pin forces, breaks.</summary>
+        private void FinishPhase(float h, double hd, Float3 g, bool lastSubstep)
+        {
+            UpdateVelocities(h);
+            time += hd;
+            UpdateTensions(hd, lengths: lastSubstep || !float.IsPositiveInfinity(settings.BreakStrain));
+            if (pinCount > 0) UpdatePinForces(hd, g);
+            CheckStrainBreaks();
         }
 
         private void Predict(float h, Float3 g)

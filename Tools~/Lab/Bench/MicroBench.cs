@@ -180,12 +180,14 @@ namespace HookeRope.Lab.Bench
 
             var poisson = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), true);
             poisson.Simulation.RadiusModel.Settings.NeckMode = HookeRope.Radius.NeckMode.Off;
+            poisson.Simulation.RadiusModel.Settings.BreakEnabled = true;
             names.Add("radius on (Poisson thinning + break test)");
             actions.Add(() => poisson.Step(dt));
 
             var necking = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), true);
             necking.Simulation.RadiusModel.Settings.NeckMode = HookeRope.Radius.NeckMode.Zone;
             necking.Simulation.RadiusModel.Settings.RMinFraction = 0.999f;
+            necking.Simulation.RadiusModel.Settings.BreakEnabled = true;
             names.Add("radius + necking (zone neck active)");
             actions.Add(() => necking.Step(dt));
 

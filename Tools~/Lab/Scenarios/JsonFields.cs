@@ -73,6 +73,18 @@ namespace HookeRope.Lab.Scenarios
             return ReadNumber(Get(name), Child(name), min, max, minExclusive);
         }
 
+        /// <summary>The number of the table row's JSON field, range-checked against the row (its unit); <paramref name="fallback"/> when absent.</summary>
+        public double Parameter(ParameterInfo row, double fallback) => Number(row.Json, fallback, row.Min, row.Max, row.MinExclusive);
+
+        /// <summary>The row's number when given, else null (range-checked against the row).</summary>
+        public double? OptionalParameter(ParameterInfo row) => OptionalNumber(row.Json, row.Min, row.Max, row.MinExclusive);
+
+        /// <summary>The integer of the table row's JSON field, range-checked against the row; <paramref name="fallback"/> when absent.</summary>
+        public int Parameter(ParameterInfo row, int fallback) => Integer(row.Json, fallback, (int)row.Min, (int)row.Max);
+
+        /// <summary>The boolean of the table row's JSON field; <paramref name="fallback"/> when absent.</summary>
+        public bool Parameter(ParameterInfo row, bool fallback) => Boolean(row.Json, fallback);
+
         public int Integer(string name, int fallback, int min, int max)
         {
             if (!Has(name)) return fallback;

@@ -11,7 +11,7 @@ namespace HookeRope.Lab.Scenarios
         /// <summary>Free text shown in the summary.</summary>
         public string Description = "";
         /// <summary>Gravity in m/s².</summary>
-        public Float3 Gravity = new Float3(0f, -9.81f, 0f);
+        public Float3 Gravity = new Float3(RopeParameters.Gravity.DefaultX, RopeParameters.Gravity.DefaultY, RopeParameters.Gravity.DefaultZ);
         /// <summary>Simulated time in s.</summary>
         public double Duration = 5.0;
         /// <summary>Host step (one Rope.Step call) in s.</summary>
@@ -46,35 +46,35 @@ namespace HookeRope.Lab.Scenarios
         ExactChain,
     }
 
-    /// <summary>solver {…} block.</summary>
+    /// <summary>solver {…} block. Defaults are the parameter table's (<see cref="RopeParameters"/>).</summary>
     public sealed class SolverSpec
     {
         /// <summary>Constraint solver.</summary>
-        public SolverMethod Method = SolverMethod.ExactChain;
-        /// <summary>Substeps per host step (1…1000).</summary>
-        public int Substeps = HookeRope.Solver.RopeSettings.DefaultSubsteps;
-        /// <summary>Iterations per substep (1…1000).</summary>
-        public int Iterations = HookeRope.Solver.RopeSettings.DefaultIterations;
+        public SolverMethod Method = RopeParameters.Solver.Default == HookeRope.Solver.ConstraintSolverKind.GaussSeidel ? SolverMethod.GaussSeidel : SolverMethod.ExactChain;
+        /// <summary>Substeps per host step.</summary>
+        public int Substeps = RopeParameters.Substeps.Default;
+        /// <summary>Iterations per substep.</summary>
+        public int Iterations = RopeParameters.Iterations.Default;
         /// <summary>XPBD constraint damping β in s.</summary>
-        public double Damping = 0.0;
+        public double Damping = RopeParameters.Damping.Default;
         /// <summary>True: rope (pulls only); false: rod (bilateral).</summary>
-        public bool TensionOnly = true;
+        public bool TensionOnly = RopeParameters.TensionModel.Default == HookeRope.Solver.TensionModel.TensionOnly;
     }
 
-    /// <summary>rope {…} block.</summary>
+    /// <summary>rope {…} block. Defaults are the parameter table's (<see cref="RopeParameters"/>).</summary>
     public sealed class RopeSpec
     {
         /// <summary>Young's modulus in Pa used when neither youngsModulus nor axialStiffness is given.</summary>
-        public const double DefaultYoungsModulus = 1e9;
+        public const double DefaultYoungsModulus = RopeParameters.YoungsModulus.Default;
         /// <summary>Density in kg/m³ used when neither density nor linearDensity is given.</summary>
-        public const double DefaultDensity = 1140.0;
+        public const double DefaultDensity = RopeParameters.Density.Default;
 
         /// <summary>Rest length in m.</summary>
-        public double RestLength = 2.0;
+        public double RestLength = RopeParameters.RestLength.Default;
         /// <summary>Number of segments.</summary>
-        public int Segments = 20;
+        public int Segments = RopeParameters.SegmentCount.Default;
         /// <summary>Rest radius R in m.</summary>
-        public double Radius = 0.006;
+        public double Radius = RopeParameters.Radius.Default;
         /// <summary>Young's modulus in Pa (null when axialStiffness is given).</summary>
         public double? YoungsModulus;
         /// <summary>Axial stiffness E·A in N (null when youngsModulus is given).</summary>
@@ -83,20 +83,28 @@ namespace HookeRope.Lab.Scenarios
         public double? LinearDensity;
         /// <summary>Density in kg/m³ (null when linearDensity is given).</summary>
         public double? Density;
+        /// <summary>Thin the rope with its strain through the Poisson ratio.</summary>
+        public bool PoissonThinning = RopeParameters.PoissonThinning.Default;
         /// <summary>Poisson ratio ν in [−1, 0.5].</summary>
-        public double PoissonRatio = 0.5;
-        /// <summary>Neck onset radius r_min as a fraction of R (0 = no necking).</summary>
-        public double RMinFraction = 0.0;
-        /// <summary>Neck model: "none", "paper" (one hyperbola over the rope) or "zone" (a short neck zone at the defect).</summary>
-        public string NeckMode = "zone";
-        /// <summary>Weak spot where the neck starts, or null.</summary>
-        public DefectSpec Defect;
-        /// <summary>Strain l/L − 1 at which a segment breaks (+∞ = never).</summary>
-        public double BreakStrain = double.PositiveInfinity;
+        public double PoissonRatio = RopeParameters.PoissonRatio.Default;
+        /// <summary>Let a neck form at the defect.</summary>
+        public bool Necking = RopeParameters.Necking.Default;
+        /// <summary>Neck model: "zone" (a short neck zone at the defect) or "paper" (one hyperbola over the rope).</summary>
+        public string NeckMode = RopeParameters.NeckMode.Default == HookeRope.Radius.NeckMode.Paper ? "paper" : "zone";
+        /// <summary>Neck onset radius r_min as a fraction of R.</summary>
+        public double NeckRadiusFraction = RopeParameters.NeckRadiusFraction.Default;
+        /// <summary>Weak spot where the neck starts and the rope breaks, as a fraction of the rest length from the start, 0…1.</summary>
+        public double DefectPosition = RopeParameters.DefectPosition.Default;
+        /// <summary>Let the rope break at the defect.</summary>
+        public bool Fracture = RopeParameters.Fracture.Default;
+        /// <summary>Strain l/L − 1 of the defect segment at which it breaks.</summary>
+        public double BreakStrain = RopeParameters.BreakStrain.Default;
+        /// <summary>Neck radius (fraction of R) at which the defect breaks when necking is on.</summary>
+        public double BreakRadiusFraction = RopeParameters.BreakRadiusFraction.Default;
         /// <summary>Vertices around the tube mesh.</summary>
-        public int RadialSegments = 8;
+        public int RadialSegments = RopeParameters.RadialSegments.Default;
         /// <summary>Seed of the random parts (burr strands of broken ends).</summary>
-        public int Seed = 1;
+        public int Seed = RopeParameters.BurrSeed.Default;
 
         /// <summary>Cross-section area πR² in m².</summary>
         public double Area => System.Math.PI * Radius * Radius;
@@ -106,13 +114,6 @@ namespace HookeRope.Lab.Scenarios
         public double ResolvedLinearDensity => LinearDensity ?? (Density ?? DefaultDensity) * Area;
         /// <summary>Total rope mass in kg.</summary>
         public double Mass => ResolvedLinearDensity * RestLength;
-    }
-
-    /// <summary>rope.defect {…}: the weak spot where the neck forms and the rope breaks.</summary>
-    public sealed class DefectSpec
-    {
-        /// <summary>Position along the rope as a fraction of its rest length, 0…1.</summary>
-        public double Position = 0.5;
     }
 
     /// <summary>How an end of the rope is held.</summary>
@@ -151,7 +152,7 @@ namespace HookeRope.Lab.Scenarios
         /// <summary>Body initial velocity in m/s.</summary>
         public Float3 Velocity;
         /// <summary>Pin compliance in m/N (0 = rigid).</summary>
-        public double Compliance;
+        public double Compliance = RopeParameters.AttachmentCompliance.Default;
 
         /// <summary>Mass hanging on this end in kg: <see cref="Mass"/> for a body, 0 otherwise.</summary>
         public double LoadMass => Kind == AttachmentKind.Body ? Mass : 0;
@@ -230,7 +231,7 @@ namespace HookeRope.Lab.Scenarios
         /// <summary>Box rotation as Euler angles in degrees (applied Z, X, Y like Unity).</summary>
         public Float3 EulerDegrees;
         /// <summary>Coulomb friction coefficient.</summary>
-        public double Friction;
+        public double Friction = RopeParameters.Friction.Default;
     }
 
     /// <summary>outputs {…}.</summary>

@@ -63,7 +63,7 @@ namespace HookeRope.Lab.Scenarios
                     throw new ScenarioException("$.name", "use only letters, digits, '-' and '_' (it names output files)");
             if (s.Name.Length == 0) throw new ScenarioException("$.name", "must not be empty");
             s.Description = root.String("description", s.Description, 500);
-            s.Gravity = root.Vector("gravity", s.Gravity, 1000);
+            s.Gravity = root.Vector(RopeParameters.Gravity.Json, s.Gravity, RopeParameters.Gravity.Max);
             s.Duration = root.Number("duration", s.Duration, 0, 600, minExclusive: true);
             bool hasStep = root.Has("hostStep"), hasRate = root.Has("frameRate");
             if (hasStep && hasRate)
@@ -100,43 +100,40 @@ namespace HookeRope.Lab.Scenarios
 
         static void ReadSolver(JsonFields f, SolverSpec spec)
         {
-            spec.Method = f.Choice("method", "exact-chain", "gauss-seidel", "exact-chain") == "gauss-seidel"
-                ? SolverMethod.GaussSeidel : SolverMethod.ExactChain;
-            spec.Substeps = f.Integer("substeps", spec.Substeps, 1, 1000);
-            spec.Iterations = f.Integer("iterations", spec.Iterations, 1, 1000);
-            spec.Damping = f.Number("damping", spec.Damping, 0, 10);
-            spec.TensionOnly = f.Choice("tension", "tension-only", "tension-only", "bilateral") == "tension-only";
+            spec.Method = f.Choice(RopeParameters.Solver.Json, spec.Method == SolverMethod.GaussSeidel ? "gauss-seidel" : "exact-chain",
+                "gauss-seidel", "exact-chain") == "gauss-seidel" ? SolverMethod.GaussSeidel : SolverMethod.ExactChain;
+            spec.Substeps = f.Parameter(RopeParameters.Substeps.Row, spec.Substeps);
+            spec.Iterations = f.Parameter(RopeParameters.Iterations.Row, spec.Iterations);
+            spec.Damping = f.Parameter(RopeParameters.Damping.Row, spec.Damping);
+            spec.TensionOnly = f.Choice(RopeParameters.TensionModel.Json, spec.TensionOnly ? "tension-only" : "bilateral",
+                "tension-only", "bilateral") == "tension-only";
             f.RejectUnknown();
         }
 
         static void ReadRope(JsonFields f, RopeSpec r)
         {
-            r.RestLength = f.Number("restLength", r.RestLength, 0, 10000, minExclusive: true);
-            r.Segments = f.Integer("segments", r.Segments, 1, 10000);
-            r.Radius = f.Number("radius", r.Radius, 0, 1, minExclusive: true);
-            r.YoungsModulus = f.OptionalNumber("youngsModulus", 0, 1e13, minExclusive: true);
-            r.AxialStiffness = f.OptionalNumber("axialStiffness", 0, 1e12, minExclusive: true);
+            r.RestLength = f.Parameter(RopeParameters.RestLength.Row, r.RestLength);
+            r.Segments = f.Parameter(RopeParameters.SegmentCount.Row, r.Segments);
+            r.Radius = f.Parameter(RopeParameters.Radius.Row, r.Radius);
+            r.YoungsModulus = f.OptionalParameter(RopeParameters.YoungsModulus.Row);
+            r.AxialStiffness = f.OptionalParameter(RopeParameters.AxialStiffness.Row);
             if (r.YoungsModulus.HasValue && r.AxialStiffness.HasValue)
-                throw new ScenarioException(f.Child("axialStiffness"), "give either youngsModulus or axialStiffness, not both");
-            r.LinearDensity = f.OptionalNumber("linearDensity", 0, 1e4, minExclusive: true);
-            r.Density = f.OptionalNumber("density", 0, 1e5, minExclusive: true);
+                throw new ScenarioException(f.Child(RopeParameters.AxialStiffness.Json), "give either youngsModulus or axialStiffness, not both");
+            r.LinearDensity = f.OptionalParameter(RopeParameters.LinearDensity.Row);
+            r.Density = f.OptionalParameter(RopeParameters.Density.Row);
             if (r.LinearDensity.HasValue && r.Density.HasValue)
-                throw new ScenarioException(f.Child("density"), "give either linearDensity or density, not both");
-            r.PoissonRatio = f.Number("poissonRatio", r.PoissonRatio, -1, 0.5);
-            r.RMinFraction = f.Number("rMinFraction", r.RMinFraction, 0, 0.99);
-            r.NeckMode = f.Choice("neckMode", r.NeckMode, "none", "paper", "zone");
-            var defect = f.Object("defect");
-            if (defect != null)
-            {
-                r.Defect = new DefectSpec
-                {
-                    Position = defect.Number("position", 0.5, 0, 1),
-                };
-                defect.RejectUnknown();
-            }
-            r.BreakStrain = f.Number("breakStrain", r.BreakStrain, 0, 1000, minExclusive: true);
-            r.RadialSegments = f.Integer("radialSegments", r.RadialSegments, 3, 64);
-            r.Seed = f.Integer("seed", r.Seed, 0, int.MaxValue);
+                throw new ScenarioException(f.Child(RopeParameters.Density.Json), "give either linearDensity or density, not both");
+            r.PoissonThinning = f.Parameter(RopeParameters.PoissonThinning.Row, r.PoissonThinning);
+            r.PoissonRatio = f.Parameter(RopeParameters.PoissonRatio.Row, r.PoissonRatio);
+            r.Necking = f.Parameter(RopeParameters.Necking.Row, r.Necking);
+            r.NeckMode = f.Choice(RopeParameters.NeckMode.Json, r.NeckMode, "zone", "paper");
+            r.NeckRadiusFraction = f.Parameter(RopeParameters.NeckRadiusFraction.Row, r.NeckRadiusFraction);
+            r.DefectPosition = f.Parameter(RopeParameters.DefectPosition.Row, r.DefectPosition);
+            r.Fracture = f.Parameter(RopeParameters.Fracture.Row, r.Fracture);
+            r.BreakStrain = f.Parameter(RopeParameters.BreakStrain.Row, r.BreakStrain);
+            r.BreakRadiusFraction = f.Parameter(RopeParameters.BreakRadiusFraction.Row, r.BreakRadiusFraction);
+            r.RadialSegments = f.Parameter(RopeParameters.RadialSegments.Row, r.RadialSegments);
+            r.Seed = f.Parameter(RopeParameters.BurrSeed.Row, r.Seed);
             f.RejectUnknown();
         }
 
@@ -150,11 +147,11 @@ namespace HookeRope.Lab.Scenarios
                 case "fixed":
                     a.Kind = AttachmentKind.Fixed;
                     a.Position = f.OptionalVector("position");
-                    a.Compliance = f.Number("compliance", 0, 0, 1);
+                    a.Compliance = f.Parameter(RopeParameters.AttachmentCompliance.Row, a.Compliance);
                     break;
                 case "keyframes":
                     a.Kind = AttachmentKind.Keyframes;
-                    a.Compliance = f.Number("compliance", 0, 0, 1);
+                    a.Compliance = f.Parameter(RopeParameters.AttachmentCompliance.Row, a.Compliance);
                     var keys = f.Array("keys", MaxKeyframes);
                     if (keys.Count == 0) throw new ScenarioException(f.Child("keys"), "needs at least one keyframe");
                     for (int i = 0; i < keys.Count; i++)
@@ -203,7 +200,7 @@ namespace HookeRope.Lab.Scenarios
         {
             var c = new ColliderSpec();
             string type = f.Choice("type", "plane", "plane", "sphere", "capsule", "box");
-            c.Friction = f.Number("friction", 0, 0, 10);
+            c.Friction = f.Parameter(RopeParameters.Friction.Row, c.Friction);
             switch (type)
             {
                 case "plane":

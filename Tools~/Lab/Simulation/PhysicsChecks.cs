@@ -203,7 +203,7 @@ namespace HookeRope.Lab.Simulation
                 }
                 case "neck":
                 {
-                    double rMin = rope.RMinFraction * rope.Radius;
+                    double rMin = rope.NeckRadiusFraction * rope.Radius;
                     double strain = FinalElongation(r) / length;
                     list.Add(new CheckResult
                     {
@@ -213,7 +213,7 @@ namespace HookeRope.Lab.Simulation
                     list.Add(new CheckResult
                     {
                         Quantity = "thinnest point (fraction of L)", Unit = "", Absolute = true, Tolerance = 1.5 / rope.Segments,
-                        Expected = rope.Defect?.Position ?? 0.5, Measured = ThinnestFraction(r), Formula = "at the defect",
+                        Expected = rope.DefectPosition, Measured = ThinnestFraction(r), Formula = "at the defect",
                     });
                     list.Add(new CheckResult
                     {
@@ -356,7 +356,7 @@ namespace HookeRope.Lab.Simulation
         {
             if (r.Profiles.Count == 0) return double.NaN;
             var radius = r.Profiles[r.Profiles.Count - 1].Radius;
-            double defect = r.Scenario.Rope.Defect?.Position ?? 0.5;
+            double defect = r.Scenario.Rope.DefectPosition;
             int i = defect < 0.5 ? (int)(radius.Length * 0.9) : (int)(radius.Length * 0.1);
             return radius[i];
         }

@@ -47,7 +47,7 @@ namespace HookeRope.Lab.Simulation
             settings.Iterations = s.Solver.Iterations;
             settings.Solver = s.Solver.Method == SolverMethod.GaussSeidel ? ConstraintSolverKind.GaussSeidel : ConstraintSolverKind.ExactChain;
             settings.Tension = s.Solver.TensionOnly ? TensionModel.TensionOnly : TensionModel.Bilateral;
-            settings.BreakStrain = (float)r.BreakStrain;
+            settings.BreakStrain = r.Fracture ? (float)r.BreakStrain : float.PositiveInfinity;
             return settings;
         }
 
@@ -68,16 +68,18 @@ namespace HookeRope.Lab.Simulation
             return setup;
         }
 
-        /// <summary>Radius-model settings of a scenario (Poisson ratio, neck onset and mode, defect).</summary>
+        /// <summary>Radius-model settings of a scenario (Poisson thinning, neck onset and mode, defect, neck-radius break).</summary>
         public static RadiusSettings RadiusSettings(Scenario s)
         {
             var r = s.Rope;
             var settings = new RadiusSettings();
+            settings.PoissonEnabled = r.PoissonThinning;
             settings.PoissonRatio = (float)r.PoissonRatio;
-            bool neck = r.RMinFraction > 0 && r.NeckMode != "none";
-            settings.NeckMode = !neck ? NeckMode.Off : r.NeckMode == "paper" ? NeckMode.Paper : NeckMode.Zone;
-            if (neck) settings.RMinFraction = (float)r.RMinFraction;
-            if (r.Defect != null) settings.DefectPosition = (float)r.Defect.Position;
+            settings.NeckMode = !r.Necking ? NeckMode.Off : r.NeckMode == "paper" ? NeckMode.Paper : NeckMode.Zone;
+            if (r.Necking) settings.RMinFraction = (float)r.NeckRadiusFraction;
+            settings.DefectPosition = (float)r.DefectPosition;
+            settings.BreakEnabled = r.Fracture && r.Necking;
+            settings.BreakRadiusFraction = (float)r.BreakRadiusFraction;
             return settings;
         }
 

@@ -51,7 +51,7 @@ namespace HookeRope.Lab.Stability
     /// </summary>
     public static class StabilitySweep
     {
-        /// <summary>Base case: 1 m nylon-like rope (R 5 mm, E 1 GPa, 1140 kg/m³), 16 segments, 1 kg load.</summary>
+        /// <summary>Base case: 1 m nylon-like rope (R 5 mm, E 1 GPa, 1140 kg/m³, ν 0.5, no neck, no fracture), 16 segments, 1 kg load.</summary>
         public static Scenario Base(SolverMethod method, double duration)
         {
             var s = new Scenario { Name = "stability", Duration = duration, HostStep = 1.0 / 90 };
@@ -64,6 +64,11 @@ namespace HookeRope.Lab.Stability
             s.Rope.Radius = 0.005;
             s.Rope.YoungsModulus = 1e9;
             s.Rope.Density = 1140;
+            // stated explicitly, so the sweep does not move with the parameter table's defaults
+            s.Rope.PoissonRatio = 0.5;
+            s.Rope.Necking = false;
+            s.Rope.Fracture = false;
+            s.Rope.RadialSegments = 8;
             s.Start = AttachmentSpec.FixedAt(Float3.Zero);
             s.End = new AttachmentSpec { Kind = AttachmentKind.Body, Mass = 1 };
             s.Outputs.SampleRate = 10;
