@@ -161,7 +161,7 @@ namespace HookeRope.Editor
                 EditorGUILayout.HelpBox("Read-outs appear in Play (or after ElasticRope.Rebuild()).", MessageType.Info);
                 return;
             }
-            EditorGUILayout.LabelField("Elongation", Format(rope.Elongation, "m"));
+            EditorGUILayout.LabelField("Elongation / strain", Format(rope.Elongation, "m") + " / " + Format(rope.Strain, ""));
             EditorGUILayout.LabelField("Top / bottom tension", Format(rope.TopTension, "N") + " / " + Format(rope.BottomTension, "N"));
             EditorGUILayout.LabelField("Peak tension", Format(rope.PeakTension, "N"));
             EditorGUILayout.LabelField("Min radius / neck radius", Format(rope.MinRadius, "m") + " / " + Format(rope.NeckRadius, "m"));

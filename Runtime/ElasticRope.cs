@@ -131,12 +131,9 @@ namespace HookeRope
         readonly RadiusSettings _radiusSettings = new RadiusSettings();
         RopeSimulation _simulation;
         readonly Stopwatch _stopwatch = new Stopwatch();
-        Action<RopeBreakEvent> _onCoreBroken;
         Vector3 _origin;
         bool _rebuildPending;
-        bool _breakPending;
-        Vector3 _breakPosition;
-        float _breakTension;
+        bool _breakRaised;
 
         // ---- Read-outs ------------------------------------------------------------------------------------
         /// <summary>Raised when the rope breaks: world position (m) and peak tension just before (N).</summary>
@@ -149,35 +146,38 @@ namespace HookeRope
         /// <summary>True once the core rope exists.</summary>
         public bool IsBuilt => _rope != null;
 
-        /// <summary>Current length minus rest length (m), summed over intact segments.</summary>
-        public float Elongation { get; private set; }
+        /// <summary>Σ over the intact segments of (current length − rest length) (m); 0 before the build.</summary>
+        public float Elongation => (float)(Readouts?.Elongation ?? 0.0);
 
-        /// <summary>Tension in the first segment (N).</summary>
-        public float TopTension { get; private set; }
+        /// <summary><see cref="Elongation"/> over the rest length of the intact segments (dimensionless); 0 before the build.</summary>
+        public float Strain => (float)(Readouts?.Strain ?? 0.0);
 
-        /// <summary>Tension in the last segment (N).</summary>
-        public float BottomTension { get; private set; }
+        /// <summary>Tension in the first segment (N); 0 once it is broken.</summary>
+        public float TopTension => Readouts?.TopTension ?? 0f;
 
-        /// <summary>Largest segment tension seen since the build or <see cref="ResetPeaks"/> (N).</summary>
-        public float PeakTension { get; private set; }
+        /// <summary>Tension in the last segment (N); 0 once it is broken.</summary>
+        public float BottomTension => Readouts?.BottomTension ?? 0f;
 
-        /// <summary>Smallest particle radius now (m).</summary>
-        public float MinRadius { get; private set; }
+        /// <summary>Largest intact-segment tension since the build or <see cref="ResetPeaks"/> (N).</summary>
+        public float PeakTension => Readouts?.PeakTension ?? 0f;
+
+        /// <summary>Smallest radius along the rope now, neck included (m).</summary>
+        public float MinRadius => Readouts?.MinRadius ?? 0f;
 
         /// <summary>Radius at the defect (m): the neck radius once necking has started, else the local Poisson radius.</summary>
-        public float NeckRadius { get; private set; }
+        public float NeckRadius => Readouts?.NeckRadius ?? 0f;
 
         /// <summary>True once any segment has broken.</summary>
-        public bool IsBroken { get; private set; }
+        public bool IsBroken => Readouts?.IsBroken ?? false;
 
         /// <summary>
         /// Force the rope exerts on the end load now (N): on the end Rigidbody when there is one, else the bottom
         /// tension. This is the arrest force of a fall-arrest lanyard.
         /// </summary>
-        public float ArrestForce { get; private set; }
+        public float ArrestForce => Readouts?.ArrestForce ?? 0f;
 
         /// <summary>Largest <see cref="ArrestForce"/> since the build or <see cref="ResetPeaks"/> (N).</summary>
-        public float PeakArrestForce { get; private set; }
+        public float PeakArrestForce => Readouts?.PeakArrestForce ?? 0f;
 
         /// <summary>True while <see cref="PeakArrestForce"/> is within EN 355's 6 kN.</summary>
         public bool MeetsEn355 => FallArrestLimits.MeetsEn355(PeakArrestForce);
@@ -186,10 +186,12 @@ namespace HookeRope
         public bool MeetsAnsiZ359_13 => FallArrestLimits.MeetsAnsiZ359_13(PeakArrestForce);
 
         /// <summary>Constraint residual of the last step: largest strain error against the compliance-consistent target (dimensionless).</summary>
-        public float Residual { get; private set; }
+        public float Residual => Readouts?.Residual ?? 0f;
 
         /// <summary>Wall-clock time of the last solver step (ms), for trading substeps/iterations against accuracy.</summary>
         public float StepMilliseconds { get; private set; }
+
+        RopeReadouts Readouts => _simulation?.Readouts;
 
         /// <summary>Particles in the built rope (segments + 1), or 0 before the build.</summary>
         public int ParticleCount => _rope?.ParticleCount ?? 0;
@@ -467,21 +469,15 @@ namespace HookeRope
         /// </summary>
         public void Rebuild()
         {
-            if (_rope != null && _onCoreBroken != null) _rope.Broken -= _onCoreBroken;
             _settings = new RopeSettings();
             WriteRadiusSettings(_radiusSettings);
             _simulation = BuildSimulation(_settings, _attachments, RadiusFeaturesOn ? _radiusSettings : null, out _origin);
             _rope = _simulation.Rope;
             _colliderBinding.Bind(_rope, m_CollisionMode, m_Colliders, m_CollisionLayers, m_Planes, m_Friction, _origin, m_Start, m_End, Reach, this);
+            _simulation.Readouts.ArrestLoad = _attachments.EndLoad;
 
-            _onCoreBroken ??= OnCoreBroken;
-            _rope.Broken += _onCoreBroken;
-
-            IsBroken = false;
-            _breakPending = false;
+            _breakRaised = false;
             _rebuildPending = false;
-            ResetPeaks();
-            UpdateReadouts();
         }
 
         /// <summary>
@@ -499,27 +495,22 @@ namespace HookeRope
             _colliderBinding.BeforeStep(_rope, _origin, Reach);
 
             _stopwatch.Restart();
-            var report = _simulation.Step(deltaTime);
+            _simulation.Step(deltaTime);
             _stopwatch.Stop();
             StepMilliseconds = (float)_stopwatch.Elapsed.TotalMilliseconds;
-            Residual = report.Residual;
 
             _attachments.ApplyForces(_rope);
-            UpdateReadouts();
 
-            if (_breakPending)
+            var firstBreak = _simulation.Readouts.FirstBreak;
+            if (!_breakRaised && firstBreak.HasValue)
             {
-                _breakPending = false;
-                m_OnBreak?.Invoke(_breakPosition, _breakTension);
+                _breakRaised = true;
+                m_OnBreak?.Invoke(_origin + firstBreak.Value.Position.ToVector3(), firstBreak.Value.Tension);
             }
         }
 
         /// <summary>Clears <see cref="PeakTension"/> and <see cref="PeakArrestForce"/>.</summary>
-        public void ResetPeaks()
-        {
-            PeakTension = 0f;
-            PeakArrestForce = 0f;
-        }
+        public void ResetPeaks() => Readouts?.ResetPeaks();
 
         /// <summary>
         /// Writes the particle positions interpolated between the last two steps into <paramref name="destination"/>
@@ -566,21 +557,6 @@ namespace HookeRope
             return _rope.ParticleRadius[particle];
         }
 
-        /// <summary>
-        /// Fills <paramref name="radii"/> (m) with the rope radius at the given ring stations (segment index and
-        /// fraction along it): the radius model's profile (Poisson, neck) when it is on, else the rest radius.
-        /// </summary>
-        public void FillRingRadii(ReadOnlySpan<int> ringSegments, ReadOnlySpan<float> ringFractions, Span<float> radii)
-        {
-            var model = _simulation?.RadiusModel;
-            if (model != null && model.IsActive && model.SegmentCount == _rope.SegmentCount)
-            {
-                model.FillRingRadii(ringSegments, ringFractions, radii);
-                return;
-            }
-            for (int k = 0; k < ringSegments.Length; k++) radii[k] = m_Radius;
-        }
-
         /// <summary>True when segment <paramref name="segment"/> has broken.</summary>
         public bool IsSegmentBroken(int segment) => _rope != null && _rope.IsSegmentBroken(segment);
 
@@ -612,7 +588,6 @@ namespace HookeRope
             settings.Iterations = m_Iterations;
             settings.Solver = m_Solver;
             settings.Tension = m_TensionModel;
-            settings.BreakStrain = float.PositiveInfinity;
         }
 
         /// <summary>True when any radius-model feature (thinning, necking, fracture) is on; all off costs nothing per step.</summary>
@@ -621,14 +596,15 @@ namespace HookeRope
         /// <summary>Writes the thinning, necking and break settings into the core radius settings.</summary>
         void WriteRadiusSettings(RadiusSettings settings)
         {
-            settings.PoissonEnabled = m_RadiusModel;
+            settings.PoissonThinning = m_RadiusModel;
             settings.PoissonRatio = m_PoissonRatio;
-            settings.RMinFraction = m_NeckRadiusFraction;
-            settings.NeckMode = m_Necking ? m_NeckMode : NeckMode.Off;
+            settings.NeckMode = m_NeckMode;
+            settings.Necking = m_Necking;
+            settings.NeckRadiusFraction = m_NeckRadiusFraction;
             settings.DefectPosition = m_DefectPosition;
-            settings.BreakEnabled = m_Fracture;
-            settings.BreakElongation = m_BreakStrain;
-            settings.BreakRadiusFraction = m_Necking ? m_BreakRadiusFraction : 0f;
+            settings.Fracture = m_Fracture;
+            settings.BreakStrain = m_BreakStrain;
+            settings.BreakRadiusFraction = m_BreakRadiusFraction;
         }
 
         void ApplySettings()
@@ -672,42 +648,5 @@ namespace HookeRope
 
         /// <summary>How far the Layer Mask collider query reaches: the rest length stretched to the break strain (or doubled), plus R.</summary>
         ColliderReach Reach => new ColliderReach(m_RestLength * (1f + (m_Fracture ? m_BreakStrain : 1f)), m_Radius);
-
-        void UpdateReadouts()
-        {
-            var tensions = _rope.Tensions;
-            var lengths = _rope.SegmentLengths;
-            float stretched = 0f, peak = PeakTension;
-            bool broken = false;
-            for (int s = 0; s < tensions.Length; s++)
-            {
-                if (_rope.IsSegmentBroken(s)) { broken = true; continue; }
-                stretched += lengths[s];
-                if (tensions[s] > peak) peak = tensions[s];
-            }
-            Elongation = stretched - m_RestLength;
-            TopTension = tensions.Length > 0 ? tensions[0] : 0f;
-            BottomTension = tensions.Length > 0 ? tensions[tensions.Length - 1] : 0f;
-            PeakTension = peak;
-            IsBroken |= broken;
-
-            var radii = _rope.ParticleRadius;
-            float minRadius = float.PositiveInfinity;
-            for (int i = 0; i < radii.Length; i++) if (radii[i] < minRadius) minRadius = radii[i];
-            MinRadius = radii.Length > 0 ? minRadius : m_Radius;
-            NeckRadius = _simulation.NeckRadius;
-            if (_simulation.MinRadius < MinRadius) MinRadius = _simulation.MinRadius;
-
-            ArrestForce = _attachments.EndLoad >= 0 ? _rope.GetLoadForce(_attachments.EndLoad).Length : BottomTension;
-            if (ArrestForce > PeakArrestForce) PeakArrestForce = ArrestForce;
-        }
-
-        void OnCoreBroken(RopeBreakEvent e)
-        {
-            IsBroken = true;
-            _breakPending = true;
-            _breakPosition = _origin + e.Position.ToVector3();
-            _breakTension = e.Tension;
-        }
     }
 }
