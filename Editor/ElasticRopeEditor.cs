@@ -92,21 +92,21 @@ namespace HookeRope.Editor
             }
             if (Section(ref s_Attachments, "Attachments"))
             {
-                EditorGUILayout.PropertyField(m_Start, true);
-                EditorGUILayout.PropertyField(m_End, true);
+                EditorGUILayout.PropertyField(m_Start, includeChildren: true);
+                EditorGUILayout.PropertyField(m_End, includeChildren: true);
                 Field(m_AttachmentCompliance);
                 EditorGUI.BeginDisabledGroup(EditorApplication.isPlaying || serializedObject.isEditingMultipleObjects);
-                if (GUILayout.Button("Preview static sag")) rope.PreviewStaticSag();
+                if (GUILayout.Button("Preview static sag")) StaticSagPreview.Compute(rope);
                 EditorGUI.EndDisabledGroup();
             }
             if (Section(ref s_Collisions, "Collisions"))
             {
                 Field(m_CollisionMode);
-                if (m_CollisionMode.intValue == (int)RopeCollisionMode.ListedColliders) EditorGUILayout.PropertyField(m_Colliders, true);
+                if (m_CollisionMode.intValue == (int)RopeCollisionMode.ListedColliders) EditorGUILayout.PropertyField(m_Colliders, includeChildren: true);
                 if (m_CollisionMode.intValue == (int)RopeCollisionMode.LayerMask) Field(m_CollisionLayers);
                 if (m_CollisionMode.intValue != (int)RopeCollisionMode.Off)
                 {
-                    EditorGUILayout.PropertyField(m_Planes, true);
+                    EditorGUILayout.PropertyField(m_Planes, includeChildren: true);
                     Field(m_Friction);
                 }
             }
@@ -124,7 +124,7 @@ namespace HookeRope.Editor
                 Field(m_BreakStrain);
                 Field(m_BreakRadiusFraction);
                 EditorGUI.EndDisabledGroup();
-                EditorGUILayout.PropertyField(m_OnBreak, true);
+                EditorGUILayout.PropertyField(m_OnBreak, includeChildren: true);
             }
             if (Section(ref s_Readouts, "Read-outs"))
                 Readouts(rope);
@@ -134,7 +134,7 @@ namespace HookeRope.Editor
 
         static bool Section(ref bool open, string title)
         {
-            open = EditorGUILayout.Foldout(open, title, true);
+            open = EditorGUILayout.Foldout(open, title, toggleOnLabelClick: true);
             return open;
         }
 
@@ -161,7 +161,7 @@ namespace HookeRope.Editor
                 EditorGUILayout.HelpBox("Read-outs appear in Play (or after ElasticRope.Rebuild()).", MessageType.Info);
                 return;
             }
-            EditorGUILayout.LabelField("Elongation", Format(rope.Elongation, "m"));
+            EditorGUILayout.LabelField("Elongation / strain", Format(rope.Elongation, "m") + " / " + Format(rope.Strain, ""));
             EditorGUILayout.LabelField("Top / bottom tension", Format(rope.TopTension, "N") + " / " + Format(rope.BottomTension, "N"));
             EditorGUILayout.LabelField("Peak tension", Format(rope.PeakTension, "N"));
             EditorGUILayout.LabelField("Min radius / neck radius", Format(rope.MinRadius, "m") + " / " + Format(rope.NeckRadius, "m"));

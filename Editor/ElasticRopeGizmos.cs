@@ -20,7 +20,7 @@ namespace HookeRope.Editor
                 DrawBuilt(rope, selected);
                 return;
             }
-            var preview = rope.StaticSagPreview;
+            var preview = StaticSagPreview.Get(rope);
             if (preview.Length > 1)
             {
                 Gizmos.color = Color.cyan;

@@ -23,8 +23,8 @@ namespace HookeRope.Editor
             GameObjectUtility.SetParentAndAlign(root, parent);
             var start = new GameObject("Rope Start");
             var end = new GameObject("Rope End");
-            start.transform.SetParent(root.transform, false);
-            end.transform.SetParent(root.transform, false);
+            start.transform.SetParent(root.transform, worldPositionStays: false);
+            end.transform.SetParent(root.transform, worldPositionStays: false);
             start.transform.localPosition = new Vector3(-0.8f, 0f, 0f);
             end.transform.localPosition = new Vector3(0.8f, 0f, 0f);
 

@@ -24,49 +24,49 @@ namespace HookeRope
         public const string DocumentationUrl = "https://github.com/hookerope/com.hookerope.elastic-rope/blob/main/Documentation~/index.md";
 
         // ---- Material -------------------------------------------------------------------------------------
-        [SerializeField, Tooltip("Edit the stiffness as Young's modulus E (Pa) or as axial stiffness E·A (N); the other follows from A = πR².")]
-        RopeStiffnessInput m_StiffnessInput = RopeStiffnessInput.YoungsModulus;
+        [SerializeField, Tooltip(RopeParameters.StiffnessInput.Tooltip)]
+        RopeStiffnessInput m_StiffnessInput = (RopeStiffnessInput)RopeParameters.StiffnessInput.Default;
 
-        [SerializeField, Tooltip("Young's modulus E of the rope material (Pa). Polyamide lanyard ≈ 1e8–1e9, steel ≈ 2e11.")]
-        float m_YoungsModulus = 1.5e8f;
+        [SerializeField, Tooltip(RopeParameters.YoungsModulus.Tooltip)]
+        float m_YoungsModulus = RopeParameters.YoungsModulus.Default;
 
-        [SerializeField, Tooltip("Axial stiffness E·A (N): force per unit strain. Used when the stiffness input is Axial Stiffness.")]
-        float m_AxialStiffness = 30159f;
+        [SerializeField, Tooltip(RopeParameters.AxialStiffness.Tooltip)]
+        float m_AxialStiffness = RopeParameters.AxialStiffness.Default;
 
-        [SerializeField, Tooltip("Material density ρ (kg/m³); rope mass per metre = ρ·πR². Polyamide ≈ 1140, steel ≈ 7850.")]
-        float m_Density = 1140f;
+        [SerializeField, Tooltip(RopeParameters.Density.Tooltip)]
+        float m_Density = RopeParameters.Density.Default;
 
-        [SerializeField, Range(RopeParameterLimits.MinPoisson, RopeParameterLimits.MaxPoisson), Tooltip("Poisson ratio ν (dimensionless, −1 to 0.5): how much the rope thins as it stretches. 0.5 keeps the volume; negative values thicken (auxetic).")]
-        float m_PoissonRatio = 0.3f;
+        [SerializeField, Range(RopeParameters.PoissonRatio.Min, RopeParameters.PoissonRatio.Max), Tooltip(RopeParameters.PoissonRatio.Tooltip)]
+        float m_PoissonRatio = RopeParameters.PoissonRatio.Default;
 
-        [SerializeField, Tooltip("XPBD constraint damping β (s): removes axial vibration without moving the static sag. 0 = undamped.")]
-        float m_Damping = 0.002f;
+        [SerializeField, Tooltip(RopeParameters.Damping.Tooltip)]
+        float m_Damping = RopeParameters.Damping.Default;
 
         // ---- Geometry -------------------------------------------------------------------------------------
-        [SerializeField, Tooltip("Rest (unstretched) length L (m).")]
-        float m_RestLength = 2f;
+        [SerializeField, Tooltip(RopeParameters.RestLength.Tooltip)]
+        float m_RestLength = RopeParameters.RestLength.Default;
 
-        [SerializeField, Tooltip("Rest radius R (m) of the rope's cross-section.")]
-        float m_Radius = 0.008f;
+        [SerializeField, Tooltip(RopeParameters.Radius.Tooltip)]
+        float m_Radius = RopeParameters.Radius.Default;
 
-        [SerializeField, Tooltip("Number of segments (particles = segments + 1). Changing it during Play rebuilds the rope.")]
-        int m_SegmentCount = 24;
+        [SerializeField, Tooltip(RopeParameters.SegmentCount.Tooltip)]
+        int m_SegmentCount = RopeParameters.SegmentCount.Default;
 
         // ---- Solver ---------------------------------------------------------------------------------------
-        [SerializeField, Tooltip("Exact Chain solves the whole chain at once each iteration (right stretch under heavy loads); Gauss-Seidel is cheaper per iteration but stretches under heavy loads.")]
-        ConstraintSolverKind m_Solver = ConstraintSolverKind.ExactChain;
+        [SerializeField, Tooltip(RopeParameters.Solver.Tooltip)]
+        ConstraintSolverKind m_Solver = RopeParameters.Solver.Default;
 
-        [SerializeField, Tooltip("Substeps per physics step (1–1000). More substeps = stiffer, more accurate, slower.")]
-        int m_Substeps = 8;
+        [SerializeField, Tooltip(RopeParameters.Substeps.Tooltip)]
+        int m_Substeps = RopeParameters.Substeps.Default;
 
-        [SerializeField, Tooltip("Constraint iterations per substep (1–1000).")]
-        int m_Iterations = 1;
+        [SerializeField, Tooltip(RopeParameters.Iterations.Tooltip)]
+        int m_Iterations = RopeParameters.Iterations.Default;
 
-        [SerializeField, Tooltip("Tension Only: a rope pulls but never pushes. Bilateral: a rod that also pushes.")]
-        TensionModel m_TensionModel = TensionModel.TensionOnly;
+        [SerializeField, Tooltip(RopeParameters.TensionModel.Tooltip)]
+        TensionModel m_TensionModel = RopeParameters.TensionModel.Default;
 
-        [SerializeField, Tooltip("Gravity acting on the rope (m/s²).")]
-        Vector3 m_Gravity = new Vector3(0f, -9.81f, 0f);
+        [SerializeField, Tooltip(RopeParameters.Gravity.Tooltip)]
+        Vector3 m_Gravity = new Vector3(RopeParameters.Gravity.DefaultX, RopeParameters.Gravity.DefaultY, RopeParameters.Gravity.DefaultZ);
 
         // ---- Attachments ----------------------------------------------------------------------------------
         [SerializeField, Tooltip("Start of the rope (first particle): a Transform to follow, a Rigidbody to pull two-way, or nothing.")]
@@ -75,8 +75,8 @@ namespace HookeRope
         [SerializeField, Tooltip("End of the rope (last particle): a Transform to follow, a Rigidbody to pull two-way (e.g. a harness D-ring), or nothing.")]
         RopeEnd m_End = new RopeEnd();
 
-        [SerializeField, Tooltip("Compliance of the Transform attachments (m/N); 0 = rigid.")]
-        float m_AttachmentCompliance;
+        [SerializeField, Tooltip(RopeParameters.AttachmentCompliance.Tooltip)]
+        float m_AttachmentCompliance = RopeParameters.AttachmentCompliance.Default;
 
         // ---- Collisions -----------------------------------------------------------------------------------
         [SerializeField, Tooltip("Off costs nothing. Listed Colliders: the colliders and planes below. Layer Mask: Sphere/Capsule/Box colliders on these layers within the rope's reach, re-queried every physics step.")]
@@ -91,33 +91,33 @@ namespace HookeRope
         [SerializeField, Tooltip("Infinite planes the rope stays above: each Transform's position is a point on the plane, its up axis the normal.")]
         Transform[] m_Planes = Array.Empty<Transform>();
 
-        [SerializeField, Tooltip("Coulomb friction coefficient μ between rope and colliders (dimensionless, 0–2).")]
-        float m_Friction = 0.3f;
+        [SerializeField, Tooltip(RopeParameters.Friction.Tooltip)]
+        float m_Friction = RopeParameters.Friction.Default;
 
         // ---- Radius, necking and fracture -----------------------------------------------------------------
-        [SerializeField, Tooltip("Thin the rope as it stretches (Poisson ratio). Off costs nothing; the radius stays R.")]
-        bool m_RadiusModel = true;
+        [SerializeField, Tooltip(RopeParameters.PoissonThinning.Tooltip)]
+        bool m_RadiusModel = RopeParameters.PoissonThinning.Default;
 
-        [SerializeField, Tooltip("Form a neck at the defect once the radius falls below r_min. Needs the radius model.")]
-        bool m_Necking = true;
+        [SerializeField, Tooltip(RopeParameters.Necking.Tooltip)]
+        bool m_Necking = RopeParameters.Necking.Default;
 
-        [SerializeField, Tooltip("Zone: a neck over a few diameters around the defect that deepens smoothly (default). Paper: Chen et al.'s hyperbola over the whole length (eq. 18); at onset the waist jumps to about 2·r_min²/l.")]
-        NeckMode m_NeckMode = NeckMode.Zone;
+        [SerializeField, Tooltip(RopeParameters.NeckMode.Tooltip)]
+        NeckMode m_NeckMode = RopeParameters.NeckMode.Default;
 
-        [SerializeField, Range(RopeParameterLimits.MinNeckFraction, RopeParameterLimits.MaxNeckFraction), Tooltip("Neck onset radius r_min as a fraction of the rest radius R (dimensionless, 0.01–1).")]
-        float m_NeckRadiusFraction = 0.75f;
+        [SerializeField, Range(RopeParameters.NeckRadiusFraction.Min, RopeParameters.NeckRadiusFraction.Max), Tooltip(RopeParameters.NeckRadiusFraction.Tooltip)]
+        float m_NeckRadiusFraction = RopeParameters.NeckRadiusFraction.Default;
 
-        [SerializeField, Range(RopeParameterLimits.MinDefectPosition, RopeParameterLimits.MaxDefectPosition), Tooltip("Where the material defect sits, as a fraction of the rest length from the start (0–1). The neck and the break form there.")]
-        float m_DefectPosition = 0.5f;
+        [SerializeField, Range(RopeParameters.DefectPosition.Min, RopeParameters.DefectPosition.Max), Tooltip(RopeParameters.DefectPosition.Tooltip)]
+        float m_DefectPosition = RopeParameters.DefectPosition.Default;
 
-        [SerializeField, Tooltip("Let the rope break. Off costs nothing.")]
-        bool m_Fracture = true;
+        [SerializeField, Tooltip(RopeParameters.Fracture.Tooltip)]
+        bool m_Fracture = RopeParameters.Fracture.Default;
 
-        [SerializeField, Tooltip("Break threshold: the strain l/L − 1 (dimensionless) of the defect segment at which the rope breaks.")]
-        float m_BreakStrain = 0.6f;
+        [SerializeField, Tooltip(RopeParameters.BreakStrain.Tooltip)]
+        float m_BreakStrain = RopeParameters.BreakStrain.Default;
 
-        [SerializeField, Range(RopeParameterLimits.MinBreakRadiusFraction, RopeParameterLimits.MaxBreakRadiusFraction), Tooltip("The rope also breaks when the neck radius falls below this fraction of R (dimensionless, 0–0.99; 0 = off). Needs necking.")]
-        float m_BreakRadiusFraction = 0.25f;
+        [SerializeField, Range(RopeParameters.BreakRadiusFraction.Min, RopeParameters.BreakRadiusFraction.Max), Tooltip(RopeParameters.BreakRadiusFraction.Tooltip)]
+        float m_BreakRadiusFraction = RopeParameters.BreakRadiusFraction.Default;
 
         // ---- Events ---------------------------------------------------------------------------------------
         [SerializeField, Tooltip("Raised when the rope breaks, with the break position (world, m) and the peak tension just before it (N).")]
@@ -127,61 +127,57 @@ namespace HookeRope
         Rope _rope;
         RopeSettings _settings;
         readonly RopeColliderBinding _colliderBinding = new RopeColliderBinding();
+        readonly RopeAttachmentBinding _attachments = new RopeAttachmentBinding();
         readonly RadiusSettings _radiusSettings = new RadiusSettings();
         RopeSimulation _simulation;
         readonly Stopwatch _stopwatch = new Stopwatch();
-        Action<RopeBreakEvent> _onCoreBroken;
         Vector3 _origin;
-        int _startPin = -1, _endPin = -1, _startLoad = -1, _endLoad = -1;
-        Vector3 _startVelocityCorrection, _endVelocityCorrection;
-        float[] _previous = Array.Empty<float>();
-        float[] _current = Array.Empty<float>();
         bool _rebuildPending;
-        bool _breakPending;
-        Vector3 _breakPosition;
-        float _breakTension;
-        Collider[] _overlapBuffer;
-        Vector3[] _preview = Array.Empty<Vector3>();
+        bool _breakRaised;
 
         // ---- Read-outs ------------------------------------------------------------------------------------
         /// <summary>Raised when the rope breaks: world position (m) and peak tension just before (N).</summary>
         public RopeBreakUnityEvent OnBreak => m_OnBreak;
 
-        /// <summary>The core rope, or null before the first build (Awake in Play, or <see cref="Rebuild"/>).</summary>
-        public Rope Core => _rope;
+        /// <summary>The core rope, or null before the first build. Use <c>Simulation.Rope</c>.</summary>
+        [Obsolete("Use Simulation.Rope (the one way into the core); Core is removed in 0.2.")]
+        public Rope Core => _simulation?.Rope;
 
         /// <summary>True once the core rope exists.</summary>
         public bool IsBuilt => _rope != null;
 
-        /// <summary>Current length minus rest length (m), summed over intact segments.</summary>
-        public float Elongation { get; private set; }
+        /// <summary>Σ over the intact segments of (current length − rest length) (m); 0 before the build.</summary>
+        public float Elongation => (float)(Readouts?.Elongation ?? 0.0);
 
-        /// <summary>Tension in the first segment (N).</summary>
-        public float TopTension { get; private set; }
+        /// <summary><see cref="Elongation"/> over the rest length of the intact segments (dimensionless); 0 before the build.</summary>
+        public float Strain => (float)(Readouts?.Strain ?? 0.0);
 
-        /// <summary>Tension in the last segment (N).</summary>
-        public float BottomTension { get; private set; }
+        /// <summary>Tension in the first segment (N); 0 once it is broken.</summary>
+        public float TopTension => Readouts?.TopTension ?? 0f;
 
-        /// <summary>Largest segment tension seen since the build or <see cref="ResetPeaks"/> (N).</summary>
-        public float PeakTension { get; private set; }
+        /// <summary>Tension in the last segment (N); 0 once it is broken.</summary>
+        public float BottomTension => Readouts?.BottomTension ?? 0f;
 
-        /// <summary>Smallest particle radius now (m).</summary>
-        public float MinRadius { get; private set; }
+        /// <summary>Largest intact-segment tension since the build or <see cref="ResetPeaks"/> (N).</summary>
+        public float PeakTension => Readouts?.PeakTension ?? 0f;
+
+        /// <summary>Smallest radius along the rope now, neck included (m).</summary>
+        public float MinRadius => Readouts?.MinRadius ?? 0f;
 
         /// <summary>Radius at the defect (m): the neck radius once necking has started, else the local Poisson radius.</summary>
-        public float NeckRadius { get; private set; }
+        public float NeckRadius => Readouts?.NeckRadius ?? 0f;
 
         /// <summary>True once any segment has broken.</summary>
-        public bool IsBroken { get; private set; }
+        public bool IsBroken => Readouts?.IsBroken ?? false;
 
         /// <summary>
         /// Force the rope exerts on the end load now (N): on the end Rigidbody when there is one, else the bottom
         /// tension. This is the arrest force of a fall-arrest lanyard.
         /// </summary>
-        public float ArrestForce { get; private set; }
+        public float ArrestForce => Readouts?.ArrestForce ?? 0f;
 
         /// <summary>Largest <see cref="ArrestForce"/> since the build or <see cref="ResetPeaks"/> (N).</summary>
-        public float PeakArrestForce { get; private set; }
+        public float PeakArrestForce => Readouts?.PeakArrestForce ?? 0f;
 
         /// <summary>True while <see cref="PeakArrestForce"/> is within EN 355's 6 kN.</summary>
         public bool MeetsEn355 => FallArrestLimits.MeetsEn355(PeakArrestForce);
@@ -190,94 +186,93 @@ namespace HookeRope
         public bool MeetsAnsiZ359_13 => FallArrestLimits.MeetsAnsiZ359_13(PeakArrestForce);
 
         /// <summary>Constraint residual of the last step: largest strain error against the compliance-consistent target (dimensionless).</summary>
-        public float Residual { get; private set; }
+        public float Residual => Readouts?.Residual ?? 0f;
 
         /// <summary>Wall-clock time of the last solver step (ms), for trading substeps/iterations against accuracy.</summary>
         public float StepMilliseconds { get; private set; }
 
+        RopeReadouts Readouts => _simulation?.Readouts;
+
         /// <summary>Particles in the built rope (segments + 1), or 0 before the build.</summary>
         public int ParticleCount => _rope?.ParticleCount ?? 0;
 
-        /// <summary>Static sag computed by <see cref="PreviewStaticSag"/> in world space (m); empty until then.</summary>
-        public Vector3[] StaticSagPreview => _preview;
-
         // ---- Settings properties (validated; changes apply at the next step) ------------------------------
-        /// <summary>Young's modulus E (Pa), 1e3 … 1e12. Setting it switches the stiffness input to E.</summary>
+        /// <summary>Young's modulus E (Pa), range <see cref="RopeParameters.YoungsModulus"/>. Setting it switches the stiffness input to E.</summary>
         public float YoungsModulus
         {
             get => m_StiffnessInput == RopeStiffnessInput.YoungsModulus ? m_YoungsModulus : m_AxialStiffness / Area(m_Radius);
             set
             {
-                m_YoungsModulus = RopeParameterLimits.Check(value, RopeParameterLimits.MinYoungsModulus, RopeParameterLimits.MaxYoungsModulus, nameof(YoungsModulus), "Pa");
+                m_YoungsModulus = RopeParameters.Check(value, RopeParameters.YoungsModulus.Row);
                 m_StiffnessInput = RopeStiffnessInput.YoungsModulus;
                 m_AxialStiffness = m_YoungsModulus * Area(m_Radius);
                 ApplySettings();
             }
         }
 
-        /// <summary>Axial stiffness E·A (N), 1 … 1e10. Setting it switches the stiffness input to E·A.</summary>
+        /// <summary>Axial stiffness E·A (N), range <see cref="RopeParameters.AxialStiffness"/>. Setting it switches the stiffness input to E·A.</summary>
         public float AxialStiffness
         {
             get => m_StiffnessInput == RopeStiffnessInput.AxialStiffness ? m_AxialStiffness : m_YoungsModulus * Area(m_Radius);
             set
             {
-                m_AxialStiffness = RopeParameterLimits.Check(value, RopeParameterLimits.MinAxialStiffness, RopeParameterLimits.MaxAxialStiffness, nameof(AxialStiffness), "N");
+                m_AxialStiffness = RopeParameters.Check(value, RopeParameters.AxialStiffness.Row);
                 m_StiffnessInput = RopeStiffnessInput.AxialStiffness;
                 m_YoungsModulus = m_AxialStiffness / Area(m_Radius);
                 ApplySettings();
             }
         }
 
-        /// <summary>Material density ρ (kg/m³), 1 … 20000.</summary>
+        /// <summary>Material density ρ (kg/m³), range <see cref="RopeParameters.Density"/>.</summary>
         public float Density
         {
             get => m_Density;
-            set { m_Density = RopeParameterLimits.Check(value, RopeParameterLimits.MinDensity, RopeParameterLimits.MaxDensity, nameof(Density), "kg/m³"); ApplySettings(); }
+            set { m_Density = RopeParameters.Check(value, RopeParameters.Density.Row); ApplySettings(); }
         }
 
         /// <summary>Rope mass per metre ρ·πR² (kg/m).</summary>
         public float LinearDensity => m_Density * Area(m_Radius);
 
-        /// <summary>Poisson ratio ν (dimensionless), −1 … 0.5.</summary>
+        /// <summary>Poisson ratio ν (dimensionless), range <see cref="RopeParameters.PoissonRatio"/>.</summary>
         public float PoissonRatio
         {
             get => m_PoissonRatio;
-            set { m_PoissonRatio = RopeParameterLimits.Check(value, RopeParameterLimits.MinPoisson, RopeParameterLimits.MaxPoisson, nameof(PoissonRatio), ""); ApplySettings(); }
+            set { m_PoissonRatio = RopeParameters.Check(value, RopeParameters.PoissonRatio.Row); ApplySettings(); }
         }
 
-        /// <summary>XPBD damping coefficient β (s), 0 … 1.</summary>
+        /// <summary>XPBD damping coefficient β (s), range <see cref="RopeParameters.Damping"/>.</summary>
         public float Damping
         {
             get => m_Damping;
-            set { m_Damping = RopeParameterLimits.Check(value, RopeParameterLimits.MinDamping, RopeParameterLimits.MaxDamping, nameof(Damping), "s"); ApplySettings(); }
+            set { m_Damping = RopeParameters.Check(value, RopeParameters.Damping.Row); ApplySettings(); }
         }
 
-        /// <summary>Rest length L (m), 0.01 … 1000.</summary>
+        /// <summary>Rest length L (m), range <see cref="RopeParameters.RestLength"/>.</summary>
         public float RestLength
         {
             get => m_RestLength;
-            set { m_RestLength = RopeParameterLimits.Check(value, RopeParameterLimits.MinRestLength, RopeParameterLimits.MaxRestLength, nameof(RestLength), "m"); ApplySettings(); }
+            set { m_RestLength = RopeParameters.Check(value, RopeParameters.RestLength.Row); ApplySettings(); }
         }
 
-        /// <summary>Rest radius R (m), 1e-4 … 1. With E·A as the stiffness input, E·A is kept and E follows.</summary>
+        /// <summary>Rest radius R (m), range <see cref="RopeParameters.Radius"/>. With E·A as the stiffness input, E·A is kept and E follows.</summary>
         public float Radius
         {
             get => m_Radius;
             set
             {
-                m_Radius = RopeParameterLimits.Check(value, RopeParameterLimits.MinRadius, RopeParameterLimits.MaxRadius, nameof(Radius), "m");
+                m_Radius = RopeParameters.Check(value, RopeParameters.Radius.Row);
                 SyncStiffness();
                 ApplySettings();
             }
         }
 
-        /// <summary>Segment count, 1 … 1000. A new value rebuilds the rope at the next step.</summary>
+        /// <summary>Segment count, range <see cref="RopeParameters.SegmentCount"/>. A new value rebuilds the rope at the next step.</summary>
         public int SegmentCount
         {
             get => m_SegmentCount;
             set
             {
-                m_SegmentCount = RopeParameterLimits.Check(value, RopeParameterLimits.MinSegments, RopeParameterLimits.MaxSegments, nameof(SegmentCount));
+                m_SegmentCount = RopeParameters.Check(value, RopeParameters.SegmentCount.Row);
                 if (_rope != null && _rope.SegmentCount != m_SegmentCount) _rebuildPending = true;
             }
         }
@@ -289,18 +284,18 @@ namespace HookeRope
             set { m_Solver = value; ApplySettings(); }
         }
 
-        /// <summary>Substeps per physics step, 1 … 1000.</summary>
+        /// <summary>Substeps per physics step, range <see cref="RopeParameters.Substeps"/>.</summary>
         public int Substeps
         {
             get => m_Substeps;
-            set { m_Substeps = RopeParameterLimits.Check(value, RopeParameterLimits.MinSubsteps, RopeParameterLimits.MaxSubsteps, nameof(Substeps)); ApplySettings(); }
+            set { m_Substeps = RopeParameters.Check(value, RopeParameters.Substeps.Row); ApplySettings(); }
         }
 
-        /// <summary>Iterations per substep, 1 … 1000.</summary>
+        /// <summary>Iterations per substep, range <see cref="RopeParameters.Iterations"/>.</summary>
         public int Iterations
         {
             get => m_Iterations;
-            set { m_Iterations = RopeParameterLimits.Check(value, RopeParameterLimits.MinIterations, RopeParameterLimits.MaxIterations, nameof(Iterations)); ApplySettings(); }
+            set { m_Iterations = RopeParameters.Check(value, RopeParameters.Iterations.Row); ApplySettings(); }
         }
 
         /// <summary>Rope (pulls only) or rod (also pushes).</summary>
@@ -316,31 +311,33 @@ namespace HookeRope
             get => m_Gravity;
             set
             {
-                if (!value.ToFloat3().IsFinite) throw new ArgumentException("Gravity must be finite (m/s²).", nameof(Gravity));
+                RopeParameters.Check(value.x, RopeParameters.Gravity.Row);
+                RopeParameters.Check(value.y, RopeParameters.Gravity.Row);
+                RopeParameters.Check(value.z, RopeParameters.Gravity.Row);
                 m_Gravity = value;
                 ApplySettings();
             }
         }
 
-        /// <summary>Neck onset radius r_min as a fraction of R, 0.01 … 1.</summary>
+        /// <summary>Neck onset radius r_min as a fraction of R, range <see cref="RopeParameters.NeckRadiusFraction"/>.</summary>
         public float NeckRadiusFraction
         {
             get => m_NeckRadiusFraction;
-            set { m_NeckRadiusFraction = RopeParameterLimits.Check(value, RopeParameterLimits.MinNeckFraction, RopeParameterLimits.MaxNeckFraction, nameof(NeckRadiusFraction), ""); ApplySettings(); }
+            set { m_NeckRadiusFraction = RopeParameters.Check(value, RopeParameters.NeckRadiusFraction.Row); ApplySettings(); }
         }
 
-        /// <summary>Defect position as a fraction of the rest length from the start, 0 … 1.</summary>
+        /// <summary>Defect position as a fraction of the rest length from the start, range <see cref="RopeParameters.DefectPosition"/>.</summary>
         public float DefectPosition
         {
             get => m_DefectPosition;
-            set { m_DefectPosition = RopeParameterLimits.Check(value, RopeParameterLimits.MinDefectPosition, RopeParameterLimits.MaxDefectPosition, nameof(DefectPosition), ""); ApplySettings(); }
+            set { m_DefectPosition = RopeParameters.Check(value, RopeParameters.DefectPosition.Row); ApplySettings(); }
         }
 
-        /// <summary>Break strain l/L − 1 (dimensionless), 1e-3 … 10; used when <see cref="Fracture"/> is on.</summary>
+        /// <summary>Break strain l/L − 1 (dimensionless), range <see cref="RopeParameters.BreakStrain"/>; used when <see cref="Fracture"/> is on.</summary>
         public float BreakStrain
         {
             get => m_BreakStrain;
-            set { m_BreakStrain = RopeParameterLimits.Check(value, RopeParameterLimits.MinBreakStrain, RopeParameterLimits.MaxBreakStrain, nameof(BreakStrain), ""); ApplySettings(); }
+            set { m_BreakStrain = RopeParameters.Check(value, RopeParameters.BreakStrain.Row); ApplySettings(); }
         }
 
         /// <summary>Neck model used when <see cref="Necking"/> is on (Zone or Paper).</summary>
@@ -349,27 +346,35 @@ namespace HookeRope
             get => m_NeckMode;
             set
             {
-                if (value != NeckMode.Zone && value != NeckMode.Paper) throw new ArgumentOutOfRangeException(nameof(NeckMode), value, "NeckMode must be Zone or Paper (turn necking off with Necking = false)");
+                if (!RopeParameters.Contains(RopeParameters.NeckMode.Row, (int)value)) throw new ArgumentOutOfRangeException(nameof(NeckMode), value, "NeckMode must be Zone or Paper (turn necking off with Necking = false)");
                 m_NeckMode = value;
                 ApplySettings();
             }
         }
 
-        /// <summary>Neck radius below which the rope breaks, as a fraction of R, 0 … 0.99 (0 = off).</summary>
+        /// <summary>Neck radius below which the rope breaks, as a fraction of R, range <see cref="RopeParameters.BreakRadiusFraction"/> (0 = off).</summary>
         public float BreakRadiusFraction
         {
             get => m_BreakRadiusFraction;
-            set { m_BreakRadiusFraction = RopeParameterLimits.Check(value, RopeParameterLimits.MinBreakRadiusFraction, RopeParameterLimits.MaxBreakRadiusFraction, nameof(BreakRadiusFraction), ""); ApplySettings(); }
+            set { m_BreakRadiusFraction = RopeParameters.Check(value, RopeParameters.BreakRadiusFraction.Row); ApplySettings(); }
         }
 
-        /// <summary>The core radius model, or null when thinning, necking and fracture are all off.</summary>
+        /// <summary>The core radius model, or null when thinning, necking and fracture are all off. Use <c>Simulation.RadiusModel</c>.</summary>
+        [Obsolete("Use Simulation.RadiusModel (the one way into the core); RadiusModelCore is removed in 0.2.")]
         public HookeRope.Radius.RadiusModel RadiusModelCore => _simulation?.RadiusModel;
 
-        /// <summary>The core facade (solver rope + radius model), or null before the first build.</summary>
+        /// <summary>
+        /// The core facade, or null before the first build (Awake in Play, or <see cref="Rebuild"/>): the one way into
+        /// the core (solver rope, radius model, read-outs, mesh).
+        /// </summary>
         public RopeSimulation Simulation => _simulation;
 
-        /// <summary>Whether the radius follows the Poisson ratio.</summary>
-        public bool RadiusModel { get => m_RadiusModel; set { m_RadiusModel = value; ApplyFeatureToggles(); } }
+        /// <summary>Whether the radius thins with the Poisson ratio as the rope stretches (off: the radius stays R).</summary>
+        public bool PoissonThinning { get => m_RadiusModel; set { m_RadiusModel = value; ApplyFeatureToggles(); } }
+
+        /// <summary>Whether the radius follows the Poisson ratio. Use <see cref="PoissonThinning"/>.</summary>
+        [Obsolete("Use PoissonThinning; RadiusModel (a bool named like the core type) is removed in 0.2.")]
+        public bool RadiusModel { get => PoissonThinning; set => PoissonThinning = value; }
 
         /// <summary>Whether a neck forms at the defect below r_min.</summary>
         public bool Necking { get => m_Necking; set { m_Necking = value; ApplyFeatureToggles(); } }
@@ -389,18 +394,18 @@ namespace HookeRope
         /// <summary>Colliders used in <see cref="RopeCollisionMode.ListedColliders"/> mode; takes effect at the next <see cref="Rebuild"/>.</summary>
         public Collider[] Colliders { get => m_Colliders; set { m_Colliders = value ?? Array.Empty<Collider>(); _rebuildPending |= _rope != null; } }
 
-        /// <summary>Coulomb friction coefficient between rope and colliders (dimensionless), 0 … 2; takes effect at the next <see cref="Rebuild"/>.</summary>
+        /// <summary>Coulomb friction coefficient between rope and colliders (dimensionless), range <see cref="RopeParameters.Friction"/>; takes effect at the next <see cref="Rebuild"/>.</summary>
         public float Friction
         {
             get => m_Friction;
-            set { m_Friction = RopeParameterLimits.Check(value, RopeParameterLimits.MinFriction, RopeParameterLimits.MaxFriction, nameof(Friction), ""); _rebuildPending |= _rope != null; }
+            set { m_Friction = RopeParameters.Check(value, RopeParameters.Friction.Row); _rebuildPending |= _rope != null; }
         }
 
-        /// <summary>Compliance of the Transform attachments (m/N), 0 … 1; takes effect at the next <see cref="Rebuild"/>.</summary>
+        /// <summary>Compliance of the Transform attachments (m/N), range <see cref="RopeParameters.AttachmentCompliance"/>; takes effect at the next <see cref="Rebuild"/>.</summary>
         public float AttachmentCompliance
         {
             get => m_AttachmentCompliance;
-            set { m_AttachmentCompliance = RopeParameterLimits.Check(value, RopeParameterLimits.MinCompliance, RopeParameterLimits.MaxCompliance, nameof(AttachmentCompliance), "m/N"); _rebuildPending |= _rope != null; }
+            set { m_AttachmentCompliance = RopeParameters.Check(value, RopeParameters.AttachmentCompliance.Row); _rebuildPending |= _rope != null; }
         }
 
         /// <summary>Plane Transforms (up axis = normal); takes effect at the next <see cref="Rebuild"/>.</summary>
@@ -419,32 +424,35 @@ namespace HookeRope
 
         void OnValidate()
         {
-            Report(RopeParameterLimits.Clamp(ref m_RestLength, RopeParameterLimits.MinRestLength, RopeParameterLimits.MaxRestLength, 2f, "Rest length", "m"));
-            Report(RopeParameterLimits.Clamp(ref m_Radius, RopeParameterLimits.MinRadius, RopeParameterLimits.MaxRadius, 0.008f, "Radius", "m"));
-            Report(RopeParameterLimits.Clamp(ref m_SegmentCount, RopeParameterLimits.MinSegments, RopeParameterLimits.MaxSegments, "Segment count"));
-            Report(RopeParameterLimits.Clamp(ref m_YoungsModulus, RopeParameterLimits.MinYoungsModulus, RopeParameterLimits.MaxYoungsModulus, 1.5e8f, "Young's modulus", "Pa"));
-            Report(RopeParameterLimits.Clamp(ref m_AxialStiffness, RopeParameterLimits.MinAxialStiffness, RopeParameterLimits.MaxAxialStiffness, 30159f, "Axial stiffness", "N"));
-            Report(RopeParameterLimits.Clamp(ref m_Density, RopeParameterLimits.MinDensity, RopeParameterLimits.MaxDensity, 1140f, "Density", "kg/m³"));
-            Report(RopeParameterLimits.Clamp(ref m_PoissonRatio, RopeParameterLimits.MinPoisson, RopeParameterLimits.MaxPoisson, 0.3f, "Poisson ratio", ""));
-            Report(RopeParameterLimits.Clamp(ref m_Damping, RopeParameterLimits.MinDamping, RopeParameterLimits.MaxDamping, 0f, "Damping", "s"));
-            Report(RopeParameterLimits.Clamp(ref m_Substeps, RopeParameterLimits.MinSubsteps, RopeParameterLimits.MaxSubsteps, "Substeps"));
-            Report(RopeParameterLimits.Clamp(ref m_Iterations, RopeParameterLimits.MinIterations, RopeParameterLimits.MaxIterations, "Iterations"));
-            Report(RopeParameterLimits.Clamp(ref m_Friction, RopeParameterLimits.MinFriction, RopeParameterLimits.MaxFriction, 0.3f, "Friction", ""));
-            Report(RopeParameterLimits.Clamp(ref m_AttachmentCompliance, RopeParameterLimits.MinCompliance, RopeParameterLimits.MaxCompliance, 0f, "Attachment compliance", "m/N"));
-            Report(RopeParameterLimits.Clamp(ref m_NeckRadiusFraction, RopeParameterLimits.MinNeckFraction, RopeParameterLimits.MaxNeckFraction, 0.75f, "Neck radius fraction r_min/R", ""));
-            Report(RopeParameterLimits.Clamp(ref m_DefectPosition, RopeParameterLimits.MinDefectPosition, RopeParameterLimits.MaxDefectPosition, 0.5f, "Defect position", ""));
-            Report(RopeParameterLimits.Clamp(ref m_BreakStrain, RopeParameterLimits.MinBreakStrain, RopeParameterLimits.MaxBreakStrain, 0.6f, "Break strain", ""));
-            Report(RopeParameterLimits.Clamp(ref m_BreakRadiusFraction, RopeParameterLimits.MinBreakRadiusFraction, RopeParameterLimits.MaxBreakRadiusFraction, 0.25f, "Break radius fraction", ""));
-            if (m_NeckMode != NeckMode.Zone && m_NeckMode != NeckMode.Paper)
+            Report(RopeParameters.Clamp(ref m_RestLength, RopeParameters.RestLength.Row));
+            Report(RopeParameters.Clamp(ref m_Radius, RopeParameters.Radius.Row));
+            Report(RopeParameters.Clamp(ref m_SegmentCount, RopeParameters.SegmentCount.Row));
+            Report(RopeParameters.Clamp(ref m_YoungsModulus, RopeParameters.YoungsModulus.Row));
+            Report(RopeParameters.Clamp(ref m_AxialStiffness, RopeParameters.AxialStiffness.Row));
+            Report(RopeParameters.Clamp(ref m_Density, RopeParameters.Density.Row));
+            Report(RopeParameters.Clamp(ref m_PoissonRatio, RopeParameters.PoissonRatio.Row));
+            Report(RopeParameters.Clamp(ref m_Damping, RopeParameters.Damping.Row));
+            Report(RopeParameters.Clamp(ref m_Substeps, RopeParameters.Substeps.Row));
+            Report(RopeParameters.Clamp(ref m_Iterations, RopeParameters.Iterations.Row));
+            Report(RopeParameters.Clamp(ref m_Friction, RopeParameters.Friction.Row));
+            Report(RopeParameters.Clamp(ref m_AttachmentCompliance, RopeParameters.AttachmentCompliance.Row));
+            Report(RopeParameters.Clamp(ref m_NeckRadiusFraction, RopeParameters.NeckRadiusFraction.Row));
+            Report(RopeParameters.Clamp(ref m_DefectPosition, RopeParameters.DefectPosition.Row));
+            Report(RopeParameters.Clamp(ref m_BreakStrain, RopeParameters.BreakStrain.Row));
+            Report(RopeParameters.Clamp(ref m_BreakRadiusFraction, RopeParameters.BreakRadiusFraction.Row));
+            if (!RopeParameters.Contains(RopeParameters.NeckMode.Row, (int)m_NeckMode))
             {
-                m_NeckMode = NeckMode.Zone;
+                m_NeckMode = RopeParameters.NeckMode.Default;
                 Report("Neck mode must be Zone or Paper; set to Zone (use the Necking toggle to turn necking off).");
             }
             if (!m_Gravity.ToFloat3().IsFinite)
             {
-                m_Gravity = new Vector3(0f, -9.81f, 0f);
+                m_Gravity = new Vector3(RopeParameters.Gravity.DefaultX, RopeParameters.Gravity.DefaultY, RopeParameters.Gravity.DefaultZ);
                 Report("Gravity was not finite; reset to (0, -9.81, 0) m/s².");
             }
+            Report(RopeParameters.Clamp(ref m_Gravity.x, RopeParameters.Gravity.Row));
+            Report(RopeParameters.Clamp(ref m_Gravity.y, RopeParameters.Gravity.Row));
+            Report(RopeParameters.Clamp(ref m_Gravity.z, RopeParameters.Gravity.Row));
             SyncStiffness();
             if (m_Colliders == null) m_Colliders = Array.Empty<Collider>();
             if (m_Planes == null) m_Planes = Array.Empty<Transform>();
@@ -461,31 +469,15 @@ namespace HookeRope
         /// </summary>
         public void Rebuild()
         {
-            if (_rope != null && _onCoreBroken != null) _rope.Broken -= _onCoreBroken;
             _settings = new RopeSettings();
-            _rope = CreateCoreRope(_settings, out _origin);
-            AttachEnd(_rope, m_Start, 0, _origin, out _startPin, out _startLoad);
-            AttachEnd(_rope, m_End, _rope.ParticleCount - 1, _origin, out _endPin, out _endLoad);
-
-            RegisterColliders();
             WriteRadiusSettings(_radiusSettings);
-            _simulation = new RopeSimulation(_rope, RadiusFeaturesOn ? _radiusSettings : null);
+            _simulation = BuildSimulation(_settings, _attachments, RadiusFeaturesOn ? _radiusSettings : null, out _origin);
+            _rope = _simulation.Rope;
+            _colliderBinding.Bind(_rope, m_CollisionMode, m_Colliders, m_CollisionLayers, m_Planes, m_Friction, _origin, m_Start, m_End, Reach, this);
+            _simulation.Readouts.ArrestLoad = _attachments.EndLoad;
 
-            _onCoreBroken ??= OnCoreBroken;
-            _rope.Broken += _onCoreBroken;
-
-            int n = _rope.ParticleCount * 3;
-            _previous = new float[n];
-            _current = new float[n];
-            CopyPositions(_current);
-            Array.Copy(_current, _previous, n);
-
-            IsBroken = false;
-            _startVelocityCorrection = _endVelocityCorrection = Vector3.zero;
-            _breakPending = false;
+            _breakRaised = false;
             _rebuildPending = false;
-            ResetPeaks();
-            UpdateReadouts();
         }
 
         /// <summary>
@@ -499,38 +491,26 @@ namespace HookeRope
                 throw new ArgumentOutOfRangeException(nameof(deltaTime), deltaTime, "deltaTime must be in (0, +inf) seconds");
             if (_rope == null || _rebuildPending) Rebuild();
 
-            CorrectBodyVelocity(m_Start, ref _startVelocityCorrection);
-            CorrectBodyVelocity(m_End, ref _endVelocityCorrection);
-            CopyAttachmentsIn(m_Start, _startPin, _startLoad);
-            CopyAttachmentsIn(m_End, _endPin, _endLoad);
-            if (m_CollisionMode == RopeCollisionMode.LayerMask) RefreshLayerColliders();
-            _colliderBinding.UpdatePoses(_rope, _origin);
+            _attachments.CopyIn(_rope, _origin);
+            _colliderBinding.BeforeStep(_rope, _origin, Reach);
 
-            Array.Copy(_current, _previous, _current.Length);
             _stopwatch.Restart();
-            var report = _simulation.Step(deltaTime);
+            _simulation.Step(deltaTime);
             _stopwatch.Stop();
             StepMilliseconds = (float)_stopwatch.Elapsed.TotalMilliseconds;
-            Residual = report.Residual;
-            CopyPositions(_current);
 
-            ApplyForceToBody(m_Start, _startLoad, ref _startVelocityCorrection);
-            ApplyForceToBody(m_End, _endLoad, ref _endVelocityCorrection);
-            UpdateReadouts();
+            _attachments.ApplyForces(_rope);
 
-            if (_breakPending)
+            var firstBreak = _simulation.Readouts.FirstBreak;
+            if (!_breakRaised && firstBreak.HasValue)
             {
-                _breakPending = false;
-                m_OnBreak?.Invoke(_breakPosition, _breakTension);
+                _breakRaised = true;
+                m_OnBreak?.Invoke(_origin + firstBreak.Value.Position.ToVector3(), firstBreak.Value.Tension);
             }
         }
 
         /// <summary>Clears <see cref="PeakTension"/> and <see cref="PeakArrestForce"/>.</summary>
-        public void ResetPeaks()
-        {
-            PeakTension = 0f;
-            PeakArrestForce = 0f;
-        }
+        public void ResetPeaks() => Readouts?.ResetPeaks();
 
         /// <summary>
         /// Writes the particle positions interpolated between the last two steps into <paramref name="destination"/>
@@ -540,17 +520,21 @@ namespace HookeRope
         public int GetInterpolatedPositions(float alpha, float[] destination)
         {
             if (_rope == null) return 0;
-            if (destination == null || destination.Length < _current.Length)
+            int particles = _rope.ParticleCount;
+            if (destination == null || destination.Length < particles * 3)
                 throw new ArgumentException("destination must hold 3 × ParticleCount floats", nameof(destination));
-            alpha = alpha < 0f ? 0f : alpha > 1f ? 1f : alpha;
-            for (int i = 0; i < _current.Length; i += 3)
+            for (int i = 0, j = 0; i < particles; i++, j += 3)
             {
-                destination[i] = _origin.x + _previous[i] + (_current[i] - _previous[i]) * alpha;
-                destination[i + 1] = _origin.y + _previous[i + 1] + (_current[i + 1] - _previous[i + 1]) * alpha;
-                destination[i + 2] = _origin.z + _previous[i + 2] + (_current[i + 2] - _previous[i + 2]) * alpha;
+                Vector3 p = _origin + _rope.GetInterpolatedPosition(i, alpha).ToVector3();
+                destination[j] = p.x;
+                destination[j + 1] = p.y;
+                destination[j + 2] = p.z;
             }
-            return _rope.ParticleCount;
+            return particles;
         }
+
+        /// <summary>World position (m) of the origin of the core rope's frame: world = origin + <see cref="Rope.GetPosition"/>.</summary>
+        internal Vector3 SimulationOrigin => _origin;
 
         /// <summary>World position of particle <paramref name="particle"/> after the last step (m).</summary>
         public Vector3 GetParticlePosition(int particle)
@@ -573,55 +557,11 @@ namespace HookeRope
             return _rope.ParticleRadius[particle];
         }
 
-        /// <summary>
-        /// Fills <paramref name="radii"/> (m) with the rope radius at the given ring stations (segment index and
-        /// fraction along it): the radius model's profile (Poisson, neck) when it is on, else the rest radius.
-        /// </summary>
-        public void FillRingRadii(ReadOnlySpan<int> ringSegments, ReadOnlySpan<float> ringFractions, Span<float> radii)
-        {
-            var model = _simulation?.RadiusModel;
-            if (model != null && model.IsActive && model.SegmentCount == _rope.SegmentCount)
-            {
-                model.FillRingRadii(ringSegments, ringFractions, radii);
-                return;
-            }
-            for (int k = 0; k < ringSegments.Length; k++) radii[k] = m_Radius;
-        }
-
         /// <summary>True when segment <paramref name="segment"/> has broken.</summary>
         public bool IsSegmentBroken(int segment) => _rope != null && _rope.IsSegmentBroken(segment);
 
-        /// <summary>
-        /// Computes the static sag of the current settings between the current attachment positions without
-        /// entering Play (for the inspector's preview button): a separate core rope relaxes for
-        /// <paramref name="seconds"/> of simulated time with its velocities scaled by 0.85 every 1/60 s step (a
-        /// near-critical damping of the swing of a metre-scale rope), so it settles into the static shape; long
-        /// ropes swing slowly and need more seconds. The result is in <see cref="StaticSagPreview"/> (world, m).
-        /// </summary>
-        public Vector3[] PreviewStaticSag(float seconds = 6f)
-        {
-            if (!(seconds > 0f) || float.IsInfinity(seconds))
-                throw new ArgumentOutOfRangeException(nameof(seconds), seconds, "seconds must be in (0, +inf)");
-            var rope = CreateCoreRope(new RopeSettings(), out Vector3 start);
-            int last = rope.ParticleCount - 1;
-            AttachEnd(rope, m_Start, 0, start, out _, out _);
-            AttachEnd(rope, m_End, last, start, out _, out _);
-            const float dt = 1f / 60f;
-            int steps = (int)Math.Ceiling(seconds / dt);
-            for (int s = 0; s < steps; s++)
-            {
-                rope.Step(dt);
-                for (int i = 0; i <= last; i++) rope.SetVelocity(i, rope.GetVelocity(i) * 0.85f);
-            }
-            if (_preview.Length != rope.ParticleCount) _preview = new Vector3[rope.ParticleCount];
-            for (int i = 0; i <= last; i++) _preview[i] = start + rope.GetPosition(i).ToVector3();
-            return _preview;
-        }
-
         // ---- Internals ------------------------------------------------------------------------------------
         static float Area(float radius) => MathF.PI * radius * radius;
-
-        Float3 Sim(Vector3 world) => new Float3(world.x - _origin.x, world.y - _origin.y, world.z - _origin.z);
 
         void Report(string message)
         {
@@ -648,7 +588,6 @@ namespace HookeRope
             settings.Iterations = m_Iterations;
             settings.Solver = m_Solver;
             settings.Tension = m_TensionModel;
-            settings.BreakStrain = float.PositiveInfinity;
         }
 
         /// <summary>True when any radius-model feature (thinning, necking, fracture) is on; all off costs nothing per step.</summary>
@@ -657,14 +596,15 @@ namespace HookeRope
         /// <summary>Writes the thinning, necking and break settings into the core radius settings.</summary>
         void WriteRadiusSettings(RadiusSettings settings)
         {
-            settings.PoissonEnabled = m_RadiusModel;
+            settings.PoissonThinning = m_RadiusModel;
             settings.PoissonRatio = m_PoissonRatio;
-            settings.RMinFraction = m_NeckRadiusFraction;
-            settings.NeckMode = m_Necking ? m_NeckMode : NeckMode.Off;
+            settings.NeckMode = m_NeckMode;
+            settings.Necking = m_Necking;
+            settings.NeckRadiusFraction = m_NeckRadiusFraction;
             settings.DefectPosition = m_DefectPosition;
-            settings.BreakEnabled = m_Fracture;
-            settings.BreakElongation = m_BreakStrain;
-            settings.BreakRadiusFraction = m_Necking ? m_BreakRadiusFraction : 0f;
+            settings.Fracture = m_Fracture;
+            settings.BreakStrain = m_BreakStrain;
+            settings.BreakRadiusFraction = m_BreakRadiusFraction;
         }
 
         void ApplySettings()
@@ -680,167 +620,33 @@ namespace HookeRope
         }
 
         /// <summary>
-        /// Writes every live setting and the segment count into <paramref name="settings"/> and builds a core rope from
-        /// them, particles evenly from the start attachment to the end attachment (or straight down from this object by
-        /// the rest length). <paramref name="origin"/> is the start in world space (m): the origin of the rope's frame.
+        /// Writes every live setting and the segment count into <paramref name="settings"/> and builds a core
+        /// simulation from them: particles evenly from the start attachment to the end attachment (or straight down
+        /// from this object by the rest length), the ends attached through <paramref name="attachments"/>, and a
+        /// radius model when <paramref name="radiusSettings"/> is not null. <paramref name="origin"/> is the start in
+        /// world space (m): the origin of the rope's frame.
         /// </summary>
-        Rope CreateCoreRope(RopeSettings settings, out Vector3 origin)
+        RopeSimulation BuildSimulation(RopeSettings settings, RopeAttachmentBinding attachments, RadiusSettings radiusSettings, out Vector3 origin)
         {
             WriteSettings(settings);
             settings.SegmentCount = m_SegmentCount;
             Vector3 start = m_Start.WorldPosition(transform.position);
             Vector3 end = m_End.WorldPosition(new Vector3(start.x, start.y - m_RestLength, start.z));
             origin = start;
-            return new Rope(settings, (start - origin).ToFloat3(), (end - origin).ToFloat3());
-        }
-
-        /// <summary>Pins (Transform end) or loads (Rigidbody end) <paramref name="particle"/>; the id not created is -1.</summary>
-        void AttachEnd(Rope rope, RopeEnd end, int particle, Vector3 origin, out int pin, out int load)
-        {
-            pin = load = -1;
-            switch (end.Kind)
-            {
-                case RopeEndKind.Transform:
-                    pin = rope.AddPin(particle, (end.Point.position - origin).ToFloat3(), m_AttachmentCompliance);
-                    break;
-                case RopeEndKind.Rigidbody:
-                    load = rope.AddLoad(particle, end.Body.mass);
-                    break;
-            }
-        }
-
-        void CopyAttachmentsIn(RopeEnd end, int pin, int load)
-        {
-            if (pin >= 0 && end.Point != null)
-            {
-                _rope.SetPinTarget(pin, Sim(end.Point.position));
-            }
-            else if (load >= 0 && end.Body != null)
-            {
-                Vector3 point = end.WorldPosition(end.Body.position);
-                _rope.SetLoadState(load, Sim(point), end.Body.GetPointVelocity(point).ToFloat3());
-            }
+            var rope = new Rope(settings, (start - origin).ToFloat3(), (end - origin).ToFloat3());
+            attachments.Attach(rope, m_Start, m_End, origin, m_AttachmentCompliance);
+            return new RopeSimulation(rope, radiusSettings);
         }
 
         /// <summary>
-        /// Two-way coupling, after the rope step: the force that brings the body (integrated by the physics engine
-        /// with semi-implicit Euler) to where the rope's load particle ended, and the velocity correction that the
-        /// next step adds before it reads the body back (see <see cref="Rope.GetLoadHostForce"/>).
+        /// A simulation of the current settings and attachment poses that this component does not own or step
+        /// (no radius model, no colliders): the editor's static-sag preview relaxes it. <paramref name="origin"/> is
+        /// the world position (m) of its frame's origin.
         /// </summary>
-        void ApplyForceToBody(RopeEnd end, int load, ref Vector3 velocityCorrection)
-        {
-            velocityCorrection = Vector3.zero;
-            if (load < 0 || end.Body == null || end.Body.isKinematic) return;
-            Vector3 force = _rope.GetLoadHostForce(load).ToVector3();
-            end.Body.AddForceAtPosition(force, end.WorldPosition(end.Body.position), ForceMode.Force);
-            velocityCorrection = _rope.GetLoadHostVelocityCorrection(load).ToVector3();
-        }
+        internal RopeSimulation CreateDetachedSimulation(out Vector3 origin) =>
+            BuildSimulation(new RopeSettings(), new RopeAttachmentBinding(), radiusSettings: null, out origin);
 
-        static void CorrectBodyVelocity(RopeEnd end, ref Vector3 velocityCorrection)
-        {
-            if (end.Body != null && !end.Body.isKinematic) end.Body.velocity += velocityCorrection;
-            velocityCorrection = Vector3.zero;
-        }
-
-        void RegisterColliders()
-        {
-            switch (m_CollisionMode)
-            {
-                case RopeCollisionMode.Off:
-                    RegisterColliders(Array.Empty<Collider>(), 0, Array.Empty<Transform>(), false);
-                    break;
-                case RopeCollisionMode.ListedColliders:
-                    RegisterColliders(m_Colliders, m_Colliders.Length, m_Planes, true);
-                    break;
-                case RopeCollisionMode.LayerMask:
-                {
-                    // query first: it creates (or grows) the buffer that is passed on
-                    int count = QueryLayerColliders();
-                    RegisterColliders(_overlapBuffer, count, m_Planes, true);
-                    break;
-                }
-            }
-        }
-
-        void RegisterColliders(Collider[] colliders, int count, Transform[] planes, bool warnUnsupported) =>
-            _colliderBinding.Register(_rope, colliders, count, planes, _origin, m_Friction, m_Start, m_End, this, warnUnsupported);
-
-        /// <summary>
-        /// Layer Mask mode: colliders come and go (a worker walks past a beam), so each step re-queries the
-        /// colliders within the rope's reach and re-registers them only when the set changed. Allocation-free
-        /// unless more colliders are in reach than ever before.
-        /// </summary>
-        void RefreshLayerColliders()
-        {
-            int count = QueryLayerColliders();
-            if (!_colliderBinding.HasSameColliders(_overlapBuffer, count, m_Start, m_End))
-                RegisterColliders(_overlapBuffer, count, m_Planes, false);
-        }
-
-        /// <summary>Colliders on <see cref="CollisionLayers"/> within the rope's reach, into the overlap buffer (grown when full).</summary>
-        int QueryLayerColliders()
-        {
-            _overlapBuffer ??= new Collider[16];
-            Vector3 start = GetParticlePosition(0), end = GetParticlePosition(_rope.ParticleCount - 1);
-            Vector3 center = (start + end) * 0.5f;
-            // every particle lies within half the (longest expected) rope length of an end, and each end within half the span of the centre
-            float reach = 0.5f * (Vector3.Distance(start, end) + m_RestLength * (1f + (m_Fracture ? m_BreakStrain : 1f))) + m_Radius;
-            while (true)
-            {
-                int count = Physics.OverlapSphereNonAlloc(center, reach, _overlapBuffer, m_CollisionLayers, QueryTriggerInteraction.Ignore);
-                if (count < _overlapBuffer.Length) return count;
-                _overlapBuffer = new Collider[_overlapBuffer.Length * 2];
-            }
-        }
-
-        void CopyPositions(float[] destination)
-        {
-            var x = _rope.PositionX;
-            var y = _rope.PositionY;
-            var z = _rope.PositionZ;
-            for (int i = 0, j = 0; i < x.Length; i++, j += 3)
-            {
-                destination[j] = x[i];
-                destination[j + 1] = y[i];
-                destination[j + 2] = z[i];
-            }
-        }
-
-        void UpdateReadouts()
-        {
-            var tensions = _rope.Tensions;
-            var lengths = _rope.SegmentLengths;
-            float stretched = 0f, peak = PeakTension;
-            bool broken = false;
-            for (int s = 0; s < tensions.Length; s++)
-            {
-                if (_rope.IsSegmentBroken(s)) { broken = true; continue; }
-                stretched += lengths[s];
-                if (tensions[s] > peak) peak = tensions[s];
-            }
-            Elongation = stretched - m_RestLength;
-            TopTension = tensions.Length > 0 ? tensions[0] : 0f;
-            BottomTension = tensions.Length > 0 ? tensions[tensions.Length - 1] : 0f;
-            PeakTension = peak;
-            IsBroken |= broken;
-
-            var radii = _rope.ParticleRadius;
-            float minRadius = float.PositiveInfinity;
-            for (int i = 0; i < radii.Length; i++) if (radii[i] < minRadius) minRadius = radii[i];
-            MinRadius = radii.Length > 0 ? minRadius : m_Radius;
-            NeckRadius = _simulation.NeckRadius;
-            if (_simulation.MinRadius < MinRadius) MinRadius = _simulation.MinRadius;
-
-            ArrestForce = _endLoad >= 0 ? _rope.GetLoadForce(_endLoad).Length : BottomTension;
-            if (ArrestForce > PeakArrestForce) PeakArrestForce = ArrestForce;
-        }
-
-        void OnCoreBroken(RopeBreakEvent e)
-        {
-            IsBroken = true;
-            _breakPending = true;
-            _breakPosition = _origin + e.Position.ToVector3();
-            _breakTension = e.Tension;
-        }
+        /// <summary>How far the Layer Mask collider query reaches: the rest length stretched to the break strain (or doubled), plus R.</summary>
+        ColliderReach Reach => new ColliderReach(m_RestLength * (1f + (m_Fracture ? m_BreakStrain : 1f)), m_Radius);
     }
 }

@@ -9,11 +9,21 @@ namespace HookeRope
     /// Registers Unity Sphere, Capsule and Box colliders (and plane Transforms, whose up axis is the normal) with
     /// a core <see cref="Rope"/> and copies their poses in each step. Poses are converted to the rope's simulation
     /// frame (world axes, origin at <c>origin</c>). Scale is taken from <see cref="Transform.lossyScale"/>
-    /// (spheres and capsules use the largest relevant axis, as PhysX does).
+    /// (spheres and capsules use the largest relevant axis, as PhysX does). In
+    /// <see cref="RopeCollisionMode.LayerMask"/> mode it also queries the colliders within the rope's reach,
+    /// again before every step.
     /// </summary>
     internal sealed class RopeColliderBinding
     {
         static readonly Float3 Up = new Float3(0f, 1f, 0f);
+
+        RopeCollisionMode _mode;
+        LayerMask _layers;
+        Transform[] _planeSource = Array.Empty<Transform>();
+        float _friction;
+        RopeEnd _start, _end;
+        UnityEngine.Object _context;
+        Collider[] _overlapBuffer;
 
         Collider[] _colliders = Array.Empty<Collider>();
         Transform[] _planes = Array.Empty<Transform>();
@@ -23,11 +33,78 @@ namespace HookeRope
         int _planeCount;
 
         /// <summary>
+        /// Replaces the rope's colliders with those of <paramref name="mode"/>: none (Off), <paramref name="colliders"/>
+        /// (Listed Colliders) or the colliders on <paramref name="layers"/> within <paramref name="reach"/> (Layer Mask),
+        /// plus the <paramref name="planes"/> unless Off. <paramref name="origin"/> is the rope frame's origin (world, m),
+        /// <paramref name="friction"/> the Coulomb coefficient (dimensionless); colliders of the ends' own objects are
+        /// skipped, unsupported ones reported on <paramref name="context"/>.
+        /// </summary>
+        public void Bind(Rope rope, RopeCollisionMode mode, Collider[] colliders, LayerMask layers, Transform[] planes, float friction,
+            Vector3 origin, RopeEnd start, RopeEnd end, in ColliderReach reach, UnityEngine.Object context)
+        {
+            _mode = mode;
+            _layers = layers;
+            _planeSource = planes ?? Array.Empty<Transform>();
+            _friction = friction;
+            _start = start;
+            _end = end;
+            _context = context;
+            switch (mode)
+            {
+                case RopeCollisionMode.ListedColliders:
+                    Register(rope, colliders, colliders.Length, _planeSource, origin, friction, start, end, context, warnUnsupported: true);
+                    break;
+                case RopeCollisionMode.LayerMask:
+                {
+                    // query first: it creates (or grows) the buffer that is passed on
+                    int count = QueryLayerColliders(rope, origin, reach);
+                    Register(rope, _overlapBuffer, count, _planeSource, origin, friction, start, end, context, warnUnsupported: true);
+                    break;
+                }
+                default:
+                    Register(rope, Array.Empty<Collider>(), 0, Array.Empty<Transform>(), origin, friction, start, end, context, warnUnsupported: false);
+                    break;
+            }
+        }
+
+        /// <summary>
+        /// Before every rope step: in Layer Mask mode, re-queries the colliders within <paramref name="reach"/> (colliders
+        /// come and go: a worker walks past a beam) and re-registers them only when the set changed; then copies every
+        /// collider and plane pose in. Allocation-free unless more colliders are in reach than ever before.
+        /// </summary>
+        public void BeforeStep(Rope rope, Vector3 origin, in ColliderReach reach)
+        {
+            if (_mode == RopeCollisionMode.LayerMask)
+            {
+                int count = QueryLayerColliders(rope, origin, reach);
+                if (!HasSameColliders(_overlapBuffer, count, _start, _end))
+                    Register(rope, _overlapBuffer, count, _planeSource, origin, _friction, _start, _end, _context, warnUnsupported: false);
+            }
+            UpdatePoses(rope, origin);
+        }
+
+        /// <summary>Colliders on the layers within the rope's reach, into the overlap buffer (grown when full).</summary>
+        int QueryLayerColliders(Rope rope, Vector3 origin, in ColliderReach reach)
+        {
+            _overlapBuffer ??= new Collider[16];
+            Vector3 start = origin + rope.GetPosition(0).ToVector3(), end = origin + rope.GetPosition(rope.ParticleCount - 1).ToVector3();
+            Vector3 center = (start + end) * 0.5f;
+            // every particle lies within half the (longest expected) rope length of an end, and each end within half the span of the centre
+            float radius = 0.5f * (Vector3.Distance(start, end) + reach.LongestLength) + reach.RopeRadius;
+            while (true)
+            {
+                int count = Physics.OverlapSphereNonAlloc(center, radius, _overlapBuffer, _layers, QueryTriggerInteraction.Ignore);
+                if (count < _overlapBuffer.Length) return count;
+                _overlapBuffer = new Collider[_overlapBuffer.Length * 2];
+            }
+        }
+
+        /// <summary>
         /// Replaces the rope's colliders with every supported collider and plane given; unsupported colliders (mesh,
         /// terrain…) are skipped (and reported when <paramref name="warnUnsupported"/>); triggers and the rope's own
         /// colliders (see <see cref="IsOwn"/>) are skipped silently. Allocates only when more shapes arrive than ever before.
         /// </summary>
-        public void Register(Rope rope, Collider[] colliders, int colliderCount, Transform[] planes, Vector3 origin, float friction,
+        void Register(Rope rope, Collider[] colliders, int colliderCount, Transform[] planes, Vector3 origin, float friction,
             RopeEnd start, RopeEnd end, UnityEngine.Object context, bool warnUnsupported)
         {
             rope.ClearColliders();
@@ -55,7 +132,7 @@ namespace HookeRope
             {
                 var plane = planes[i];
                 if (plane == null) continue;
-                var shape = ColliderShape.Plane(Sim(plane.position, origin), plane.rotation.ToQuat().Rotate(Up), friction);
+                var shape = ColliderShape.Plane(plane.position.RelativeTo(origin), plane.rotation.ToQuat().Rotate(Up), friction);
                 _planes[_planeCount] = plane;
                 _planeIds[_planeCount] = rope.AddCollider(in shape);
                 _planeCount++;
@@ -67,7 +144,7 @@ namespace HookeRope
         /// are exactly the registered ones (in any order), so a layer-mask query that found the same set needs no
         /// re-registration (which would also forget the current contacts). Allocation-free.
         /// </summary>
-        public bool HasSameColliders(Collider[] colliders, int count, RopeEnd start, RopeEnd end)
+        bool HasSameColliders(Collider[] colliders, int count, RopeEnd start, RopeEnd end)
         {
             int accepted = 0;
             for (int i = 0; i < count; i++)
@@ -105,25 +182,23 @@ namespace HookeRope
         }
 
         /// <summary>Copies the current collider and plane poses into the rope (allocation-free).</summary>
-        public void UpdatePoses(Rope rope, Vector3 origin)
+        void UpdatePoses(Rope rope, Vector3 origin)
         {
             for (int i = 0; i < _colliderCount; i++)
             {
                 var collider = _colliders[i];
                 if (collider == null) continue;
                 var t = collider.transform;
-                rope.SetColliderPose(_colliderIds[i], Sim(t.TransformPoint(LocalCenter(collider)), origin), ShapeRotation(collider));
+                rope.SetColliderPose(_colliderIds[i], t.TransformPoint(LocalCenter(collider)).RelativeTo(origin), ShapeRotation(collider));
             }
             for (int i = 0; i < _planeCount; i++)
             {
                 var plane = _planes[i];
                 if (plane == null) continue;
-                rope.SetColliderPose(_planeIds[i], Sim(plane.position, origin),
+                rope.SetColliderPose(_planeIds[i], plane.position.RelativeTo(origin),
                     Quat.FromToRotation(Up, plane.rotation.ToQuat().Rotate(Up)));
             }
         }
-
-        static Float3 Sim(Vector3 world, Vector3 origin) => new Float3(world.x - origin.x, world.y - origin.y, world.z - origin.z);
 
         static Vector3 LocalCenter(Collider collider)
         {
@@ -152,7 +227,7 @@ namespace HookeRope
             var t = collider.transform;
             var s = t.lossyScale;
             float sx = Math.Abs(s.x), sy = Math.Abs(s.y), sz = Math.Abs(s.z);
-            var center = Sim(t.TransformPoint(LocalCenter(collider)), origin);
+            var center = t.TransformPoint(LocalCenter(collider)).RelativeTo(origin);
             switch (collider)
             {
                 case SphereCollider sphere:
@@ -179,6 +254,23 @@ namespace HookeRope
                     shape = default;
                     return false;
             }
+        }
+    }
+
+    /// <summary>How far the Layer Mask query reaches around the rope's ends.</summary>
+    internal readonly struct ColliderReach
+    {
+        /// <summary>Longest expected rope length (m): the rest length stretched to the break strain (or doubled).</summary>
+        public readonly float LongestLength;
+
+        /// <summary>Rest radius of the rope (m).</summary>
+        public readonly float RopeRadius;
+
+        /// <summary>A reach for a rope up to <paramref name="longestLength"/> long (m) of radius <paramref name="ropeRadius"/> (m).</summary>
+        public ColliderReach(float longestLength, float ropeRadius)
+        {
+            LongestLength = longestLength;
+            RopeRadius = ropeRadius;
         }
     }
 }

@@ -1,3 +1,4 @@
+using HookeRope.Fracture;
 using UnityEngine;
 using UnityEngine.Rendering;
 
@@ -84,6 +85,24 @@ namespace HookeRope
             if (material == null) return;
             for (int i = 0; i < s_BaseColorProperties.Length; i++)
                 if (material.HasProperty(s_BaseColorProperties[i])) material.SetColor(s_BaseColorProperties[i], color);
+        }
+
+        /// <summary>The package's burr texture (256 × 64 RGBA32, 16 strands, polyamide beige), from the core generator.</summary>
+        internal static Texture2D CreateBurrTexture()
+        {
+            const int width = 256, height = 64;
+            var pixels = new byte[BurrTextureGenerator.ByteCount(width, height)];
+            BurrTextureGenerator.Generate(width, height, 16, 1u, 214, 200, 160, pixels);
+            var texture = new Texture2D(width, height, TextureFormat.RGBA32, mipChain: false)
+            {
+                name = "Elastic Rope Burr (generated)",
+                hideFlags = HideFlags.DontSave,
+                wrapMode = TextureWrapMode.Repeat,
+                filterMode = FilterMode.Bilinear,
+            };
+            texture.SetPixelData(pixels, 0);
+            texture.Apply(updateMipmaps: false, makeNoLongerReadable: true);
+            return texture;
         }
 
         static Material CreateForActivePipeline()

@@ -1,5 +1,6 @@
 using System;
 using HookeRope.Geometry;
+using HookeRope.Solver;
 using UnityEngine;
 using UnityEngine.Rendering;
 
@@ -8,13 +9,14 @@ namespace HookeRope
     /// <summary>
     /// Renders the <see cref="ElasticRope"/> on the same GameObject as a procedural tube whose radius follows the
     /// rope's radius model (Poisson thinning, neck) with burred ends where it broke. Submesh 0 is the tube and
-    /// its caps (material 0), submesh 1 the burr strands (material 1, alpha-clipped burr texture). The tube is rebuilt every
-    /// LateUpdate from positions interpolated between the last two physics steps, so 90/120 Hz headsets see
-    /// smooth motion at any physics rate. The mesh is dynamic (MarkDynamic), its vertex layout is set once per
-    /// topology, vertices are uploaded with SetVertexBufferData from a preallocated array (no GC per frame),
-    /// indices only when the topology changes (new segment count, a break), and the bounds are set explicitly
-    /// before each vertex upload. One mesh per frame serves both eyes in single-pass instanced stereo.
-    /// Vertices are in this GameObject's local space; keep its scale uniform.
+    /// its caps (material 0), submesh 1 the burr strands (material 1, alpha-clipped burr texture). Every LateUpdate
+    /// it interpolates the rope between the last two physics steps (<see cref="Rope.Interpolate"/>, so 90/120 Hz
+    /// headsets see smooth motion at any physics rate) into its one position buffer, in this GameObject's local
+    /// space, lets the core build the tube (<see cref="RopeSimulation.FillMesh(System.ReadOnlySpan{float}, System.ReadOnlySpan{float}, System.ReadOnlySpan{float}, TubeVertex[], int[], float)"/>)
+    /// and only uploads it. The mesh is dynamic (MarkDynamic), its vertex layout is set once per topology, vertices
+    /// are uploaded with SetVertexBufferData from a preallocated array (no GC per frame), indices only when the
+    /// topology changes (new segment count, a break), and the bounds are set explicitly before each vertex upload.
+    /// One mesh per frame serves both eyes in single-pass instanced stereo. Keep this GameObject's scale uniform.
     /// </summary>
     [AddComponentMenu("Physics/Elastic Rope Mesh")]
     [HelpURL(ElasticRope.DocumentationUrl)]
@@ -39,35 +41,35 @@ namespace HookeRope
         const MeshUpdateFlags FrameFlags = MeshUpdateFlags.DontValidateIndices | MeshUpdateFlags.DontRecalculateBounds |
                                            MeshUpdateFlags.DontResetBoneBounds;
 
-        const int MinRadialSegments = 3, MaxRadialSegments = 64;
+        [SerializeField, Range(RopeParameters.RadialSegments.Min, RopeParameters.RadialSegments.Max), Tooltip(RopeParameters.RadialSegments.Tooltip)]
+        int m_RadialSegments = RopeParameters.RadialSegments.Default;
 
-        [SerializeField, Range(MinRadialSegments, MaxRadialSegments), Tooltip("Vertices around the tube (3–64). 8 is cheap, 16 smooth, 32 for close-ups.")]
-        int m_RadialSegments = 12;
+        [SerializeField, Tooltip(RopeParameters.BurrTexture.Tooltip)]
+        bool m_BurrTexture = RopeParameters.BurrTexture.Default;
 
-        [SerializeField, Tooltip("Generate the burr-strand material with the procedural burr texture when the renderer has no second material.")]
-        bool m_BurrTexture = true;
-
-        [SerializeField, Tooltip("Colour of the generated tube material (used only when the renderer has no material). Safety orange by default.")]
-        Color m_Color = new Color(0.93f, 0.5f, 0.12f, 1f);
+        [SerializeField, Tooltip(RopeParameters.Color.Tooltip)]
+        Color m_Color = new Color(RopeParameters.Color.DefaultR, RopeParameters.Color.DefaultG, RopeParameters.Color.DefaultB, RopeParameters.Color.DefaultA);
 
         ElasticRope _rope;
         MeshFilter _filter;
         MeshRenderer _renderer;
         Mesh _mesh;
-        RopeTube _tube;
-        float[] _world = Array.Empty<float>();
+        float[] _x = Array.Empty<float>(), _y = Array.Empty<float>(), _z = Array.Empty<float>();
+        TubeVertex[] _vertices = Array.Empty<TubeVertex>();
+        int[] _indices = Array.Empty<int>();
+        RopeSimulation _uploaded;
+        int _uploadedTopology = -1, _vertexCount, _indexCount;
         Material _generatedMaterial;
         Material _generatedBurrMaterial;
         Texture2D _generatedTexture;
 
-        /// <summary>Vertices around the tube, 3 … 64. A new value rebuilds the tube topology at the next frame.</summary>
+        /// <summary>Vertices around the tube, range <see cref="RopeParameters.RadialSegments"/>. A new value rebuilds the tube topology at the next frame.</summary>
         public int RadialSegments
         {
             get => m_RadialSegments;
             set
             {
-                m_RadialSegments = RopeParameterLimits.Check(value, MinRadialSegments, MaxRadialSegments, nameof(RadialSegments));
-                _tube = null;
+                m_RadialSegments = RopeParameters.Check(value, RopeParameters.RadialSegments.Row);
             }
         }
 
@@ -76,9 +78,8 @@ namespace HookeRope
 
         void OnValidate()
         {
-            string message = RopeParameterLimits.Clamp(ref m_RadialSegments, MinRadialSegments, MaxRadialSegments, "Radial segments");
+            string message = RopeParameters.Clamp(ref m_RadialSegments, RopeParameters.RadialSegments.Row);
             if (message != null) Debug.LogWarning("RopeMeshRenderer '" + name + "': " + message, this);
-            if (_tube != null && _tube.RadialSegments != m_RadialSegments) _tube = null;
         }
 
         void LateUpdate()
@@ -102,7 +103,7 @@ namespace HookeRope
         /// <summary>
         /// Rebuilds the tube from the rope's positions interpolated by <paramref name="alpha"/> (0 = previous physics
         /// step, 1 = latest) and uploads it. LateUpdate calls it; call it yourself in edit-mode code and tests.
-        /// Returns false when the rope is not built yet. Allocation-free unless the topology changed.
+        /// Returns false when the rope is not built yet. Allocation-free unless the topology grew.
         /// </summary>
         public bool Render(float alpha)
         {
@@ -110,25 +111,62 @@ namespace HookeRope
             if (!_rope.IsBuilt) return false;
             EnsureMesh();
 
-            int particles = _rope.ParticleCount;
-            if (_world.Length < particles * 3) _world = new float[particles * 3];
-            _rope.GetInterpolatedPositions(alpha, _world);
+            var simulation = _rope.Simulation;
+            if (simulation.MeshSettings.RadialSegments != m_RadialSegments) simulation.MeshSettings.RadialSegments = m_RadialSegments;
+            InterpolateIntoLocalSpace(simulation.Rope, alpha);
+            int vertexCount = simulation.GetVertexCount(), indexCount = simulation.GetIndexCount();
+            if (_vertices.Length < vertexCount) _vertices = new TubeVertex[vertexCount];
+            if (_indices.Length < indexCount) _indices = new int[indexCount];
+            var update = simulation.FillMesh(_x, _y, _z, _vertices, _indices, radiusScale: RadiusScale());
 
-            if (_tube == null || _tube.RadialSegments != m_RadialSegments) _tube = new RopeTube(m_RadialSegments);
-            bool topologyChanged = _tube.Update(_rope, _world, particles, transform);
-            if (topologyChanged)
+            if (update.TopologyChanged || !ReferenceEquals(_uploaded, simulation) || _uploadedTopology != simulation.MeshTopologyVersion ||
+                _vertexCount != update.VertexCount || _indexCount != update.IndexCount)
             {
-                _mesh.SetVertexBufferParams(_tube.VertexCount, s_Layout);
-                _mesh.SetIndexBufferParams(_tube.IndexCount, IndexFormat.UInt32);
-                _mesh.SetIndexBufferData(_tube.Indices, 0, 0, _tube.IndexCount, FrameFlags);
+                _uploaded = simulation;
+                _uploadedTopology = simulation.MeshTopologyVersion;
+                _vertexCount = update.VertexCount;
+                _indexCount = update.IndexCount;
+                _mesh.SetVertexBufferParams(update.VertexCount, s_Layout);
+                _mesh.SetIndexBufferParams(update.IndexCount, IndexFormat.UInt32);
+                _mesh.SetIndexBufferData(_indices, 0, 0, update.IndexCount, FrameFlags);
                 _mesh.subMeshCount = 2;
-                _mesh.SetSubMesh(0, new SubMeshDescriptor(0, _tube.TubeIndexCount, MeshTopology.Triangles), FrameFlags);
-                _mesh.SetSubMesh(1, new SubMeshDescriptor(_tube.TubeIndexCount, _tube.IndexCount - _tube.TubeIndexCount, MeshTopology.Triangles), FrameFlags);
+                _mesh.SetSubMesh(0, new SubMeshDescriptor(0, update.TubeIndexCount, MeshTopology.Triangles), FrameFlags);
+                _mesh.SetSubMesh(1, new SubMeshDescriptor(update.TubeIndexCount, update.IndexCount - update.TubeIndexCount, MeshTopology.Triangles), FrameFlags);
             }
             // Bounds first, so the renderer notification of the vertex upload already sees this frame's bounds.
-            _mesh.bounds = _tube.Bounds;
-            _mesh.SetVertexBufferData(_tube.Vertices, 0, 0, _tube.VertexCount, 0, FrameFlags);
+            Vector3 min = update.BoundsMin.ToVector3(), max = update.BoundsMax.ToVector3();
+            _mesh.bounds = new Bounds((min + max) * 0.5f, max - min);
+            _mesh.SetVertexBufferData(_vertices, 0, 0, update.VertexCount, 0, FrameFlags);
             return true;
+        }
+
+        /// <summary>The rope's interpolated particle positions in this GameObject's local space (m), into the one position buffer.</summary>
+        void InterpolateIntoLocalSpace(Rope rope, float alpha)
+        {
+            int particles = rope.ParticleCount;
+            if (_x.Length != particles)
+            {
+                _x = new float[particles];
+                _y = new float[particles];
+                _z = new float[particles];
+            }
+            rope.Interpolate(alpha, _x, _y, _z);
+            Vector3 origin = _rope.SimulationOrigin + rope.Origin.ToVector3();
+            var frame = transform;
+            for (int i = 0; i < particles; i++)
+            {
+                var local = frame.InverseTransformPoint(new Vector3(origin.x + _x[i], origin.y + _y[i], origin.z + _z[i]));
+                _x[i] = local.x;
+                _y[i] = local.y;
+                _z[i] = local.z;
+            }
+        }
+
+        /// <summary>Ring radii are in world metres; the mesh is in local space, so they shrink by the (uniform) scale.</summary>
+        float RadiusScale()
+        {
+            float scale = Math.Abs(transform.lossyScale.x);
+            return scale != 0f && float.IsFinite(scale) ? 1f / scale : 1f;
         }
 
         void EnsureMesh()
@@ -150,7 +188,7 @@ namespace HookeRope
             }
             if (burr == null)
             {
-                if (m_BurrTexture && _generatedTexture == null) _generatedTexture = RopeTube.CreateBurrTexture();
+                if (m_BurrTexture && _generatedTexture == null) _generatedTexture = RopeDefaultMaterial.CreateBurrTexture();
                 _generatedBurrMaterial = m_BurrTexture ? RopeDefaultMaterial.CreateBurr(_generatedTexture) : null;
                 burr = _generatedBurrMaterial != null ? _generatedBurrMaterial : tube;
             }

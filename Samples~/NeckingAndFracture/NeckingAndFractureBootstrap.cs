@@ -55,7 +55,7 @@ namespace HookeRope.Samples.NeckingAndFracture
                 rope.Radius = m_Radius;
                 rope.PoissonRatio = 0.5f;
                 rope.SegmentCount = 40;
-                rope.RadiusModel = true;
+                rope.PoissonThinning = true;
                 rope.Necking = true;
                 rope.NeckRadiusFraction = s_NeckFractions[i];
                 rope.DefectPosition = 0.5f;

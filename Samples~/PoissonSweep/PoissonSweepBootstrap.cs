@@ -54,7 +54,7 @@ namespace HookeRope.Samples.PoissonSweep
                 rope.Radius = m_Radius;
                 rope.PoissonRatio = s_PoissonRatios[i];
                 rope.SegmentCount = 24;
-                rope.RadiusModel = true;
+                rope.PoissonThinning = true;
                 rope.Necking = false;
                 rope.Fracture = false;
                 rope.StartAttachment.Point = top.transform;

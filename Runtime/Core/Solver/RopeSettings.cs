@@ -14,52 +14,37 @@ namespace HookeRope.Solver
     /// </summary>
     public sealed class RopeSettings
     {
-        /// <summary>Default rest length in metres.</summary>
-        public const float DefaultRestLength = 1f;
-        /// <summary>Default number of segments.</summary>
-        public const int DefaultSegmentCount = 16;
-        /// <summary>Default rest radius in metres (a 10 mm rope).</summary>
-        public const float DefaultRadius = 0.005f;
-        /// <summary>Default Young's modulus in pascals (a polyamide rope, 1 GPa).</summary>
-        public const float DefaultYoungsModulus = 1e9f;
-        /// <summary>Default material density in kg/m³ (polyamide).</summary>
-        public const float DefaultDensity = 1140f;
-        /// <summary>Default substeps per host step.</summary>
-        public const int DefaultSubsteps = 8;
-        /// <summary>Default iterations per substep.</summary>
-        public const int DefaultIterations = 1;
-
-        private float restLength = DefaultRestLength;
-        private int segmentCount = DefaultSegmentCount;
-        private float radius = DefaultRadius;
-        private float youngsModulus = DefaultYoungsModulus;
-        private float density = DefaultDensity;
-        private float damping;
-        private Float3 gravity = new Float3(0f, -9.81f, 0f);
-        private int substeps = DefaultSubsteps;
-        private int iterations = DefaultIterations;
-        private ConstraintSolverKind solver = ConstraintSolverKind.ExactChain;
-        private TensionModel tension = TensionModel.TensionOnly;
-        private float breakStrain = float.PositiveInfinity;
+        // defaults: the parameter table's (the component and prefab values)
+        private float restLength = RopeParameters.RestLength.Default;
+        private int segmentCount = RopeParameters.SegmentCount.Default;
+        private float radius = RopeParameters.Radius.Default;
+        private float youngsModulus = RopeParameters.YoungsModulus.Default;
+        private float density = RopeParameters.Density.Default;
+        private float damping = RopeParameters.Damping.Default;
+        private Float3 gravity = new Float3(RopeParameters.Gravity.DefaultX, RopeParameters.Gravity.DefaultY, RopeParameters.Gravity.DefaultZ);
+        private int substeps = RopeParameters.Substeps.Default;
+        private int iterations = RopeParameters.Iterations.Default;
+        private ConstraintSolverKind solver = RopeParameters.Solver.Default;
+        private TensionModel tension = RopeParameters.TensionModel.Default;
 
         /// <summary>Incremented by every successful setter; a rope re-reads its settings when it changes.</summary>
         public int Version { get; private set; }
 
-        /// <summary>Unstretched length of the whole rope in metres, in [0.01, 10000] (<see cref="RopeParameters.RestLength"/>). Default 1 m.</summary>
+        /// <summary>Unstretched length of the whole rope in metres, in [0.01, 10000] (<see cref="RopeParameters.RestLength"/>). Default 2 m.</summary>
         public float RestLength
         {
             get => restLength;
             set { restLength = RopeParameters.Check(value, RopeParameters.RestLength.Row); Version++; }
         }
 
-        /// <summary>Number of segments (particles = segments + 1), in [1, 10000]. Default 16. Read when a rope is built.</summary>
+        /// <summary>Number of segments (particles = segments + 1), in [1, 10000]. Default 24. Read when a rope is built.</summary>
         public int SegmentCount
         {
             get => segmentCount;
             set { segmentCount = RopeParameters.Check(value, RopeParameters.SegmentCount.Row); Version++; }
         }
 
-        /// <summary>Rest radius R of the rope in metres, in (0, 1] (<see cref="RopeParameters.Radius"/>). Default 0.005 m. Keeps E and ρ; rescales E·A and linear density.</summary>
+        /// <summary>Rest radius R of the rope in metres, in (0, 1] (<see cref="RopeParameters.Radius"/>). Default 0.008 m. Keeps E and ρ; rescales E·A and linear density.</summary>
         public float Radius
         {
             get => radius;
@@ -69,7 +54,7 @@ namespace HookeRope.Solver
         /// <summary>Cross-section area π·R² in square metres.</summary>
         public float Area => MathF.PI * radius * radius;
 
-        /// <summary>Young's modulus E in pascals, in (0, 1e13] or +inf = inextensible (<see cref="RopeParameters.YoungsModulus"/>). Default 1e9 Pa.</summary>
+        /// <summary>Young's modulus E in pascals, in (0, 1e13] or +inf = inextensible (<see cref="RopeParameters.YoungsModulus"/>). Default 1.5e8 Pa.</summary>
         public float YoungsModulus
         {
             get => youngsModulus;
@@ -114,7 +99,7 @@ namespace HookeRope.Solver
         /// <summary>
         /// XPBD constraint damping β in seconds, in [0, 10] (Macklin 2016, eq. 26): a dashpot of
         /// β·k in parallel with each segment of stiffness k. Removes vibration energy without moving
-        /// the static solution. Default 0 (substepping alone dissipates a little).
+        /// the static solution. Default 0.002 s.
         /// </summary>
         public float Damping
         {
@@ -162,13 +147,6 @@ namespace HookeRope.Solver
         {
             get => tension;
             set { CheckChoice((int)value, (int)TensionModel.TensionOnly, (int)TensionModel.Bilateral, nameof(Tension)); tension = value; Version++; }
-        }
-
-        /// <summary>Strain l/L − 1 at which a segment breaks, in [0, +inf]; +inf (default) = never.</summary>
-        public float BreakStrain
-        {
-            get => breakStrain;
-            set { if (float.IsNaN(value) || value < 0f) throw new ArgumentOutOfRangeException(nameof(BreakStrain), value, "BreakStrain must be in [0, +inf]"); breakStrain = value; Version++; }
         }
 
         /// <summary>A copy with the same values (version 0).</summary>

@@ -30,12 +30,12 @@ namespace HookeRope.Tests.Components
         public void MaterialChangeKeepsTheCoreRopeAndReachesItsSettings()
         {
             var rope = HangingRope();
-            var core = rope.Core;
+            var core = rope.Simulation.Rope;
             rope.YoungsModulus = 2.5e8f;
             rope.Damping = 0.01f;
             rope.PoissonRatio = 0.45f;
             rope.Simulate(0.02f);
-            Assert.That(rope.Core, Is.SameAs(core));
+            Assert.That(rope.Simulation.Rope, Is.SameAs(core));
             Assert.That(core.Settings.YoungsModulus, Is.EqualTo(2.5e8f).Within(1f));
             Assert.That(core.Settings.Damping, Is.EqualTo(0.01f).Within(1e-7f));
             Assert.That(rope.AxialStiffness, Is.EqualTo(2.5e8f * Mathf_Pi * rope.Radius * rope.Radius).Within(0.5f));
@@ -45,10 +45,10 @@ namespace HookeRope.Tests.Components
         public void NewSegmentCountRebuildsAtTheNextStep()
         {
             var rope = HangingRope();
-            var core = rope.Core;
+            var core = rope.Simulation.Rope;
             rope.SegmentCount = 30;
             rope.Simulate(0.02f);
-            Assert.That(rope.Core, Is.Not.SameAs(core));
+            Assert.That(rope.Simulation.Rope, Is.Not.SameAs(core));
             Assert.That(rope.ParticleCount, Is.EqualTo(31));
         }
 

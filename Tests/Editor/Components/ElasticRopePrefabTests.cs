@@ -54,7 +54,7 @@ namespace HookeRope.Tests.Components
             Assert.That(rope.Colliders.Length, Is.EqualTo(0));
             Assert.That(rope.Planes.Length, Is.EqualTo(0));
             Assert.That(rope.Friction, Is.EqualTo(0.3f).Within(1e-7f));
-            Assert.That(rope.RadiusModel, Is.True);
+            Assert.That(rope.PoissonThinning, Is.True);
             Assert.That(rope.Necking, Is.True);
             Assert.That(rope.NeckRadiusFraction, Is.EqualTo(0.75f));
             Assert.That(rope.DefectPosition, Is.EqualTo(0.5f));

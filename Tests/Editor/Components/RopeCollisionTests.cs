@@ -109,7 +109,7 @@ namespace HookeRope.Tests.Components
             rope.Rebuild();
             for (int step = 0; step < 300; step++) rope.Simulate(0.01f);
 
-            Assert.That(rope.Core.ColliderCount, Is.EqualTo(1), "the beam in reach is registered, the anchor's own block is not");
+            Assert.That(rope.Simulation.Rope.ColliderCount, Is.EqualTo(1), "the beam in reach is registered, the anchor's own block is not");
             // hanging straight down from the pin: no particle pushed out of the block (which would need |x| or |z| >= 0.1 m)
             for (int i = 0; i < rope.ParticleCount; i++)
             {

@@ -1,11 +1,16 @@
+using HookeRope.Geometry;
 using NUnit.Framework;
 using UnityEngine;
+using UnityEngine.TestTools.Constraints;
+using Is = UnityEngine.TestTools.Constraints.Is;
 
 namespace HookeRope.Tests.Components
 {
     /// <summary>
     /// Edit mode (in Unity and headless on the Unity stand-in): the rope mesh built from a stepped rope has finite vertices that stay near the rope
-    /// and inside the bounds set on the mesh, also after a break changed the topology.
+    /// and inside the bounds set on the mesh, also after a break changed the topology; the renderer only uploads the core's
+    /// mesh (<see cref="RopeSimulation.FillMesh(System.ReadOnlySpan{float}, System.ReadOnlySpan{float}, System.ReadOnlySpan{float}, TubeVertex[], int[], float)"/>)
+    /// and allocates nothing per frame once warm.
     /// </summary>
     [TestFixture]
     public sealed class RopeMeshRendererTests
@@ -107,6 +112,74 @@ namespace HookeRope.Tests.Components
             renderer.Render(1f);
             Assert.That(renderer.Mesh.vertexCount, Is.GreaterThan(intactVertices), "broken ends add caps and burr strands");
             AssertMeshFollowsRope(rope, renderer.Mesh);
+        }
+
+        void BreakIt(ElasticRope rope, Transform grip)
+        {
+            for (int step = 0; step < 300 && !rope.IsBroken; step++)
+            {
+                grip.position = new Vector3(0.3f, 2f - 0.004f * step, 0f);
+                rope.Simulate(0.01f);
+            }
+            Assert.That(rope.IsBroken, Is.True);
+            rope.Simulate(0.01f);
+        }
+
+        [Test]
+        public void RenderAllocatesNothingOnceWarm()
+        {
+            var (rope, renderer, grip) = Build();
+            for (int step = 0; step < 20; step++) rope.Simulate(0.01f);
+            for (int frame = 0; frame < 3; frame++) renderer.Render(0.5f);
+            Assert.That(() => { renderer.Render(0.5f); }, Is.Not.AllocatingGCMemory(), "intact");
+
+            BreakIt(rope, grip);
+            for (int frame = 0; frame < 3; frame++) renderer.Render(0.5f);
+            Assert.That(() => { renderer.Render(0.5f); }, Is.Not.AllocatingGCMemory(), "broken");
+        }
+
+        [TestCase(false)]
+        [TestCase(true)]
+        public void UploadedVerticesAreTheCoreMesh(bool broken)
+        {
+            var (rope, renderer, grip) = Build();
+            var frame = rope.transform;
+            frame.position = new Vector3(0.4f, -1.5f, 2f);
+            frame.rotation = Quaternion.Euler(10f, 35f, -20f);
+            frame.localScale = new Vector3(2f, 2f, 2f);
+            for (int step = 0; step < 30; step++) rope.Simulate(0.01f);
+            if (broken) BreakIt(rope, grip);
+            const float alpha = 0.3f;
+            Assert.That(renderer.Render(alpha), Is.True);
+
+            // The same interpolated positions, in the renderer's local space, through the core's one mesh path.
+            var simulation = rope.Simulation;
+            int particles = rope.ParticleCount;
+            var world = new float[3 * particles];
+            rope.GetInterpolatedPositions(alpha, world);
+            float[] x = new float[particles], y = new float[particles], z = new float[particles];
+            for (int i = 0; i < particles; i++)
+            {
+                var local = frame.InverseTransformPoint(new Vector3(world[3 * i], world[3 * i + 1], world[3 * i + 2]));
+                x[i] = local.x;
+                y[i] = local.y;
+                z[i] = local.z;
+            }
+            var vertices = new TubeVertex[simulation.GetVertexCount()];
+            var indices = new int[simulation.GetIndexCount()];
+            var update = simulation.FillMesh(x, y, z, vertices, indices, radiusScale: 0.5f);
+
+            var uploaded = renderer.Mesh.vertices;
+            Assert.That(uploaded.Length, Is.EqualTo(update.VertexCount));
+            for (int v = 0; v < update.VertexCount; v++)
+            {
+                Assert.That(uploaded[v].x, Is.EqualTo(vertices[v].PX).Within(1e-6f), "vertex " + v);
+                Assert.That(uploaded[v].y, Is.EqualTo(vertices[v].PY).Within(1e-6f), "vertex " + v);
+                Assert.That(uploaded[v].z, Is.EqualTo(vertices[v].PZ).Within(1e-6f), "vertex " + v);
+            }
+            var triangles = renderer.Mesh.triangles;
+            Assert.That(triangles.Length, Is.EqualTo(update.IndexCount));
+            for (int k = 0; k < update.IndexCount; k++) Assert.That(triangles[k], Is.EqualTo(indices[k]), "index " + k);
         }
     }
 }

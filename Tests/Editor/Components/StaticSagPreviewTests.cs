@@ -1,5 +1,6 @@
 using System;
 using NUnit.Framework;
+using HookeRope.Editor;
 using UnityEngine;
 
 namespace HookeRope.Tests.Components
@@ -43,7 +44,7 @@ namespace HookeRope.Tests.Components
             rope.StartAttachment.Point = left;
             rope.EndAttachment.Point = right;
 
-            var preview = rope.PreviewStaticSag(10f);
+            var preview = StaticSagPreview.Compute(rope, 10f);
 
             Assert.That(rope.IsBuilt, Is.False, "the preview does not build the rope itself");
             Assert.That(preview.Length, Is.EqualTo(49));
@@ -51,6 +52,7 @@ namespace HookeRope.Tests.Components
             Assert.That(sag, Is.EqualTo((float)CatenarySag(length, span)).Within(0.03f * (float)CatenarySag(length, span)));
             Assert.That(preview[0].x, Is.EqualTo(-0.5f * span).Within(1e-4f));
             Assert.That(preview[48].x, Is.EqualTo(0.5f * span).Within(1e-4f));
+            Assert.That(StaticSagPreview.Get(rope), Is.SameAs(preview), "the gizmo draws the last preview");
         }
     }
 }

@@ -248,7 +248,7 @@ namespace HookeRope.StandIn.Facts
 
             so.FindProperty("m_Radius").floatValue = -1f;
             so.ApplyModifiedPropertiesWithoutUndo();
-            Assert.That(rope.Radius, Is.EqualTo(RopeParameterLimits.MinRadius), "OnValidate clamped the applied value");
+            Assert.That(rope.Radius, Is.EqualTo(RopeParameters.Radius.Default), "OnValidate reset the applied value (at or below the exclusive minimum) to the table default");
             Assert.That(UndoLog.Entries.Count, Is.EqualTo(undo + 1), "WithoutUndo records nothing");
 
             var probeObject = new SerializedObject(probe);

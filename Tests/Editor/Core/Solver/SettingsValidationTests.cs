@@ -31,8 +31,6 @@ namespace HookeRope.Tests.Solver
             yield return Case(s => s.Iterations = 1001, RopeParameters.Iterations.Row, "Iterations too many");
             yield return new TestCaseData(new Action<RopeSettings>(s => s.Solver = (ConstraintSolverKind)7), "Solver", "named values").SetName("Solver undefined");
             yield return new TestCaseData(new Action<RopeSettings>(s => s.Tension = (TensionModel)7), "Tension", "named values").SetName("Tension undefined");
-            yield return new TestCaseData(new Action<RopeSettings>(s => s.BreakStrain = -0.5f), "BreakStrain", "[0, +inf]").SetName("BreakStrain negative");
-            yield return new TestCaseData(new Action<RopeSettings>(s => s.BreakStrain = float.NaN), "BreakStrain", "[0, +inf]").SetName("BreakStrain NaN");
         }
 
         /// <summary>A bad value of a table parameter: the error names the row and its range and unit.</summary>
@@ -49,7 +47,7 @@ namespace HookeRope.Tests.Solver
             Assert.That(error.Message, Does.Contain(parameter));
             Assert.That(error.Message, Does.Contain(range));
             Assert.That(settings.Version, Is.EqualTo(version), "a rejected value changes nothing");
-            Assert.That(settings.RestLength, Is.EqualTo(RopeSettings.DefaultRestLength));
+            Assert.That(settings.RestLength, Is.EqualTo(RopeParameters.RestLength.Default));
         }
 
         [Test]

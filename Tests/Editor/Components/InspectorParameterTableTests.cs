@@ -1,0 +1,184 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+using System.Reflection;
+using NUnit.Framework;
+using UnityEditor;
+using UnityEngine;
+
+namespace HookeRope.Tests.Components
+{
+    /// <summary>
+    /// Edit mode (in Unity and headless on the Unity stand-in): the inspector agrees with the parameter table
+    /// <see cref="RopeParameters"/>. For every serialized field m_&lt;Name&gt; of <see cref="ElasticRope"/> and
+    /// <see cref="RopeMeshRenderer"/> that has a row (and every inspector row has such a field), the [Tooltip] and [Range]
+    /// arguments (read as attribute data) equal the row, a fresh component holds the row's default, OnValidate clamps
+    /// 10·Max to Max and NaN to the default, and the property setter rejects a value above Max naming the range and unit.
+    /// </summary>
+    [TestFixture]
+    public sealed class InspectorParameterTableTests
+    {
+        /// <summary>Rows whose serialized field keeps its 0.1.0 name (no serialized rename this release).</summary>
+        static readonly Dictionary<string, string> s_FieldNames = new Dictionary<string, string> { { "PoissonThinning", "m_RadiusModel" } };
+
+        static readonly Type[] s_Components = { typeof(ElasticRope), typeof(RopeMeshRenderer) };
+
+        const BindingFlags Instance = BindingFlags.Instance | BindingFlags.Public | BindingFlags.NonPublic;
+
+        UnityRopeScene _scene;
+
+        [SetUp] public void SetUp() { _scene = new UnityRopeScene(); _scene.Begin(); }
+        [TearDown] public void TearDown() => _scene.End();
+
+        static string FieldName(ParameterInfo row) => s_FieldNames.TryGetValue(row.Name, out var name) ? name : "m_" + row.Name;
+
+        static IEnumerable<ParameterInfo> InspectorRows => RopeParameters.All.Where(r => r.InInspector);
+
+        static IEnumerable<ParameterInfo> ClampedRows =>
+            InspectorRows.Where(r => r.Kind == ParameterKind.Float || r.Kind == ParameterKind.Int);
+
+        static FieldInfo Field(ParameterInfo row, out Type component)
+        {
+            foreach (var type in s_Components)
+            {
+                var field = type.GetField(FieldName(row), Instance);
+                if (field != null)
+                {
+                    component = type;
+                    return field;
+                }
+            }
+            component = null;
+            return null;
+        }
+
+        static IEnumerable<FieldInfo> SerializedFields(Type type) =>
+            type.GetFields(Instance).Where(f => f.IsPublic || f.GetCustomAttributesData().Any(a => a.AttributeType == typeof(SerializeField)));
+
+        Component Fresh(Type type)
+        {
+            var go = _scene.Track(new GameObject("Probe", typeof(MeshFilter), typeof(MeshRenderer)));
+            return go.AddComponent(type);
+        }
+
+        static double Number(object value) =>
+            value is bool b ? (b ? 1 : 0) : value is Enum ? Convert.ToInt32(value) : Convert.ToDouble(value);
+
+        [Test]
+        public void EveryInspectorRowHasASerializedField()
+        {
+            foreach (var row in InspectorRows)
+                Assert.That(Field(row, out _), Is.Not.Null, row.Name + ": no serialized field " + FieldName(row));
+        }
+
+        [Test]
+        public void EveryFieldNamedAfterARowIsInTheInspector()
+        {
+            foreach (var type in s_Components)
+            foreach (var field in SerializedFields(type))
+            {
+                var row = RopeParameters.All.FirstOrDefault(r => FieldName(r) == field.Name);
+                if (row != null) Assert.That(row.InInspector, Is.True, type.Name + "." + field.Name + " has a row that is not marked InInspector");
+            }
+        }
+
+        [TestCaseSource(nameof(InspectorRowNames))]
+        public void TooltipAndRangeAreTheRows(string name)
+        {
+            var row = RopeParameters.Find(name);
+            var field = Field(row, out _);
+            var data = field.GetCustomAttributesData();
+
+            var tooltip = data.SingleOrDefault(a => a.AttributeType == typeof(TooltipAttribute));
+            Assert.That(tooltip, Is.Not.Null, name + " has no [Tooltip]");
+            Assert.That(tooltip.ConstructorArguments[0].Value, Is.EqualTo(row.Tooltip), name + " tooltip");
+
+            var range = data.SingleOrDefault(a => a.AttributeType == typeof(UnityEngine.RangeAttribute));
+            if (range == null) return;
+            Assert.That(Convert.ToDouble(range.ConstructorArguments[0].Value), Is.EqualTo((double)(float)row.Min), name + " slider minimum");
+            Assert.That(Convert.ToDouble(range.ConstructorArguments[1].Value), Is.EqualTo((double)(float)row.Max), name + " slider maximum");
+        }
+
+        [TestCaseSource(nameof(InspectorRowNames))]
+        public void FreshComponentHoldsTheDefault(string name)
+        {
+            var row = RopeParameters.Find(name);
+            var field = Field(row, out var type);
+            object value = field.GetValue(Fresh(type));
+            switch (row.Kind)
+            {
+                case ParameterKind.Vector:
+                {
+                    var v = (Vector3)value;
+                    Assert.That(new[] { v.x, v.y, v.z }, Is.EqualTo(row.DefaultComponents), name);
+                    break;
+                }
+                case ParameterKind.Color:
+                {
+                    var c = (Color)value;
+                    Assert.That(new[] { c.r, c.g, c.b, c.a }, Is.EqualTo(row.DefaultComponents), name);
+                    break;
+                }
+                case ParameterKind.Float:
+                    Assert.That((float)value, Is.EqualTo((float)row.Default), name);
+                    break;
+                default:
+                    Assert.That(Number(value), Is.EqualTo(row.Default), name);
+                    break;
+            }
+        }
+
+        [TestCaseSource(nameof(ClampedRowNames))]
+        public void OnValidateClampsAboveMaxAndResetsNaN(string name)
+        {
+            var row = RopeParameters.Find(name);
+            var field = Field(row, out var type);
+            var component = Fresh(type);
+            var so = new SerializedObject(component);
+            // E·A is kept only when it is the stiffness input; otherwise OnValidate derives it from E.
+            if (row.Name == RopeParameters.AxialStiffness.Name) so.FindProperty("m_StiffnessInput").intValue = 1;
+            var property = so.FindProperty(field.Name);
+            if (row.Kind == ParameterKind.Int) property.intValue = (int)Math.Min(10.0 * row.Max, int.MaxValue);
+            else property.floatValue = 10f * (float)row.Max;
+            so.ApplyModifiedPropertiesWithoutUndo();
+            Assert.That(Number(field.GetValue(component)), Is.EqualTo(row.Kind == ParameterKind.Int ? row.Max : (float)row.Max), name + ": 10·Max → Max");
+
+            if (row.Kind != ParameterKind.Float) return;
+            so.Update();
+            so.FindProperty(field.Name).floatValue = float.NaN;
+            so.ApplyModifiedPropertiesWithoutUndo();
+            Assert.That((float)field.GetValue(component), Is.EqualTo((float)row.Default), name + ": NaN → Default");
+        }
+
+        [TestCaseSource(nameof(ClampedRowNames))]
+        public void SetterRejectsAboveMaxNamingTheRangeAndUnit(string name)
+        {
+            var row = RopeParameters.Find(name);
+            Field(row, out var type);
+            var property = type.GetProperty(row.Name, BindingFlags.Instance | BindingFlags.Public);
+            Assert.That(property, Is.Not.Null, name + ": no public property");
+            object above = row.Kind == ParameterKind.Int ? (object)(int)Math.Min(10.0 * row.Max, int.MaxValue) : 10f * (float)row.Max;
+            var component = Fresh(type);
+            var e = Assert.Throws<TargetInvocationException>(() => property.SetValue(component, above));
+            Assert.That(e.InnerException, Is.InstanceOf<ArgumentOutOfRangeException>(), name);
+            Assert.That(e.InnerException.Message, Does.Contain(row.Name).And.Contain(row.RangeText), name);
+            if (row.Unit.Length > 0) Assert.That(e.InnerException.Message, Does.Contain(row.Unit), name);
+        }
+
+        [Test]
+        public void GravitySetterAndOnValidateUseTheRowsComponentRange()
+        {
+            var row = RopeParameters.Gravity.Row;
+            var rope = (ElasticRope)Fresh(typeof(ElasticRope));
+            Assert.Throws<ArgumentOutOfRangeException>(() => rope.Gravity = new Vector3(0f, 10f * (float)row.Max, 0f));
+            var so = new SerializedObject(rope);
+            so.FindProperty("m_Gravity").vector3Value = new Vector3(10f * (float)row.Max, 10f * (float)row.Min, 0f);
+            so.ApplyModifiedPropertiesWithoutUndo();
+            Assert.That(rope.Gravity, Is.EqualTo(new Vector3((float)row.Max, (float)row.Min, 0f)));
+        }
+
+        static IEnumerable<string> InspectorRowNames() => InspectorRows.Select(r => r.Name);
+
+        static IEnumerable<string> ClampedRowNames() => ClampedRows.Select(r => r.Name);
+    }
+}
