@@ -16,25 +16,13 @@ namespace HookeRope.Geometry
         private float vPerMetre = RopeParameters.VPerMetre.Default;
 
         /// <summary>Vertices around the tube, range [3, 64] (the paper shows 8, 16, 32). Default 12.</summary>
-        public int RadialSegments
-        {
-            get => radialSegments;
-            set => radialSegments = RopeParameters.Check(value, RopeParameters.RadialSegments.Row);
-        }
+        public int RadialSegments { get => radialSegments; set => radialSegments = RopeParameters.Check(value, RopeParameters.RadialSegments.Row); }
 
         /// <summary>Rings per rope segment along the smooth curve, range [1, 64]. Default 4.</summary>
-        public int RingsPerSegment
-        {
-            get => ringsPerSegment;
-            set => ringsPerSegment = RopeParameters.Check(value, RopeParameters.RingsPerSegment.Row);
-        }
+        public int RingsPerSegment { get => ringsPerSegment; set => ringsPerSegment = RopeParameters.Check(value, RopeParameters.RingsPerSegment.Row); }
 
         /// <summary>Texture v per metre of rest arc length (1/m), range (0, 10000]; the texture stretches with the material. Default 10.</summary>
-        public float VPerMetre
-        {
-            get => vPerMetre;
-            set => vPerMetre = RopeParameters.Check(value, RopeParameters.VPerMetre.Row);
-        }
+        public float VPerMetre { get => vPerMetre; set => vPerMetre = RopeParameters.Check(value, RopeParameters.VPerMetre.Row); }
 
         /// <summary>Close the two intact ends of the rope with flat caps (the intact mesh is then watertight). Default true. Broken ends are always closed.</summary>
         public bool CapEnds { get; set; } = RopeParameters.CapEnds.Default;

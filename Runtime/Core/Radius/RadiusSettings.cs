@@ -24,11 +24,7 @@ namespace HookeRope.Radius
         public bool PoissonThinning { get; set; } = RopeParameters.PoissonThinning.Default;
 
         /// <summary>Poisson ratio ν (dimensionless), range [−1, 0.5]; 0.5 keeps the volume (rubber). Default 0.3 (the table's).</summary>
-        public float PoissonRatio
-        {
-            get => poissonRatio;
-            set => poissonRatio = RopeParameters.Check(value, RopeParameters.PoissonRatio.Row);
-        }
+        public float PoissonRatio { get => poissonRatio; set => poissonRatio = RopeParameters.Check(value, RopeParameters.PoissonRatio.Row); }
 
         /// <summary>
         /// When true (default), a segment shorter than its rest length keeps the rest radius: a tension-only rope
@@ -57,41 +53,25 @@ namespace HookeRope.Radius
         }
 
         /// <summary>Neck onset radius r_min as a fraction of the rest radius R (dimensionless), range [0.01, 1]. Default 0.75.</summary>
-        public float NeckRadiusFraction
-        {
-            get => neckRadiusFraction;
-            set => neckRadiusFraction = RopeParameters.Check(value, RopeParameters.NeckRadiusFraction.Row);
-        }
+        public float NeckRadiusFraction { get => neckRadiusFraction; set => neckRadiusFraction = RopeParameters.Check(value, RopeParameters.NeckRadiusFraction.Row); }
 
         /// <summary>
         /// Defect position as a fraction of the rest length from the first particle (dimensionless), range [0, 1];
         /// the neck forms and the rope breaks there. Default 0.5. Paper mode always uses the middle (eq. 18).
         /// </summary>
-        public float DefectPosition
-        {
-            get => defectPosition;
-            set => defectPosition = RopeParameters.Check(value, RopeParameters.DefectPosition.Row);
-        }
+        public float DefectPosition { get => defectPosition; set => defectPosition = RopeParameters.Check(value, RopeParameters.DefectPosition.Row); }
 
         /// <summary>
         /// Zone mode: rest length of the neck zone in rope diameters 2R (dimensionless), range [0.5, 1000]. Default 4,
         /// i.e. a zone of 8·R of rest length centred on the defect.
         /// </summary>
-        public float NeckZoneDiameters
-        {
-            get => neckZoneDiameters;
-            set => neckZoneDiameters = RopeParameters.Check(value, RopeParameters.NeckZoneDiameters.Row);
-        }
+        public float NeckZoneDiameters { get => neckZoneDiameters; set => neckZoneDiameters = RopeParameters.Check(value, RopeParameters.NeckZoneDiameters.Row); }
 
         /// <summary>
         /// Zone mode: strain beyond onset (dimensionless) over which the neck deepens from zero to the full
         /// hyperbola, range (0, 100]. Default 0.2.
         /// </summary>
-        public float NeckGrowthStrain
-        {
-            get => neckGrowthStrain;
-            set => neckGrowthStrain = RopeParameters.Check(value, RopeParameters.NeckGrowthStrain.Row);
-        }
+        public float NeckGrowthStrain { get => neckGrowthStrain; set => neckGrowthStrain = RopeParameters.Check(value, RopeParameters.NeckGrowthStrain.Row); }
 
         /// <summary>Fracture on: the defect segment breaks when a criterion is met. Off: the model never asks for a break and skips the test. Default true.</summary>
         public bool Fracture { get; set; } = RopeParameters.Fracture.Default;
@@ -100,21 +80,13 @@ namespace HookeRope.Radius
         /// The rope breaks when the strain l/L − 1 of the defect segment reaches this value (dimensionless, the
         /// elongation at break), range (0, 1000]. Default 0.6.
         /// </summary>
-        public float BreakStrain
-        {
-            get => breakStrain;
-            set => breakStrain = RopeParameters.Check(value, RopeParameters.BreakStrain.Row);
-        }
+        public float BreakStrain { get => breakStrain; set => breakStrain = RopeParameters.Check(value, RopeParameters.BreakStrain.Row); }
 
         /// <summary>
         /// The rope also breaks when the neck radius falls below this fraction of R (dimensionless), range [0, 0.99];
         /// 0 turns this criterion off. Needs <see cref="Necking"/>. Default 0.25.
         /// </summary>
-        public float BreakRadiusFraction
-        {
-            get => breakRadiusFraction;
-            set => breakRadiusFraction = RopeParameters.Check(value, RopeParameters.BreakRadiusFraction.Row);
-        }
+        public float BreakRadiusFraction { get => breakRadiusFraction; set => breakRadiusFraction = RopeParameters.Check(value, RopeParameters.BreakRadiusFraction.Row); }
 
         /// <summary>True when any part (thinning, neck, fracture) is on; when false the model does no per-step work.</summary>
         public bool AnyEnabled => PoissonThinning || necking || Fracture;

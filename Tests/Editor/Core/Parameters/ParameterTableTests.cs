@@ -180,41 +180,41 @@ namespace HookeRope.Tests.Core.Parameters
             Assert.That(segments, Is.EqualTo(1));
         }
 
-        static IEnumerable<object> CoreSettings()
+        /// <summary>Every (fresh settings instance, property, row) where a core settings class has a property named like a row.</summary>
+        static IEnumerable<(object Settings, PropertyInfo Property, ParameterInfo Row)> CoreProperties()
         {
-            yield return new HookeRope.Radius.RadiusSettings();
-            yield return new HookeRope.Geometry.TubeMeshSettings();
+            foreach (var type in new[] { typeof(HookeRope.Radius.RadiusSettings), typeof(HookeRope.Geometry.TubeMeshSettings) })
+                foreach (var row in RopeParameters.All)
+                {
+                    var property = type.GetProperty(row.Name, BindingFlags.Public | BindingFlags.Instance);
+                    if (property != null) yield return (Activator.CreateInstance(type), property, row);
+                }
         }
 
         [Test]
         public void CoreSettersAcceptTheTableRangeAndNameItOutside()
         {
             int checkedRows = 0;
-            foreach (var settings in CoreSettings())
+            foreach (var (settings, property, row) in CoreProperties())
             {
-                foreach (var row in RopeParameters.All)
+                if (!property.CanWrite) continue;
+                if (row.Kind == ParameterKind.Float && property.PropertyType == typeof(float))
                 {
-                    var property = settings.GetType().GetProperty(row.Name, BindingFlags.Public | BindingFlags.Instance);
-                    if (property == null || !property.CanWrite) continue;
-                    if (row.Kind == ParameterKind.Float && property.PropertyType == typeof(float))
-                    {
-                        float low = row.MinExclusive ? NextUp((float)row.Min) : (float)row.Min;
-                        property.SetValue(settings, low);
-                        Assert.That(property.GetValue(settings), Is.EqualTo(low), row.Name);
-                        property.SetValue(settings, (float)row.Max);
-                        float below = row.MinExclusive ? (float)row.Min : NextDown((float)row.Min);
-                        AssertSetterThrows(settings, property, below, row);
-                        AssertSetterThrows(settings, property, NextUp((float)row.Max), row);
-                        checkedRows++;
-                    }
-                    else if (row.Kind == ParameterKind.Int && property.PropertyType == typeof(int))
-                    {
-                        property.SetValue(settings, (int)row.Min);
-                        property.SetValue(settings, (int)row.Max);
-                        AssertSetterThrows(settings, property, (int)row.Min - 1, row);
-                        AssertSetterThrows(settings, property, (int)row.Max + 1, row);
-                        checkedRows++;
-                    }
+                    float low = row.MinExclusive ? NextUp((float)row.Min) : (float)row.Min;
+                    property.SetValue(settings, low);
+                    Assert.That(property.GetValue(settings), Is.EqualTo(low), row.Name);
+                    property.SetValue(settings, (float)row.Max);
+                    AssertSetterThrows(settings, property, row.MinExclusive ? (float)row.Min : NextDown((float)row.Min), row);
+                    AssertSetterThrows(settings, property, NextUp((float)row.Max), row);
+                    checkedRows++;
+                }
+                else if (row.Kind == ParameterKind.Int && property.PropertyType == typeof(int))
+                {
+                    property.SetValue(settings, (int)row.Min);
+                    property.SetValue(settings, (int)row.Max);
+                    AssertSetterThrows(settings, property, (int)row.Min - 1, row);
+                    AssertSetterThrows(settings, property, (int)row.Max + 1, row);
+                    checkedRows++;
                 }
             }
             Assert.That(checkedRows, Is.EqualTo(10), "RadiusSettings: ν, r_min, defect, zone, growth, break strain, break radius; TubeMeshSettings: radial, rings, v per metre");
@@ -224,17 +224,12 @@ namespace HookeRope.Tests.Core.Parameters
         public void FreshCoreSettingsReadTheTableDefaults()
         {
             int checkedRows = 0;
-            foreach (var settings in CoreSettings())
+            foreach (var (settings, property, row) in CoreProperties())
             {
-                foreach (var row in RopeParameters.All)
-                {
-                    var property = settings.GetType().GetProperty(row.Name, BindingFlags.Public | BindingFlags.Instance);
-                    if (property == null) continue;
-                    object value = property.GetValue(settings);
-                    double actual = value is bool b ? (b ? 1 : 0) : value is Enum ? Convert.ToInt32(value) : Convert.ToDouble(value);
-                    Assert.That(actual, Is.EqualTo(row.Default), settings.GetType().Name + "." + row.Name);
-                    checkedRows++;
-                }
+                object value = property.GetValue(settings);
+                double actual = value is bool b ? (b ? 1 : 0) : value is Enum ? Convert.ToInt32(value) : Convert.ToDouble(value);
+                Assert.That(actual, Is.EqualTo(row.Default), settings.GetType().Name + "." + row.Name);
+                checkedRows++;
             }
             Assert.That(checkedRows, Is.EqualTo(16), "RadiusSettings 12 rows, TubeMeshSettings 4");
         }
