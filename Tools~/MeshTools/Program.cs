@@ -52,7 +52,7 @@ namespace HookeRope.MeshTools
                 var indices = new int[builder.GetIndexCount(broken)];
                 var radii = new float[builder.Layout.RingCount];
                 model.Update(current, broken);
-                model.FillRingRadii(builder.Layout.RingSegments, builder.Layout.RingFractions, radii);
+                model.FillRadiiAt(builder.Layout.RingSegments, builder.Layout.RingFractions, radii);
                 for (int i = 0; i < 200; i++) builder.BuildWithRingRadii(x, y, z, rest, radii, broken, vertices, indices);
                 double best = double.MaxValue;
                 for (int round = 0; round < 5; round++)
@@ -75,15 +75,15 @@ namespace HookeRope.MeshTools
             {
                 var radii = new float[segments * 4 + 1];
                 var layout = new RingLayout(segments, 4);
-                for (int i = 0; i < 2000; i++) { model.Update(current, ReadOnlySpan<bool>.Empty); model.FillRingRadii(layout.RingSegments, layout.RingFractions, radii); }
+                for (int i = 0; i < 2000; i++) { model.Update(current, ReadOnlySpan<bool>.Empty); model.FillRadiiAt(layout.RingSegments, layout.RingFractions, radii); }
                 var watch = Stopwatch.StartNew();
                 for (int i = 0; i < 20000; i++) model.Update(current, ReadOnlySpan<bool>.Empty);
                 double update = watch.Elapsed.TotalMilliseconds * 1e6 / 20000;
                 watch.Restart();
-                for (int i = 0; i < 20000; i++) model.FillRingRadii(layout.RingSegments, layout.RingFractions, radii);
+                for (int i = 0; i < 20000; i++) model.FillRadiiAt(layout.RingSegments, layout.RingFractions, radii);
                 double fill = watch.Elapsed.TotalMilliseconds * 1e6 / 20000;
                 Console.WriteLine(string.Format(CultureInfo.InvariantCulture,
-                    "radius model, 200 segments: Update {0:F2} ns per segment, FillRingRadii {1:F2} ns per ring", update / segments, fill / radii.Length));
+                    "radius model, 200 segments: Update {0:F2} ns per segment, FillRadiiAt {1:F2} ns per ring", update / segments, fill / radii.Length));
             }
             return 0;
         }

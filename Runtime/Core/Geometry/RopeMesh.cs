@@ -66,7 +66,7 @@ namespace HookeRope.Geometry
         {
             RadiusModel model = simulation.RadiusModel;
             if (model != null && model.IsActive)
-                model.FillRingRadii(layout.RingSegments, layout.RingFractions, ringRadii);
+                model.FillRadiiAt(layout.RingSegments, layout.RingFractions, ringRadii);
             else
                 Array.Fill(ringRadii, simulation.RestRadius);
             if (radiusScale != 1f)

@@ -140,7 +140,7 @@ namespace HookeRope.Geometry
 
         /// <summary>
         /// Builds the mesh from particle positions (m), rest segment lengths (m), one radius per ring (m;
-        /// <see cref="RingLayout.RingCount"/> values, e.g. from RadiusModel.FillRingRadii) and broken flags (empty =
+        /// <see cref="RingLayout.RingCount"/> values, e.g. from RadiusModel.FillRadiiAt) and broken flags (empty =
         /// none). Non-finite or non-positive radii count as 1e-6 m; non-finite positions repeat the previous ring.
         /// Throws ArgumentException when a span has the wrong length or a buffer is too small.
         /// </summary>

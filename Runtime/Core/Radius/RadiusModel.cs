@@ -204,7 +204,7 @@ namespace HookeRope.Radius
         /// Fills <paramref name="radii"/> (m) with the radius at each ring station given by parallel spans of
         /// segment indices and fractions (e.g. a <see cref="HookeRope.Geometry.RingLayout"/>). Allocation-free.
         /// </summary>
-        public void FillRingRadii(ReadOnlySpan<int> ringSegments, ReadOnlySpan<float> ringFractions, Span<float> radii)
+        public void FillRadiiAt(ReadOnlySpan<int> ringSegments, ReadOnlySpan<float> ringFractions, Span<float> radii)
         {
             if (ringSegments.Length != ringFractions.Length || radii.Length < ringSegments.Length)
                 throw new ArgumentException("radii must hold at least as many values as ringSegments and ringFractions (which must match).", nameof(radii));

@@ -76,7 +76,7 @@ namespace HookeRope.Tests.Core.Geometry
             model.Update(lengths, ReadOnlySpan<bool>.Empty);
             var builder = new TubeMeshBuilder(new TubeMeshSettings { RadialSegments = 16 }, shape.Segments);
             var radii = new float[builder.Layout.RingCount];
-            model.FillRingRadii(builder.Layout.RingSegments, builder.Layout.RingFractions, radii);
+            model.FillRadiiAt(builder.Layout.RingSegments, builder.Layout.RingFractions, radii);
             var vertices = new TubeVertex[builder.GetVertexCount(ReadOnlySpan<bool>.Empty)];
             var indices = new int[builder.GetIndexCount(ReadOnlySpan<bool>.Empty)];
             var update = builder.BuildWithRingRadii(shape.X, shape.Y, shape.Z, shape.Rest, radii, ReadOnlySpan<bool>.Empty, vertices, indices);

@@ -29,7 +29,7 @@ namespace HookeRope.Tests.Core.Radius
 
             var layout = new RingLayout(Segments, 4);
             var radii = new float[layout.RingCount];
-            model.FillRingRadii(layout.RingSegments, layout.RingFractions, radii);
+            model.FillRadiiAt(layout.RingSegments, layout.RingFractions, radii);
             int last = radii.Length - 1;
             float rMin = 0.8f * R;
             double length = Segments * SegmentLength * stretch;
@@ -78,7 +78,7 @@ namespace HookeRope.Tests.Core.Radius
                 float stretch = 1f + 0.002f * step; // through onset (1.5625) and full depth (1.7625)
                 Array.Fill(current, SegmentLength * stretch);
                 model.Update(current, ReadOnlySpan<bool>.Empty);
-                model.FillRingRadii(layout.RingSegments, layout.RingFractions, radii);
+                model.FillRadiiAt(layout.RingSegments, layout.RingFractions, radii);
                 for (int k = 0; k < radii.Length; k++)
                 {
                     largestChange = Math.Max(largestChange, Math.Abs(radii[k] - previous[k]));

@@ -105,7 +105,7 @@ namespace HookeRope.Tests.Core.Radius
             {
                 current[100] = 0.016f + 1e-5f * (step++ % 500);
                 model.Update(current, broken);
-                model.FillRingRadii(segments, fractions, radii);
+                model.FillRadiiAt(segments, fractions, radii);
             }, 200);
             Assert.That(bytes, Is.EqualTo(0));
         }
