@@ -29,6 +29,19 @@ namespace HookeRope.Tests.Parity
             public int BreakStep = -1;
             public int BreakSegment = -1;
             public double BreakTension = double.NaN;
+
+            /// <summary>Records host step k's read-outs and the first break; true once the trace reaches 10 steps past the break.</summary>
+            public bool Observe(int k, RopeReadouts readouts)
+            {
+                Steps.Add(Record(readouts));
+                if (BreakStep < 0 && readouts.FirstBreak.HasValue)
+                {
+                    BreakStep = k;
+                    BreakSegment = readouts.FirstBreak.Value.Segment;
+                    BreakTension = readouts.FirstBreak.Value.Tension;
+                }
+                return BreakStep >= 0 && k >= BreakStep + StepsAfterBreak;
+            }
         }
 
         static readonly string[] Quantities = { "top tension", "bottom tension", "peak tension", "elongation", "neck radius", "min radius", "residual" };
@@ -122,14 +135,7 @@ namespace HookeRope.Tests.Parity
                 if (s.Start.Kind == AttachmentKind.Keyframes) setup.Rope.SetPinTarget(setup.StartPin, s.Start.PositionAt(t));
                 if (s.End.Kind == AttachmentKind.Keyframes) setup.Rope.SetPinTarget(setup.EndPin, s.End.PositionAt(t));
                 setup.Step(dt);
-                trace.Steps.Add(Record(readouts));
-                if (trace.BreakStep < 0 && readouts.FirstBreak.HasValue)
-                {
-                    trace.BreakStep = k;
-                    trace.BreakSegment = readouts.FirstBreak.Value.Segment;
-                    trace.BreakTension = readouts.FirstBreak.Value.Tension;
-                }
-                if (trace.BreakStep >= 0 && k >= trace.BreakStep + StepsAfterBreak) break;
+                if (trace.Observe(k, readouts)) break;
             }
             reason = why;
             return trace;
@@ -177,14 +183,7 @@ namespace HookeRope.Tests.Parity
                 double t = (k + 1) * s.HostStep;
                 end.position = ToVector3(s.End.PositionAt(t));
                 rope.Simulate(dt);
-                trace.Steps.Add(Record(readouts));
-                if (trace.BreakStep < 0 && readouts.FirstBreak.HasValue)
-                {
-                    trace.BreakStep = k;
-                    trace.BreakSegment = readouts.FirstBreak.Value.Segment;
-                    trace.BreakTension = readouts.FirstBreak.Value.Tension;
-                }
-                if (trace.BreakStep >= 0 && k >= trace.BreakStep + StepsAfterBreak) break;
+                if (trace.Observe(k, readouts)) break;
             }
             return trace;
         }
