@@ -11,7 +11,7 @@ namespace HookeRope.Geometry
     /// relative to the first particle. The index buffer is rewritten only when the topology changes (first build,
     /// a newly broken segment, another index array). Allocation-free after construction.
     /// </summary>
-    public sealed class TubeMeshBuilder
+    internal sealed class TubeMeshBuilder
     {
         private const float InnerStrandRadius = 0.45f;
         private const float MaxSlope = 10f;
@@ -44,7 +44,7 @@ namespace HookeRope.Geometry
         }
 
         /// <summary>Builder with an explicit ring layout (e.g. refined around the neck zone).</summary>
-        public TubeMeshBuilder(TubeMeshSettings settings, RingLayout layout)
+        internal TubeMeshBuilder(TubeMeshSettings settings, RingLayout layout)
         {
             this.settings = settings ?? throw new ArgumentNullException(nameof(settings));
             this.layout = layout ?? throw new ArgumentNullException(nameof(layout));
@@ -83,7 +83,7 @@ namespace HookeRope.Geometry
         }
 
         /// <summary>The ring layout (ring count and stations).</summary>
-        public RingLayout Layout => layout;
+        internal RingLayout Layout => layout;
 
         /// <summary>Number of rope segments.</summary>
         public int SegmentCount => layout.SegmentCount;
@@ -208,7 +208,7 @@ namespace HookeRope.Geometry
             if (vertexCount == 0) bounds = new Bounds(false);
             else { bounds.Min = bounds.Min + origin; bounds.Max = bounds.Max + origin; }
             return new TubeMeshUpdate(vertexCount, tubeIndexCount + burrIndexCount, tubeIndexCount, topologyChanged,
-                Float3.Zero, bounds.Min, bounds.Max);
+                bounds.Min, bounds.Max);
         }
 
         /// <summary>

@@ -10,20 +10,20 @@ namespace HookeRope.Radius
     /// </summary>
     public sealed class RadiusSettings
     {
-        private float poissonRatio = 0.5f;
-        private float neckRadiusFraction = 0.8f;
-        private bool necking = true;
-        private NeckMode neckMode = NeckMode.Zone;
+        private float poissonRatio = RopeParameters.PoissonRatio.Default;
+        private float neckRadiusFraction = RopeParameters.NeckRadiusFraction.Default;
+        private bool necking = RopeParameters.Necking.Default;
+        private NeckMode neckMode = RopeParameters.NeckMode.Default;
         private float defectPosition = RopeParameters.DefectPosition.Default;
         private float neckZoneDiameters = RopeParameters.NeckZoneDiameters.Default;
         private float neckGrowthStrain = RopeParameters.NeckGrowthStrain.Default;
         private float breakRadiusFraction = RopeParameters.BreakRadiusFraction.Default;
-        private float breakStrain = float.PositiveInfinity;
+        private float breakStrain = RopeParameters.BreakStrain.Default;
 
         /// <summary>Poisson thinning on (eq. 16). Off: every segment keeps the rest radius R and no per-segment work is done. Default true.</summary>
         public bool PoissonThinning { get; set; } = RopeParameters.PoissonThinning.Default;
 
-        /// <summary>Poisson ratio ν (dimensionless), range [−1, 0.5]; 0.5 keeps the volume (rubber). Default 0.5.</summary>
+        /// <summary>Poisson ratio ν (dimensionless), range [−1, 0.5]; 0.5 keeps the volume (rubber). Default 0.3 (the table's).</summary>
         public float PoissonRatio
         {
             get => poissonRatio;
@@ -44,26 +44,19 @@ namespace HookeRope.Radius
             set => necking = value;
         }
 
-        /// <summary>
-        /// Neck model used when <see cref="Necking"/> is on: <see cref="HookeRope.Radius.NeckMode.Zone"/> (default) or
-        /// Paper. Reads <see cref="HookeRope.Radius.NeckMode.Off"/> while necking is off. Setting Off turns necking off;
-        /// setting Paper or Zone turns it on (the 0.1 meaning, kept until Off is removed; set <see cref="Necking"/>
-        /// after the mode).
-        /// </summary>
+        /// <summary>Neck model used when <see cref="Necking"/> is on: <see cref="HookeRope.Radius.NeckMode.Zone"/> (default) or Paper.</summary>
         public NeckMode NeckMode
         {
-            get => necking ? neckMode : NeckMode.Off;
+            get => neckMode;
             set
             {
-                if (value == NeckMode.Off) { necking = false; return; }
                 if (value != NeckMode.Paper && value != NeckMode.Zone)
                     throw new ArgumentOutOfRangeException(nameof(NeckMode), value, "NeckMode must be Paper or Zone (turn necking off with Necking = false).");
                 neckMode = value;
-                necking = true;
             }
         }
 
-        /// <summary>Neck onset radius r_min as a fraction of the rest radius R (dimensionless), range [0.01, 1]. Default 0.8.</summary>
+        /// <summary>Neck onset radius r_min as a fraction of the rest radius R (dimensionless), range [0.01, 1]. Default 0.75.</summary>
         public float NeckRadiusFraction
         {
             get => neckRadiusFraction;
@@ -105,7 +98,7 @@ namespace HookeRope.Radius
 
         /// <summary>
         /// The rope breaks when the strain l/L − 1 of the defect segment reaches this value (dimensionless, the
-        /// elongation at break), range (0, 1000]. Default +∞ (this criterion off) until the 0.2 default change.
+        /// elongation at break), range (0, 1000]. Default 0.6.
         /// </summary>
         public float BreakStrain
         {
@@ -123,26 +116,7 @@ namespace HookeRope.Radius
             set => breakRadiusFraction = RopeParameters.Check(value, RopeParameters.BreakRadiusFraction.Row);
         }
 
-        /// <summary>Old name of <see cref="PoissonThinning"/> (removed with the issue 12 contract step).</summary>
-        public bool PoissonEnabled { get => PoissonThinning; set => PoissonThinning = value; }
-
-        /// <summary>Old name of <see cref="NeckRadiusFraction"/> (removed with the issue 12 contract step).</summary>
-        public float RMinFraction { get => NeckRadiusFraction; set => NeckRadiusFraction = value; }
-
-        /// <summary>Old name of <see cref="Fracture"/> (removed with the issue 12 contract step).</summary>
-        public bool BreakEnabled { get => Fracture; set => Fracture = value; }
-
-        /// <summary>Old name of <see cref="BreakStrain"/>, which also accepts +∞ (criterion off); removed with the issue 12 contract step.</summary>
-        public float BreakElongation
-        {
-            get => breakStrain;
-            set => breakStrain = float.IsPositiveInfinity(value) ? value : RopeParameters.Check(value, RopeParameters.BreakStrain.Row);
-        }
-
         /// <summary>True when any part (thinning, neck, fracture) is on; when false the model does no per-step work.</summary>
         public bool AnyEnabled => PoissonThinning || necking || Fracture;
-
-        /// <summary>The neck mode whether or not necking is on (Paper or Zone).</summary>
-        internal NeckMode Mode => neckMode;
     }
 }

@@ -15,8 +15,8 @@ namespace HookeRope.Tests.Components
         [SetUp] public void SetUp() { _scene = new UnityRopeScene(); _scene.Begin(); }
         [TearDown] public void TearDown() => _scene.End();
 
-        [Test]
-        public void PulledPastBreakStrainBreaksOnce()
+        /// <summary>A 1 m rope of 20 segments, break strain 0.2, from a top anchor at 3 m to a grip at 2 m.</summary>
+        (ElasticRope Rope, Transform Top, Transform Grip) RopeToBreak()
         {
             var top = _scene.Point("Top", new Vector3(0f, 3f, 0f));
             var grip = _scene.Point("Grip", new Vector3(0f, 2f, 0f));
@@ -28,6 +28,13 @@ namespace HookeRope.Tests.Components
             rope.StartAttachment.Point = top;
             rope.EndAttachment.Point = grip;
             rope.Rebuild();
+            return (rope, top, grip);
+        }
+
+        [Test]
+        public void PulledPastBreakStrainBreaksOnce()
+        {
+            var (rope, top, grip) = RopeToBreak();
 
             int breaks = 0;
             float tension = 0f;
@@ -52,15 +59,7 @@ namespace HookeRope.Tests.Components
         [Test]
         public void ReadoutsAfterABreakCountTheIntactSegmentsOnly()
         {
-            var top = _scene.Point("Top", new Vector3(0f, 3f, 0f));
-            var grip = _scene.Point("Grip", new Vector3(0f, 2f, 0f));
-            var rope = _scene.Rope("Rope", top.position);
-            rope.RestLength = 1f;
-            rope.SegmentCount = 20;
-            rope.BreakStrain = 0.2f;
-            rope.StartAttachment.Point = top;
-            rope.EndAttachment.Point = grip;
-            rope.Rebuild();
+            var (rope, _, grip) = RopeToBreak();
             for (int step = 0; step < 200 && !rope.IsBroken; step++)
             {
                 grip.position = new Vector3(0f, 2f - 0.005f * step, 0f);

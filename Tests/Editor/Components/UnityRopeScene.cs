@@ -10,12 +10,12 @@ namespace HookeRope.Tests.Components
     sealed class UnityRopeScene
     {
         readonly List<GameObject> _objects = new List<GameObject>();
-        SimulationMode _previousMode;
+        SimulationMode _savedMode;
 
         /// <summary>Takes over the physics clock (Physics.simulationMode = Script).</summary>
         public void Begin()
         {
-            _previousMode = Physics.simulationMode;
+            _savedMode = Physics.simulationMode;
             Physics.simulationMode = SimulationMode.Script;
         }
 
@@ -25,7 +25,7 @@ namespace HookeRope.Tests.Components
             for (int i = _objects.Count - 1; i >= 0; i--)
                 if (_objects[i] != null) Object.DestroyImmediate(_objects[i]);
             _objects.Clear();
-            Physics.simulationMode = _previousMode;
+            Physics.simulationMode = _savedMode;
         }
 
         /// <summary>An empty object at <paramref name="position"/> (m).</summary>
