@@ -4,40 +4,40 @@ using HookeRope.Fracture;
 namespace HookeRope.Geometry
 {
     /// <summary>
-    /// Validated settings of the procedural tube mesh. Setters throw <see cref="ArgumentOutOfRangeException"/>
-    /// naming the property and its valid range. RadialSegments, RingsPerSegment, CapEnds and Burr.Enabled fix the
+    /// Validated settings of the procedural tube mesh. Ranges come from <see cref="RopeParameters"/>: setters throw
+    /// <see cref="ArgumentOutOfRangeException"/> naming the property, its range and unit. RadialSegments, RingsPerSegment, CapEnds and Burr.Enabled fix the
     /// topology and are read when a <see cref="TubeMeshBuilder"/> is created; VPerMetre and the other burr values
     /// are read at every build.
     /// </summary>
     public sealed class TubeMeshSettings
     {
         private int radialSegments = 16;
-        private int ringsPerSegment = 4;
-        private float vPerMetre = 10f;
+        private int ringsPerSegment = RopeParameters.RingsPerSegment.Default;
+        private float vPerMetre = RopeParameters.VPerMetre.Default;
 
         /// <summary>Vertices around the tube, range [3, 64] (the paper shows 8, 16, 32). Default 16.</summary>
         public int RadialSegments
         {
             get => radialSegments;
-            set => radialSegments = Require.InRange(value, 3, 64, nameof(RadialSegments));
+            set => radialSegments = RopeParameters.Check(value, RopeParameters.RadialSegments.Row);
         }
 
         /// <summary>Rings per rope segment along the smooth curve, range [1, 64]. Default 4.</summary>
         public int RingsPerSegment
         {
             get => ringsPerSegment;
-            set => ringsPerSegment = Require.InRange(value, 1, 64, nameof(RingsPerSegment));
+            set => ringsPerSegment = RopeParameters.Check(value, RopeParameters.RingsPerSegment.Row);
         }
 
         /// <summary>Texture v per metre of rest arc length (1/m), range (0, 10000]; the texture stretches with the material. Default 10.</summary>
         public float VPerMetre
         {
             get => vPerMetre;
-            set => vPerMetre = Require.InOpenClosedRange(value, 0f, 10000f, nameof(VPerMetre), "1/m");
+            set => vPerMetre = RopeParameters.Check(value, RopeParameters.VPerMetre.Row);
         }
 
         /// <summary>Close the two intact ends of the rope with flat caps (the intact mesh is then watertight). Default true. Broken ends are always closed.</summary>
-        public bool CapEnds { get; set; } = true;
+        public bool CapEnds { get; set; } = RopeParameters.CapEnds.Default;
 
         /// <summary>Burr strands at broken ends.</summary>
         public BurrSettings Burr { get; } = new BurrSettings();

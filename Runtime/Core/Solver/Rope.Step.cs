@@ -12,7 +12,7 @@ namespace HookeRope.Solver
         /// Advances the rope by one host step (s, in (0, 1]): <see cref="RopeSettings.Substeps"/> substeps of
         /// h = Δt/substeps, each in four phases: predict (gravity, rigid pins), collide (push out, detect contacts),
         /// solve (<see cref="RopeSettings.Iterations"/> constraint iterations: chain, compliant pins, colliders) and
-        /// finish (velocities, tensions, pin forces, breaks). The positions at the start of the step are kept for
+        /// finish (velocities, tensions, pin forces and pin breaks). The positions at the start of the step are kept for
         /// <see cref="Interpolate"/>. Allocation-free.
         /// </summary>
         public StepReport Step(float hostDeltaTime)
@@ -50,8 +50,9 @@ namespace HookeRope.Solver
                 // push the prediction out of the colliders and find the contacts the chain solve folds in
                 CollidePhase(h, ContactPass.StartOfSubstep);
                 SolvePhase(h, hd, t, beta, tensionOnly, exact, iterations, compliantPins > 0);
-                FinishPhase(h, hd, g, lastSubstep: k == substeps - 1);
+                FinishPhase(h, hd, g);
             }
+            RefreshLengths();
             if (hasColliders) colliders.EndStep();
             for (int p = 0; p < pinCount; p++) pinStart[p] = pinEnd[p];
 
@@ -103,14 +104,13 @@ namespace HookeRope.Solver
             }
         }
 
-        /// <summary>Phase 4: velocities from the displacements, time, tensions (and segment lengths on the last substep, or every substep while strain breaks are on), pin forces, breaks.</summary>
-        private void FinishPhase(float h, double hd, Float3 g, bool lastSubstep)
+        /// <summary>Phase 4: velocities from the displacements, time, tensions, pin forces (and pin breaks). The segment lengths are refreshed once, after the last substep.</summary>
+        private void FinishPhase(float h, double hd, Float3 g)
         {
             UpdateVelocities(h);
             time += hd;
-            UpdateTensions(hd, lengths: lastSubstep || !float.IsPositiveInfinity(settings.BreakStrain));
+            UpdateTensions(hd);
             if (pinCount > 0) UpdatePinForces(hd, g);
-            CheckStrainBreaks();
         }
 
         private void Predict(float h, Float3 g)
@@ -238,8 +238,8 @@ namespace HookeRope.Solver
             }
         }
 
-        /// <summary>Tensions from the multipliers; current lengths too when asked (last substep, or strain breaks on).</summary>
-        private void UpdateTensions(double h, bool lengths)
+        /// <summary>Tensions T = −λ/h² (N) from the multipliers of the substep h (s); 0 for a broken segment.</summary>
+        private void UpdateTensions(double h)
         {
             double invH2 = 1.0 / (h * h);
             int s = chain.SegmentCount;
@@ -251,13 +251,6 @@ namespace HookeRope.Solver
                 double t = broken[j] ? 0.0 : -lambda[j] * invH2;
                 float value = (float)t;
                 tension[j] = float.IsFinite(value) ? value : float.MaxValue;
-            }
-            if (!lengths) return;
-            float[] x = chain.X, y = chain.Y, z = chain.Z, length = chain.Length;
-            for (int j = 0; j < s; j++)
-            {
-                float dx = x[j + 1] - x[j], dy = y[j + 1] - y[j], dz = z[j + 1] - z[j];
-                length[j] = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
             }
         }
 
@@ -292,22 +285,6 @@ namespace HookeRope.Solver
                 }
             }
             if (released) RefreshKinematic();
-        }
-
-        /// <summary>Breaks the most strained segment past the limit, one per substep: once it fails the others unload.</summary>
-        private void CheckStrainBreaks()
-        {
-            float limit = settings.BreakStrain;
-            if (float.IsPositiveInfinity(limit)) return;
-            int worst = -1;
-            float worstStrain = limit;
-            for (int j = 0; j < chain.SegmentCount; j++)
-            {
-                if (chain.Broken[j]) continue;
-                float strain = chain.Length[j] / chain.RestLength[j] - 1f;
-                if (strain > worstStrain) { worstStrain = strain; worst = j; }
-            }
-            if (worst >= 0) BreakSegment(worst);
         }
 
         private float ComputeResidual()

@@ -82,8 +82,8 @@ namespace HookeRope.Solver
         /// <summary>Tension of each segment in newtons over the last substep, ≥ 0 = pulling (T = −λ/h²).</summary>
         public ReadOnlySpan<float> Tensions => chain.Tension;
 
-        /// <summary>Collision radius of each particle in metres (default: the rest radius; the radius model writes it).</summary>
-        public Span<float> ParticleRadius => chain.Radius;
+        /// <summary>Collision radius of each particle in metres (default: the rest radius; the radius model of <see cref="RopeSimulation"/> writes it).</summary>
+        public ReadOnlySpan<float> ParticleRadius => chain.Radius;
 
         /// <summary>Writes the particles' collision radii in metres (the radius model's output); length must be <see cref="ParticleCount"/>.</summary>
         internal void SetParticleRadii(ReadOnlySpan<float> radii)
@@ -199,7 +199,7 @@ namespace HookeRope.Solver
             Broken?.Invoke(new RopeBreakEvent(time, Origin + midpoint, segment, tension));
         }
 
-        /// <summary>Raised when a segment breaks (by strain, by <see cref="BreakSegment"/>): time s, position m, segment, tension N just before.</summary>
+        /// <summary>Raised when a segment breaks (<see cref="BreakSegment"/>: a cut, or the fracture decision of <see cref="RopeSimulation"/>): time s, position m, segment, tension N just before.</summary>
         public event Action<RopeBreakEvent> Broken;
 
         /// <summary>

@@ -14,84 +14,60 @@ namespace HookeRope.Solver
     /// </summary>
     public sealed class RopeSettings
     {
-        /// <summary>Default rest length in metres.</summary>
-        public const float DefaultRestLength = 1f;
-        /// <summary>Default number of segments.</summary>
-        public const int DefaultSegmentCount = 16;
-        /// <summary>Default rest radius in metres (a 10 mm rope).</summary>
-        public const float DefaultRadius = 0.005f;
-        /// <summary>Default Young's modulus in pascals (a polyamide rope, 1 GPa).</summary>
-        public const float DefaultYoungsModulus = 1e9f;
-        /// <summary>Default material density in kg/m³ (polyamide).</summary>
-        public const float DefaultDensity = 1140f;
-        /// <summary>Default substeps per host step.</summary>
-        public const int DefaultSubsteps = 8;
-        /// <summary>Default iterations per substep.</summary>
-        public const int DefaultIterations = 1;
-        /// <summary>Largest segment count.</summary>
-        public const int MaxSegmentCount = 10000;
-        /// <summary>Largest substep or iteration count.</summary>
-        public const int MaxSubsteps = 1000;
-
-        private float restLength = DefaultRestLength;
-        private int segmentCount = DefaultSegmentCount;
-        private float radius = DefaultRadius;
-        private float youngsModulus = DefaultYoungsModulus;
-        private float density = DefaultDensity;
-        private float damping;
-        private Float3 gravity = new Float3(0f, -9.81f, 0f);
-        private int substeps = DefaultSubsteps;
-        private int iterations = DefaultIterations;
-        private ConstraintSolverKind solver = ConstraintSolverKind.ExactChain;
-        private TensionModel tension = TensionModel.TensionOnly;
-        private float breakStrain = float.PositiveInfinity;
+        // defaults: the parameter table's (the component and prefab values)
+        private float restLength = RopeParameters.RestLength.Default;
+        private int segmentCount = RopeParameters.SegmentCount.Default;
+        private float radius = RopeParameters.Radius.Default;
+        private float youngsModulus = RopeParameters.YoungsModulus.Default;
+        private float density = RopeParameters.Density.Default;
+        private float damping = RopeParameters.Damping.Default;
+        private Float3 gravity = new Float3(RopeParameters.Gravity.DefaultX, RopeParameters.Gravity.DefaultY, RopeParameters.Gravity.DefaultZ);
+        private int substeps = RopeParameters.Substeps.Default;
+        private int iterations = RopeParameters.Iterations.Default;
+        private ConstraintSolverKind solver = RopeParameters.Solver.Default;
+        private TensionModel tension = RopeParameters.TensionModel.Default;
 
         /// <summary>Incremented by every successful setter; a rope re-reads its settings when it changes.</summary>
         public int Version { get; private set; }
 
-        /// <summary>Unstretched length of the whole rope in metres, in (0, 1e5]. Default 1 m.</summary>
+        /// <summary>Unstretched length of the whole rope in metres, in [0.01, 10000] (<see cref="RopeParameters.RestLength"/>). Default 2 m.</summary>
         public float RestLength
         {
             get => restLength;
-            set { CheckRange(value, 0f, false, 1e5f, nameof(RestLength), "(0, 100000] m"); restLength = value; Version++; }
+            set { restLength = RopeParameters.Check(value, RopeParameters.RestLength.Row); Version++; }
         }
 
-        /// <summary>Number of segments (particles = segments + 1), in [1, 10000]. Default 16. Read when a rope is built.</summary>
+        /// <summary>Number of segments (particles = segments + 1), in [1, 10000]. Default 24. Read when a rope is built.</summary>
         public int SegmentCount
         {
             get => segmentCount;
-            set
-            {
-                if (value < 1 || value > MaxSegmentCount) throw new ArgumentOutOfRangeException(nameof(SegmentCount), value, "SegmentCount must be in [1, 10000]");
-                segmentCount = value;
-                Version++;
-            }
+            set { segmentCount = RopeParameters.Check(value, RopeParameters.SegmentCount.Row); Version++; }
         }
 
-        /// <summary>Rest radius R of the rope in metres, in (0, 10]. Default 0.005 m. Keeps E and ρ; rescales E·A and linear density.</summary>
+        /// <summary>Rest radius R of the rope in metres, in (0, 1] (<see cref="RopeParameters.Radius"/>). Default 0.008 m. Keeps E and ρ; rescales E·A and linear density.</summary>
         public float Radius
         {
             get => radius;
-            set { CheckRange(value, 0f, false, 10f, nameof(Radius), "(0, 10] m"); radius = value; Version++; }
+            set { radius = RopeParameters.Check(value, RopeParameters.Radius.Row); Version++; }
         }
 
         /// <summary>Cross-section area π·R² in square metres.</summary>
         public float Area => MathF.PI * radius * radius;
 
-        /// <summary>Young's modulus E in pascals, in (0, +inf]; +inf = inextensible. Default 1e9 Pa.</summary>
+        /// <summary>Young's modulus E in pascals, in (0, 1e13] or +inf = inextensible (<see cref="RopeParameters.YoungsModulus"/>). Default 1.5e8 Pa.</summary>
         public float YoungsModulus
         {
             get => youngsModulus;
-            set { CheckPositiveOrInfinity(value, nameof(YoungsModulus), "(0, +inf] Pa"); youngsModulus = value; Version++; }
+            set { youngsModulus = RopeParameters.Check(value, RopeParameters.YoungsModulus.Row); Version++; }
         }
 
-        /// <summary>Axial stiffness E·A in newtons, in (0, +inf]; setting it sets E = (E·A)/(π·R²).</summary>
+        /// <summary>Axial stiffness E·A in newtons, in (0, 1e12] or +inf (<see cref="RopeParameters.AxialStiffness"/>); setting it sets E = (E·A)/(π·R²).</summary>
         public float AxialStiffness
         {
             get => youngsModulus * Area;
             set
             {
-                CheckPositiveOrInfinity(value, nameof(AxialStiffness), "(0, +inf] N");
+                RopeParameters.Check(value, RopeParameters.AxialStiffness.Row);
                 float e = value / Area;
                 if (!(e > 0f)) throw new ArgumentOutOfRangeException(nameof(AxialStiffness), value, "AxialStiffness must be in (0, +inf] N (too small for the radius)");
                 youngsModulus = e;
@@ -99,20 +75,20 @@ namespace HookeRope.Solver
             }
         }
 
-        /// <summary>Material density ρ in kg/m³, in (0, 1e6]. Default 1140 kg/m³. Sets the linear density ρ·π·R².</summary>
+        /// <summary>Material density ρ in kg/m³, in (0, 1e5] (<see cref="RopeParameters.Density"/>). Default 1140 kg/m³. Sets the linear density ρ·π·R².</summary>
         public float Density
         {
             get => density;
-            set { CheckRange(value, 0f, false, 1e6f, nameof(Density), "(0, 1000000] kg/m³"); density = value; Version++; }
+            set { density = RopeParameters.Check(value, RopeParameters.Density.Row); Version++; }
         }
 
-        /// <summary>Mass per unit rest length μ in kg/m, finite and &gt; 0; setting it sets ρ = μ/(π·R²).</summary>
+        /// <summary>Mass per unit rest length μ in kg/m, in (0, 1e4] (<see cref="RopeParameters.LinearDensity"/>); setting it sets ρ = μ/(π·R²).</summary>
         public float LinearDensity
         {
             get => density * Area;
             set
             {
-                if (!float.IsFinite(value) || value <= 0f) throw new ArgumentOutOfRangeException(nameof(LinearDensity), value, "LinearDensity must be finite and in (0, +inf) kg/m");
+                RopeParameters.Check(value, RopeParameters.LinearDensity.Row);
                 float rho = value / Area;
                 if (!(rho > 0f) || !float.IsFinite(rho)) throw new ArgumentOutOfRangeException(nameof(LinearDensity), value, "LinearDensity must be finite and in (0, +inf) kg/m (out of range for the radius)");
                 density = rho;
@@ -121,66 +97,56 @@ namespace HookeRope.Solver
         }
 
         /// <summary>
-        /// XPBD constraint damping β in seconds, finite and ≥ 0 (Macklin 2016, eq. 26): a dashpot of
+        /// XPBD constraint damping β in seconds, in [0, 10] (Macklin 2016, eq. 26): a dashpot of
         /// β·k in parallel with each segment of stiffness k. Removes vibration energy without moving
-        /// the static solution. Default 0 (substepping alone dissipates a little).
+        /// the static solution. Default 0.002 s.
         /// </summary>
         public float Damping
         {
             get => damping;
-            set { if (!float.IsFinite(value) || value < 0f) throw new ArgumentOutOfRangeException(nameof(Damping), value, "Damping must be finite and in [0, +inf) s"); damping = value; Version++; }
+            set { damping = RopeParameters.Check(value, RopeParameters.Damping.Row); Version++; }
         }
 
-        /// <summary>Gravity acceleration in m/s², each component finite. Default (0, −9.81, 0).</summary>
+        /// <summary>Gravity acceleration in m/s², each component in [−1000, 1000]. Default (0, −9.81, 0).</summary>
         public Float3 Gravity
         {
             get => gravity;
-            set { if (!value.IsFinite) throw new ArgumentException("Gravity must have finite components (m/s²)", nameof(Gravity)); gravity = value; Version++; }
+            set
+            {
+                RopeParameters.Check(value.X, RopeParameters.Gravity.Row);
+                RopeParameters.Check(value.Y, RopeParameters.Gravity.Row);
+                RopeParameters.Check(value.Z, RopeParameters.Gravity.Row);
+                gravity = value;
+                Version++;
+            }
         }
 
         /// <summary>Substeps per host step, in [1, 1000]. Default 8.</summary>
         public int Substeps
         {
             get => substeps;
-            set { if (value < 1 || value > MaxSubsteps) throw new ArgumentOutOfRangeException(nameof(Substeps), value, "Substeps must be in [1, 1000]"); substeps = value; Version++; }
+            set { substeps = RopeParameters.Check(value, RopeParameters.Substeps.Row); Version++; }
         }
 
         /// <summary>Constraint iterations per substep, in [1, 1000]. Default 1.</summary>
         public int Iterations
         {
             get => iterations;
-            set { if (value < 1 || value > MaxSubsteps) throw new ArgumentOutOfRangeException(nameof(Iterations), value, "Iterations must be in [1, 1000]"); iterations = value; Version++; }
+            set { iterations = RopeParameters.Check(value, RopeParameters.Iterations.Row); Version++; }
         }
 
         /// <summary>Constraint solver. Default <see cref="ConstraintSolverKind.ExactChain"/>.</summary>
         public ConstraintSolverKind Solver
         {
             get => solver;
-            set
-            {
-                if (value != ConstraintSolverKind.GaussSeidel && value != ConstraintSolverKind.ExactChain) throw new ArgumentOutOfRangeException(nameof(Solver), (int)value, "Solver must be GaussSeidel or ExactChain");
-                solver = value;
-                Version++;
-            }
+            set { CheckChoice((int)value, (int)ConstraintSolverKind.GaussSeidel, (int)ConstraintSolverKind.ExactChain, nameof(Solver)); solver = value; Version++; }
         }
 
         /// <summary>Rope (tension only) or rod (bilateral). Default <see cref="TensionModel.TensionOnly"/>.</summary>
         public TensionModel Tension
         {
             get => tension;
-            set
-            {
-                if (value != TensionModel.TensionOnly && value != TensionModel.Bilateral) throw new ArgumentOutOfRangeException(nameof(Tension), (int)value, "Tension must be TensionOnly or Bilateral");
-                tension = value;
-                Version++;
-            }
-        }
-
-        /// <summary>Strain l/L − 1 at which a segment breaks, in [0, +inf]; +inf (default) = never.</summary>
-        public float BreakStrain
-        {
-            get => breakStrain;
-            set { if (float.IsNaN(value) || value < 0f) throw new ArgumentOutOfRangeException(nameof(BreakStrain), value, "BreakStrain must be in [0, +inf]"); breakStrain = value; Version++; }
+            set { CheckChoice((int)value, (int)TensionModel.TensionOnly, (int)TensionModel.Bilateral, nameof(Tension)); tension = value; Version++; }
         }
 
         /// <summary>A copy with the same values (version 0).</summary>
@@ -191,15 +157,10 @@ namespace HookeRope.Solver
             return copy;
         }
 
-        private static void CheckRange(float value, float low, bool lowInclusive, float high, string name, string range)
+        private static void CheckChoice(int value, int first, int second, string name)
         {
-            bool ok = float.IsFinite(value) && (lowInclusive ? value >= low : value > low) && value <= high;
-            if (!ok) throw new ArgumentOutOfRangeException(name, value, name + " must be in " + range);
-        }
-
-        private static void CheckPositiveOrInfinity(float value, string name, string range)
-        {
-            if (float.IsNaN(value) || value <= 0f) throw new ArgumentOutOfRangeException(name, value, name + " must be in " + range);
+            if (value != first && value != second)
+                throw new ArgumentOutOfRangeException(name, value, name + " must be one of its named values (" + first + " or " + second + ")");
         }
     }
 }

@@ -96,15 +96,12 @@ namespace HookeRope.Lab.Bench
 
                 result.BytesPerStep = BytesPerStep(exactSetup, dt, 200);
 
-                var settings = new TubeMeshSettings { RadialSegments = 8 };
-                var builder = new TubeMeshBuilder(settings, n);
-                var broken = new bool[n];
-                var vertices = new TubeVertex[builder.GetVertexCount(broken)];
-                var indices = new int[builder.GetIndexCount(broken)];
-                var radii = new float[n];
-                Array.Fill(radii, 0.005f);
-                int count = builder.Build(exact.PositionX, exact.PositionY, exact.PositionZ, exact.RestLengths, radii, broken, vertices, indices).VertexCount;
-                double meshNs = TimeNs(() => builder.Build(exact.PositionX, exact.PositionY, exact.PositionZ, exact.RestLengths, radii, broken, vertices, indices),
+                // the real pipeline: RopeSimulation.FillMesh (ring radii from the model, 8 sides from the scenario)
+                var sim = exactSetup.Simulation;
+                var vertices = new TubeVertex[sim.GetVertexCount()];
+                var indices = new int[sim.GetIndexCount()];
+                int count = sim.FillMesh(vertices, indices).VertexCount;
+                double meshNs = TimeNs(() => sim.FillMesh(vertices, indices),
                     Math.Max(20, (int)((quick ? 2e5 : 2e6) / Math.Max(count, 1))));
                 result.NsPerVertex = meshNs / Math.Max(count, 1);
                 list.Add(result);
@@ -172,22 +169,23 @@ namespace HookeRope.Lab.Bench
             actions.Add(() => collider.Rope.Step(dt));
 
             var radiusOff = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), true);
-            radiusOff.Simulation.RadiusModel.Settings.PoissonEnabled = false;
-            radiusOff.Simulation.RadiusModel.Settings.NeckMode = HookeRope.Radius.NeckMode.Off;
-            radiusOff.Simulation.RadiusModel.Settings.BreakEnabled = false;
+            radiusOff.Simulation.RadiusSettings.PoissonThinning = false;
+            radiusOff.Simulation.RadiusSettings.Necking = false;
+            radiusOff.Simulation.RadiusSettings.Fracture = false;
             names.Add("radius model present, all parts off");
             actions.Add(() => radiusOff.Step(dt));
 
             var poisson = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), true);
-            poisson.Simulation.RadiusModel.Settings.NeckMode = HookeRope.Radius.NeckMode.Off;
-            poisson.Simulation.RadiusModel.Settings.BreakEnabled = true;
+            poisson.Simulation.RadiusSettings.Necking = false;
+            poisson.Simulation.RadiusSettings.Fracture = true;
             names.Add("radius on (Poisson thinning + break test)");
             actions.Add(() => poisson.Step(dt));
 
             var necking = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), true);
-            necking.Simulation.RadiusModel.Settings.NeckMode = HookeRope.Radius.NeckMode.Zone;
-            necking.Simulation.RadiusModel.Settings.RMinFraction = 0.999f;
-            necking.Simulation.RadiusModel.Settings.BreakEnabled = true;
+            necking.Simulation.RadiusSettings.NeckMode = HookeRope.Radius.NeckMode.Zone;
+            necking.Simulation.RadiusSettings.Necking = true;
+            necking.Simulation.RadiusSettings.NeckRadiusFraction = 0.999f;
+            necking.Simulation.RadiusSettings.Fracture = true;
             names.Add("radius + necking (zone neck active)");
             actions.Add(() => necking.Step(dt));
 

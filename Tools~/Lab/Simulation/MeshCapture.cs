@@ -13,7 +13,7 @@ namespace HookeRope.Lab.Simulation
             var vertices = new TubeVertex[sim.GetVertexCount()];
             var indices = new int[sim.GetIndexCount()];
             var update = sim.FillMesh(vertices, indices);
-            var origin = update.Origin;  // world position of the first particle; vertices are relative to it
+            var origin = setup.Rope.Origin;  // the vertices are in the rope-local frame
             var snapshot = new MeshSnapshot { Time = t, Vertices = new float[update.VertexCount * 12], Indices = new int[update.IndexCount] };
             for (int i = 0; i < update.VertexCount; i++)
             {

@@ -47,7 +47,6 @@ namespace HookeRope.Lab.Simulation
             settings.Iterations = s.Solver.Iterations;
             settings.Solver = s.Solver.Method == SolverMethod.GaussSeidel ? ConstraintSolverKind.GaussSeidel : ConstraintSolverKind.ExactChain;
             settings.Tension = s.Solver.TensionOnly ? TensionModel.TensionOnly : TensionModel.Bilateral;
-            settings.BreakStrain = r.Fracture ? (float)r.BreakStrain : float.PositiveInfinity;
             return settings;
         }
 
@@ -68,17 +67,19 @@ namespace HookeRope.Lab.Simulation
             return setup;
         }
 
-        /// <summary>Radius-model settings of a scenario (Poisson thinning, neck onset and mode, defect, neck-radius break).</summary>
+        /// <summary>Radius-model settings of a scenario: Poisson thinning, neck (mode, onset, defect) and fracture at the defect.</summary>
         public static RadiusSettings RadiusSettings(Scenario s)
         {
             var r = s.Rope;
             var settings = new RadiusSettings();
-            settings.PoissonEnabled = r.PoissonThinning;
+            settings.PoissonThinning = r.PoissonThinning;
             settings.PoissonRatio = (float)r.PoissonRatio;
-            settings.NeckMode = !r.Necking ? NeckMode.Off : r.NeckMode == "paper" ? NeckMode.Paper : NeckMode.Zone;
-            if (r.Necking) settings.RMinFraction = (float)r.NeckRadiusFraction;
+            settings.NeckMode = r.NeckMode == "paper" ? NeckMode.Paper : NeckMode.Zone;
+            settings.Necking = r.Necking;
+            settings.NeckRadiusFraction = (float)r.NeckRadiusFraction;
             settings.DefectPosition = (float)r.DefectPosition;
-            settings.BreakEnabled = r.Fracture && r.Necking;
+            settings.Fracture = r.Fracture;
+            settings.BreakStrain = (float)r.BreakStrain;
             settings.BreakRadiusFraction = (float)r.BreakRadiusFraction;
             return settings;
         }
@@ -136,22 +137,13 @@ namespace HookeRope.Lab.Simulation
             var setup = Build(s, options.Radius);
             var rope = setup.Rope;
             var result = new RunResult { Scenario = s };
-            int n = rope.SegmentCount;
             int last = rope.ParticleCount - 1;
             double weight = s.End.LoadMass * s.Gravity.Length;
             var down = ScenarioGeometry.DownDirection(s.Gravity);
             var releasePosition = rope.GetPosition(last);
             double lowest = 0, tautDrop = double.NaN;
-            bool broken = false;
-            rope.Broken += e =>
-            {
-                if (double.IsNaN(result.BreakTime))
-                {
-                    result.BreakTime = e.Time;
-                    result.BreakTension = e.Tension;
-                }
-                broken = true;
-            };
+            var readouts = setup.Simulation.Readouts;
+            if (setup.EndLoad >= 0) readouts.ArrestLoad = setup.EndLoad;
             result.InitialEnergy = options.TrackEnergy ? rope.TotalEnergy() : 0;
             result.MaxEnergy = result.InitialEnergy;
             double dt = s.HostStep;
@@ -167,7 +159,7 @@ namespace HookeRope.Lab.Simulation
             var meshTimes = Sorted(s.Outputs.GltfTimes);
             if (options.RecordSamples)
             {
-                result.Samples.Add(Measure(setup, 0, default, options));
+                result.Samples.Add(Measure(setup, 0, options));
                 nextSample = sampleInterval;
             }
             var watch = Stopwatch.StartNew();
@@ -187,16 +179,17 @@ namespace HookeRope.Lab.Simulation
                 }
                 double extent = (load - releasePosition).Length;
                 if (extent > result.MaxExtent) result.MaxExtent = extent;
-                double top = IntactTension(rope, 0);
-                double bottom = IntactTension(rope, n - 1);
+                double top = readouts.TopTension;
+                double bottom = readouts.BottomTension;
                 if (top > result.PeakTopForce) result.PeakTopForce = top;
-                if (setup.EndLoad >= 0)
+                result.PeakLoadForce = readouts.PeakArrestForce;
+                var firstBreak = readouts.FirstBreak;
+                if (firstBreak.HasValue && double.IsNaN(result.BreakTime))
                 {
-                    double f = rope.GetLoadForce(setup.EndLoad).Length;
-                    if (f > result.PeakLoadForce) result.PeakLoadForce = f;
+                    result.BreakTime = firstBreak.Value.Time;
+                    result.BreakTension = firstBreak.Value.Tension;
                 }
-                else if (bottom > result.PeakLoadForce) result.PeakLoadForce = bottom;
-                double elongation = Elongation(rope);
+                double elongation = readouts.Elongation;
                 if (elongation > result.MaxElongation) result.MaxElongation = elongation;
                 double drop = Float3.Dot(load - releasePosition, down);
                 result.LoadDrop[k] = drop;
@@ -212,7 +205,7 @@ namespace HookeRope.Lab.Simulation
                 options.Progress?.Invoke(k);
                 if (options.RecordSamples && t >= nextSample - 1e-9)
                 {
-                    result.Samples.Add(Measure(setup, t, report, options, broken));
+                    result.Samples.Add(Measure(setup, t, options));
                     nextSample += sampleInterval;
                     if (sampleInterval > 0 && nextSample < t) nextSample = t + sampleInterval;
                 }
@@ -279,25 +272,11 @@ namespace HookeRope.Lab.Simulation
             return true;
         }
 
-        /// <summary>Tension of segment <paramref name="segment"/> in N, 0 once it is broken.</summary>
-        static double IntactTension(Rope rope, int segment) => rope.IsSegmentBroken(segment) ? 0 : rope.Tensions[segment];
-
-        /// <summary>Current length of the intact segments minus their rest length, m.</summary>
-        public static double Elongation(Rope rope)
-        {
-            var lengths = rope.SegmentLengths;
-            var rest = rope.RestLengths;
-            double sum = 0;
-            for (int j = 0; j < lengths.Length; j++)
-                if (!rope.IsSegmentBroken(j)) sum += lengths[j] - rest[j];
-            return sum;
-        }
-
-        static Sample Measure(RopeSetup setup, double t, StepReport report, RunOptions options, bool broken = false)
+        static Sample Measure(RopeSetup setup, double t, RunOptions options)
         {
             var rope = setup.Rope;
+            var readouts = setup.Simulation.Readouts;
             int last = rope.ParticleCount - 1;
-            int n = rope.SegmentCount;
             var p = rope.GetPosition(last);
             var v = rope.GetVelocity(last);
             return new Sample
@@ -305,13 +284,13 @@ namespace HookeRope.Lab.Simulation
                 Time = t,
                 X = p.X, Y = p.Y, Z = p.Z,
                 VX = v.X, VY = v.Y, VZ = v.Z,
-                TopTension = IntactTension(rope, 0),
-                BottomTension = IntactTension(rope, n - 1),
-                Elongation = Elongation(rope),
-                MinRadius = setup.Simulation.MinRadius,
-                NeckRadius = setup.Simulation.NeckRadius,
-                Broken = broken,
-                Residual = report.Residual,
+                TopTension = readouts.TopTension,
+                BottomTension = readouts.BottomTension,
+                Elongation = readouts.Elongation,
+                MinRadius = readouts.MinRadius,
+                NeckRadius = readouts.NeckRadius,
+                Broken = readouts.IsBroken,
+                Residual = readouts.Residual,
                 Energy = options.TrackEnergy ? rope.TotalEnergy() : 0,
             };
         }

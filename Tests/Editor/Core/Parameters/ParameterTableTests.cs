@@ -180,6 +180,53 @@ namespace HookeRope.Tests.Core.Parameters
             Assert.That(segments, Is.EqualTo(1));
         }
 
+        static IEnumerable<object> CoreSettings()
+        {
+            yield return new HookeRope.Radius.RadiusSettings();
+            yield return new HookeRope.Geometry.TubeMeshSettings();
+        }
+
+        [Test]
+        public void CoreSettersAcceptTheTableRangeAndNameItOutside()
+        {
+            int checkedRows = 0;
+            foreach (var settings in CoreSettings())
+            {
+                foreach (var row in RopeParameters.All)
+                {
+                    var property = settings.GetType().GetProperty(row.Name, BindingFlags.Public | BindingFlags.Instance);
+                    if (property == null || !property.CanWrite) continue;
+                    if (row.Kind == ParameterKind.Float && property.PropertyType == typeof(float))
+                    {
+                        float low = row.MinExclusive ? NextUp((float)row.Min) : (float)row.Min;
+                        property.SetValue(settings, low);
+                        Assert.That(property.GetValue(settings), Is.EqualTo(low), row.Name);
+                        property.SetValue(settings, (float)row.Max);
+                        float below = row.MinExclusive ? (float)row.Min : NextDown((float)row.Min);
+                        AssertSetterThrows(settings, property, below, row);
+                        AssertSetterThrows(settings, property, NextUp((float)row.Max), row);
+                        checkedRows++;
+                    }
+                    else if (row.Kind == ParameterKind.Int && property.PropertyType == typeof(int))
+                    {
+                        property.SetValue(settings, (int)row.Min);
+                        property.SetValue(settings, (int)row.Max);
+                        AssertSetterThrows(settings, property, (int)row.Min - 1, row);
+                        AssertSetterThrows(settings, property, (int)row.Max + 1, row);
+                        checkedRows++;
+                    }
+                }
+            }
+            Assert.That(checkedRows, Is.EqualTo(10), "RadiusSettings: ν, r_min, defect, zone, growth, break strain, break radius; TubeMeshSettings: radial, rings, v per metre");
+        }
+
+        static void AssertSetterThrows(object settings, PropertyInfo property, object value, ParameterInfo row)
+        {
+            var e = Assert.Throws<TargetInvocationException>(() => property.SetValue(settings, value), row.Name + " = " + value);
+            Assert.That(e.InnerException, Is.TypeOf<ArgumentOutOfRangeException>(), row.Name);
+            Assert.That(e.InnerException.Message, Does.Contain(row.Name).And.Contain(row.RangeText), row.Name);
+        }
+
         static void AssertThrowsNaming(TestDelegate call, ParameterInfo row)
         {
             var e = Assert.Throws<ArgumentOutOfRangeException>(call, row.Name);

@@ -10,7 +10,7 @@ namespace HookeRope.Tests.Solver
     {
         private static Rope Scene(ConstraintSolverKind solver, out int hand)
         {
-            var settings = RopeTestKit.Legacy(length: 3f, segments: 48, solver: solver, damping: 0.001f); settings.BreakStrain = 5f;
+            var settings = RopeTestKit.Legacy(length: 3f, segments: 48, solver: solver, damping: 0.001f);
             var rope = new Rope(settings, new Float3(100f, 2f, -50f), new Float3(103f, 2f, -50f));
             hand = rope.AddPin(0, new Float3(100f, 2f, -50f));
             rope.AddPinAtFraction(1f, new Float3(103f, 2f, -50f), 1e-4f, 5000f);

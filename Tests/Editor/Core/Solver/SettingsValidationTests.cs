@@ -10,30 +10,32 @@ namespace HookeRope.Tests.Solver
     {
         private static IEnumerable<TestCaseData> BadSettings()
         {
-            yield return new TestCaseData(new Action<RopeSettings>(s => s.RestLength = 0f), "RestLength", "(0, 100000] m").SetName("RestLength zero");
-            yield return new TestCaseData(new Action<RopeSettings>(s => s.RestLength = -1f), "RestLength", "(0, 100000] m").SetName("RestLength negative");
-            yield return new TestCaseData(new Action<RopeSettings>(s => s.RestLength = float.NaN), "RestLength", "(0, 100000] m").SetName("RestLength NaN");
-            yield return new TestCaseData(new Action<RopeSettings>(s => s.RestLength = float.PositiveInfinity), "RestLength", "(0, 100000] m").SetName("RestLength infinite");
-            yield return new TestCaseData(new Action<RopeSettings>(s => s.SegmentCount = 0), "SegmentCount", "[1, 10000]").SetName("SegmentCount zero");
-            yield return new TestCaseData(new Action<RopeSettings>(s => s.SegmentCount = 10001), "SegmentCount", "[1, 10000]").SetName("SegmentCount too many");
-            yield return new TestCaseData(new Action<RopeSettings>(s => s.Radius = 0f), "Radius", "(0, 10] m").SetName("Radius zero");
-            yield return new TestCaseData(new Action<RopeSettings>(s => s.Radius = float.NaN), "Radius", "(0, 10] m").SetName("Radius NaN");
-            yield return new TestCaseData(new Action<RopeSettings>(s => s.YoungsModulus = 0f), "YoungsModulus", "(0, +inf] Pa").SetName("YoungsModulus zero");
-            yield return new TestCaseData(new Action<RopeSettings>(s => s.YoungsModulus = float.NaN), "YoungsModulus", "(0, +inf] Pa").SetName("YoungsModulus NaN");
-            yield return new TestCaseData(new Action<RopeSettings>(s => s.AxialStiffness = -5f), "AxialStiffness", "(0, +inf] N").SetName("AxialStiffness negative");
-            yield return new TestCaseData(new Action<RopeSettings>(s => s.LinearDensity = 0f), "LinearDensity", "(0, +inf) kg/m").SetName("LinearDensity zero");
-            yield return new TestCaseData(new Action<RopeSettings>(s => s.LinearDensity = float.PositiveInfinity), "LinearDensity", "(0, +inf) kg/m").SetName("LinearDensity infinite");
-            yield return new TestCaseData(new Action<RopeSettings>(s => s.Density = -1f), "Density", "(0, 1000000] kg/m³").SetName("Density negative");
-            yield return new TestCaseData(new Action<RopeSettings>(s => s.Damping = -0.1f), "Damping", "[0, +inf) s").SetName("Damping negative");
-            yield return new TestCaseData(new Action<RopeSettings>(s => s.Damping = float.NaN), "Damping", "[0, +inf) s").SetName("Damping NaN");
-            yield return new TestCaseData(new Action<RopeSettings>(s => s.Gravity = new Float3(0f, float.NaN, 0f)), "Gravity", "finite").SetName("Gravity NaN");
-            yield return new TestCaseData(new Action<RopeSettings>(s => s.Substeps = 0), "Substeps", "[1, 1000]").SetName("Substeps zero");
-            yield return new TestCaseData(new Action<RopeSettings>(s => s.Iterations = 1001), "Iterations", "[1, 1000]").SetName("Iterations too many");
-            yield return new TestCaseData(new Action<RopeSettings>(s => s.Solver = (ConstraintSolverKind)7), "Solver", "GaussSeidel or ExactChain").SetName("Solver undefined");
-            yield return new TestCaseData(new Action<RopeSettings>(s => s.Tension = (TensionModel)7), "Tension", "TensionOnly or Bilateral").SetName("Tension undefined");
-            yield return new TestCaseData(new Action<RopeSettings>(s => s.BreakStrain = -0.5f), "BreakStrain", "[0, +inf]").SetName("BreakStrain negative");
-            yield return new TestCaseData(new Action<RopeSettings>(s => s.BreakStrain = float.NaN), "BreakStrain", "[0, +inf]").SetName("BreakStrain NaN");
+            yield return Case(s => s.RestLength = 0f, RopeParameters.RestLength.Row, "RestLength zero");
+            yield return Case(s => s.RestLength = -1f, RopeParameters.RestLength.Row, "RestLength negative");
+            yield return Case(s => s.RestLength = float.NaN, RopeParameters.RestLength.Row, "RestLength NaN");
+            yield return Case(s => s.RestLength = float.PositiveInfinity, RopeParameters.RestLength.Row, "RestLength infinite");
+            yield return Case(s => s.SegmentCount = 0, RopeParameters.SegmentCount.Row, "SegmentCount zero");
+            yield return Case(s => s.SegmentCount = 10001, RopeParameters.SegmentCount.Row, "SegmentCount too many");
+            yield return Case(s => s.Radius = 0f, RopeParameters.Radius.Row, "Radius zero");
+            yield return Case(s => s.Radius = float.NaN, RopeParameters.Radius.Row, "Radius NaN");
+            yield return Case(s => s.YoungsModulus = 0f, RopeParameters.YoungsModulus.Row, "YoungsModulus zero");
+            yield return Case(s => s.YoungsModulus = float.NaN, RopeParameters.YoungsModulus.Row, "YoungsModulus NaN");
+            yield return Case(s => s.AxialStiffness = -5f, RopeParameters.AxialStiffness.Row, "AxialStiffness negative");
+            yield return Case(s => s.LinearDensity = 0f, RopeParameters.LinearDensity.Row, "LinearDensity zero");
+            yield return Case(s => s.LinearDensity = float.PositiveInfinity, RopeParameters.LinearDensity.Row, "LinearDensity infinite");
+            yield return Case(s => s.Density = -1f, RopeParameters.Density.Row, "Density negative");
+            yield return Case(s => s.Damping = -0.1f, RopeParameters.Damping.Row, "Damping negative");
+            yield return Case(s => s.Damping = float.NaN, RopeParameters.Damping.Row, "Damping NaN");
+            yield return Case(s => s.Gravity = new Float3(0f, float.NaN, 0f), RopeParameters.Gravity.Row, "Gravity NaN");
+            yield return Case(s => s.Substeps = 0, RopeParameters.Substeps.Row, "Substeps zero");
+            yield return Case(s => s.Iterations = 1001, RopeParameters.Iterations.Row, "Iterations too many");
+            yield return new TestCaseData(new Action<RopeSettings>(s => s.Solver = (ConstraintSolverKind)7), "Solver", "named values").SetName("Solver undefined");
+            yield return new TestCaseData(new Action<RopeSettings>(s => s.Tension = (TensionModel)7), "Tension", "named values").SetName("Tension undefined");
         }
+
+        /// <summary>A bad value of a table parameter: the error names the row and its range and unit.</summary>
+        private static TestCaseData Case(Action<RopeSettings> set, ParameterInfo row, string name) =>
+            new TestCaseData(set, row.Name, row.RangeText).SetName(name);
 
         [TestCaseSource(nameof(BadSettings))]
         public void InvalidSettingThrowsNamingParameterAndRangeAndKeepsTheOldValue(Action<RopeSettings> set, string parameter, string range)
@@ -45,7 +47,7 @@ namespace HookeRope.Tests.Solver
             Assert.That(error.Message, Does.Contain(parameter));
             Assert.That(error.Message, Does.Contain(range));
             Assert.That(settings.Version, Is.EqualTo(version), "a rejected value changes nothing");
-            Assert.That(settings.RestLength, Is.EqualTo(RopeSettings.DefaultRestLength));
+            Assert.That(settings.RestLength, Is.EqualTo(RopeParameters.RestLength.Default));
         }
 
         [Test]
