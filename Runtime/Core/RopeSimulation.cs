@@ -80,7 +80,7 @@ namespace HookeRope
         public int MeshTopologyVersion => mesh.TopologyVersion;
 
         /// <summary>Ring layout of the mesh (refined around the neck zone in Zone mode). Kept for the 0.1 renderer; removed with the issue 12 contract step.</summary>
-        public RingLayout RingLayout => mesh.Layout;
+        internal RingLayout RingLayout => mesh.Layout;
 
         /// <summary>The mesh (layout, builder, ring radii), for the package's own assemblies.</summary>
         internal RopeMesh Mesh => mesh;

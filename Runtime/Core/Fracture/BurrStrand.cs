@@ -6,7 +6,7 @@ namespace HookeRope.Fracture
     /// Shape of one burr strand, drawn deterministically from a seed: a thin three-sided spike standing on the
     /// broken end, one per radial segment (finer radial segments give finer burrs).
     /// </summary>
-    public readonly struct BurrStrand
+    internal readonly struct BurrStrand
     {
         /// <summary>Strand length as a fraction of <see cref="BurrSettings.Length"/> (unitless), in [0.35, 1).</summary>
         public readonly float LengthFraction;

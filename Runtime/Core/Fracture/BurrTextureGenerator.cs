@@ -8,7 +8,7 @@ namespace HookeRope.Fracture
     /// and fibre streaks; outside the triangles the alpha is 0 (use alpha clipping). Output is RGBA32, row 0
     /// first = v = 0 = the bottom row (the order of Unity's Texture2D.LoadRawTextureData).
     /// </summary>
-    public static class BurrTextureGenerator
+    internal static class BurrTextureGenerator
     {
         /// <summary>Largest width or height in pixels.</summary>
         public const int MaxSize = 4096;

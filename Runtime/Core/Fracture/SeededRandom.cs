@@ -4,7 +4,7 @@ namespace HookeRope.Fracture
     /// Deterministic, platform-independent hash-based random numbers (integer arithmetic only), so the
     /// same seed gives the same burr on every machine. Stateless: each value is a hash of its inputs.
     /// </summary>
-    public static class SeededRandom
+    internal static class SeededRandom
     {
         /// <summary>A well-mixed 32-bit hash of a seed and two integer keys (a finalizer of the murmur3 kind).</summary>
         public static uint Hash(uint seed, int keyA, int keyB)

@@ -6,7 +6,7 @@ namespace HookeRope.Geometry
     /// Parallel transport of a ring frame: the normal is rotated by the smallest rotation that takes the old
     /// tangent to the new one, so the tube does not twist; a half-turn reversal keeps the normal.
     /// </summary>
-    public static class FrameTransport
+    internal static class FrameTransport
     {
         /// <summary>
         /// Transports unit <paramref name="normal"/> (perpendicular to unit <paramref name="fromTangent"/>) to a unit

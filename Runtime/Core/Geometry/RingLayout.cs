@@ -7,7 +7,7 @@ namespace HookeRope.Geometry
     /// t = i/RingsIn(j), i = 0 … RingsIn(j) − 1, and one last ring sits at the last particle (t = 1 of the
     /// last segment). Ring k at particle j is <c>FirstRing(j)</c>. Immutable; allocated once.
     /// </summary>
-    public sealed class RingLayout
+    internal sealed class RingLayout
     {
         /// <summary>Largest number of rings in one segment.</summary>
         public const int MaxRingsPerSegment = 1024;

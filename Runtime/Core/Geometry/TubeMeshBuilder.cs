@@ -44,7 +44,7 @@ namespace HookeRope.Geometry
         }
 
         /// <summary>Builder with an explicit ring layout (e.g. refined around the neck zone).</summary>
-        public TubeMeshBuilder(TubeMeshSettings settings, RingLayout layout)
+        internal TubeMeshBuilder(TubeMeshSettings settings, RingLayout layout)
         {
             this.settings = settings ?? throw new ArgumentNullException(nameof(settings));
             this.layout = layout ?? throw new ArgumentNullException(nameof(layout));
@@ -83,7 +83,7 @@ namespace HookeRope.Geometry
         }
 
         /// <summary>The ring layout (ring count and stations).</summary>
-        public RingLayout Layout => layout;
+        internal RingLayout Layout => layout;
 
         /// <summary>Number of rope segments.</summary>
         public int SegmentCount => layout.SegmentCount;

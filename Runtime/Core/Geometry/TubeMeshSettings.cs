@@ -11,11 +11,11 @@ namespace HookeRope.Geometry
     /// </summary>
     public sealed class TubeMeshSettings
     {
-        private int radialSegments = 16;
+        private int radialSegments = RopeParameters.RadialSegments.Default;
         private int ringsPerSegment = RopeParameters.RingsPerSegment.Default;
         private float vPerMetre = RopeParameters.VPerMetre.Default;
 
-        /// <summary>Vertices around the tube, range [3, 64] (the paper shows 8, 16, 32). Default 16.</summary>
+        /// <summary>Vertices around the tube, range [3, 64] (the paper shows 8, 16, 32). Default 12.</summary>
         public int RadialSegments
         {
             get => radialSegments;

@@ -10,20 +10,20 @@ namespace HookeRope.Radius
     /// </summary>
     public sealed class RadiusSettings
     {
-        private float poissonRatio = 0.5f;
-        private float neckRadiusFraction = 0.8f;
-        private bool necking = true;
-        private NeckMode neckMode = NeckMode.Zone;
+        private float poissonRatio = RopeParameters.PoissonRatio.Default;
+        private float neckRadiusFraction = RopeParameters.NeckRadiusFraction.Default;
+        private bool necking = RopeParameters.Necking.Default;
+        private NeckMode neckMode = RopeParameters.NeckMode.Default;
         private float defectPosition = RopeParameters.DefectPosition.Default;
         private float neckZoneDiameters = RopeParameters.NeckZoneDiameters.Default;
         private float neckGrowthStrain = RopeParameters.NeckGrowthStrain.Default;
         private float breakRadiusFraction = RopeParameters.BreakRadiusFraction.Default;
-        private float breakStrain = float.PositiveInfinity;
+        private float breakStrain = RopeParameters.BreakStrain.Default;
 
         /// <summary>Poisson thinning on (eq. 16). Off: every segment keeps the rest radius R and no per-segment work is done. Default true.</summary>
         public bool PoissonThinning { get; set; } = RopeParameters.PoissonThinning.Default;
 
-        /// <summary>Poisson ratio ν (dimensionless), range [−1, 0.5]; 0.5 keeps the volume (rubber). Default 0.5.</summary>
+        /// <summary>Poisson ratio ν (dimensionless), range [−1, 0.5]; 0.5 keeps the volume (rubber). Default 0.3 (the table's).</summary>
         public float PoissonRatio
         {
             get => poissonRatio;
@@ -63,7 +63,7 @@ namespace HookeRope.Radius
             }
         }
 
-        /// <summary>Neck onset radius r_min as a fraction of the rest radius R (dimensionless), range [0.01, 1]. Default 0.8.</summary>
+        /// <summary>Neck onset radius r_min as a fraction of the rest radius R (dimensionless), range [0.01, 1]. Default 0.75.</summary>
         public float NeckRadiusFraction
         {
             get => neckRadiusFraction;
@@ -105,7 +105,7 @@ namespace HookeRope.Radius
 
         /// <summary>
         /// The rope breaks when the strain l/L − 1 of the defect segment reaches this value (dimensionless, the
-        /// elongation at break), range (0, 1000]. Default +∞ (this criterion off) until the 0.2 default change.
+        /// elongation at break), range (0, 1000]. Default 0.6.
         /// </summary>
         public float BreakStrain
         {

@@ -151,7 +151,7 @@ namespace HookeRope.Tests.Core.Geometry
             Assert.That(MeshChecks.AllFiniteAndUnit(vertices, update.VertexCount), Is.True);
             Assert.That(float.IsFinite(update.BoundsMin.X) && float.IsFinite(update.BoundsMax.Y), Is.True);
 
-            var model = new RadiusModel(new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f }, R, shape.Rest);
+            var model = new RadiusModel(new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f, BreakStrain = 1000f }, R, shape.Rest);
             var lengths = new float[12];
             Array.Fill(lengths, 0.06f);
             lengths[3] = float.NaN;

@@ -220,6 +220,25 @@ namespace HookeRope.Tests.Core.Parameters
             Assert.That(checkedRows, Is.EqualTo(10), "RadiusSettings: ν, r_min, defect, zone, growth, break strain, break radius; TubeMeshSettings: radial, rings, v per metre");
         }
 
+        [Test]
+        public void FreshCoreSettingsReadTheTableDefaults()
+        {
+            int checkedRows = 0;
+            foreach (var settings in CoreSettings())
+            {
+                foreach (var row in RopeParameters.All)
+                {
+                    var property = settings.GetType().GetProperty(row.Name, BindingFlags.Public | BindingFlags.Instance);
+                    if (property == null) continue;
+                    object value = property.GetValue(settings);
+                    double actual = value is bool b ? (b ? 1 : 0) : value is Enum ? Convert.ToInt32(value) : Convert.ToDouble(value);
+                    Assert.That(actual, Is.EqualTo(row.Default), settings.GetType().Name + "." + row.Name);
+                    checkedRows++;
+                }
+            }
+            Assert.That(checkedRows, Is.EqualTo(16), "RadiusSettings 12 rows, TubeMeshSettings 4");
+        }
+
         static void AssertSetterThrows(object settings, PropertyInfo property, object value, ParameterInfo row)
         {
             var e = Assert.Throws<TargetInvocationException>(() => property.SetValue(settings, value), row.Name + " = " + value);

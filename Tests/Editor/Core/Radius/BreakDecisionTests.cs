@@ -28,7 +28,7 @@ namespace HookeRope.Tests.Core.Radius
         [Test]
         public void NeckRadiusBelowTheBreakRadiusBreaks()
         {
-            var settings = new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f, NeckMode = NeckMode.Zone, BreakRadiusFraction = 0.25f };
+            var settings = new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f, NeckMode = NeckMode.Zone, BreakRadiusFraction = 0.25f, BreakStrain = 1000f };
             var rest = new float[8];
             Array.Fill(rest, 0.05f);
             var model = new RadiusModel(settings, R, rest);

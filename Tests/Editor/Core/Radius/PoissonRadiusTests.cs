@@ -107,7 +107,7 @@ namespace HookeRope.Tests.Core.Radius
                 rest[j] = 0.2f;
                 current[j] = 0.2f * (1f + 0.3f * (n - j - 0.5f) / n);
             }
-            var model = new RadiusModel(new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f, Necking = false }, 0.01f, rest);
+            var model = new RadiusModel(new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f, Necking = false, BreakStrain = 1000f }, 0.01f, rest);
             model.Update(current, ReadOnlySpan<bool>.Empty);
             for (int i = 1; i <= n; i++)
                 Assert.That(model.ParticleRadii[i], Is.GreaterThan(model.ParticleRadii[i - 1]));

@@ -13,7 +13,7 @@ namespace HookeRope.Tests.Core.Radius
         [TestCase(float.PositiveInfinity)]
         public void PoissonRatioOutsideRangeThrows(float value)
         {
-            var e = Assert.Throws<ArgumentOutOfRangeException>(() => new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f }.PoissonRatio = value);
+            var e = Assert.Throws<ArgumentOutOfRangeException>(() => new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f, BreakStrain = 1000f }.PoissonRatio = value);
             Assert.That(e.ParamName, Is.EqualTo("PoissonRatio"));
             Assert.That(e.Message, Does.Contain("[-1, 0.5]"));
         }
@@ -32,7 +32,7 @@ namespace HookeRope.Tests.Core.Radius
         [Test]
         public void OtherParametersNameThemselvesAndTheirRange()
         {
-            var s = new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f };
+            var s = new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f, BreakStrain = 1000f };
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.DefectPosition = 1.5f).Message, Does.Contain("DefectPosition").And.Contain("[0, 1]"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.NeckZoneDiameters = 0.1f).Message, Does.Contain("NeckZoneDiameters").And.Contain("[0.5, 1000]"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.NeckGrowthStrain = 0f).Message, Does.Contain("NeckGrowthStrain").And.Contain("(0, 100]"));
@@ -45,12 +45,12 @@ namespace HookeRope.Tests.Core.Radius
         }
 
         [Test]
-        public void DefaultsAreTheLegacyCoreValues()
+        public void DefaultsAreTheTableValues()
         {
-            // Pinned until the core defaults move to the RopeParameters table (issue 12 contract step).
+            // The component's values (RopeParameters); the 0.1 core had ν 0.5, r_min 0.8 R and no strain criterion.
             var s = new RadiusSettings();
-            Assert.That(s.PoissonRatio, Is.EqualTo(0.5f));
-            Assert.That(s.NeckRadiusFraction, Is.EqualTo(0.8f));
+            Assert.That(s.PoissonRatio, Is.EqualTo(0.3f));
+            Assert.That(s.NeckRadiusFraction, Is.EqualTo(0.75f));
             Assert.That(s.PoissonThinning, Is.True);
             Assert.That(s.Necking, Is.True);
             Assert.That(s.Fracture, Is.True);
@@ -59,7 +59,7 @@ namespace HookeRope.Tests.Core.Radius
             Assert.That(s.NeckZoneDiameters, Is.EqualTo(4f));
             Assert.That(s.NeckGrowthStrain, Is.EqualTo(0.2f));
             Assert.That(s.BreakRadiusFraction, Is.EqualTo(0.25f));
-            Assert.That(s.BreakStrain, Is.EqualTo(float.PositiveInfinity));
+            Assert.That(s.BreakStrain, Is.EqualTo(0.6f));
         }
 
         [Test]
@@ -97,7 +97,7 @@ namespace HookeRope.Tests.Core.Radius
             var current = new float[200];
             Array.Fill(rest, 0.01f);
             Array.Fill(current, 0.016f);
-            var model = new RadiusModel(new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f }, 0.004f, rest);
+            var model = new RadiusModel(new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f, BreakStrain = 1000f }, 0.004f, rest);
             var broken = new bool[200];
             var radii = new float[201];
             var segments = new int[201];

@@ -190,7 +190,7 @@ namespace HookeRope.Tests.Core.Simulation
         public void FillMeshInTheCallersFrameEqualsTheRopeLocalMeshShifted()
         {
             var settings = Soft(1f, 12, 300f, 0.2f);
-            var sim = new RopeSimulation(settings, new Float3(1f, 2f, 3f), new Float3(2f, 1.5f, 3f), new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f });
+            var sim = new RopeSimulation(settings, new Float3(1f, 2f, 3f), new Float3(2f, 1.5f, 3f), new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f, BreakStrain = 1000f });
             sim.Rope.AddPin(0, new Float3(1f, 2f, 3f));
             for (int i = 0; i < 20; i++) sim.Step(Step);
             sim.Rope.BreakSegment(5);
