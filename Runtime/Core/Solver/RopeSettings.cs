@@ -46,35 +46,13 @@ namespace HookeRope.Solver
         public float YoungsModulus { get => youngsModulus; set => Set(ref youngsModulus, value, RopeParameters.YoungsModulus.Row); }
 
         /// <summary>Axial stiffness E·A in newtons, in (0, 1e12] or +inf (<see cref="RopeParameters.AxialStiffness"/>); setting it sets E = (E·A)/(π·R²).</summary>
-        public float AxialStiffness
-        {
-            get => youngsModulus * Area;
-            set
-            {
-                RopeParameters.Check(value, RopeParameters.AxialStiffness.Row);
-                float e = value / Area;
-                if (!(e > 0f)) throw new ArgumentOutOfRangeException(nameof(AxialStiffness), value, "AxialStiffness must be in (0, +inf] N (too small for the radius)");
-                youngsModulus = e;
-                Version++;
-            }
-        }
+        public float AxialStiffness { get => youngsModulus * Area; set => SetPerArea(ref youngsModulus, value, RopeParameters.AxialStiffness.Row); }
 
         /// <summary>Material density ρ in kg/m³, in (0, 1e5] (<see cref="RopeParameters.Density"/>). Default 1140 kg/m³. Sets the linear density ρ·π·R².</summary>
         public float Density { get => density; set => Set(ref density, value, RopeParameters.Density.Row); }
 
         /// <summary>Mass per unit rest length μ in kg/m, in (0, 1e4] (<see cref="RopeParameters.LinearDensity"/>); setting it sets ρ = μ/(π·R²).</summary>
-        public float LinearDensity
-        {
-            get => density * Area;
-            set
-            {
-                RopeParameters.Check(value, RopeParameters.LinearDensity.Row);
-                float rho = value / Area;
-                if (!(rho > 0f) || !float.IsFinite(rho)) throw new ArgumentOutOfRangeException(nameof(LinearDensity), value, "LinearDensity must be finite and in (0, +inf) kg/m (out of range for the radius)");
-                density = rho;
-                Version++;
-            }
-        }
+        public float LinearDensity { get => density * Area; set => SetPerArea(ref density, value, RopeParameters.LinearDensity.Row); }
 
         /// <summary>
         /// XPBD constraint damping β in seconds, in [0, 10] (Macklin 2016, eq. 26): a dashpot of
@@ -133,6 +111,20 @@ namespace HookeRope.Solver
         private void Set(ref int field, int value, ParameterInfo row)
         {
             field = RopeParameters.Check(value, row);
+            Version++;
+        }
+
+        /// <summary>
+        /// Sets a material value from its per-length view (E·A → E, μ → ρ): <paramref name="value"/>/(π·R²) after the row's
+        /// check; throws naming the row when the radius makes the quotient 0 or overflow a finite value.
+        /// </summary>
+        private void SetPerArea(ref float field, float value, ParameterInfo row)
+        {
+            RopeParameters.Check(value, row);
+            float perArea = value / Area;
+            if (!(perArea > 0f) || (float.IsPositiveInfinity(perArea) && float.IsFinite(value)))
+                throw new ArgumentOutOfRangeException(row.Name, value, row.Name + " must be in " + row.RangeText + " (out of range for the radius " + radius + " m).");
+            field = perArea;
             Version++;
         }
 
