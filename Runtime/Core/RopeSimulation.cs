@@ -79,9 +79,6 @@ namespace HookeRope
         /// <summary>Incremented whenever the mesh topology changes (a break, new mesh settings): re-query the buffer sizes and re-upload the indices.</summary>
         public int MeshTopologyVersion => mesh.TopologyVersion;
 
-        /// <summary>Ring layout of the mesh (refined around the neck zone in Zone mode). Kept for the 0.1 renderer; removed with the issue 12 contract step.</summary>
-        internal RingLayout RingLayout => mesh.Layout;
-
         /// <summary>The mesh (layout, builder, ring radii), for the package's own assemblies.</summary>
         internal RopeMesh Mesh => mesh;
 
@@ -153,11 +150,8 @@ namespace HookeRope
         /// <see cref="FillMesh(ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{float}, TubeVertex[], int[], float)"/>
         /// through the rope's own positions: vertices in the rope-local frame (world = <see cref="Solver.Rope.Origin"/> + v).
         /// </summary>
-        public TubeMeshUpdate FillMesh(TubeVertex[] vertices, int[] indices)
-        {
-            TubeMeshUpdate u = mesh.Fill(Rope.PositionX, Rope.PositionY, Rope.PositionZ, vertices, indices, 1f);
-            return new TubeMeshUpdate(u.VertexCount, u.IndexCount, u.TubeIndexCount, u.TopologyChanged, Rope.Origin, u.BoundsMin, u.BoundsMax);
-        }
+        public TubeMeshUpdate FillMesh(TubeVertex[] vertices, int[] indices) =>
+            mesh.Fill(Rope.PositionX, Rope.PositionY, Rope.PositionZ, vertices, indices, 1f);
 
         private void OnRopeBroken(RopeBreakEvent e)
         {

@@ -78,7 +78,7 @@ namespace HookeRope.Geometry
             TubeMeshSettings s = Settings;
             RadiusSettings r = simulation.RadiusSettings;
             RadiusModel model = simulation.RadiusModel;
-            bool zoneNeck = r != null && r.Necking && r.Mode == NeckMode.Zone && model != null;
+            bool zoneNeck = r != null && r.Necking && r.NeckMode == NeckMode.Zone && model != null;
             float defectPosition = r == null ? 0f : r.DefectPosition;
             float zoneDiameters = r == null ? 0f : r.NeckZoneDiameters;
             if (builder != null

@@ -11,7 +11,7 @@ namespace HookeRope.Geometry
     /// relative to the first particle. The index buffer is rewritten only when the topology changes (first build,
     /// a newly broken segment, another index array). Allocation-free after construction.
     /// </summary>
-    public sealed class TubeMeshBuilder
+    internal sealed class TubeMeshBuilder
     {
         private const float InnerStrandRadius = 0.45f;
         private const float MaxSlope = 10f;
@@ -208,7 +208,7 @@ namespace HookeRope.Geometry
             if (vertexCount == 0) bounds = new Bounds(false);
             else { bounds.Min = bounds.Min + origin; bounds.Max = bounds.Max + origin; }
             return new TubeMeshUpdate(vertexCount, tubeIndexCount + burrIndexCount, tubeIndexCount, topologyChanged,
-                Float3.Zero, bounds.Min, bounds.Max);
+                bounds.Min, bounds.Max);
         }
 
         /// <summary>

@@ -2,7 +2,7 @@ using HookeRope.Mathematics;
 
 namespace HookeRope.Geometry
 {
-    /// <summary>What one <see cref="TubeMeshBuilder"/> build wrote.</summary>
+    /// <summary>What one <see cref="RopeSimulation.FillMesh(System.ReadOnlySpan{float}, System.ReadOnlySpan{float}, System.ReadOnlySpan{float}, TubeVertex[], int[], float)"/> wrote; positions and bounds are in the frame of the input positions.</summary>
     public readonly struct TubeMeshUpdate
     {
         /// <summary>Vertices written (a prefix of the vertex buffer).</summary>
@@ -15,27 +15,18 @@ namespace HookeRope.Geometry
         public readonly int BurrIndexCount;
         /// <summary>True when the index buffer was rewritten by this build (first build, break, new buffer).</summary>
         public readonly bool TopologyChanged;
-        /// <summary>
-        /// Offset in metres to add to the vertex positions and bounds to reach the world frame: zero from
-        /// <see cref="TubeMeshBuilder"/> and the span overload of RopeSimulation.FillMesh (vertices are in the input
-        /// frame), <see cref="HookeRope.Solver.Rope.Origin"/> from RopeSimulation.FillMesh(vertices, indices). Removed with
-        /// the issue 12 contract step.
-        /// </summary>
-        public readonly Float3 Origin;
         /// <summary>Lower corner in metres (in the frame of the vertices) of a box holding every vertex (tight to within the ring polygons' circumcircles).</summary>
         public readonly Float3 BoundsMin;
         /// <summary>Upper corner in metres (in the frame of the vertices) of a box holding every vertex.</summary>
         public readonly Float3 BoundsMax;
 
-        /// <summary>Creates the report.</summary>
-        public TubeMeshUpdate(int vertexCount, int indexCount, int tubeIndexCount, bool topologyChanged, Float3 origin, Float3 boundsMin, Float3 boundsMax)
+        internal TubeMeshUpdate(int vertexCount, int indexCount, int tubeIndexCount, bool topologyChanged, Float3 boundsMin, Float3 boundsMax)
         {
             VertexCount = vertexCount;
             IndexCount = indexCount;
             TubeIndexCount = tubeIndexCount;
             BurrIndexCount = indexCount - tubeIndexCount;
             TopologyChanged = topologyChanged;
-            Origin = origin;
             BoundsMin = boundsMin;
             BoundsMax = boundsMax;
         }

@@ -1,11 +1,11 @@
 namespace HookeRope.Radius
 {
-    /// <summary>How the rope necks at its defect once the Poisson radius there falls below r_min.</summary>
+    /// <summary>
+    /// How the rope necks at its defect once the Poisson radius there falls below r_min (when
+    /// <see cref="RadiusSettings.Necking"/> is on). The values are serialized (prefab <c>m_NeckMode: 2</c>): keep them.
+    /// </summary>
     public enum NeckMode
     {
-        /// <summary>No neck: the radius is the Poisson radius everywhere (no per-step neck work).</summary>
-        Off = 0,
-
         /// <summary>
         /// Chen et al. 2022, eq. 18: one hyperbola over the whole current length, defect in the middle.
         /// At onset the middle radius jumps to about 2·r_min²/l, which is a hair on a long thin rope.

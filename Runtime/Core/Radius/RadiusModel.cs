@@ -165,7 +165,7 @@ namespace HookeRope.Radius
                 if (r < smallest) smallest = r;
             }
             neckRadius = RadiusAt(defectSegment, defectT);
-            if (s.Necking && s.Mode == NeckMode.Paper && paperNecking) neckRadius = Math.Min(neckRadius, paperWaist);
+            if (s.Necking && s.NeckMode == NeckMode.Paper && paperNecking) neckRadius = Math.Min(neckRadius, paperWaist);
             minRadius = Math.Min(smallest, neckRadius);
             DecideBreak();
         }
@@ -181,7 +181,7 @@ namespace HookeRope.Radius
             if (t < 0f) t = 0f; else if (t > 1f) t = 1f;
             float baseRadius = baseParticleRadii[segment] + (baseParticleRadii[segment + 1] - baseParticleRadii[segment]) * t;
             if (neckDepth <= 0f) return baseRadius;
-            if (Settings.Mode == NeckMode.Zone)
+            if (Settings.NeckMode == NeckMode.Zone)
             {
                 float zone = NeckZoneRestLength;
                 float s = restArc[segment] + (restArc[segment + 1] - restArc[segment]) * t;
@@ -191,7 +191,7 @@ namespace HookeRope.Radius
                 if (profile > 1f) profile = 1f;
                 return baseRadius * (1f - neckDepth * (1f - profile));
             }
-            if (Settings.Mode == NeckMode.Paper && paperNecking)
+            if (Settings.NeckMode == NeckMode.Paper && paperNecking)
             {
                 float c = currentArc[segment] + (currentArc[segment + 1] - currentArc[segment]) * t;
                 float y = c - paperCenter;
@@ -220,7 +220,7 @@ namespace HookeRope.Radius
             broken = true;
             breakReason = BreakReason.None;
             paperNecking = false;
-            if (Settings.Mode == NeckMode.Paper) neckDepth = 0f;
+            if (Settings.NeckMode == NeckMode.Paper) neckDepth = 0f;
         }
 
         private void SmoothToParticles(ReadOnlySpan<bool> brokenSegments)
@@ -243,7 +243,7 @@ namespace HookeRope.Radius
         private void LocateDefect()
         {
             int n = segmentRadii.Length;
-            float position = Settings.Necking && Settings.Mode == NeckMode.Paper ? 0.5f : Settings.DefectPosition;
+            float position = Settings.Necking && Settings.NeckMode == NeckMode.Paper ? 0.5f : Settings.DefectPosition;
             float target = position * restArc[n];
             int j = 0;
             while (j < n - 1 && restArc[j + 1] <= target) j++;
@@ -262,7 +262,7 @@ namespace HookeRope.Radius
             double strain = segmentStretch[defectSegment] - 1.0;
             double onset = PoissonRadius.StrainAtRatio(s.NeckRadiusFraction, s.PoissonRatio);
             float rMin = s.NeckRadiusFraction * restRadius;
-            if (s.Mode == NeckMode.Zone)
+            if (s.NeckMode == NeckMode.Zone)
             {
                 double depth = (strain - onset) / s.NeckGrowthStrain;
                 neckDepth = depth > 0.0 ? (depth < 1.0 ? (float)depth : 1f) : 0f;

@@ -44,22 +44,15 @@ namespace HookeRope.Radius
             set => necking = value;
         }
 
-        /// <summary>
-        /// Neck model used when <see cref="Necking"/> is on: <see cref="HookeRope.Radius.NeckMode.Zone"/> (default) or
-        /// Paper. Reads <see cref="HookeRope.Radius.NeckMode.Off"/> while necking is off. Setting Off turns necking off;
-        /// setting Paper or Zone turns it on (the 0.1 meaning, kept until Off is removed; set <see cref="Necking"/>
-        /// after the mode).
-        /// </summary>
+        /// <summary>Neck model used when <see cref="Necking"/> is on: <see cref="HookeRope.Radius.NeckMode.Zone"/> (default) or Paper.</summary>
         public NeckMode NeckMode
         {
-            get => necking ? neckMode : NeckMode.Off;
+            get => neckMode;
             set
             {
-                if (value == NeckMode.Off) { necking = false; return; }
                 if (value != NeckMode.Paper && value != NeckMode.Zone)
                     throw new ArgumentOutOfRangeException(nameof(NeckMode), value, "NeckMode must be Paper or Zone (turn necking off with Necking = false).");
                 neckMode = value;
-                necking = true;
             }
         }
 
@@ -123,26 +116,7 @@ namespace HookeRope.Radius
             set => breakRadiusFraction = RopeParameters.Check(value, RopeParameters.BreakRadiusFraction.Row);
         }
 
-        /// <summary>Old name of <see cref="PoissonThinning"/> (removed with the issue 12 contract step).</summary>
-        public bool PoissonEnabled { get => PoissonThinning; set => PoissonThinning = value; }
-
-        /// <summary>Old name of <see cref="NeckRadiusFraction"/> (removed with the issue 12 contract step).</summary>
-        public float RMinFraction { get => NeckRadiusFraction; set => NeckRadiusFraction = value; }
-
-        /// <summary>Old name of <see cref="Fracture"/> (removed with the issue 12 contract step).</summary>
-        public bool BreakEnabled { get => Fracture; set => Fracture = value; }
-
-        /// <summary>Old name of <see cref="BreakStrain"/>, which also accepts +∞ (criterion off); removed with the issue 12 contract step.</summary>
-        public float BreakElongation
-        {
-            get => breakStrain;
-            set => breakStrain = float.IsPositiveInfinity(value) ? value : RopeParameters.Check(value, RopeParameters.BreakStrain.Row);
-        }
-
         /// <summary>True when any part (thinning, neck, fracture) is on; when false the model does no per-step work.</summary>
         public bool AnyEnabled => PoissonThinning || necking || Fracture;
-
-        /// <summary>The neck mode whether or not necking is on (Paper or Zone).</summary>
-        internal NeckMode Mode => neckMode;
     }
 }

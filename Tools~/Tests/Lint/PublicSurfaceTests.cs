@@ -27,15 +27,12 @@ namespace HookeRope.Tests.Lint
             "HookeRope.Mathematics.Float3", "HookeRope.Mathematics.Quat",
         };
 
-        // Still public until the lab's bench times RopeSimulation.FillMesh instead (issue 12, A4); then internal.
-        static readonly string[] s_Transitional = { "HookeRope.Geometry.TubeMeshBuilder" };
-
         [Test]
         public void CoreExportsExactlyTheAgreedTypes()
         {
             var exported = typeof(RopeSimulation).Assembly.GetExportedTypes()
                 .Where(t => !t.IsNested).Select(t => t.FullName).OrderBy(n => n).ToList();
-            var expected = s_Expected.Concat(s_Transitional.Where(exported.Contains)).OrderBy(n => n).ToList();
+            var expected = s_Expected.OrderBy(n => n).ToList();
             Assert.That(exported, Is.EqualTo(expected), "exported: " + string.Join(", ", exported));
         }
 

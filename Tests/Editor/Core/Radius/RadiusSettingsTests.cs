@@ -63,19 +63,14 @@ namespace HookeRope.Tests.Core.Radius
         }
 
         [Test]
-        public void OldNamesForwardToTheNewOnes()
+        public void NeckModeIsPaperOrZoneAndNeckingIsItsOwnSwitch()
         {
-            var s = new RadiusSettings { PoissonEnabled = false, RMinFraction = 0.7f, BreakEnabled = false, BreakElongation = 0.4f };
-            Assert.That(s.PoissonThinning, Is.False);
-            Assert.That(s.NeckRadiusFraction, Is.EqualTo(0.7f));
-            Assert.That(s.Fracture, Is.False);
-            Assert.That(s.BreakStrain, Is.EqualTo(0.4f));
-            s.NeckMode = NeckMode.Off;
+            var s = new RadiusSettings { NeckMode = NeckMode.Paper, Necking = false };
+            Assert.That(s.NeckMode, Is.EqualTo(NeckMode.Paper), "the mode is kept while necking is off");
             Assert.That(s.Necking, Is.False);
-            Assert.That(s.NeckMode, Is.EqualTo(NeckMode.Off));
-            s.NeckMode = NeckMode.Paper;
-            Assert.That(s.Necking, Is.True);
-            Assert.That(s.NeckMode, Is.EqualTo(NeckMode.Paper));
+            Assert.That((int)NeckMode.Paper, Is.EqualTo(1), "serialized value");
+            Assert.That((int)NeckMode.Zone, Is.EqualTo(2), "serialized value (prefab m_NeckMode: 2)");
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.NeckMode = (NeckMode)0).ParamName, Is.EqualTo("NeckMode"));
         }
 
         [Test]
