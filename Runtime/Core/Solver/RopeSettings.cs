@@ -31,35 +31,19 @@ namespace HookeRope.Solver
         public int Version { get; private set; }
 
         /// <summary>Unstretched length of the whole rope in metres, in [0.01, 10000] (<see cref="RopeParameters.RestLength"/>). Default 2 m.</summary>
-        public float RestLength
-        {
-            get => restLength;
-            set { restLength = RopeParameters.Check(value, RopeParameters.RestLength.Row); Version++; }
-        }
+        public float RestLength { get => restLength; set => Set(ref restLength, value, RopeParameters.RestLength.Row); }
 
         /// <summary>Number of segments (particles = segments + 1), in [1, 10000]. Default 24. Read when a rope is built.</summary>
-        public int SegmentCount
-        {
-            get => segmentCount;
-            set { segmentCount = RopeParameters.Check(value, RopeParameters.SegmentCount.Row); Version++; }
-        }
+        public int SegmentCount { get => segmentCount; set => Set(ref segmentCount, value, RopeParameters.SegmentCount.Row); }
 
         /// <summary>Rest radius R of the rope in metres, in (0, 1] (<see cref="RopeParameters.Radius"/>). Default 0.008 m. Keeps E and ρ; rescales E·A and linear density.</summary>
-        public float Radius
-        {
-            get => radius;
-            set { radius = RopeParameters.Check(value, RopeParameters.Radius.Row); Version++; }
-        }
+        public float Radius { get => radius; set => Set(ref radius, value, RopeParameters.Radius.Row); }
 
         /// <summary>Cross-section area π·R² in square metres.</summary>
         public float Area => MathF.PI * radius * radius;
 
         /// <summary>Young's modulus E in pascals, in (0, 1e13] or +inf = inextensible (<see cref="RopeParameters.YoungsModulus"/>). Default 1.5e8 Pa.</summary>
-        public float YoungsModulus
-        {
-            get => youngsModulus;
-            set { youngsModulus = RopeParameters.Check(value, RopeParameters.YoungsModulus.Row); Version++; }
-        }
+        public float YoungsModulus { get => youngsModulus; set => Set(ref youngsModulus, value, RopeParameters.YoungsModulus.Row); }
 
         /// <summary>Axial stiffness E·A in newtons, in (0, 1e12] or +inf (<see cref="RopeParameters.AxialStiffness"/>); setting it sets E = (E·A)/(π·R²).</summary>
         public float AxialStiffness
@@ -76,11 +60,7 @@ namespace HookeRope.Solver
         }
 
         /// <summary>Material density ρ in kg/m³, in (0, 1e5] (<see cref="RopeParameters.Density"/>). Default 1140 kg/m³. Sets the linear density ρ·π·R².</summary>
-        public float Density
-        {
-            get => density;
-            set { density = RopeParameters.Check(value, RopeParameters.Density.Row); Version++; }
-        }
+        public float Density { get => density; set => Set(ref density, value, RopeParameters.Density.Row); }
 
         /// <summary>Mass per unit rest length μ in kg/m, in (0, 1e4] (<see cref="RopeParameters.LinearDensity"/>); setting it sets ρ = μ/(π·R²).</summary>
         public float LinearDensity
@@ -101,11 +81,7 @@ namespace HookeRope.Solver
         /// β·k in parallel with each segment of stiffness k. Removes vibration energy without moving
         /// the static solution. Default 0.002 s.
         /// </summary>
-        public float Damping
-        {
-            get => damping;
-            set { damping = RopeParameters.Check(value, RopeParameters.Damping.Row); Version++; }
-        }
+        public float Damping { get => damping; set => Set(ref damping, value, RopeParameters.Damping.Row); }
 
         /// <summary>Gravity acceleration in m/s², each component in [−1000, 1000]. Default (0, −9.81, 0).</summary>
         public Float3 Gravity
@@ -113,27 +89,18 @@ namespace HookeRope.Solver
             get => gravity;
             set
             {
-                RopeParameters.Check(value.X, RopeParameters.Gravity.Row);
-                RopeParameters.Check(value.Y, RopeParameters.Gravity.Row);
-                RopeParameters.Check(value.Z, RopeParameters.Gravity.Row);
+                ParameterInfo row = RopeParameters.Gravity.Row;
+                RopeParameters.Check(value.X, row); RopeParameters.Check(value.Y, row); RopeParameters.Check(value.Z, row);
                 gravity = value;
                 Version++;
             }
         }
 
         /// <summary>Substeps per host step, in [1, 1000]. Default 8.</summary>
-        public int Substeps
-        {
-            get => substeps;
-            set { substeps = RopeParameters.Check(value, RopeParameters.Substeps.Row); Version++; }
-        }
+        public int Substeps { get => substeps; set => Set(ref substeps, value, RopeParameters.Substeps.Row); }
 
         /// <summary>Constraint iterations per substep, in [1, 1000]. Default 1.</summary>
-        public int Iterations
-        {
-            get => iterations;
-            set { iterations = RopeParameters.Check(value, RopeParameters.Iterations.Row); Version++; }
-        }
+        public int Iterations { get => iterations; set => Set(ref iterations, value, RopeParameters.Iterations.Row); }
 
         /// <summary>Constraint solver. Default <see cref="ConstraintSolverKind.ExactChain"/>.</summary>
         public ConstraintSolverKind Solver
@@ -155,6 +122,18 @@ namespace HookeRope.Solver
             var copy = (RopeSettings)MemberwiseClone();
             copy.Version = 0;
             return copy;
+        }
+
+        private void Set(ref float field, float value, ParameterInfo row)
+        {
+            field = RopeParameters.Check(value, row);
+            Version++;
+        }
+
+        private void Set(ref int field, int value, ParameterInfo row)
+        {
+            field = RopeParameters.Check(value, row);
+            Version++;
         }
 
         private static void CheckChoice(int value, int first, int second, string name)
