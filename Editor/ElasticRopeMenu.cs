@@ -4,7 +4,7 @@ using UnityEngine;
 namespace HookeRope.Editor
 {
     /// <summary>GameObject &gt; 3D Object &gt; Elastic Rope: a ready rope between two new anchor objects, with Undo.</summary>
-    public static class ElasticRopeMenu
+    internal static class ElasticRopeMenu
     {
         /// <summary>Menu path of the create item.</summary>
         public const string MenuPath = "GameObject/3D Object/Elastic Rope";

@@ -3,7 +3,7 @@ using UnityEngine;
 namespace HookeRope.Editor
 {
     /// <summary>Colour map for segment tension in the scene gizmos: blue (slack) → green → yellow → red (at the reference tension).</summary>
-    public static class TensionColorMap
+    internal static class TensionColorMap
     {
         static readonly Color Slack = new Color(0.2f, 0.4f, 1f);
         static readonly Color Low = new Color(0.1f, 0.9f, 0.3f);

@@ -134,8 +134,8 @@ namespace HookeRope
 
         /// <summary>
         /// Advances the rope by <paramref name="deltaTime"/> seconds: copies attachment and collider poses in,
-        /// steps the solver (substeps inside), applies the rope's forces to attached Rigidbodies and updates
-        /// the read-outs. FixedUpdate calls it with Time.fixedDeltaTime; call it yourself in edit-mode code.
+        /// steps the core simulation (substeps inside; it updates the read-outs), applies the rope's forces to attached
+        /// Rigidbodies and raises <see cref="OnBreak"/> on the first break. FixedUpdate calls it with Time.fixedDeltaTime; call it yourself in edit-mode code.
         /// </summary>
         public void Simulate(float deltaTime)
         {
@@ -239,6 +239,5 @@ namespace HookeRope
         /// </summary>
         internal RopeSimulation CreateDetachedSimulation(out Vector3 origin) =>
             BuildSimulation(new RopeSettings(), new RopeAttachmentBinding(), radiusSettings: null, out origin);
-
     }
 }
