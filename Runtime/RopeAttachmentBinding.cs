@@ -75,7 +75,7 @@ namespace HookeRope
             }
             else if (load >= 0 && end.Body != null)
             {
-                Vector3 point = end.WorldPosition(end.Body.position);
+                Vector3 point = end.PhysicsPosition();
                 rope.SetLoadState(load, point.RelativeTo(origin), end.Body.GetPointVelocity(point).ToFloat3());
             }
         }
@@ -90,7 +90,7 @@ namespace HookeRope
             velocityCorrection = Vector3.zero;
             if (load < 0 || end.Body == null || end.Body.isKinematic) return;
             Vector3 force = rope.GetLoadHostForce(load).ToVector3();
-            end.Body.AddForceAtPosition(force, end.WorldPosition(end.Body.position), ForceMode.Force);
+            end.Body.AddForceAtPosition(force, end.PhysicsPosition(), ForceMode.Force);
             velocityCorrection = rope.GetLoadHostVelocityCorrection(load).ToVector3();
         }
 

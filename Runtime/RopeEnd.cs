@@ -27,6 +27,26 @@ namespace HookeRope
         /// <summary>What the end is attached to, derived from which fields are set.</summary>
         public RopeEndKind Kind => m_Body != null ? RopeEndKind.Rigidbody : m_Point != null ? RopeEndKind.Transform : RopeEndKind.Free;
 
+        /// <summary>
+        /// World position (m) of the attachment as it is drawn this frame: the Point's Transform, else the body's
+        /// Transform (interpolated by Unity when the body interpolates). Only for attached ends.
+        /// </summary>
+        internal Vector3 DrawnPosition() => m_Point != null ? m_Point.position : m_Body.transform.position;
+
+        /// <summary>
+        /// World position (m) of a Rigidbody attachment in the physics pose (Rigidbody.position and rotation, not the
+        /// possibly interpolated Transform): the Point carried rigidly with the body, else the body's position. For a
+        /// Transform end, the Point's position.
+        /// </summary>
+        internal Vector3 PhysicsPosition()
+        {
+            if (m_Body == null) return m_Point.position;
+            if (m_Point == null) return m_Body.position;
+            var bodyTransform = m_Body.transform;
+            var local = Quaternion.Inverse(bodyTransform.rotation) * (m_Point.position - bodyTransform.position);
+            return m_Body.position + m_Body.rotation * local;
+        }
+
         /// <summary>World position of the attachment in metres, or <paramref name="fallback"/> for a free end.</summary>
         public Vector3 WorldPosition(Vector3 fallback)
         {

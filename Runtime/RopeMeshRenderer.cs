@@ -152,6 +152,14 @@ namespace HookeRope
             }
             rope.Interpolate(alpha, _x, _y, _z);
             Vector3 origin = _rope.SimulationOrigin + rope.Origin.ToVector3();
+            // the attachments are drawn at their live poses: put the rope's ends on them (the interior follows smoothly)
+            var start = _rope.StartAttachment;
+            var end = _rope.EndAttachment;
+            bool startHeld = start.Kind != RopeEndKind.Free, endHeld = end.Kind != RopeEndKind.Free;
+            int last = particles - 1;
+            var startOffset = startHeld ? (start.DrawnPosition() - origin - new Vector3(_x[0], _y[0], _z[0])).ToFloat3() : default;
+            var endOffset = endHeld ? (end.DrawnPosition() - origin - new Vector3(_x[last], _y[last], _z[last])).ToFloat3() : default;
+            if (startHeld || endHeld) EndAlignment.Apply(_x, _y, _z, rope.BrokenSegments, startHeld, startOffset, endHeld, endOffset);
             var frame = transform;
             for (int i = 0; i < particles; i++)
             {
