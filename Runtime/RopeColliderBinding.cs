@@ -22,7 +22,8 @@ namespace HookeRope
         Transform[] _planeSource = Array.Empty<Transform>();
         float _friction;
         RopeEnd _start, _end;
-        UnityEngine.Object _context;
+        Component _owner;
+        Transform _self;
         Collider[] _overlapBuffer;
 
         Collider[] _colliders = Array.Empty<Collider>();
@@ -36,11 +37,12 @@ namespace HookeRope
         /// Replaces the rope's colliders with those of <paramref name="mode"/>: none (Off), <paramref name="colliders"/>
         /// (Listed Colliders) or the colliders on <paramref name="layers"/> within <paramref name="reach"/> (Layer Mask),
         /// plus the <paramref name="planes"/> unless Off. <paramref name="origin"/> is the rope frame's origin (world, m),
-        /// <paramref name="friction"/> the Coulomb coefficient (dimensionless); colliders of the ends' own objects are
-        /// skipped, unsupported ones reported on <paramref name="context"/>.
+        /// <paramref name="friction"/> the Coulomb coefficient (dimensionless). <paramref name="owner"/> is the rope's
+        /// component: the colliders of its GameObject and of the ends' hierarchies are skipped (see <see cref="IsOwn"/>),
+        /// unsupported ones reported on it.
         /// </summary>
         public void Bind(Rope rope, RopeCollisionMode mode, Collider[] colliders, LayerMask layers, Transform[] planes, float friction,
-            Vector3 origin, RopeEnd start, RopeEnd end, in ColliderReach reach, UnityEngine.Object context)
+            Vector3 origin, RopeEnd start, RopeEnd end, in ColliderReach reach, Component owner)
         {
             _mode = mode;
             _layers = layers;
@@ -48,21 +50,22 @@ namespace HookeRope
             _friction = friction;
             _start = start;
             _end = end;
-            _context = context;
+            _owner = owner;
+            _self = owner != null ? owner.transform : null;
             switch (mode)
             {
                 case RopeCollisionMode.ListedColliders:
-                    Register(rope, colliders, colliders.Length, _planeSource, origin, friction, start, end, context, warnUnsupported: true);
+                    Register(rope, colliders, colliders.Length, _planeSource, origin, friction, start, end, warnUnsupported: true);
                     break;
                 case RopeCollisionMode.LayerMask:
                 {
                     // query first: it creates (or grows) the buffer that is passed on
                     int count = QueryLayerColliders(rope, origin, reach);
-                    Register(rope, _overlapBuffer, count, _planeSource, origin, friction, start, end, context, warnUnsupported: true);
+                    Register(rope, _overlapBuffer, count, _planeSource, origin, friction, start, end, warnUnsupported: true);
                     break;
                 }
                 default:
-                    Register(rope, Array.Empty<Collider>(), 0, Array.Empty<Transform>(), origin, friction, start, end, context, warnUnsupported: false);
+                    Register(rope, Array.Empty<Collider>(), 0, Array.Empty<Transform>(), origin, friction, start, end, warnUnsupported: false);
                     break;
             }
         }
@@ -78,7 +81,7 @@ namespace HookeRope
             {
                 int count = QueryLayerColliders(rope, origin, reach);
                 if (!HasSameColliders(_overlapBuffer, count, _start, _end))
-                    Register(rope, _overlapBuffer, count, _planeSource, origin, _friction, _start, _end, _context, warnUnsupported: false);
+                    Register(rope, _overlapBuffer, count, _planeSource, origin, _friction, _start, _end, warnUnsupported: false);
             }
             UpdatePoses(rope, origin);
         }
@@ -105,7 +108,7 @@ namespace HookeRope
         /// colliders (see <see cref="IsOwn"/>) are skipped silently. Allocates only when more shapes arrive than ever before.
         /// </summary>
         void Register(Rope rope, Collider[] colliders, int colliderCount, Transform[] planes, Vector3 origin, float friction,
-            RopeEnd start, RopeEnd end, UnityEngine.Object context, bool warnUnsupported)
+            RopeEnd start, RopeEnd end, bool warnUnsupported)
         {
             rope.ClearColliders();
             Reserve(ref _colliders, ref _colliderIds, colliderCount);
@@ -117,7 +120,7 @@ namespace HookeRope
                 if (!TryShape(collider, origin, friction, out var shape))
                 {
                     if (warnUnsupported)
-                        Debug.LogWarning("ElasticRope: collider '" + collider.name + "' is not a Sphere, Capsule or Box collider; the rope ignores it.", context);
+                        Debug.LogWarning("ElasticRope: collider '" + collider.name + "' is not a Sphere, Capsule or Box collider; the rope ignores it.", _owner);
                     continue;
                 }
                 _colliders[_colliderCount] = collider;
@@ -157,19 +160,64 @@ namespace HookeRope
             return accepted == _colliderCount;
         }
 
-        static bool Accepts(Collider collider, RopeEnd start, RopeEnd end) =>
-            collider != null && !collider.isTrigger && !IsOwn(collider, start) && !IsOwn(collider, end);
+        bool Accepts(Collider collider, RopeEnd start, RopeEnd end)
+        {
+            if (collider == null || collider.isTrigger) return false;
+            var t = collider.transform;
+            return !IsInHierarchyOf(t, _self) && !IsOwn(collider, t, start) && !IsOwn(collider, t, end);
+        }
 
         /// <summary>
-        /// True for a collider the rope end is fixed in: on the end's Rigidbody (the worker's own capsule), or on the
-        /// GameObject of the end's Transform (the anchor's or hand's own collider). A particle pinned inside such a
-        /// collider would be pushed out every step and kink the rope at the end.
+        /// True for a collider that belongs to what <paramref name="end"/> is fixed to, and which the rope therefore never
+        /// collides with (in both modes; the rope's own GameObject and its children are skipped likewise, in
+        /// <see cref="Accepts"/>). The end's particle is pinned at (or loaded by) that object, usually inside or on
+        /// its colliders: registered, such a collider would push the end particles out every step while the pin
+        /// pulls them back in, and the rope would kink (and jitter) at the end. The rope's own colliders are:
+        /// <list type="bullet">
+        /// <item>any collider attached to the end's <see cref="RopeEnd.Body"/> (<c>attachedRigidbody == Body</c>: the
+        /// worker's capsule and the other colliders of its compound body);</item>
+        /// <item>a collider on the GameObject of the end's <see cref="RopeEnd.Point"/> or on any of its descendants
+        /// (the anchor block, a bolt or shackle modelled as a child);</item>
+        /// <item>a collider on an ancestor of the Point up to and including the first ancestor that carries a Rigidbody
+        /// (a D-ring child of the harness: the worker's capsule on the body's GameObject, even when Body is left empty
+        /// and the end is a Transform pin). The walk stops there, and does not start when the Point carries a
+        /// Rigidbody itself: ancestors above the body, or of a Point under no body at all, are unrelated scene
+        /// structure (an "Environment" root with the floor's collider must still catch the rope).</item>
+        /// </list>
+        /// A consequence: a collider on the GameObject of the Rigidbody an anchor rides on (a moving platform's deck) is
+        /// skipped; put it on a child of its own. Allocation-free (parent walks and TryGetComponent), so it can run in
+        /// every Layer Mask step through <see cref="HasSameColliders"/>.
         /// </summary>
-        static bool IsOwn(Collider collider, RopeEnd end)
+        static bool IsOwn(Collider collider, Transform colliderTransform, RopeEnd end)
         {
-            var body = collider.attachedRigidbody;
-            if (body != null && end.Body != null && body == end.Body) return true;
-            return end.Point != null && collider.gameObject == end.Point.gameObject;
+            var endBody = end.Body;
+            if (endBody != null)
+            {
+                var body = collider.attachedRigidbody;
+                if (body != null && body == endBody) return true;
+            }
+            var point = end.Point;
+            if (point == null) return false;
+            if (IsInHierarchyOf(colliderTransform, point)) return true;
+            // the Point's ancestors up to and including the first that carries a Rigidbody (the body the Point moves
+            // with); none when the Point carries one itself or no ancestor does
+            if (point.TryGetComponent<Rigidbody>(out _)) return false;
+            bool passed = false;
+            for (var t = point.parent; t != null; t = t.parent)
+            {
+                passed |= ReferenceEquals(t, colliderTransform);
+                if (t.TryGetComponent<Rigidbody>(out _)) return passed;
+            }
+            return false;
+        }
+
+        /// <summary>True when <paramref name="t"/> is <paramref name="root"/> or one of its descendants (false for a null root).</summary>
+        static bool IsInHierarchyOf(Transform t, Transform root)
+        {
+            if (root == null) return false;
+            for (; t != null; t = t.parent)
+                if (ReferenceEquals(t, root)) return true;
+            return false;
         }
 
         static bool IsSupported(Collider collider) => collider is SphereCollider || collider is CapsuleCollider || collider is BoxCollider;
