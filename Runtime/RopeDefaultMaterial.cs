@@ -87,7 +87,7 @@ namespace HookeRope
                 if (material.HasProperty(s_BaseColorProperties[i])) material.SetColor(s_BaseColorProperties[i], color);
         }
 
-        /// <summary>The package's burr texture (256 × 64 RGBA32, 16 strands, polyamide beige), from the core generator.</summary>
+        /// <summary>The package's burr texture (256 × 64 RGBA32, 16 strands, polyamide beige), from the core generator; HideAndDontSave (never saved, not listed in the hierarchy), the caller destroys it.</summary>
         internal static Texture2D CreateBurrTexture()
         {
             const int width = 256, height = 64;
@@ -96,7 +96,7 @@ namespace HookeRope
             var texture = new Texture2D(width, height, TextureFormat.RGBA32, mipChain: false)
             {
                 name = "Elastic Rope Burr (generated)",
-                hideFlags = HideFlags.DontSave,
+                hideFlags = HideFlags.HideAndDontSave,
                 wrapMode = TextureWrapMode.Repeat,
                 filterMode = FilterMode.Bilinear,
             };

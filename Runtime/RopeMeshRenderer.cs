@@ -17,7 +17,19 @@ namespace HookeRope
     /// are uploaded with SetVertexBufferData from a preallocated array (no GC per frame), indices only when the
     /// topology changes (new segment count, a break), and the bounds are set explicitly before each vertex upload.
     /// One mesh per frame serves both eyes in single-pass instanced stereo. Keep this GameObject's scale uniform.
+    /// <para>
+    /// Edit mode ([ExecuteAlways]): without entering Play, every editor update draws the rope without simulating it,
+    /// through the same core mesh path: a detached simulation of the rope's current settings
+    /// (<see cref="ElasticRope.CreateDetachedSimulation"/>, the Rebuild path) straight between the ends, or laid
+    /// along the static-sag preview once one was computed (the inspector's button; it is recomputed when an end moves).
+    /// The MeshRenderer then has a mesh, so the rope is pickable in the Scene view. The generated mesh, materials and
+    /// burr texture are created once per enable with DontSave hide flags (the texture HideAndDontSave), so Unity never
+    /// writes them into the scene (a saved slot that references one is saved empty), and OnDisable destroys them
+    /// (DestroyImmediate in edit mode, Destroy in Play) and empties the slots they occupied. Generated materials only
+    /// fill material slots the user left empty.
+    /// </para>
     /// </summary>
+    [ExecuteAlways]
     [AddComponentMenu("Physics/Elastic Rope Mesh")]
     [HelpURL(ElasticRope.DocumentationUrl)]
     [DisallowMultipleComponent]
@@ -84,12 +96,35 @@ namespace HookeRope
 
         void LateUpdate()
         {
+            if (!Application.isPlaying)
+            {
+                Render(1f);
+                return;
+            }
             float alpha = Time.fixedDeltaTime > 0f ? (Time.time - Time.fixedTime) / Time.fixedDeltaTime : 1f;
             Render(alpha);
         }
 
-        void OnDestroy()
+        void OnDisable() => ReleaseGenerated();
+
+        void OnDestroy() => ReleaseGenerated();
+
+        /// <summary>Takes the generated mesh and materials out of the MeshFilter and MeshRenderer and destroys everything generated.</summary>
+        void ReleaseGenerated()
         {
+            if (_mesh != null && _filter != null && _filter.sharedMesh == _mesh) _filter.sharedMesh = null;
+            if (_renderer != null && (_generatedMaterial != null || _generatedBurrMaterial != null))
+            {
+                var materials = _renderer.sharedMaterials;
+                bool changed = false;
+                for (int i = 0; i < materials.Length; i++)
+                {
+                    if (materials[i] == null || (materials[i] != _generatedMaterial && materials[i] != _generatedBurrMaterial)) continue;
+                    materials[i] = null;
+                    changed = true;
+                }
+                if (changed) _renderer.sharedMaterials = materials;
+            }
             DestroyOwned(_mesh);
             DestroyOwned(_generatedMaterial);
             DestroyOwned(_generatedBurrMaterial);
@@ -98,22 +133,40 @@ namespace HookeRope
             _generatedMaterial = null;
             _generatedBurrMaterial = null;
             _generatedTexture = null;
+            _uploaded = null;
+            _uploadedTopology = -1;
         }
 
         /// <summary>
         /// Rebuilds the tube from the rope's positions interpolated by <paramref name="alpha"/> (0 = previous physics
         /// step, 1 = latest) and uploads it. LateUpdate calls it; call it yourself in edit-mode code and tests.
-        /// Returns false when the rope is not built yet. Allocation-free unless the topology grew.
+        /// In edit mode, before the rope is built, it draws the edit-mode shape instead (straight between the ends,
+        /// or the static-sag preview; see the class remarks; this path allocates a detached core simulation).
+        /// Returns false when nothing was drawn (no rope, or in Play before the build). Allocation-free unless the
+        /// topology grew.
         /// </summary>
         public bool Render(float alpha)
         {
             if (_rope == null && !TryGetComponent(out _rope)) return false;
-            if (!_rope.IsBuilt) return false;
+            RopeSimulation simulation;
+            Vector3 origin;
+            bool alignEnds = true;
+            if (_rope.IsBuilt)
+            {
+                simulation = _rope.Simulation;
+                origin = _rope.SimulationOrigin;
+            }
+            else if (!Application.isPlaying)
+            {
+                simulation = CreateEditModeShape(out origin);
+                alignEnds = false;
+                alpha = 1f;
+            }
+            else return false;
             EnsureMesh();
 
-            var simulation = _rope.Simulation;
             if (simulation.MeshSettings.RadialSegments != m_RadialSegments) simulation.MeshSettings.RadialSegments = m_RadialSegments;
-            InterpolateIntoLocalSpace(simulation.Rope, alpha);
+            InterpolateIntoLocalSpace(simulation.Rope, alpha, origin, alignEnds);
             int vertexCount = simulation.GetVertexCount(), indexCount = simulation.GetIndexCount();
             if (_vertices.Length < vertexCount) _vertices = new TubeVertex[vertexCount];
             if (_indices.Length < indexCount) _indices = new int[indexCount];
@@ -141,7 +194,7 @@ namespace HookeRope
         }
 
         /// <summary>The rope's interpolated particle positions in this GameObject's local space (m), into the one position buffer.</summary>
-        void InterpolateIntoLocalSpace(Rope rope, float alpha)
+        void InterpolateIntoLocalSpace(Rope rope, float alpha, Vector3 simulationOrigin, bool alignEnds)
         {
             int particles = rope.ParticleCount;
             if (_x.Length != particles)
@@ -151,11 +204,11 @@ namespace HookeRope
                 _z = new float[particles];
             }
             rope.Interpolate(alpha, _x, _y, _z);
-            Vector3 origin = _rope.SimulationOrigin + rope.Origin.ToVector3();
+            Vector3 origin = simulationOrigin + rope.Origin.ToVector3();
             // the attachments are drawn at their live poses: put the rope's ends on them (the interior follows smoothly)
             var start = _rope.StartAttachment;
             var end = _rope.EndAttachment;
-            bool startHeld = start.Kind != RopeEndKind.Free, endHeld = end.Kind != RopeEndKind.Free;
+            bool startHeld = alignEnds && start.Kind != RopeEndKind.Free, endHeld = alignEnds && end.Kind != RopeEndKind.Free;
             int last = particles - 1;
             var startOffset = startHeld ? (start.DrawnPosition() - origin - new Vector3(_x[0], _y[0], _z[0])).ToFloat3() : default;
             var endOffset = endHeld ? (end.DrawnPosition() - origin - new Vector3(_x[last], _y[last], _z[last])).ToFloat3() : default;
@@ -168,6 +221,21 @@ namespace HookeRope
                 _y[i] = local.y;
                 _z[i] = local.z;
             }
+        }
+
+        /// <summary>
+        /// The edit-mode shape: a detached core simulation of the rope's current settings (built straight between the
+        /// ends), its particles moved onto the static-sag preview when one exists for the current segment count.
+        /// <paramref name="origin"/> is the world position (m) of its frame's origin.
+        /// </summary>
+        RopeSimulation CreateEditModeShape(out Vector3 origin)
+        {
+            var simulation = _rope.CreateDetachedSimulation(out origin);
+            var core = simulation.Rope;
+            var preview = RopeStaticSag.GetFollowing(_rope);
+            if (preview.Length == core.ParticleCount)
+                for (int i = 0; i < preview.Length; i++) core.SetPosition(i, (preview[i] - origin).ToFloat3());
+            return simulation;
         }
 
         /// <summary>Ring radii are in world metres; the mesh is in local space, so they shrink by the (uniform) scale.</summary>
