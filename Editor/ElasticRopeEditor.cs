@@ -92,6 +92,7 @@ namespace HookeRope.Editor
             }
             if (Section(ref s_Attachments, "Attachments"))
             {
+                if (!serializedObject.isEditingMultipleObjects) AttachFixBox(rope);
                 EditorGUILayout.PropertyField(m_Start, includeChildren: true);
                 EditorGUILayout.PropertyField(m_End, includeChildren: true);
                 Field(m_AttachmentCompliance);
@@ -152,6 +153,16 @@ namespace HookeRope.Editor
                 EditorGUILayout.HelpBox(string.Format(CultureInfo.InvariantCulture,
                     "These settings predict the rope to stretch about {0:P0} more than the material allows (Gauss-Seidel, {1} substeps × {2} iterations for {3} segments). Use the Exact Chain solver, or raise substeps.",
                     error, rope.Substeps, rope.Iterations, rope.SegmentCount), MessageType.Warning);
+        }
+
+        void AttachFixBox(ElasticRope rope)
+        {
+            var fix = RopeAttachFix.For(rope);
+            if (fix == null) return;
+            EditorGUILayout.HelpBox(fix.Message, MessageType.Warning);
+            if (!GUILayout.Button(fix.ButtonLabel)) return;
+            fix.Apply();
+            serializedObject.Update();
         }
 
         static void Readouts(ElasticRope rope)

@@ -105,7 +105,9 @@ namespace HookeRope
         // ---- Unity messages -------------------------------------------------------------------------------
         void Awake()
         {
-            if (Application.isPlaying) Rebuild();
+            if (!Application.isPlaying) return;
+            WireOnDrop();
+            Rebuild();
         }
 
         void FixedUpdate()

@@ -1,0 +1,67 @@
+using UnityEditor;
+using UnityEngine;
+
+namespace HookeRope.Editor
+{
+    /// <summary>
+    /// The inspector's one-click fix for a rope that is half on a rig: an end's Point sits under a Rigidbody while
+    /// that end's Body is empty, so the rig would be pinned like a Transform instead of pulled. <see cref="For"/>
+    /// decides whether the rope needs it and what it would do (the self-wiring of <see cref="RopeAutoWiring"/>:
+    /// End onto the body at its D-ring, Start onto a root-level anchor above it); <see cref="Apply"/> does it with Undo.
+    /// The IMGUI part (HelpBox and button) is in <see cref="ElasticRopeEditor"/>.
+    /// </summary>
+    internal sealed class RopeAttachFix
+    {
+        readonly ElasticRope _rope;
+        readonly RopeAutoWiring _wiring;
+
+        RopeAttachFix(ElasticRope rope, RopeAutoWiring wiring)
+        {
+            _rope = rope;
+            _wiring = wiring;
+        }
+
+        /// <summary>The body the End would pull two-way.</summary>
+        internal Rigidbody Body => _wiring.Body;
+
+        /// <summary>The End's attachment point on <see cref="Body"/> (the D-ring), or null for the body's position.</summary>
+        internal Transform EndPoint => _wiring.EndPoint;
+
+        /// <summary>True when the Start would move onto a root-level anchor.</summary>
+        internal bool MovesStart => _wiring.RewiresStart;
+
+        /// <summary>Where that anchor would be (m, world), the rest length above the D-ring.</summary>
+        internal Vector3 AnchorPosition => _wiring.AnchorPosition;
+
+        /// <summary>The button's label: "Attach to &lt;body name&gt;".</summary>
+        internal string ButtonLabel => "Attach to " + Body.name;
+
+        /// <summary>The HelpBox text.</summary>
+        internal string Message =>
+            "An end's Point sits under the Rigidbody '" + Body.name + "' but its Body is empty: the rope would pin it like a Transform instead of arresting it. " +
+            "The fix: " + _wiring.Describe();
+
+        /// <summary>
+        /// The fix <paramref name="rope"/> needs, or null: only when an end's Point sits under a Rigidbody while that
+        /// end's Body is empty, and wiring would change something.
+        /// </summary>
+        internal static RopeAttachFix For(ElasticRope rope)
+        {
+            if (rope == null) return null;
+            if (!PointOnBodyWithoutBody(rope.StartAttachment) && !PointOnBodyWithoutBody(rope.EndAttachment)) return null;
+            var wiring = RopeAutoWiring.For(rope);
+            return wiring == null ? null : new RopeAttachFix(rope, wiring);
+        }
+
+        /// <summary>Wires the rope (Undo-able: the rope's fields and the created anchor).</summary>
+        internal void Apply()
+        {
+            Undo.RecordObject(_rope, ButtonLabel);
+            var created = _wiring.Apply();
+            if (created != null) Undo.RegisterCreatedObjectUndo(created, ButtonLabel);
+        }
+
+        static bool PointOnBodyWithoutBody(RopeEnd end) =>
+            end.Body == null && end.Point != null && end.Point.GetComponentInParent<Rigidbody>() != null;
+    }
+}

@@ -1,0 +1,154 @@
+using System.Collections.Generic;
+using UnityEngine;
+
+namespace HookeRope
+{
+    /// <summary>
+    /// Self-wiring of an <see cref="ElasticRope"/> dropped onto a harness rig (a hierarchy with a Rigidbody): the End
+    /// becomes a two-way load on the rig's body at its D-ring (a Transform in the body's hierarchy named like
+    /// "D-ring", "Dring", "D ring" or "Harness Attachment", case-insensitive, spaces/hyphens/underscores ignored; else
+    /// the body's position), and the Start becomes an anchor outside the rig: a root-level "&lt;rope name&gt; Anchor"
+    /// placed above the D-ring by the rest length (against gravity), created or reused. An instance is the plan for
+    /// one rope, made by <see cref="For"/> (null when nothing needs wiring) and carried out by <see cref="Apply"/>.
+    /// The rope object itself stays where it is: once both ends are wired its pose carries neither end (the mesh is
+    /// rebuilt from world positions every frame), and Unity refuses to re-parent objects inside a prefab instance.
+    /// </summary>
+    internal sealed class RopeAutoWiring
+    {
+        /// <summary>The rig's body the End will pull two-way.</summary>
+        internal Rigidbody Body { get; }
+
+        /// <summary>The End's attachment point on <see cref="Body"/> (the D-ring), or null for the body's position.</summary>
+        internal Transform EndPoint { get; }
+
+        /// <summary>True when the Start must be moved onto an anchor outside the rig.</summary>
+        internal bool RewiresStart { get; }
+
+        /// <summary>World position (m) of the anchor the Start gets when <see cref="RewiresStart"/>.</summary>
+        internal Vector3 AnchorPosition { get; }
+
+        /// <summary>Name of the root-level anchor object (created or reused).</summary>
+        internal string AnchorName { get; }
+
+        readonly ElasticRope _rope;
+
+        RopeAutoWiring(ElasticRope rope, Rigidbody body, Transform endPoint, bool rewiresStart, Vector3 anchorPosition)
+        {
+            _rope = rope;
+            Body = body;
+            EndPoint = endPoint;
+            RewiresStart = rewiresStart;
+            AnchorPosition = anchorPosition;
+            AnchorName = rope.name + " Anchor";
+        }
+
+        /// <summary>
+        /// The rig body of <paramref name="rope"/>: the first Rigidbody in the rope's own parents, else the one above an
+        /// end's Point while that end has no Body (a Point dragged onto the rig); null when there is none.
+        /// </summary>
+        internal static Rigidbody FindRig(ElasticRope rope)
+        {
+            if (rope == null) return null;
+            var body = rope.GetComponentInParent<Rigidbody>();
+            if (body != null) return body;
+            var end = rope.EndAttachment;
+            if (end.Body == null && end.Point != null && (body = end.Point.GetComponentInParent<Rigidbody>()) != null) return body;
+            var start = rope.StartAttachment;
+            if (start.Body == null && start.Point != null && (body = start.Point.GetComponentInParent<Rigidbody>()) != null) return body;
+            return null;
+        }
+
+        /// <summary>What wiring <paramref name="rope"/> onto its rig would do, or null when it has no rig or is already wired.</summary>
+        internal static RopeAutoWiring For(ElasticRope rope)
+        {
+            var body = FindRig(rope);
+            if (body == null) return null;
+            var rig = body.transform;
+            var end = rope.EndAttachment;
+            var start = rope.StartAttachment;
+
+            // keep an End Point the user already put on the body; else the D-ring, else the body's position
+            var endPoint = end.Point != null && IsInside(end.Point, rig) && !IsInside(end.Point, rope.transform) ? end.Point : FindDRing(rig, rope.transform);
+            bool rewiresStart = start.Body == body || (start.Body == null && (start.Point == null || IsInside(start.Point, rig)));
+            if (end.Body == body && end.Point == endPoint && !rewiresStart) return null;
+
+            Vector3 dRing = endPoint != null ? endPoint.position : body.position;
+            Vector3 up = rope.Gravity.sqrMagnitude > 0f ? -rope.Gravity.normalized : Vector3.up;
+            return new RopeAutoWiring(rope, body, endPoint, rewiresStart, dRing + up * rope.RestLength);
+        }
+
+        /// <summary>
+        /// Wires the rope as planned: End.Body and End.Point, and, when <see cref="RewiresStart"/>, Start onto the
+        /// root-level anchor (reused when one of that name exists at the root, else created at
+        /// <see cref="AnchorPosition"/>). Returns the anchor object it created (for the editor's Undo), or null.
+        /// </summary>
+        internal GameObject Apply()
+        {
+            var end = _rope.EndAttachment;
+            end.Body = Body;
+            end.Point = EndPoint;
+            if (!RewiresStart) return null;
+
+            GameObject created = null;
+            var anchor = FindRootAnchor(AnchorName);
+            if (anchor == null)
+            {
+                created = new GameObject(AnchorName);
+                anchor = created.transform;
+                anchor.position = AnchorPosition;
+            }
+            var start = _rope.StartAttachment;
+            start.Body = null;
+            start.Point = anchor;
+            return created;
+        }
+
+        /// <summary>One line for the console naming what was (or would be) wired.</summary>
+        internal string Describe() =>
+            _rope.name + ": End pulls Rigidbody '" + Body.name + "' at " + (EndPoint != null ? "'" + EndPoint.name + "'" : "its position") +
+            (RewiresStart ? "; Start anchored at '" + AnchorName + "' " + _rope.RestLength.ToString("G4", System.Globalization.CultureInfo.InvariantCulture) + " m above it" : "") + ".";
+
+        /// <summary>
+        /// True when <paramref name="name"/> names a D-ring: after dropping spaces, hyphens and underscores and
+        /// lower-casing, it contains "dring" or "harnessattachment" ("Harness D-Ring", "D ring", "DRing_L").
+        /// </summary>
+        internal static bool IsDRingName(string name)
+        {
+            if (string.IsNullOrEmpty(name)) return false;
+            var compact = new System.Text.StringBuilder(name.Length);
+            foreach (char c in name)
+                if (c != ' ' && c != '-' && c != '_') compact.Append(char.ToLowerInvariant(c));
+            var s = compact.ToString();
+            return s.Contains("dring") || s.Contains("harnessattachment");
+        }
+
+        /// <summary>The first D-ring (breadth-first) in <paramref name="rig"/>'s hierarchy outside <paramref name="excluded"/>, or null.</summary>
+        static Transform FindDRing(Transform rig, Transform excluded)
+        {
+            var queue = new Queue<Transform>();
+            queue.Enqueue(rig);
+            while (queue.Count > 0)
+            {
+                var t = queue.Dequeue();
+                if (t == excluded) continue;
+                if (IsDRingName(t.name)) return t;
+                for (int i = 0; i < t.childCount; i++) queue.Enqueue(t.GetChild(i));
+            }
+            return null;
+        }
+
+        static Transform FindRootAnchor(string name)
+        {
+            if (name.IndexOf('/') >= 0) return null; // Find reads '/' as a hierarchy path
+            var found = GameObject.Find(name);
+            return found != null && found.transform.parent == null ? found.transform : null;
+        }
+
+        static bool IsInside(Transform t, Transform root)
+        {
+            for (; t != null; t = t.parent)
+                if (t == root) return true;
+            return false;
+        }
+    }
+}
