@@ -172,6 +172,7 @@ namespace HookeRope.Editor
                 EditorGUILayout.HelpBox("Read-outs appear in Play (or after ElasticRope.Rebuild()).", MessageType.Info);
                 return;
             }
+            if (EditorApplication.isPlaying && GUILayout.Button("Rebuild")) rope.Rebuild();
             EditorGUILayout.LabelField("Elongation / strain", Format(rope.Elongation, "m") + " / " + Format(rope.Strain, ""));
             EditorGUILayout.LabelField("Top / bottom tension", Format(rope.TopTension, "N") + " / " + Format(rope.BottomTension, "N"));
             EditorGUILayout.LabelField("Peak tension", Format(rope.PeakTension, "N"));

@@ -254,25 +254,25 @@ namespace HookeRope
         /// <summary>Whether the rope can break.</summary>
         public bool Fracture { get => m_Fracture; set { m_Fracture = value; ApplyFeatureToggles(); } }
 
-        /// <summary>Start attachment. Changing what it points to takes effect at the next <see cref="Rebuild"/>.</summary>
+        /// <summary>Start attachment. Setting its Point or Body (from code or the inspector) rebuilds the rope at the next step.</summary>
         public RopeEnd StartAttachment => m_Start;
 
-        /// <summary>End attachment. Changing what it points to takes effect at the next <see cref="Rebuild"/>.</summary>
+        /// <summary>End attachment. Setting its Point or Body (from code or the inspector) rebuilds the rope at the next step.</summary>
         public RopeEnd EndAttachment => m_End;
 
-        /// <summary>How the rope collides; takes effect at the next <see cref="Rebuild"/>.</summary>
+        /// <summary>How the rope collides; rebuilds the rope at the next step.</summary>
         public RopeCollisionMode CollisionMode { get => m_CollisionMode; set { m_CollisionMode = value; _rebuildPending |= _rope != null; } }
 
-        /// <summary>Colliders used in <see cref="RopeCollisionMode.ListedColliders"/> mode; takes effect at the next <see cref="Rebuild"/>.</summary>
+        /// <summary>Colliders used in <see cref="RopeCollisionMode.ListedColliders"/> mode; rebuilds the rope at the next step.</summary>
         public Collider[] Colliders { get => m_Colliders; set { m_Colliders = value ?? Array.Empty<Collider>(); _rebuildPending |= _rope != null; } }
 
-        /// <summary>Coulomb friction coefficient between rope and colliders (dimensionless), range <see cref="RopeParameters.Friction"/>; takes effect at the next <see cref="Rebuild"/>.</summary>
+        /// <summary>Coulomb friction coefficient between rope and colliders (dimensionless), range <see cref="RopeParameters.Friction"/>; rebuilds the rope at the next step.</summary>
         public float Friction { get => m_Friction; set => SetForRebuild(ref m_Friction, value, RopeParameters.Friction.Row); }
 
-        /// <summary>Compliance of the Transform attachments (m/N), range <see cref="RopeParameters.AttachmentCompliance"/>; takes effect at the next <see cref="Rebuild"/>.</summary>
+        /// <summary>Compliance of the Transform attachments (m/N), range <see cref="RopeParameters.AttachmentCompliance"/>; rebuilds the rope at the next step.</summary>
         public float AttachmentCompliance { get => m_AttachmentCompliance; set => SetForRebuild(ref m_AttachmentCompliance, value, RopeParameters.AttachmentCompliance.Row); }
 
-        /// <summary>Plane Transforms (up axis = normal); takes effect at the next <see cref="Rebuild"/>.</summary>
+        /// <summary>Plane Transforms (up axis = normal); rebuilds the rope at the next step.</summary>
         public Transform[] Planes { get => m_Planes; set { m_Planes = value ?? Array.Empty<Transform>(); _rebuildPending |= _rope != null; } }
 
         // ---- Validation and the copy into the core --------------------------------------------------------
@@ -311,8 +311,8 @@ namespace HookeRope
             if (m_Colliders == null) m_Colliders = Array.Empty<Collider>();
             if (m_Planes == null) m_Planes = Array.Empty<Transform>();
             if (_rope == null) return;
-            if (_rope.SegmentCount != m_SegmentCount || (_simulation.RadiusSettings != null) != RadiusFeaturesOn) _rebuildPending = true;
-            else ApplySettings();
+            if (TopologyChanged()) _rebuildPending = true;
+            ApplySettings();
         }
 
         static float Area(float radius) => MathF.PI * radius * radius;

@@ -14,8 +14,9 @@ namespace HookeRope
     /// tooltips from <see cref="RopeParameters"/>), copies anchor, hand and collider poses in every FixedUpdate
     /// (<see cref="RopeAttachmentBinding"/>, <see cref="RopeColliderBinding"/>), steps it (substeps inside),
     /// exchanges forces with attached Rigidbodies (two-way) and forwards the core's read-outs
-    /// (<see cref="RopeSimulation.Readouts"/>). Rendering lives in <see cref="RopeMeshRenderer"/>. Inspector
-    /// changes in Play apply at the next step; only a new segment count or new attachments rebuild the rope.
+    /// (<see cref="RopeSimulation.Readouts"/>). Rendering lives in <see cref="RopeMeshRenderer"/>. Every
+    /// serialized field changed in Play (inspector or code) applies at the next step: in place where the core allows,
+    /// else by a rebuild at that step (Documentation~/index.md, "Live edits").
     /// </summary>
     [AddComponentMenu("Physics/Elastic Rope")]
     [HelpURL(DocumentationUrl)]
@@ -130,6 +131,7 @@ namespace HookeRope
             _colliderBinding.Bind(_rope, m_CollisionMode, m_Colliders, m_CollisionLayers, m_Planes, m_Friction, _origin, m_Start, m_End, Reach, this);
             _simulation.Readouts.ArrestLoad = _attachments.EndLoad;
 
+            RecordBuiltTopology();
             _breakRaised = false;
             _rebuildPending = false;
         }
@@ -143,7 +145,7 @@ namespace HookeRope
         {
             if (!(deltaTime > 0f) || float.IsInfinity(deltaTime))
                 throw new ArgumentOutOfRangeException(nameof(deltaTime), deltaTime, "deltaTime must be in (0, +inf) seconds");
-            if (_rope == null || _rebuildPending) Rebuild();
+            if (_rope == null || _rebuildPending || TopologyChanged()) Rebuild();
 
             _attachments.CopyIn(_rope, _origin);
             _colliderBinding.BeforeStep(_rope, _origin, Reach);
