@@ -17,7 +17,8 @@ namespace HookeRope
     /// (<see cref="RopeSimulation.Readouts"/>). Rendering lives in <see cref="RopeMeshRenderer"/>. Inspector
     /// changes in Play apply at the next step; only a new segment count or new attachments rebuild the rope.
     /// </summary>
-    [AddComponentMenu("Physics/Elastic Rope")]
+    [AddComponentMenu("HookeRope/Elastic Rope")]
+    [DefaultExecutionOrder(-100)] // steps before default-order scripts (samples) that read it
     [HelpURL(DocumentationUrl)]
     [DisallowMultipleComponent]
     public sealed partial class ElasticRope : MonoBehaviour
@@ -112,7 +113,12 @@ namespace HookeRope
 
         void FixedUpdate()
         {
-            Simulate(Time.fixedDeltaTime);
+            if (Physics.simulationMode == SimulationMode.FixedUpdate) Simulate(Time.fixedDeltaTime);
+        }
+
+        void Update()
+        {
+            if (Physics.simulationMode == SimulationMode.Update && Time.deltaTime > 0f) Simulate(Time.deltaTime);
         }
 
         // ---- Public API -----------------------------------------------------------------------------------
@@ -137,7 +143,7 @@ namespace HookeRope
         /// <summary>
         /// Advances the rope by <paramref name="deltaTime"/> seconds: copies attachment and collider poses in,
         /// steps the core simulation (substeps inside; it updates the read-outs), applies the rope's forces to attached
-        /// Rigidbodies and raises <see cref="OnBreak"/> on the first break. FixedUpdate calls it with Time.fixedDeltaTime; call it yourself in edit-mode code.
+        /// Rigidbodies and raises <see cref="OnBreak"/> on the first break. FixedUpdate calls it with Time.fixedDeltaTime when Physics.simulationMode is FixedUpdate, Update with Time.deltaTime in Update mode; in Script mode and edit-mode code call it yourself.
         /// </summary>
         public void Simulate(float deltaTime)
         {
