@@ -18,7 +18,8 @@ namespace HookeRope
     /// serialized field changed in Play (inspector or code) applies at the next step: in place where the core allows,
     /// else by a rebuild at that step (Documentation~/index.md, "Live edits").
     /// </summary>
-    [AddComponentMenu("Physics/Elastic Rope")]
+    [AddComponentMenu("HookeRope/Elastic Rope")]
+    [DefaultExecutionOrder(-100)] // steps before default-order scripts (samples) that read it
     [HelpURL(DocumentationUrl)]
     [DisallowMultipleComponent]
     public sealed partial class ElasticRope : MonoBehaviour
@@ -113,7 +114,12 @@ namespace HookeRope
 
         void FixedUpdate()
         {
-            Simulate(Time.fixedDeltaTime);
+            if (Physics.simulationMode == SimulationMode.FixedUpdate) Simulate(Time.fixedDeltaTime);
+        }
+
+        void Update()
+        {
+            if (Physics.simulationMode == SimulationMode.Update && Time.deltaTime > 0f) Simulate(Time.deltaTime);
         }
 
         // ---- Public API -----------------------------------------------------------------------------------
@@ -139,7 +145,7 @@ namespace HookeRope
         /// <summary>
         /// Advances the rope by <paramref name="deltaTime"/> seconds: copies attachment and collider poses in,
         /// steps the core simulation (substeps inside; it updates the read-outs), applies the rope's forces to attached
-        /// Rigidbodies and raises <see cref="OnBreak"/> on the first break. FixedUpdate calls it with Time.fixedDeltaTime; call it yourself in edit-mode code.
+        /// Rigidbodies and raises <see cref="OnBreak"/> on the first break. FixedUpdate calls it with Time.fixedDeltaTime when Physics.simulationMode is FixedUpdate, Update with Time.deltaTime in Update mode; in Script mode and edit-mode code call it yourself.
         /// </summary>
         public void Simulate(float deltaTime)
         {

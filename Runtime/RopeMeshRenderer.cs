@@ -30,10 +30,11 @@ namespace HookeRope
     /// </para>
     /// </summary>
     [ExecuteAlways]
-    [AddComponentMenu("Physics/Elastic Rope Mesh")]
+    [AddComponentMenu("HookeRope/Elastic Rope Mesh")]
     [HelpURL(ElasticRope.DocumentationUrl)]
     [DisallowMultipleComponent]
     [RequireComponent(typeof(MeshFilter), typeof(MeshRenderer))]
+    [RequireComponent(typeof(ElasticRope))]
     public sealed class RopeMeshRenderer : MonoBehaviour
     {
         /// <summary>Position, normal, tangent (xyzw) and uv, all float32: the layout of <see cref="TubeVertex"/>.</summary>

@@ -9,6 +9,7 @@ namespace HookeRope.Samples.CollisionBend
     /// start above the shapes and are lowered in the first seconds, so the ropes settle on top of them.
     /// Built in code in Start.
     /// </summary>
+    [DefaultExecutionOrder(-200)] // moves the grips before the ropes (ElasticRope: -100) step on them
     public sealed class CollisionBendBootstrap : MonoBehaviour
     {
         [SerializeField, Tooltip("Rest length of each rope (m).")]

@@ -66,6 +66,7 @@ namespace HookeRope.Samples.FallArrest
             var body = worker.AddComponent<Rigidbody>();
             body.mass = m_WorkerMass;
             body.constraints = RigidbodyConstraints.FreezeRotation;
+            body.interpolation = RigidbodyInterpolation.Interpolate; // drawn smoothly between fixed steps
             var dRing = new GameObject("Harness D-Ring");
             dRing.transform.SetParent(worker.transform, false);
             dRing.transform.localPosition = new Vector3(-0.5f, 0.7f, 0f);

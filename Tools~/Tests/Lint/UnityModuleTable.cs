@@ -86,7 +86,7 @@ namespace HookeRope.Tests.Lint
             // UnityEngine.CoreModule: "Implemented in: UnityEngine.CoreModule" on each 2022.3 Scripting Reference page.
             Add(CoreModule, "UnityEngine",
                 "AddComponentMenu", "Application", "Behaviour", "Bounds", "Camera", "Color", "Component", "Debug",
-                "DisallowMultipleComponent", "ExecuteAlways", "ExecuteInEditMode", "FilterMode", "GameObject", "Gizmos",
+                "DefaultExecutionOrder", "DisallowMultipleComponent", "ExecuteAlways", "ExecuteInEditMode", "FilterMode", "GameObject", "Gizmos",
                 "HeaderAttribute", "HelpURLAttribute", "HideFlags", "LayerMask", "LogType", "Material", "Mesh",
                 "MeshFilter", "MeshRenderer", "MeshTopology", "MinAttribute", "MissingReferenceException",
                 "MonoBehaviour", "Object", "PrimitiveType", "PropertyAttribute", "QualitySettings", "Quaternion",

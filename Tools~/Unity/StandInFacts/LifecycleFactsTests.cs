@@ -52,6 +52,26 @@ namespace HookeRope.StandIn.Facts
         }
 
         [Test]
+        public void DefaultExecutionOrderSortsScriptsBeforeCreationOrder()
+        {
+            // Manual "Script Execution Order": lower values run first; scripts without the attribute have 0.
+            World.IsPlaying = true;
+            var late = new GameObject("L", typeof(LateProbe));
+            var plain = new GameObject("P", typeof(LifecycleProbe));
+            var early = new GameObject("E", typeof(EarlyProbe));
+            LifecycleProbe.Calls.Clear();
+            PlayerLoop.RunFrames(1);
+            Assert.That(LifecycleProbe.Calls, Is.EqualTo(new[]
+            {
+                "P.Start",
+                "E.Early.FixedUpdate", "P.FixedUpdate@0.00", "L.Late.FixedUpdate",
+                "E.Early.Update", "P.Update", "L.Late.Update",
+                "P.LateUpdate",
+            }));
+            Assert.That(late && plain && early, Is.True);
+        }
+
+        [Test]
         public void DisabledScriptIsAwakenedButNotEnabled()
         {
             World.IsPlaying = true;

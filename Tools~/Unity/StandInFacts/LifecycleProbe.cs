@@ -34,4 +34,20 @@ namespace HookeRope.StandIn.Facts
     sealed class SingleProbe : MonoBehaviour
     {
     }
+
+    /// <summary>A script ordered before default-order scripts by [DefaultExecutionOrder].</summary>
+    [DefaultExecutionOrder(-100)]
+    sealed class EarlyProbe : MonoBehaviour
+    {
+        void FixedUpdate() => LifecycleProbe.Calls.Add(name + ".Early.FixedUpdate");
+        void Update() => LifecycleProbe.Calls.Add(name + ".Early.Update");
+    }
+
+    /// <summary>A script ordered after default-order scripts by [DefaultExecutionOrder].</summary>
+    [DefaultExecutionOrder(100)]
+    sealed class LateProbe : MonoBehaviour
+    {
+        void FixedUpdate() => LifecycleProbe.Calls.Add(name + ".Late.FixedUpdate");
+        void Update() => LifecycleProbe.Calls.Add(name + ".Late.Update");
+    }
 }

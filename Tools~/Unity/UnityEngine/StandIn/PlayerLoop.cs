@@ -20,7 +20,7 @@ namespace HookeRope.StandIn
     /// <summary>
     /// Not part of Unity: the player loop, advanced by tests (the stand-in has no real-time clock). One frame, after
     /// the manual's "Order of execution for event functions": the clock advances by <see cref="FrameInterval"/>;
-    /// in Play mode, one fixed step per due multiple of Time.fixedDeltaTime (Start for new scripts, FixedUpdate on
+    /// scripts run in [DefaultExecutionOrder] order, then creation order; in Play mode, one fixed step per due multiple of Time.fixedDeltaTime (Start for new scripts, FixedUpdate on
     /// every active and enabled script, then the physics step when Physics.simulationMode is FixedUpdate, then
     /// WaitForFixedUpdate resumes); interpolated Rigidbodies are posed; Start for new scripts, Update, `yield null`
     /// resumes, LateUpdate; deferred destroys. In Edit mode only [ExecuteAlways] scripts get Update and LateUpdate,
@@ -141,7 +141,10 @@ namespace HookeRope.StandIn
             s_Behaviours.Clear();
         }
 
-        /// <summary>The scripts that receive messages now (Awake ran), in creation order.</summary>
+        /// <summary>
+        /// The scripts that receive messages now (Awake ran), sorted by [DefaultExecutionOrder] (lower first, 0 without
+        /// it), in creation order among equal orders (a stable insertion sort: no allocation).
+        /// </summary>
         static void CollectRunning()
         {
             s_Behaviours.Clear();
@@ -150,8 +153,26 @@ namespace HookeRope.StandIn
             {
                 var components = objects[o].ComponentList;
                 for (int c = 0; c < components.Count; c++)
-                    if (components[c] is MonoBehaviour b && b.IsAlive && b.AwakeCalled && Lifecycle.Runs(b)) s_Behaviours.Add(b);
+                {
+                    if (!(components[c] is MonoBehaviour b) || !b.IsAlive || !b.AwakeCalled || !Lifecycle.Runs(b)) continue;
+                    int order = ExecutionOrder(b.GetType());
+                    int at = s_Behaviours.Count;
+                    while (at > 0 && ExecutionOrder(s_Behaviours[at - 1].GetType()) > order) at--;
+                    s_Behaviours.Insert(at, b);
+                }
             }
+        }
+
+        static readonly Dictionary<Type, int> s_Orders = new Dictionary<Type, int>();
+
+        /// <summary>The type's [DefaultExecutionOrder] value as declared on the class itself (approx.: a base class's is not inherited), 0 without it.</summary>
+        internal static int ExecutionOrder(Type type)
+        {
+            if (s_Orders.TryGetValue(type, out int order)) return order;
+            var attribute = (DefaultExecutionOrder)Attribute.GetCustomAttribute(type, typeof(DefaultExecutionOrder), false);
+            order = attribute?.order ?? 0;
+            s_Orders.Add(type, order);
+            return order;
         }
     }
 }
