@@ -169,7 +169,6 @@ namespace HookeRope
             set
             {
                 m_SegmentCount = RopeParameters.Check(value, RopeParameters.SegmentCount.Row);
-                if (_rope != null && _rope.SegmentCount != m_SegmentCount) _rebuildPending = true;
             }
         }
 
@@ -242,17 +241,17 @@ namespace HookeRope
         public RopeSimulation Simulation => _simulation;
 
         /// <summary>Whether the radius thins with the Poisson ratio as the rope stretches (off: the radius stays R).</summary>
-        public bool PoissonThinning { get => m_RadiusModel; set { m_RadiusModel = value; ApplyFeatureToggles(); } }
+        public bool PoissonThinning { get => m_RadiusModel; set { m_RadiusModel = value; ApplySettings(); } }
 
         /// <summary>Whether the radius follows the Poisson ratio. Use <see cref="PoissonThinning"/>.</summary>
         [Obsolete("Use PoissonThinning; RadiusModel (a bool named like the core type) is removed in 0.2.")]
         public bool RadiusModel { get => PoissonThinning; set => PoissonThinning = value; }
 
         /// <summary>Whether a neck forms at the defect below r_min.</summary>
-        public bool Necking { get => m_Necking; set { m_Necking = value; ApplyFeatureToggles(); } }
+        public bool Necking { get => m_Necking; set { m_Necking = value; ApplySettings(); } }
 
         /// <summary>Whether the rope can break.</summary>
-        public bool Fracture { get => m_Fracture; set { m_Fracture = value; ApplyFeatureToggles(); } }
+        public bool Fracture { get => m_Fracture; set { m_Fracture = value; ApplySettings(); } }
 
         /// <summary>Start attachment. Setting its Point or Body (from code or the inspector) rebuilds the rope at the next step.</summary>
         public RopeEnd StartAttachment => m_Start;
@@ -261,19 +260,19 @@ namespace HookeRope
         public RopeEnd EndAttachment => m_End;
 
         /// <summary>How the rope collides; rebuilds the rope at the next step.</summary>
-        public RopeCollisionMode CollisionMode { get => m_CollisionMode; set { m_CollisionMode = value; _rebuildPending |= _rope != null; } }
+        public RopeCollisionMode CollisionMode { get => m_CollisionMode; set => m_CollisionMode = value; }
 
         /// <summary>Colliders used in <see cref="RopeCollisionMode.ListedColliders"/> mode; rebuilds the rope at the next step.</summary>
-        public Collider[] Colliders { get => m_Colliders; set { m_Colliders = value ?? Array.Empty<Collider>(); _rebuildPending |= _rope != null; } }
+        public Collider[] Colliders { get => m_Colliders; set => m_Colliders = value ?? Array.Empty<Collider>(); }
 
         /// <summary>Coulomb friction coefficient between rope and colliders (dimensionless), range <see cref="RopeParameters.Friction"/>; rebuilds the rope at the next step.</summary>
-        public float Friction { get => m_Friction; set => SetForRebuild(ref m_Friction, value, RopeParameters.Friction.Row); }
+        public float Friction { get => m_Friction; set => m_Friction = RopeParameters.Check(value, RopeParameters.Friction.Row); }
 
         /// <summary>Compliance of the Transform attachments (m/N), range <see cref="RopeParameters.AttachmentCompliance"/>; rebuilds the rope at the next step.</summary>
-        public float AttachmentCompliance { get => m_AttachmentCompliance; set => SetForRebuild(ref m_AttachmentCompliance, value, RopeParameters.AttachmentCompliance.Row); }
+        public float AttachmentCompliance { get => m_AttachmentCompliance; set => m_AttachmentCompliance = RopeParameters.Check(value, RopeParameters.AttachmentCompliance.Row); }
 
         /// <summary>Plane Transforms (up axis = normal); rebuilds the rope at the next step.</summary>
-        public Transform[] Planes { get => m_Planes; set { m_Planes = value ?? Array.Empty<Transform>(); _rebuildPending |= _rope != null; } }
+        public Transform[] Planes { get => m_Planes; set => m_Planes = value ?? Array.Empty<Transform>(); }
 
         // ---- Validation and the copy into the core --------------------------------------------------------
         void OnValidate()
@@ -310,9 +309,7 @@ namespace HookeRope
             SyncStiffness();
             if (m_Colliders == null) m_Colliders = Array.Empty<Collider>();
             if (m_Planes == null) m_Planes = Array.Empty<Transform>();
-            if (_rope == null) return;
-            if (TopologyChanged()) _rebuildPending = true;
-            ApplySettings();
+            if (_rope != null) ApplySettings();   // what cannot change in place is rebuilt by the next step (TopologyChanged)
         }
 
         static float Area(float radius) => MathF.PI * radius * radius;
@@ -328,8 +325,6 @@ namespace HookeRope
         /// <summary>Integer variant of <see cref="SetLive(ref float, float, ParameterInfo)"/>.</summary>
         void SetLive(ref int field, int value, ParameterInfo row) { field = RopeParameters.Check(value, row); ApplySettings(); }
 
-        /// <summary>Checks <paramref name="value"/> against <paramref name="row"/>, stores it and rebuilds the rope at the next step.</summary>
-        void SetForRebuild(ref float field, float value, ParameterInfo row) { field = RopeParameters.Check(value, row); _rebuildPending |= _rope != null; }
 
         void SyncStiffness()
         {
@@ -376,11 +371,6 @@ namespace HookeRope
             if (_rope != null) WriteRadiusSettings(_radiusSettings);
         }
 
-        void ApplyFeatureToggles()
-        {
-            if (_rope != null && (_simulation.RadiusSettings != null) != RadiusFeaturesOn) _rebuildPending = true;
-            ApplySettings();
-        }
 
         /// <summary>How far the Layer Mask collider query reaches: the rest length stretched to the break strain (or doubled), plus R.</summary>
         ColliderReach Reach => new ColliderReach(m_RestLength * (1f + (m_Fracture ? m_BreakStrain : 1f)), m_Radius);

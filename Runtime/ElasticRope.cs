@@ -40,7 +40,6 @@ namespace HookeRope
         RopeSimulation _simulation;
         readonly Stopwatch _stopwatch = new Stopwatch();
         Vector3 _origin;
-        bool _rebuildPending;
         bool _breakRaised;
 
         // ---- Read-outs ------------------------------------------------------------------------------------
@@ -139,7 +138,6 @@ namespace HookeRope
 
             RecordBuiltTopology();
             _breakRaised = false;
-            _rebuildPending = false;
         }
 
         /// <summary>
@@ -151,7 +149,7 @@ namespace HookeRope
         {
             if (!(deltaTime > 0f) || float.IsInfinity(deltaTime))
                 throw new ArgumentOutOfRangeException(nameof(deltaTime), deltaTime, "deltaTime must be in (0, +inf) seconds");
-            if (_rope == null || _rebuildPending || TopologyChanged()) Rebuild();
+            if (_rope == null || TopologyChanged()) Rebuild();
 
             _attachments.CopyIn(_rope, _origin);
             _colliderBinding.BeforeStep(_rope, _origin, Reach);
