@@ -1,7 +1,6 @@
 namespace UnityEngine
 {
-    /// <summary>Stand-in of UnityEngine.RigidbodyConstraints: which degrees of freedom of a Rigidbody are simulated.</summary>
-    [System.Flags]
+    /// <summary>Stand-in of UnityEngine.RigidbodyConstraints: which degrees of freedom of a Rigidbody are simulated (values as Unity 2022.3, Modules/Physics/Managed/Dynamics.cs; not a [Flags] enum there either).</summary>
     public enum RigidbodyConstraints
     {
         /// <summary>No constraints.</summary>
