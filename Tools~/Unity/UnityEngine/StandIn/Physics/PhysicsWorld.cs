@@ -168,6 +168,31 @@ namespace HookeRope.StandIn
             return count;
         }
 
+        /// <summary>
+        /// Physics.RaycastAll over the registered colliders (in the order they were added): every collider the ray
+        /// (unit <paramref name="direction"/>) enters within <paramref name="maxDistance"/> m, not those it starts
+        /// inside; layer and trigger rules as <see cref="OverlapSphere"/>. Allocates the result array, as Unity does.
+        /// </summary>
+        internal static RaycastHit[] RaycastAll(Vector3 origin, Vector3 direction, float maxDistance, int layerMask, QueryTriggerInteraction queryTriggerInteraction)
+        {
+            bool hitTriggers = queryTriggerInteraction == QueryTriggerInteraction.Collide ||
+                               queryTriggerInteraction == QueryTriggerInteraction.UseGlobal && QueriesHitTriggers;
+            var hits = new List<RaycastHit>();
+            for (int i = 0; i < s_Colliders.Count; i++)
+            {
+                var collider = s_Colliders[i];
+                collider.SyncIfRejoined();
+                if (!collider.InScene) continue;
+                if ((layerMask & (1 << collider.gameObject.layer)) == 0) continue;
+                if (collider.isTrigger && !hitTriggers) continue;
+                var shape = collider.PhysicsShape(collider.attachedRigidbody);
+                if (shape.Kind == ShapeKind.Unsupported) throw StandInError.Unsupported(shape.Unsupported + " in Physics.RaycastAll");
+                if (!ShapeRaycast.Enter(origin, direction, shape, out double distance, out Vector3 normal) || !(distance <= maxDistance)) continue;
+                hits.Add(new RaycastHit(ShapeRaycast.At(origin, direction, distance), normal, (float)distance, collider));
+            }
+            return hits.ToArray();
+        }
+
         static void WriteTransform(Rigidbody body, Vector3 position, Quaternion rotation)
         {
             var t = body.transform;
