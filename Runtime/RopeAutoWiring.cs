@@ -98,15 +98,16 @@ namespace HookeRope
         /// The beam above the D-ring: the nearest collider a ray from <paramref name="dRing"/> along the unit
         /// <paramref name="up"/> enters within <paramref name="reach"/> m (the rest length, so the rope is never
         /// pre-stretched at build), on Physics.DefaultRaycastLayers, triggers ignored, leaving out colliders in the
-        /// rig's hierarchy (or attached to its body) and in the rope's own. Transform changes are synced into physics
-        /// first (Physics.autoSyncTransforms is off by default), so a rig or beam moved this frame is found where it is.
-        /// Allocates (RaycastAll): it runs once per wiring, never per step.
+        /// rig's hierarchy (or attached to its body) and in the rope's own. In edit mode Transform changes are synced
+        /// into physics first (Physics.autoSyncTransforms is off by default), so a beam just moved in the Scene view is
+        /// found where it is; in Play the query sees the poses of the last step, as any query does (a sync there would
+        /// also push interpolated Transforms into the bodies). Allocates (RaycastAll): once per wiring, never per step.
         /// </summary>
         static bool FindBeam(Vector3 dRing, Vector3 up, float reach, Transform rig, Transform rope, out RaycastHit nearest)
         {
             nearest = default;
             if (!(reach > 0f)) return false;
-            Physics.SyncTransforms();
+            if (!Application.isPlaying) Physics.SyncTransforms();
             var hits = Physics.RaycastAll(dRing, up, reach, Physics.DefaultRaycastLayers, QueryTriggerInteraction.Ignore);
             bool found = false;
             foreach (var hit in hits)
