@@ -29,14 +29,7 @@ namespace HookeRope.Tests.Components
         [SetUp] public void SetUp() { _scene = new UnityRopeScene(); _scene.Begin(); }
         [TearDown] public void TearDown() => _scene.End();
 
-        Rigidbody Worker(out Transform dRing)
-        {
-            var worker = _scene.Body("Worker", new Vector3(0f, 2f, 0f), Mass);
-            dRing = new GameObject("Harness D-Ring").transform;
-            dRing.SetParent(worker.transform, false);
-            dRing.localPosition = DRingOffset;
-            return worker;
-        }
+        Rigidbody Worker(out Transform dRing) => _scene.Rig(new Vector3(0f, 2f, 0f), Mass, DRingOffset, out dRing);
 
         [Test]
         public void PrefabDroppedOnAWorkerRigIsWiredAndArrestsTheFall()

@@ -22,14 +22,7 @@ namespace HookeRope.Tests.Components
         [SetUp] public void SetUp() { _scene = new UnityRopeScene(); _scene.Begin(); Selection.activeObject = null; }
         [TearDown] public void TearDown() { Selection.activeObject = null; _scene.End(); }
 
-        Rigidbody Worker(out Transform dRing)
-        {
-            var worker = _scene.Body("Worker", new Vector3(0f, 2f, 0f), 100f);
-            dRing = new GameObject("Harness D-Ring").transform;
-            dRing.SetParent(worker.transform, false);
-            dRing.localPosition = new Vector3(0f, 0.4f, 0.1f);
-            return worker;
-        }
+        Rigidbody Worker(out Transform dRing) => _scene.Rig(new Vector3(0f, 2f, 0f), 100f, new Vector3(0f, 0.4f, 0.1f), out dRing);
 
         static void AssertAt(Transform t, Vector3 expected) =>
             Assert.That((t.position - expected).magnitude, Is.LessThan(1e-6f), t.name + " at " + t.position + ", expected " + expected);
