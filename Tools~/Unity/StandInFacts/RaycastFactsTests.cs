@@ -157,6 +157,26 @@ namespace HookeRope.StandIn.Facts
         }
 
         [Test]
+        public void PlaneAndQuadMeshCollidersAreHitOnlyOnTheirFrontFaces()
+        {
+            // Physics.queriesHitBackfaces is false by default: a mesh triangle is hit from its front side only
+            var plane = GameObject.CreatePrimitive(PrimitiveType.Plane); // 10 × 10 m, facing +Y
+            plane.transform.position = new Vector3(0f, 3f, 0f);
+            Physics.SyncTransforms(); // a Transform moved after its collider was created reaches queries at a sync
+            Assert.That(Physics.Raycast(new Vector3(1f, 5f, 2f), Vector3.down, out var hit), Is.True);
+            AssertHit(hit, plane.GetComponent<MeshCollider>(), new Vector3(1f, 3f, 2f), Vector3.up, 2f);
+            Assert.That(Physics.Raycast(new Vector3(1f, 0f, 2f), Vector3.up, out hit), Is.False, "from below: its back face");
+            Assert.That(Physics.Raycast(new Vector3(6f, 5f, 0f), Vector3.down, out hit), Is.False, "past its 5 m half width");
+
+            var quad = GameObject.CreatePrimitive(PrimitiveType.Quad); // 1 × 1 m, facing −Z
+            quad.transform.position = new Vector3(0f, 10f, 2f);
+            Physics.SyncTransforms();
+            Assert.That(Physics.Raycast(new Vector3(0.2f, 10f, 0f), Vector3.forward, out hit), Is.True);
+            AssertHit(hit, quad.GetComponent<MeshCollider>(), new Vector3(0.2f, 10f, 2f), Vector3.back, 2f);
+            Assert.That(Physics.Raycast(new Vector3(0.2f, 10f, 4f), Vector3.back, out hit), Is.False, "from behind");
+        }
+
+        [Test]
         public void AColliderOnABodyIsHitWhereTheBodyIsAndNamesIt()
         {
             var go = new GameObject("Crate");

@@ -175,6 +175,8 @@ namespace HookeRope.StandIn
             {
                 var collider = s_Colliders[i];
                 if (!Queried(collider, layerMask, hitTriggers, "Physics.RaycastAll", out var shape)) continue;
+                // mesh rectangles are one-sided for raycasts (Physics.queriesHitBackfaces, false by default, is not modelled)
+                if (collider is MeshCollider mesh && !(Vector3.Dot(direction, mesh.FrontNormal(collider.PhysicsFrame(collider.attachedRigidbody))) < 0f)) continue;
                 if (!ShapeRaycast.Enter(origin, direction, shape, out double distance, out Vector3 normal) || !(distance <= maxDistance)) continue;
                 hits.Add(new RaycastHit(ShapeRaycast.At(origin, direction, distance), normal, (float)distance, collider));
             }
