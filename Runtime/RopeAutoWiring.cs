@@ -9,8 +9,9 @@ namespace HookeRope
     /// "D-ring", "Dring", "D ring" or "Harness Attachment", case-insensitive, spaces/hyphens/underscores ignored; else
     /// the body's position), and the Start becomes an anchor outside the rig: a root-level "&lt;rope name&gt; Anchor",
     /// created or reused, placed against gravity above the D-ring: on the first collider a ray from the D-ring hits
-    /// within the rest length (the beam's underside; see <see cref="FindBeam"/>), else the rest length above it. An instance is the plan for
-    /// one rope, made by <see cref="For"/> (null when nothing needs wiring) and carried out by <see cref="Apply"/>.
+    /// within the rest length (the beam's underside; see <see cref="FindBeam"/>), else the rest length above it. An
+    /// instance is the plan for one rope, made by <see cref="For"/> (null when nothing needs wiring) and carried out by
+    /// <see cref="Apply"/>.
     /// The rope object itself stays where it is: once both ends are wired its pose carries neither end (the mesh is
     /// rebuilt from world positions every frame), and Unity refuses to re-parent objects inside a prefab instance.
     /// </summary>
