@@ -69,7 +69,7 @@ namespace HookeRope.Tests.Components
         }
 
         [Test]
-        public void BuiltInPipelineGetsAnOrangeTubeAndAnAlphaClippedBurrMaterial()
+        public void BuiltInPipelineGetsAnOrangeTubeAndAnOpaqueBurrCopy()
         {
             if (UnityEngine.Rendering.GraphicsSettings.currentRenderPipeline != null)
                 Assert.Ignore("the generated materials checked here are the Built-in pipeline's");
@@ -85,11 +85,15 @@ namespace HookeRope.Tests.Components
             Assert.That(orange.g, Is.EqualTo(0.5f).Within(1e-6f));
             Assert.That(orange.b, Is.EqualTo(0.12f).Within(1e-6f));
             var burr = materials[1];
-            Assert.That(burr.IsKeywordEnabled("_ALPHATEST_ON"), Is.True);
-            Assert.That(burr.GetFloat("_Cutoff"), Is.EqualTo(0.5f));
-            Assert.That(burr.renderQueue, Is.EqualTo(2450), "AlphaTest queue");
+            Assert.That(burr, Is.Not.SameAs(tube));
+            Assert.That(burr.shader, Is.SameAs(tube.shader), "the strands are geometry: the tube's opaque shader draws them");
+            Assert.That(burr.IsKeywordEnabled("_ALPHATEST_ON"), Is.False, "no shader_feature keyword a player could strip");
+            Assert.That(burr.shaderKeywords.Length, Is.EqualTo(0));
+            Assert.That(burr.renderQueue, Is.EqualTo(2000), "Geometry queue");
+            Assert.That(burr.GetColor("_Color").g, Is.EqualTo(0.5f).Within(1e-6f), "the rope's colour, streaked by the texture");
             var texture = burr.GetTexture("_MainTex");
             Assert.That(texture, Is.Not.Null);
+            Assert.That(tube.GetTexture("_MainTex"), Is.Null);
             Assert.That(texture.width, Is.EqualTo(256));
             Assert.That(texture.height, Is.EqualTo(64));
             Assert.That(texture.isReadable, Is.False, "the CPU copy is released after the upload");
