@@ -23,16 +23,6 @@ namespace HookeRope.Tests.Components
         /// <summary>Unity's Geometry render queue: opaque objects.</summary>
         const int GeometryQueue = 2000;
 
-        /// <summary>A render-pipeline asset that reports the default material and shader a test gives it (null: none, as URP and HDRP in a player).</summary>
-        sealed class PipelineStandIn : RenderPipelineAsset
-        {
-            public Material Material;
-            public Shader Shader;
-            public override Material defaultMaterial => Material;
-            public override Shader defaultShader => Shader;
-            protected override RenderPipeline CreatePipeline() => null;
-        }
-
         UnityRopeScene _scene;
         Texture2D _burrTexture;
         readonly System.Collections.Generic.List<Object> _created = new System.Collections.Generic.List<Object>();
@@ -60,14 +50,7 @@ namespace HookeRope.Tests.Components
             return created;
         }
 
-        PipelineStandIn Pipeline(Material material, Shader shader)
-        {
-            var asset = Track(ScriptableObject.CreateInstance<PipelineStandIn>());
-            asset.name = "Test SRP";
-            asset.Material = material;
-            asset.Shader = shader;
-            return asset;
-        }
+        TestPipelineAsset Pipeline(Material material, Shader shader) => Track(TestPipelineAsset.Make(material, shader));
 
         /// <summary>Shader.Find as a player build that does not include the shaders named in <paramref name="excluded"/>.</summary>
         static Func<string, Shader> PlayerWithout(params string[] excluded) =>

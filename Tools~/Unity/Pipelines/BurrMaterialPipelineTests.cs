@@ -1,8 +1,7 @@
-using System;
 using NUnit.Framework;
 using UnityEngine;
 using UnityEngine.Rendering;
-using Object = UnityEngine.Object;
+using HookeRope.Tests.Components;
 
 namespace HookeRope.StandIn.Pipelines
 {
@@ -18,25 +17,10 @@ namespace HookeRope.StandIn.Pipelines
     [TestFixture]
     public sealed class BurrMaterialPipelineTests
     {
-        sealed class PipelineStandIn : RenderPipelineAsset
-        {
-            public Material Material;
-            public Shader Shader;
-            public override Material defaultMaterial => Material;
-            public override Shader defaultShader => Shader;
-            protected override RenderPipeline CreatePipeline() => null;
-        }
-
         [SetUp] public void SetUp() => World.Reset();
         [TearDown] public void TearDown() => World.Reset();
 
-        static PipelineStandIn Pipeline(Material material, Shader shader)
-        {
-            var asset = ScriptableObject.CreateInstance<PipelineStandIn>();
-            asset.Material = material;
-            asset.Shader = shader;
-            return asset;
-        }
+        static TestPipelineAsset Pipeline(Material material, Shader shader) => TestPipelineAsset.Make(material, shader);
 
         static (Material Tube, Material Burr, Texture Texture) Generate(RenderPipelineAsset pipeline)
         {
