@@ -9,7 +9,10 @@ namespace HookeRope
     /// <summary>
     /// Renders the <see cref="ElasticRope"/> on the same GameObject as a procedural tube whose radius follows the
     /// rope's radius model (Poisson thinning, neck) with burred ends where it broke. Submesh 0 is the tube and
-    /// its caps (material 0), submesh 1 the burr strands (material 1, alpha-clipped burr texture). Every LateUpdate
+    /// its caps (material 0), submesh 1 the burr strands (material 1): opaque triangles, by default drawn with a copy of
+    /// the tube material carrying the burr texture (<see cref="RopeDefaultMaterial.CreateBurr"/>; no alpha test, no
+    /// keyword a player build could strip). When no shader is available for a generated material (a player build
+    /// without one), the slots stay empty and one console error per component names the renderer and the fix. Every LateUpdate
     /// it interpolates the rope between the last two physics steps (<see cref="Rope.Interpolate"/>, so 90/120 Hz
     /// headsets see smooth motion at any physics rate) into its one position buffer, in this GameObject's local
     /// space, lets the core build the tube (<see cref="RopeSimulation.FillMesh(System.ReadOnlySpan{float}, System.ReadOnlySpan{float}, System.ReadOnlySpan{float}, TubeVertex[], int[], float)"/>)
@@ -75,6 +78,7 @@ namespace HookeRope
         Material _generatedMaterial;
         Material _generatedBurrMaterial;
         Texture2D _generatedTexture;
+        bool _reportedMissingShader;
 
         /// <summary>Vertices around the tube, range <see cref="RopeParameters.RadialSegments"/>. A new value rebuilds the tube topology at the next frame.</summary>
         public int RadialSegments
@@ -263,14 +267,17 @@ namespace HookeRope
                 RopeDefaultMaterial.SetBaseColor(_generatedMaterial, m_Color);
                 tube = _generatedMaterial;
             }
-            if (burr == null)
+            if (burr == null && tube != null)
             {
                 if (m_BurrTexture && _generatedTexture == null) _generatedTexture = RopeDefaultMaterial.CreateBurrTexture();
-                _generatedBurrMaterial = m_BurrTexture ? RopeDefaultMaterial.CreateBurr(_generatedTexture) : null;
+                _generatedBurrMaterial = m_BurrTexture ? RopeDefaultMaterial.CreateBurr(tube, _generatedTexture) : null;
                 burr = _generatedBurrMaterial != null ? _generatedBurrMaterial : tube;
             }
-            if (tube == null)
-                Debug.LogWarning("RopeMeshRenderer '" + name + "': no render-pipeline default material and no Standard shader; assign a material.", this);
+            if (tube == null && !_reportedMissingShader)
+            {
+                _reportedMissingShader = true;
+                Debug.LogError("RopeMeshRenderer '" + name + "': " + RopeDefaultMaterial.MissingShaderAdvice(GraphicsSettings.currentRenderPipeline), this);
+            }
             _renderer.sharedMaterials = new[] { tube, burr };
         }
 
