@@ -5,6 +5,8 @@ using NUnit.Framework;
 using UnityEditor;
 using UnityEngine;
 using UnityEngine.TestTools;
+using UnityEngine.TestTools.Constraints;
+using Is = UnityEngine.TestTools.Constraints.Is;
 
 namespace HookeRope.Tests.Components
 {
@@ -182,10 +184,12 @@ namespace HookeRope.Tests.Components
             Assert.That((rope.GetParticlePosition(0) - new Vector3(0f, 5f, 0f)).magnitude, Is.LessThan(1e-5f), "the end keeps its last pose (m)");
             AssertFinite(rope);
             AssertDrawsFiniteMesh(rope);
+            Assert.That(() => { rope.Simulate(Dt); }, Is.Not.AllocatingGCMemory(), "a cause already reported costs nothing");
 
             // the cause clears, then comes back: a second warning
             hand.localPosition = Vector3.zero;
             rope.Simulate(Dt);
+            Assert.That(() => { rope.Simulate(Dt); }, Is.Not.AllocatingGCMemory(), "valid input costs nothing");
             hand.localPosition = new Vector3(1e10f, 0f, 0f);
             rope.Simulate(Dt);
             Assert.That(WarningsContaining("is at a non-finite position"), Is.EqualTo(2));
