@@ -151,10 +151,13 @@ namespace HookeRope
         }
 
         /// <summary>One line for the console naming what was (or would be) wired.</summary>
+        /// <remarks>An anchor of that name already at the root is reused where it stands, and the line says so.</remarks>
         internal string Describe() =>
             _rope.name + ": End pulls Rigidbody '" + Body.name + "' at " + (EndPoint != null ? "'" + EndPoint.name + "'" : "its position") +
-            (RewiresStart ? "; Start anchored at '" + AnchorName + "'" + (Beam != null ? ", snapped to '" + Beam.name + "'," : "") + " " +
-                            AnchorHeight.ToString("G4", System.Globalization.CultureInfo.InvariantCulture) + " m above it" : "") + ".";
+            (!RewiresStart ? "" :
+             FindRootAnchor(AnchorName) != null ? "; Start anchored at the existing '" + AnchorName + "', kept where it is" :
+             "; Start anchored at '" + AnchorName + "'" + (Beam != null ? ", snapped to '" + Beam.name + "'," : "") + " " +
+             AnchorHeight.ToString("G4", System.Globalization.CultureInfo.InvariantCulture) + " m above it") + ".";
 
         /// <summary>
         /// True when <paramref name="name"/> names a D-ring: after dropping spaces, hyphens and underscores and

@@ -177,6 +177,22 @@ namespace HookeRope.Tests.Components
         }
 
         [Test]
+        public void AnExistingRootAnchorIsReusedWhereItStandsAndTheMessageSaysSo()
+        {
+            var worker = Worker(out var dRing);
+            Beam(4f); // within reach, but the user's own anchor wins
+            var existing = _scene.Point("Lanyard Anchor", new Vector3(1f, 5f, 0f));
+            var rope = RopeOnWorker(worker, dRing);
+
+            var fix = RopeAttachFix.For(rope);
+            StringAssert.Contains("the existing 'Lanyard Anchor', kept where it is", fix.Message);
+            StringAssert.DoesNotContain("snapped", fix.Message);
+            fix.Apply();
+            Assert.That(rope.StartAttachment.Point, Is.SameAs(existing));
+            Assert.That((existing.position - new Vector3(1f, 5f, 0f)).magnitude, Is.EqualTo(0f), "not moved");
+        }
+
+        [Test]
         public void TheRigsTheRopesAndTriggerCollidersAboveTheDRingAreIgnored()
         {
             var worker = Worker(out var dRing);
