@@ -55,6 +55,15 @@ namespace HookeRope.Lab.Figures
             return true;
         }
 
+        /// <summary>Index of the first broken segment, or −1 while the rope is intact.</summary>
+        public int FirstBrokenSegment()
+        {
+            var broken = Setup.Rope.BrokenSegments;
+            for (int j = 0; j < broken.Length; j++)
+                if (broken[j]) return j;
+            return -1;
+        }
+
         /// <summary>World position (m) of the radius model's defect (the neck's centre): on its segment at its fraction.</summary>
         public Float3 DefectPosition()
         {

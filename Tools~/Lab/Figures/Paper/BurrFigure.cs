@@ -33,10 +33,8 @@ namespace HookeRope.Lab.Figures.Paper
         /// <summary>The end of the fixed piece at the first broken segment (m).</summary>
         public static Float3 BrokenEnd(FigureRun run)
         {
-            var broken = run.Setup.Rope.BrokenSegments;
-            for (int j = 0; j < broken.Length; j++)
-                if (broken[j]) return run.Setup.Rope.GetPosition(j);
-            return run.DefectPosition();
+            int j = run.FirstBrokenSegment();
+            return j >= 0 ? run.Setup.Rope.GetPosition(j) : run.DefectPosition();
         }
 
         /// <summary>The figure: three panels; Numbers hold per panel the burr triangles drawn and the core's burr index count / 3.</summary>

@@ -72,10 +72,8 @@ namespace HookeRope.Lab.Figures.Paper
         /// <summary>Midpoint between the two broken ends (m), else the defect.</summary>
         public static Float3 BreakCentre(FigureRun run)
         {
-            var broken = run.Setup.Rope.BrokenSegments;
-            for (int j = 0; j < broken.Length; j++)
-                if (broken[j]) return Float3.Lerp(run.Setup.Rope.GetPosition(j), run.Setup.Rope.GetPosition(j + 1), 0.5f);
-            return run.DefectPosition();
+            int j = run.FirstBrokenSegment();
+            return j >= 0 ? Float3.Lerp(run.Setup.Rope.GetPosition(j), run.Setup.Rope.GetPosition(j + 1), 0.5f) : run.DefectPosition();
         }
     }
 }
