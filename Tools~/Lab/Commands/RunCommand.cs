@@ -11,6 +11,11 @@ namespace HookeRope.Lab.Commands
     /// <summary><c>run [scenario|file.json]</c>: CSV, force plot, radius plot, optional glTF, summary.</summary>
     public static class RunCommand
     {
+        /// <summary>Exit code of a diverged run (NaN, a particle flung away, energy created, strain errors beyond the rope's length).</summary>
+        public const int Diverged = 3;
+        /// <summary>Exit code of <c>run --check</c> when the run is unconverged or a physics check failed.</summary>
+        public const int CheckFailed = 4;
+
         /// <summary>Runs the scenario and writes its outputs to <paramref name="outDir"/>; returns the exit code.</summary>
         public static int Execute(IAnsiConsole console, string scenario, string outDir, bool svg, bool gltf, bool strict)
         {
@@ -55,11 +60,19 @@ namespace HookeRope.Lab.Commands
                     console.MarkupLine("[yellow]no mesh captured: set outputs.gltfTimes in the scenario (or the mesh builder is not available)[/]");
             }
             var checks = PhysicsChecks.Evaluate(result);
-            SummaryView.Print(console, result, checks, files);
-            if (result.NonFinite) return 3;
-            if (strict)
-                foreach (var check in checks)
-                    if (!check.Passed) return 4;
+            var verdict = ConvergenceVerdict.Judge(result);
+            SummaryView.Print(console, result, verdict, checks, files);
+            return ExitCode(verdict, checks, strict);
+        }
+
+        /// <summary>Exit code of a run: 3 diverged (NaN included); with <paramref name="strict"/>, 4 when unconverged or a physics check failed; else 0.</summary>
+        public static int ExitCode(ConvergenceVerdict verdict, IList<CheckResult> checks, bool strict)
+        {
+            if (verdict.Kind == Convergence.Diverged) return Diverged;
+            if (!strict) return 0;
+            if (verdict.Kind == Convergence.Unconverged) return CheckFailed;
+            foreach (var check in checks)
+                if (!check.Passed) return CheckFailed;
             return 0;
         }
     }

@@ -33,6 +33,12 @@ namespace HookeRope.Lab.Scenarios
         /// <summary>Which physics check the lab applies to the run (set by built-in scenarios).</summary>
         public ExpectationSpec Expect = new ExpectationSpec();
 
+        /// <summary>
+        /// True for a fall-arrest scenario (its check is "fall-arrest", or a body falls from <c>initial.fallHeight</c>):
+        /// the only scenarios whose summary and plots carry the EN 355 / ANSI / OSHA limits.
+        /// </summary>
+        public bool IsFallArrest => Expect.Check == "fall-arrest" || (Initial.FallHeight.HasValue && End.Kind == AttachmentKind.Body);
+
         /// <summary>Number of host steps to cover <see cref="Duration"/>.</summary>
         public int StepCount => (int)System.Math.Ceiling(Duration / HostStep - 1e-9);
     }

@@ -111,6 +111,8 @@ namespace HookeRope.Lab.Simulation
         public double[] LoadDrop;
         /// <summary>Tension of the first segment after each host step, N.</summary>
         public double[] TopTensionSeries;
+        /// <summary>Solver residual (strain error, dimensionless) after each host step.</summary>
+        public float[] ResidualSeries;
         /// <summary>Elongation after each host step, m.</summary>
         public double[] ElongationSeries;
         /// <summary>Host step in s (series index k is time (k + 1)·HostStep).</summary>

@@ -152,6 +152,7 @@ namespace HookeRope.Lab.Simulation
             result.LoadDrop = new double[steps];
             result.ElongationSeries = new double[steps];
             result.TopTensionSeries = new double[steps];
+            result.ResidualSeries = new float[steps];
             double sampleInterval = s.Outputs.SampleRate > 0 ? 1.0 / s.Outputs.SampleRate : 0;
             double nextSample = 0;
             int nextProfile = 0, nextMesh = 0;
@@ -171,6 +172,7 @@ namespace HookeRope.Lab.Simulation
                 var report = setup.Step((float)dt);
                 result.Steps = k + 1;
                 if (report.Residual > result.MaxResidual) result.MaxResidual = report.Residual;
+                result.ResidualSeries[k] = report.Residual;
                 var load = rope.GetPosition(last);
                 if (!load.IsFinite || !AllFinite(rope))
                 {
@@ -230,6 +232,7 @@ namespace HookeRope.Lab.Simulation
                 Array.Resize(ref result.LoadDrop, result.Steps);
                 Array.Resize(ref result.ElongationSeries, result.Steps);
                 Array.Resize(ref result.TopTensionSeries, result.Steps);
+                Array.Resize(ref result.ResidualSeries, result.Steps);
             }
             result.TotalDrop = lowest;
             result.ArrestDistance = double.IsNaN(tautDrop) ? 0 : lowest - tautDrop;
