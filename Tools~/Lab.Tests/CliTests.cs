@@ -64,7 +64,7 @@ namespace HookeRope.Lab.Tests
         public void UnknownOptionIsAParseError()
         {
             int code = Invoke(out _, out string error, "run", "--frobnicate", "--out", dir);
-            Assert.That(code, Is.Not.EqualTo(0));
+            Assert.That(code, Is.EqualTo(LabCli.InvalidInput));
             Assert.That(error, Does.Not.Contain("   at "));
         }
 

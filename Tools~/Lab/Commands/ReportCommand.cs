@@ -10,11 +10,11 @@ namespace HookeRope.Lab.Commands
     /// <summary><c>report</c>: error against run time, Markdown + log–log Pareto plot + recommended defaults.</summary>
     public static class ReportCommand
     {
-        /// <summary>Runs the grid and writes report.md and report-pareto.png to <paramref name="outDir"/>.</summary>
-        public static int Execute(IAnsiConsole console, string outDir, bool quick, int repeats)
+        /// <summary>Runs the grid and writes report.md and report-pareto.png to <paramref name="outDir"/>; <paramref name="progress"/> gets periodic lines with an ETA when the console is not interactive.</summary>
+        public static int Execute(IAnsiConsole console, string outDir, bool quick, int repeats, TextWriter progress = null)
         {
-            if (repeats < 1 || repeats > 50) throw new System.ArgumentOutOfRangeException(nameof(repeats), repeats, "--repeats must be in [1, 50]");
-            Directory.CreateDirectory(outDir);
+            if (repeats < 1 || repeats > 50) throw new UsageException($"--repeats: {repeats} is out of range [1, 50]");
+            OutputFolder.Ensure(outDir);
             console.MarkupLine("[bold]HookeRope lab · report[/]  " + Markup.Escape(MachineInfo.Describe()));
             ReportResult result = null;
             int total = ErrorReport.Grid(quick).Count * ErrorReport.ReferenceScenarios.Length;
@@ -28,7 +28,9 @@ namespace HookeRope.Lab.Commands
             }
             else
             {
-                result = ErrorReport.Measure(quick, quick ? 1 : repeats, null);
+                var lines = progress == null ? null : new ProgressLines("report (configurations × scenarios)", total, progress);
+                int done = 0;
+                result = ErrorReport.Measure(quick, quick ? 1 : repeats, lines == null ? null : _ => lines.Report(++done));
             }
             var series = new List<Plots.Series>();
             var byFamily = new Dictionary<string, Plots.Series>();

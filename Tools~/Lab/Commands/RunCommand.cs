@@ -16,14 +16,26 @@ namespace HookeRope.Lab.Commands
         /// <summary>Exit code of <c>run --check</c> when the run is unconverged or a physics check failed.</summary>
         public const int CheckFailed = 4;
 
-        /// <summary>Runs the scenario and writes its outputs to <paramref name="outDir"/>; returns the exit code.</summary>
-        public static int Execute(IAnsiConsole console, string scenario, string outDir, bool svg, bool gltf, bool strict)
+        /// <summary>What <c>run</c> prints.</summary>
+        public enum Mode
+        {
+            /// <summary>The one-screen summary table.</summary>
+            Summary,
+            /// <summary>Only the verdict line (and what to change).</summary>
+            Quiet,
+            /// <summary>Only the JSON summary.</summary>
+            Json,
+        }
+
+        /// <summary>Runs the scenario and writes its outputs to <paramref name="outDir"/>; returns the exit code. <paramref name="progress"/> gets periodic lines with an ETA when the console is not interactive (null: none).</summary>
+        public static int Execute(IAnsiConsole console, string scenario, string outDir, bool svg, bool gltf, bool strict,
+            Mode mode = Mode.Summary, TextWriter progress = null)
         {
             var spec = BuiltInScenarios.Resolve(scenario);
-            Directory.CreateDirectory(outDir);
+            OutputFolder.Ensure(outDir);
             RunResult result = null;
             var options = new RunOptions();
-            if (console.Profile.Capabilities.Interactive && spec.StepCount > 2000)
+            if (mode == Mode.Summary && console.Profile.Capabilities.Interactive && spec.StepCount > 2000)
             {
                 console.Progress().Start(ctx =>
                 {
@@ -35,6 +47,11 @@ namespace HookeRope.Lab.Commands
             }
             else
             {
+                if (progress != null)
+                {
+                    var lines = new ProgressLines(spec.Name + " (simulated time)", spec.StepCount, progress);
+                    options.Progress = k => { if ((k & 63) == 0) lines.Report(k); };
+                }
                 result = ScenarioRunner.Run(spec, options);
             }
             var files = new List<string>();
@@ -61,7 +78,23 @@ namespace HookeRope.Lab.Commands
             }
             var checks = PhysicsChecks.Evaluate(result);
             var verdict = ConvergenceVerdict.Judge(result);
-            SummaryView.Print(console, result, verdict, checks, files);
+            string summaryPath = stem + "-summary.json";
+            files.Add(summaryPath);
+            string summary = JsonSummary.Text(result, verdict, checks, files);
+            File.WriteAllText(summaryPath, summary);
+            switch (mode)
+            {
+                case Mode.Json:
+                    console.Profile.Out.Writer.WriteLine(summary);
+                    break;
+                case Mode.Quiet:
+                    console.MarkupLine(SummaryView.VerdictLine(verdict));
+                    if (!verdict.Converged) console.MarkupLine("[bold]what to change:[/] " + Markup.Escape(verdict.Advice));
+                    break;
+                default:
+                    SummaryView.Print(console, result, verdict, checks, files);
+                    break;
+            }
             return ExitCode(verdict, checks, strict);
         }
 

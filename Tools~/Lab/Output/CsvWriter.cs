@@ -5,7 +5,7 @@ using HookeRope.Lab.Simulation;
 
 namespace HookeRope.Lab.Output
 {
-    /// <summary>Writes a run's time series as CSV (invariant culture, SI units in the header).</summary>
+    /// <summary>Writes a run's time series as CSV (invariant culture, full precision, no "-0", SI units in the header).</summary>
     public static class CsvWriter
     {
         /// <summary>Header line: one column per <see cref="Sample"/> field, unit as suffix.</summary>
@@ -41,7 +41,11 @@ namespace HookeRope.Lab.Output
             }
         }
 
-        static StringBuilder Append(StringBuilder line, double value) =>
-            line.Append(value.ToString("G9", CultureInfo.InvariantCulture));
+        /// <summary>Appends <paramref name="value"/> at full precision (shortest round-trip form, invariant culture); −0 is written as 0.</summary>
+        public static StringBuilder Append(StringBuilder line, double value) =>
+            line.Append(Format(value));
+
+        /// <summary><paramref name="value"/> at full precision (shortest text that reads back to the same double); −0 becomes "0".</summary>
+        public static string Format(double value) => (value == 0 ? 0.0 : value).ToString("R", CultureInfo.InvariantCulture);
     }
 }

@@ -46,13 +46,11 @@ namespace HookeRope.Lab.Output
                 Markup.Escape("strain " + Percent(result.MaxElongation / s.Rope.RestLength))
                 + (verdict.Kind == Convergence.Diverged ? " [red](diverged: not physical)[/]" : ""));
             if (result.Samples.Count > 0)
-            {
-                double minRadius = double.MaxValue;
-                foreach (var sample in result.Samples) minRadius = Math.Min(minRadius, sample.MinRadius);
-                table.AddRow("min radius", Num(minRadius * 1000) + " mm", Markup.Escape(string.Format(Invariant, "rest radius {0:G4} mm", s.Rope.Radius * 1000)));
-            }
+                table.AddRow("min radius", Num(MinRadius(result) * 1000) + " mm", Markup.Escape(string.Format(Invariant, "rest radius {0:G4} mm", s.Rope.Radius * 1000)));
             table.AddRow("broken", double.IsNaN(result.BreakTime) ? "no" : "[red]yes[/]",
-                double.IsNaN(result.BreakTime) ? "" : Markup.Escape(string.Format(Invariant, "at {0:G4} s, tension {1} before", result.BreakTime, Force(result.BreakTension))));
+                double.IsNaN(result.BreakTime) ? "" : result.BrokenAtConstruction
+                    ? Markup.Escape("while the rope was built: its initial stretch is past the break criterion, tension " + Force(result.BreakTension))
+                    : Markup.Escape(string.Format(Invariant, "at {0:G4} s, tension {1} before", result.BreakTime, Force(result.BreakTension))));
             foreach (var check in checks)
             {
                 string value = check.Unit.Length > 0 ? Num(check.Measured) + " " + check.Unit : Num(check.Measured);
@@ -70,6 +68,14 @@ namespace HookeRope.Lab.Output
             console.Write(table);
             if (!verdict.Converged) console.MarkupLine("[bold]what to change:[/] " + Markup.Escape(verdict.Advice));
             foreach (var file in files) console.MarkupLine("[grey]wrote[/] " + Markup.Escape(file));
+        }
+
+        /// <summary>Smallest radius over the recorded samples in m (NaN without samples).</summary>
+        public static double MinRadius(RunResult result)
+        {
+            double min = double.NaN;
+            foreach (var sample in result.Samples) if (!(sample.MinRadius >= min)) min = sample.MinRadius;
+            return min;
         }
 
         /// <summary>OSHA 1926.502(d)(16)(iv): the deceleration distance of a personal fall arrest system is at most 1.07 m.</summary>

@@ -77,6 +77,8 @@ namespace HookeRope.Lab.Simulation
         public double TautTime = double.NaN;
         /// <summary>Time of the first break (s), or NaN.</summary>
         public double BreakTime = double.NaN;
+        /// <summary>True when the rope broke while it was built (its initial stretch already past the break criterion).</summary>
+        public bool BrokenAtConstruction;
         /// <summary>Tension just before the first break in N, or NaN.</summary>
         public double BreakTension = double.NaN;
         /// <summary>Largest residual over the run.</summary>

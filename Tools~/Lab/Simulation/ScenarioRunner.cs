@@ -144,6 +144,14 @@ namespace HookeRope.Lab.Simulation
             double lowest = 0, tautDrop = double.NaN;
             var readouts = setup.Simulation.Readouts;
             if (setup.EndLoad >= 0) readouts.ArrestLoad = setup.EndLoad;
+            var constructionBreak = readouts.FirstBreak;
+            if (constructionBreak.HasValue)
+            {
+                // the radius model's fracture decision ran once while the rope was built (RopeSimulation's constructor)
+                result.BrokenAtConstruction = true;
+                result.BreakTime = 0;
+                result.BreakTension = constructionBreak.Value.Tension;
+            }
             result.InitialEnergy = options.TrackEnergy ? rope.TotalEnergy() : 0;
             result.MaxEnergy = result.InitialEnergy;
             double dt = s.HostStep;
