@@ -64,6 +64,8 @@ namespace HookeRope.Lab.Commands
             {
                 Plots.RadiusProfiles(result, stem + "-radius.png", svg ? stem + "-radius.svg" : null);
                 files.Add(stem + "-radius.png");
+                CsvWriter.WriteRadiusProfiles(result, stem + "-radius.csv");
+                files.Add(stem + "-radius.csv");
             }
             if (gltf)
             {

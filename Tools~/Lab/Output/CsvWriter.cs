@@ -41,6 +41,28 @@ namespace HookeRope.Lab.Output
             }
         }
 
+        /// <summary>Header of the radius-profile CSV (long format: one row per instant and point along the rope).</summary>
+        public const string RadiusHeader = "time_s,arc_m,radius_m";
+
+        /// <summary>Writes the radius profiles of <paramref name="result"/> (outputs.profileTimes) to <paramref name="path"/>.</summary>
+        public static void WriteRadiusProfiles(RunResult result, string path)
+        {
+            using (var writer = new StreamWriter(path, false, new UTF8Encoding(false)))
+            {
+                writer.WriteLine(RadiusHeader);
+                var line = new StringBuilder(64);
+                foreach (var profile in result.Profiles)
+                    for (int i = 0; i < profile.Radius.Length; i++)
+                    {
+                        line.Clear();
+                        Append(line, profile.Time).Append(',');
+                        Append(line, profile.Arc[i]).Append(',');
+                        Append(line, profile.Radius[i]);
+                        writer.WriteLine(line.ToString());
+                    }
+            }
+        }
+
         /// <summary>Appends <paramref name="value"/> at full precision (shortest round-trip form, invariant culture); −0 is written as 0.</summary>
         public static StringBuilder Append(StringBuilder line, double value) =>
             line.Append(Format(value));

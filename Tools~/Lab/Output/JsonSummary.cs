@@ -67,6 +67,15 @@ namespace HookeRope.Lab.Output
                 w.WriteEndObject();
             }
             else w.WriteNull("limits");
+            w.WriteStartArray("events");
+            foreach (var e in r.Events)
+            {
+                w.WriteStartObject();
+                Number(w, "time_s", e.Time);
+                w.WriteString("what", e.What);
+                w.WriteEndObject();
+            }
+            w.WriteEndArray();
             w.WriteStartArray("checks");
             foreach (var c in checks)
             {

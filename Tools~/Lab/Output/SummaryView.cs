@@ -51,6 +51,8 @@ namespace HookeRope.Lab.Output
                 double.IsNaN(result.BreakTime) ? "" : result.BrokenAtConstruction
                     ? Markup.Escape("while the rope was built: its initial stretch is past the break criterion, tension " + Force(result.BreakTension))
                     : Markup.Escape(string.Format(Invariant, "at {0:G4} s, tension {1} before", result.BreakTime, Force(result.BreakTension))));
+            foreach (var e in result.Events)
+                table.AddRow("event at " + Num(e.Time) + " s", "", Markup.Escape(e.What));
             foreach (var check in checks)
             {
                 string value = check.Unit.Length > 0 ? Num(check.Measured) + " " + check.Unit : Num(check.Measured);

@@ -73,7 +73,7 @@ namespace HookeRope.Lab.Simulation
 
         /// <summary>True when something moves an anchor or adds energy during the run (keyframes or timed events): the energy criterion does not apply.</summary>
         public static bool Driven(Scenario s) =>
-            s.Start.Kind == AttachmentKind.Keyframes || s.End.Kind == AttachmentKind.Keyframes;
+            s.Start.Kind == AttachmentKind.Keyframes || s.End.Kind == AttachmentKind.Keyframes || s.Events.Count > 0;
 
         /// <summary>Judges a run.</summary>
         public static ConvergenceVerdict Judge(RunResult r)
@@ -121,8 +121,9 @@ namespace HookeRope.Lab.Simulation
                         ? exact + string.Format(Invariant, "; Gauss–Seidel carries a load one segment per iteration ({0} iterations for {1} segments)", s.Solver.Iterations, s.Rope.Segments)
                         : string.Format(Invariant, "raise solver.substeps (now {0}) or solver.iterations (now {1})", s.Solver.Substeps, s.Solver.Iterations));
             return v.Set(Convergence.Converged,
-                string.Format(Invariant, "strain error ≤ {0:P0} on {1:P0} of the host steps (max {2:G3}), energy not created",
-                    UnconvergedStrainError, 1 - v.UnconvergedFraction, r.MaxResidual), "");
+                string.Format(Invariant, "strain error ≤ {0:P0} on {1:P0} of the host steps (max {2:G3}), {3}",
+                    UnconvergedStrainError, 1 - v.UnconvergedFraction, r.MaxResidual,
+                    Driven(s) ? "energy not judged (driven anchors or events do work)" : "energy not created"), "");
         }
 
         static readonly CultureInfo Invariant = CultureInfo.InvariantCulture;

@@ -59,6 +59,8 @@ namespace HookeRope.Lab.Simulation
         public Scenario Scenario;
         /// <summary>Time series (one entry per CSV row).</summary>
         public List<Sample> Samples = new List<Sample>();
+        /// <summary>Timed events as they were applied.</summary>
+        public List<AppliedEvent> Events = new List<AppliedEvent>();
         /// <summary>Radius profiles at outputs.profileTimes.</summary>
         public List<RadiusProfile> Profiles = new List<RadiusProfile>();
         /// <summary>Meshes at outputs.gltfTimes.</summary>

@@ -81,6 +81,9 @@ namespace HookeRope.Lab.Simulation
             settings.Fracture = r.Fracture;
             settings.BreakStrain = (float)r.BreakStrain;
             settings.BreakRadiusFraction = (float)r.BreakRadiusFraction;
+            settings.NeckZoneDiameters = (float)r.NeckZoneDiameters;
+            settings.NeckGrowthStrain = (float)r.NeckGrowthStrain;
+            settings.SlackKeepsRestRadius = r.SlackKeepsRestRadius;
             return settings;
         }
 
@@ -171,12 +174,13 @@ namespace HookeRope.Lab.Simulation
                 result.Samples.Add(Measure(setup, 0, options));
                 nextSample = sampleInterval;
             }
+            var player = new EventPlayer(s, setup);
+            result.Events = player.Applied;
             var watch = Stopwatch.StartNew();
             for (int k = 0; k < steps; k++)
             {
                 double t = (k + 1) * dt;
-                if (s.Start.Kind == AttachmentKind.Keyframes) rope.SetPinTarget(setup.StartPin, s.Start.PositionAt(t));
-                if (s.End.Kind == AttachmentKind.Keyframes) rope.SetPinTarget(setup.EndPin, s.End.PositionAt(t));
+                player.BeforeStep(k * dt, dt);
                 var report = setup.Step((float)dt);
                 result.Steps = k + 1;
                 if (report.Residual > result.MaxResidual) result.MaxResidual = report.Residual;
