@@ -130,13 +130,14 @@ namespace HookeRope.Lab.Tests
             Assert.That(LabCli.Invoke(new[] { "run", "necking", "--out", dir }, LabConsole.Plain(o), o, o), Is.EqualTo(0), o.ToString());
             var lines = File.ReadAllLines(Path.Combine(dir, "necking-radius.csv"));
             Assert.That(lines[0], Is.EqualTo(CsvWriter.RadiusHeader));
-            Assert.That(lines.Length, Is.EqualTo(1 + 3 * (20 * 8 + 1)), "3 instants × (8 points per segment + 1)");
+            Assert.That(lines.Length, Is.EqualTo(1 + 5 * (20 * 8 + 1)), "3 requested instants and 2 key moments (neck onset, thinnest intact) × (8 points per segment + 1)");
+            Assert.That(System.Linq.Enumerable.Count(lines, l => l.Contains(",neck onset,")), Is.EqualTo(161));
             double thinnest = double.MaxValue;
             foreach (var line in lines)
             {
                 if (line == lines[0]) continue;
                 var f = line.Split(',');
-                if (f[0] == "4") thinnest = Math.Min(thinnest, double.Parse(f[2], System.Globalization.CultureInfo.InvariantCulture));
+                if (f[0] == "4") thinnest = Math.Min(thinnest, double.Parse(f[3], System.Globalization.CultureInfo.InvariantCulture));
             }
             Assert.That(thinnest, Is.LessThan(0.75 * 0.01), "the neck at 4 s is below r_min = 0.75 R");
             foreach (var line in File.ReadAllLines(Path.Combine(dir, "necking.csv")))

@@ -37,19 +37,22 @@ namespace HookeRope.Lab.Commands
             for (int i = 0; i < result.Configs.Count; i++)
             {
                 var c = result.Configs[i];
-                string family = c.Method == SolverMethod.GaussSeidel ? $"Gauss–Seidel, {c.Iterations} iteration(s)" : $"exact chain, {c.Iterations} iteration(s)";
+                string family = (c.Method == SolverMethod.GaussSeidel ? "Gauss–Seidel, " : "exact chain, ") + c.Iterations + (c.Iterations == 1 ? " iteration" : " iterations");
                 if (!byFamily.TryGetValue(family, out var s))
                 {
                     s = new Plots.Series { Label = family };
                     byFamily.Add(family, s);
                     series.Add(s);
                 }
-                double error = result.WorstError(i);
                 s.Cost.Add(result.MeanCost(i));
-                s.Error.Add(double.IsFinite(error) ? error : 10);
+                s.Error.Add(result.WorstError(i));
+                s.Failed.Add(result.Failed(i));
             }
+            int recommended = result.Recommended();
             string plot = Path.Combine(outDir, "report-pareto.png");
-            Plots.Pareto("worst relative error over the reference scenarios against run time (substeps vary along each family)", series, plot);
+            Plots.Pareto("worst error over the reference scenarios against run time (substeps grow along each family)", series,
+                recommended >= 0 ? result.MeanCost(recommended) : double.NaN, recommended >= 0 ? result.WorstError(recommended) : double.NaN,
+                recommended >= 0 ? result.Configs[recommended].Label : "").SavePng(plot, 1200, 640);
             string md = Path.Combine(outDir, "report.md");
             File.WriteAllText(md, ErrorReport.Markdown(result, "report-pareto.png"));
 

@@ -58,12 +58,11 @@ namespace HookeRope.Lab.Commands
             string stem = Path.Combine(outDir, spec.Name);
             CsvWriter.Write(result, stem + ".csv");
             files.Add(stem + ".csv");
-            Plots.Force(result, stem + "-force.png", svg ? stem + "-force.svg" : null);
-            files.Add(stem + "-force.png");
-            if (result.Profiles.Count > 0)
+            var checks = PhysicsChecks.Evaluate(result);
+            var verdict = ConvergenceVerdict.Judge(result);
+            files.AddRange(Plots.WriteAll(result, verdict, checks, stem, svg));
+            if (result.Profiles.Count + result.KeyProfiles.Count > 0)
             {
-                Plots.RadiusProfiles(result, stem + "-radius.png", svg ? stem + "-radius.svg" : null);
-                files.Add(stem + "-radius.png");
                 CsvWriter.WriteRadiusProfiles(result, stem + "-radius.csv");
                 files.Add(stem + "-radius.csv");
             }
@@ -78,8 +77,6 @@ namespace HookeRope.Lab.Commands
                 if (result.Meshes.Count == 0)
                     console.MarkupLine("[yellow]no mesh captured: set outputs.gltfTimes in the scenario (or the mesh builder is not available)[/]");
             }
-            var checks = PhysicsChecks.Evaluate(result);
-            var verdict = ConvergenceVerdict.Judge(result);
             string summaryPath = stem + "-summary.json";
             files.Add(summaryPath);
             string summary = JsonSummary.Text(result, verdict, checks, files);

@@ -42,20 +42,24 @@ namespace HookeRope.Lab.Output
         }
 
         /// <summary>Header of the radius-profile CSV (long format: one row per instant and point along the rope).</summary>
-        public const string RadiusHeader = "time_s,arc_m,radius_m";
+        public const string RadiusHeader = "time_s,moment,arc_m,radius_m";
 
-        /// <summary>Writes the radius profiles of <paramref name="result"/> (outputs.profileTimes) to <paramref name="path"/>.</summary>
+        /// <summary>Writes the radius profiles of <paramref name="result"/> (outputs.profileTimes, "requested", and the key moments: neck onset, thinnest (intact), break) to <paramref name="path"/>.</summary>
         public static void WriteRadiusProfiles(RunResult result, string path)
         {
             using (var writer = new StreamWriter(path, false, new UTF8Encoding(false)))
             {
                 writer.WriteLine(RadiusHeader);
                 var line = new StringBuilder(64);
-                foreach (var profile in result.Profiles)
+                var all = new System.Collections.Generic.List<RadiusProfile>(result.KeyProfiles);
+                all.AddRange(result.Profiles);
+                all.Sort((a, b) => a.Time.CompareTo(b.Time));
+                foreach (var profile in all)
                     for (int i = 0; i < profile.Radius.Length; i++)
                     {
                         line.Clear();
                         Append(line, profile.Time).Append(',');
+                        line.Append(profile.Label.Length > 0 ? profile.Label : "requested").Append(',');
                         Append(line, profile.Arc[i]).Append(',');
                         Append(line, profile.Radius[i]);
                         writer.WriteLine(line.ToString());

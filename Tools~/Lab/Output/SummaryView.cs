@@ -58,7 +58,7 @@ namespace HookeRope.Lab.Output
                 string value = check.Unit.Length > 0 ? Num(check.Measured) + " " + check.Unit : Num(check.Measured);
                 string reference = string.Format(Invariant, "{0} {1} {2} ({3})", check.Passed ? "[green]✓[/]" : "[red]✗[/]",
                     Markup.Escape(Num(check.Expected) + (check.Unit.Length > 0 ? " " + check.Unit : "")),
-                    Markup.Escape(check.Absolute ? "" : string.Format(Invariant, "error {0:P2}", check.Error)),
+                    Markup.Escape(check.Absolute ? "" : "error " + (double.IsFinite(check.Error) ? (check.Error * 100).ToString("0.00", Invariant) + " %" : "n/a")),
                     Markup.Escape(check.Formula));
                 table.AddRow("check: " + Markup.Escape(check.Quantity), value, reference);
             }

@@ -11,7 +11,7 @@ namespace HookeRope.Lab.Simulation
         Converged,
         /// <summary>Finite, but the constraints were not met (the rope is longer than its tension implies): numbers are off.</summary>
         Unconverged,
-        /// <summary>NaN, a particle flung away, energy created or constraint errors beyond the rope's length: numbers are meaningless.</summary>
+        /// <summary>NaN, a particle flung away, energy created or an incredible strain: the run is unstable and its numbers are meaningless.</summary>
         Diverged,
     }
 
@@ -23,7 +23,7 @@ namespace HookeRope.Lab.Simulation
     {
         /// <summary>Strain error (dimensionless) above which a host step counts as unconverged: 2 % (the tension read from the stretch is off by 2 % of E·A).</summary>
         public const double UnconvergedStrainError = 0.02;
-        /// <summary>Strain error (dimensionless) above which a host step counts as diverged: 100 % (the error is as long as the rope).</summary>
+        /// <summary>Strain error (dimensionless) above which the reason says the segments are far longer than their tension implies: 100 % (still unconverged, not diverged: the run is stable, only inaccurate).</summary>
         public const double DivergedStrainError = 1.0;
         /// <summary>Fraction of the host steps that may exceed a strain-error threshold (transients: a break, a jerk): 10 %.</summary>
         public const double AllowedFraction = 0.10;
@@ -106,17 +106,16 @@ namespace HookeRope.Lab.Simulation
                 return v.Set(Convergence.Diverged,
                     string.Format(Invariant, "strain {0:G3} (above {1} = {2} %, no rope stretches that far)", strain, MaxCredibleStrain, MaxCredibleStrain * 100),
                     gaussSeidel ? exact + "; " + finer : finer);
-            if (v.DivergedFraction > AllowedFraction)
-                return v.Set(Convergence.Diverged,
-                    string.Format(Invariant, "strain error above {0:P0} on {1:P0} of the host steps (max {2:G3})", DivergedStrainError, v.DivergedFraction, r.MaxResidual),
-                    gaussSeidel ? exact : finer);
             if (!Driven(s) && r.LateMaxMotionEnergy > double.NegativeInfinity && EnergyBlowUp(s, r, out double rise))
                 return v.Set(Convergence.Diverged,
                     string.Format(Invariant, "the solver created {0:G3} J of motion energy", rise),
                     "raise solver.damping (now " + s.Solver.Damping.ToString("G3", Invariant) + " s) or " + finer);
             if (v.UnconvergedFraction > AllowedFraction)
                 return v.Set(Convergence.Unconverged,
-                    string.Format(Invariant, "strain error above {0:P0} on {1:P0} of the host steps (max {2:G3})", UnconvergedStrainError, v.UnconvergedFraction, r.MaxResidual),
+                    v.DivergedFraction > AllowedFraction
+                        ? string.Format(Invariant, "strain error above {0:P0} on {1:P0} of the host steps (max {2:G3}): segments far longer than their tension implies",
+                            DivergedStrainError, v.DivergedFraction, r.MaxResidual)
+                        : string.Format(Invariant, "strain error above {0:P0} on {1:P0} of the host steps (max {2:G3})", UnconvergedStrainError, v.UnconvergedFraction, r.MaxResidual),
                     gaussSeidel
                         ? exact + string.Format(Invariant, "; Gauss–Seidel carries a load one segment per iteration ({0} iterations for {1} segments)", s.Solver.Iterations, s.Rope.Segments)
                         : string.Format(Invariant, "raise solver.substeps (now {0}) or solver.iterations (now {1})", s.Solver.Substeps, s.Solver.Iterations));

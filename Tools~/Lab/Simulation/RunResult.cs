@@ -35,6 +35,8 @@ namespace HookeRope.Lab.Simulation
     {
         /// <summary>Simulated time in s.</summary>
         public double Time;
+        /// <summary>Why this instant: "" for outputs.profileTimes, else "neck onset", "thinnest (intact)" or "break".</summary>
+        public string Label = "";
         /// <summary>Rest arc length of each particle from the start, m.</summary>
         public double[] Arc;
         /// <summary>Particle radius in m.</summary>
@@ -63,6 +65,8 @@ namespace HookeRope.Lab.Simulation
         public List<AppliedEvent> Events = new List<AppliedEvent>();
         /// <summary>Radius profiles at outputs.profileTimes.</summary>
         public List<RadiusProfile> Profiles = new List<RadiusProfile>();
+        /// <summary>Radius profiles at the moments that matter, found during the run: neck onset, the thinnest intact state, the break.</summary>
+        public List<RadiusProfile> KeyProfiles = new List<RadiusProfile>();
         /// <summary>Meshes at outputs.gltfTimes.</summary>
         public List<MeshSnapshot> Meshes = new List<MeshSnapshot>();
         /// <summary>Largest anchor force in N.</summary>

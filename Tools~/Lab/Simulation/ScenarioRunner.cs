@@ -174,6 +174,10 @@ namespace HookeRope.Lab.Simulation
                 result.Samples.Add(Measure(setup, 0, options));
                 nextSample = sampleInterval;
             }
+            bool keyMoments = options.Captures && setup.Simulation.RadiusModel != null && (s.Rope.PoissonThinning || s.Rope.Necking);
+            double onsetRadius = s.Rope.NeckRadiusFraction * s.Rope.Radius, deepest = s.Rope.Radius;
+            RadiusProfile thinnest = null;
+            bool onsetSeen = false, breakSeen = !double.IsNaN(result.BreakTime);
             var player = new EventPlayer(s, setup);
             result.Events = player.Applied;
             var watch = Stopwatch.StartNew();
@@ -215,6 +219,25 @@ namespace HookeRope.Lab.Simulation
                     tautDrop = drop;
                     result.TautTime = t;
                 }
+                if (keyMoments)
+                {
+                    double neck = readouts.NeckRadius;
+                    if (!breakSeen && !double.IsNaN(result.BreakTime))
+                    {
+                        breakSeen = true;
+                        result.KeyProfiles.Add(Labelled(Profile(setup, t), "break"));
+                    }
+                    if (s.Rope.Necking && !onsetSeen && neck < onsetRadius)
+                    {
+                        onsetSeen = true;
+                        result.KeyProfiles.Add(Labelled(Profile(setup, t), "neck onset"));
+                    }
+                    if (!breakSeen && neck < deepest - 0.002 * s.Rope.Radius)
+                    {
+                        deepest = neck;   // a new deepest point, at most 500 captures over a run
+                        thinnest = Labelled(Profile(setup, t), "thinnest (intact)");
+                    }
+                }
                 if (options.TrackEnergy) RecordEnergy(rope, result, late: k >= steps / 2);
                 options.Progress?.Invoke(k);
                 if (options.RecordSamples && t >= nextSample - 1e-9)
@@ -239,6 +262,8 @@ namespace HookeRope.Lab.Simulation
                 }
             }
             result.WallSeconds = watch.Elapsed.TotalSeconds;
+            if (thinnest != null) result.KeyProfiles.Add(thinnest);
+            result.KeyProfiles.Sort((a, b) => a.Time.CompareTo(b.Time));
             if (result.Steps < steps)
             {
                 Array.Resize(ref result.LoadDrop, result.Steps);
@@ -308,6 +333,12 @@ namespace HookeRope.Lab.Simulation
                 Residual = readouts.Residual,
                 Energy = options.TrackEnergy ? rope.TotalEnergy() : 0,
             };
+        }
+
+        static RadiusProfile Labelled(RadiusProfile profile, string label)
+        {
+            profile.Label = label;
+            return profile;
         }
 
         static RadiusProfile Profile(RopeSetup setup, double t)
