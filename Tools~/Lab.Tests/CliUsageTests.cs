@@ -12,15 +12,7 @@ namespace HookeRope.Lab.Tests
     [TestFixture]
     public sealed class CliUsageTests : TempFolderTest
     {
-        int Invoke(out string output, out string error, params string[] args)
-        {
-            var o = new StringWriter();
-            var e = new StringWriter();
-            int code = LabCli.Invoke(args, LabConsole.Plain(o), o, e);
-            output = o.ToString();
-            error = e.ToString();
-            return code;
-        }
+        static int Invoke(out string output, out string error, params string[] args) => InvokeLab(out output, out error, args);
 
         static void AssertFriendly(string error)
         {

@@ -89,6 +89,21 @@ namespace HookeRope.Lab.Report
             return false;
         }
 
+        /// <summary>"converged", "unconverged", "diverged" or "no result": the worst over the scenarios of a configuration.</summary>
+        public string WorstVerdict(int config)
+        {
+            var worst = Convergence.Converged;
+            bool noResult = false;
+            foreach (var cell in Cells[config])
+            {
+                if (cell.Verdict > worst) worst = cell.Verdict;
+                if (!double.IsFinite(cell.Error)) noResult = true;
+            }
+            if (worst == Convergence.Diverged) return "diverged";
+            if (noResult) return "no result";
+            return worst == Convergence.Converged ? "converged" : "unconverged";
+        }
+
         /// <summary>True when a configuration converged (<see cref="ConvergenceVerdict"/>) on every scenario with a finite error.</summary>
         public bool Converged(int config)
         {
@@ -238,14 +253,14 @@ namespace HookeRope.Lab.Report
             sb.Append(gs >= 0
                 ? $"- Cheapest Gauss–Seidel configuration within {r.Target:P0}: {r.Configs[gs].Label} ({Ms(r.MeanCost(gs))} ms per simulated second).\n"
                 : $"- No Gauss–Seidel configuration of the grid reaches {r.Target:P0} on every scenario (the heavy mass ratio defeats it): use the exact chain solve.\n");
-            sb.Append("\n## All configurations\n\n| configuration | worst error | mean ms/s |");
+            sb.Append("\n## All configurations\n\nverdict: the worst convergence verdict over the scenarios (only converged configurations can be Pareto-optimal or recommended).\n\n| configuration | verdict | worst error | mean ms/s |");
             foreach (var s in r.Scenarios) sb.Append(' ').Append(s).Append(" error | ms/s |");
-            sb.Append("\n|---|---:|---:|");
+            sb.Append("\n|---|---|---:|---:|");
             foreach (var _ in r.Scenarios) sb.Append("---:|---:|");
             sb.Append('\n');
             for (int i = 0; i < r.Configs.Count; i++)
             {
-                sb.Append("| ").Append(r.Configs[i].Label).Append(" | ").Append(Pct(r.WorstError(i))).Append(" | ").Append(Ms(r.MeanCost(i))).Append(" |");
+                sb.Append("| ").Append(r.Configs[i].Label).Append(" | ").Append(r.WorstVerdict(i)).Append(" | ").Append(Pct(r.WorstError(i))).Append(" | ").Append(Ms(r.MeanCost(i))).Append(" |");
                 foreach (var cell in r.Cells[i]) sb.Append(' ').Append(Pct(cell.Error)).Append(" | ").Append(Ms(cell.MsPerSecond)).Append(" |");
                 sb.Append('\n');
             }
