@@ -45,6 +45,20 @@ namespace HookeRope.Tests.Components
             return _rope;
         }
 
+        /// <summary>A 100 kg CharacterController rig at height <paramref name="y"/> (m) on the rope's end, moved in OnStepped.</summary>
+        GameObject AttachRig(ElasticRope rope, float y)
+        {
+            var go = _scene.Track(new GameObject("Rig", typeof(CharacterController)));
+            go.transform.position = new Vector3(0f, y, 0f);
+            _controller = go.GetComponent<CharacterController>();
+            _controller.minMoveDistance = 0f;
+            rope.EndAttachment.Point = go.transform;
+            rope.EndAttachment.RigMass = Mass;
+            rope.Rebuild();
+            rope.OnStepped.AddListener(MoveRig);
+            return go;
+        }
+
         static Vector3 V(HookeRope.Mathematics.Float3 f) => new Vector3(f.X, f.Y, f.Z);
 
         float RopeWeight(ElasticRope rope) => rope.LinearDensity * rope.RestLength * G;
@@ -72,14 +86,7 @@ namespace HookeRope.Tests.Components
         public void AStaticHangWithARigWithoutARigidbodyBalances()
         {
             var rope = HangingRope(out float y);
-            var go = _scene.Track(new GameObject("Rig", typeof(CharacterController)));
-            go.transform.position = new Vector3(0f, y, 0f);
-            _controller = go.GetComponent<CharacterController>();
-            _controller.minMoveDistance = 0f;
-            rope.EndAttachment.Point = go.transform;
-            rope.EndAttachment.RigMass = Mass;
-            rope.Rebuild();
-            rope.OnStepped.AddListener(MoveRig);
+            var go = AttachRig(rope, y);
             UnityRopeScene.Run(rope, (int)(6f / Dt), Dt);
 
             var core = rope.Simulation.Rope;
@@ -120,14 +127,7 @@ namespace HookeRope.Tests.Components
         public void OnSteppedIsRaisedOncePerStepWithTheReadoutsAndAllocatesNothing()
         {
             var rope = HangingRope(out float y);
-            var go = _scene.Track(new GameObject("Rig", typeof(CharacterController)));
-            go.transform.position = new Vector3(0f, y + 1f, 0f);   // a 1 m fall first
-            _controller = go.GetComponent<CharacterController>();
-            _controller.minMoveDistance = 0f;
-            rope.EndAttachment.Point = go.transform;
-            rope.EndAttachment.RigMass = Mass;
-            rope.Rebuild();
-            rope.OnStepped.AddListener(MoveRig);
+            AttachRig(rope, y + 1f);   // a 1 m fall first
             rope.OnStepped.AddListener(Record);
 
             for (int i = 1; i <= 120; i++)
