@@ -1,3 +1,4 @@
+using System.Collections.Generic;
 using System.Globalization;
 using HookeRope.Solver;
 using UnityEditor;
@@ -8,7 +9,8 @@ namespace HookeRope.Editor
     /// <summary>
     /// Inspector of <see cref="ElasticRope"/>, grouped Material / Geometry / Solver / Attachments / Collisions /
     /// Fracture / Read-outs. Warns when the settings predict a large stretch error and previews the static
-    /// sag in edit mode. Read-outs repaint live in Play.
+    /// sag in edit mode. Read-outs repaint live in Play; with several ropes selected they show a table with one
+    /// column per rope (<see cref="RopeReadoutTable"/>).
     /// </summary>
     [CustomEditor(typeof(ElasticRope)), CanEditMultipleObjects]
     sealed class ElasticRopeEditor : UnityEditor.Editor
@@ -130,7 +132,7 @@ namespace HookeRope.Editor
                 EditorGUILayout.PropertyField(m_OnBreak, includeChildren: true);
             }
             if (Section(ref s_Readouts, "Read-outs"))
-                Readouts(rope);
+                Readouts();
 
             serializedObject.ApplyModifiedProperties();
         }
@@ -143,8 +145,7 @@ namespace HookeRope.Editor
 
         static void Field(SerializedProperty property) => EditorGUILayout.PropertyField(property);
 
-        static string Format(float value, string unit) =>
-            value.ToString("G4", CultureInfo.InvariantCulture) + (unit.Length > 0 ? " " + unit : "");
+        static string Format(float value, string unit) => RopeReadoutTable.Format(value, unit);
 
         void StretchWarning(ElasticRope rope)
         {
@@ -167,24 +168,24 @@ namespace HookeRope.Editor
             serializedObject.Update();
         }
 
-        static void Readouts(ElasticRope rope)
+        void Readouts()
         {
-            if (!rope.IsBuilt)
+            var ropes = new List<ElasticRope>(targets.Length);
+            foreach (var t in targets)
+                if (t is ElasticRope rope) ropes.Add(rope);
+            bool anyBuilt = false;
+            foreach (var rope in ropes) anyBuilt |= rope.IsBuilt;
+            if (!anyBuilt)
             {
                 EditorGUILayout.HelpBox("Read-outs appear in Play (or after ElasticRope.Rebuild()).", MessageType.Info);
                 return;
             }
-            if (EditorApplication.isPlaying && GUILayout.Button("Rebuild")) rope.Rebuild();
-            EditorGUILayout.LabelField("Elongation / strain", Format(rope.Elongation, "m") + " / " + Format(rope.Strain, ""));
-            EditorGUILayout.LabelField("Top / bottom tension", Format(rope.TopTension, "N") + " / " + Format(rope.BottomTension, "N"));
-            EditorGUILayout.LabelField("Peak tension", Format(rope.PeakTension, "N"));
-            EditorGUILayout.LabelField("Min radius / neck radius", Format(rope.MinRadius, "m") + " / " + Format(rope.NeckRadius, "m"));
-            EditorGUILayout.LabelField("Broken", rope.IsBroken ? "yes" : "no");
-            EditorGUILayout.LabelField("Arrest force (peak)", Format(rope.ArrestForce, "N") + " (" + Format(rope.PeakArrestForce, "N") + ")");
-            EditorGUILayout.LabelField("EN 355 (6 kN)", rope.MeetsEn355 ? "within limit" : "EXCEEDED");
-            EditorGUILayout.LabelField("ANSI Z359.13 (8 kN)", rope.MeetsAnsiZ359_13 ? "within limit" : "EXCEEDED");
-            EditorGUILayout.LabelField("Residual (strain error)", Format(rope.Residual, ""));
-            EditorGUILayout.LabelField("Step time", Format(rope.StepMilliseconds, "ms"));
+            if (EditorApplication.isPlaying && GUILayout.Button(ropes.Count > 1 ? "Rebuild all" : "Rebuild"))
+                foreach (var rope in ropes) rope.Rebuild();
+            var rows = RopeReadoutTable.Build(ropes);
+            // One rope: label and value. Several: a table, one " | "-separated column per rope, headed by the names.
+            for (int i = ropes.Count > 1 ? 0 : 1; i < rows.Count; i++)
+                EditorGUILayout.LabelField(rows[i].Label, rows[i].Joined);
         }
     }
 }

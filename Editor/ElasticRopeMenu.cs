@@ -14,13 +14,14 @@ namespace HookeRope.Editor
 
         /// <summary>
         /// Creates "Elastic Rope" (ElasticRope + RopeMeshRenderer) with two child anchors 1.6 m apart, so the
-        /// default 2 m rope sags between them; parents it under <paramref name="parent"/> when given, registers
-        /// the creation with Undo and selects it. Returns the rope.
+        /// default 2 m rope sags between them, registers the creation with Undo and places it as Unity places its own
+        /// 3D objects (ObjectFactory.PlaceGameObject): as a child of <paramref name="parent"/> at its origin when given,
+        /// else at the last active Scene view's pivot, inside the open prefab stage when there is one; the name is made
+        /// unique among its siblings and the rope is selected. Returns the rope.
         /// </summary>
         public static ElasticRope Create(GameObject parent)
         {
             var root = new GameObject("Elastic Rope", typeof(MeshFilter), typeof(MeshRenderer), typeof(ElasticRope), typeof(RopeMeshRenderer));
-            GameObjectUtility.SetParentAndAlign(root, parent);
             var start = new GameObject("Rope Start");
             var end = new GameObject("Rope End");
             start.transform.SetParent(root.transform, worldPositionStays: false);
@@ -33,7 +34,7 @@ namespace HookeRope.Editor
             rope.EndAttachment.Point = end.transform;
 
             Undo.RegisterCreatedObjectUndo(root, "Create Elastic Rope");
-            Selection.activeObject = root;
+            ObjectFactory.PlaceGameObject(root, parent);
             return rope;
         }
     }

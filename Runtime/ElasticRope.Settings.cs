@@ -16,45 +16,45 @@ namespace HookeRope
         [SerializeField, Tooltip(RopeParameters.StiffnessInput.Tooltip)]
         RopeStiffnessInput m_StiffnessInput = (RopeStiffnessInput)RopeParameters.StiffnessInput.Default;
 
-        [SerializeField, Tooltip(RopeParameters.YoungsModulus.Tooltip)]
+        [SerializeField, Min(RopeParameters.YoungsModulus.Min), Tooltip(RopeParameters.YoungsModulus.Tooltip)]
         float m_YoungsModulus = RopeParameters.YoungsModulus.Default;
 
-        [SerializeField, Tooltip(RopeParameters.AxialStiffness.Tooltip)]
+        [SerializeField, Min(RopeParameters.AxialStiffness.Min), Tooltip(RopeParameters.AxialStiffness.Tooltip)]
         float m_AxialStiffness = RopeParameters.AxialStiffness.Default;
 
-        [SerializeField, Tooltip(RopeParameters.Density.Tooltip)]
+        [SerializeField, Min(RopeParameters.Density.Min), Tooltip(RopeParameters.Density.Tooltip)]
         float m_Density = RopeParameters.Density.Default;
 
         [SerializeField, Range(RopeParameters.PoissonRatio.Min, RopeParameters.PoissonRatio.Max), Tooltip(RopeParameters.PoissonRatio.Tooltip)]
         float m_PoissonRatio = RopeParameters.PoissonRatio.Default;
 
-        [SerializeField, Tooltip(RopeParameters.Damping.Tooltip)]
+        [SerializeField, Min(RopeParameters.Damping.Min), Tooltip(RopeParameters.Damping.Tooltip)]
         float m_Damping = RopeParameters.Damping.Default;
 
         // ---- Geometry -------------------------------------------------------------------------------------
-        [SerializeField, Tooltip(RopeParameters.RestLength.Tooltip)]
+        [SerializeField, Min(RopeParameters.RestLength.Min), Tooltip(RopeParameters.RestLength.Tooltip)]
         float m_RestLength = RopeParameters.RestLength.Default;
 
-        [SerializeField, Tooltip(RopeParameters.Radius.Tooltip)]
+        [SerializeField, Min(RopeParameters.Radius.Min), Tooltip(RopeParameters.Radius.Tooltip)]
         float m_Radius = RopeParameters.Radius.Default;
 
-        [SerializeField, Tooltip(RopeParameters.SegmentCount.Tooltip)]
+        [SerializeField, Min(RopeParameters.SegmentCount.Min), Tooltip(RopeParameters.SegmentCount.Tooltip)]
         int m_SegmentCount = RopeParameters.SegmentCount.Default;
 
         // ---- Solver ---------------------------------------------------------------------------------------
         [SerializeField, Tooltip(RopeParameters.Solver.Tooltip)]
         ConstraintSolverKind m_Solver = RopeParameters.Solver.Default;
 
-        [SerializeField, Tooltip(RopeParameters.Substeps.Tooltip)]
+        [SerializeField, Min(RopeParameters.Substeps.Min), Tooltip(RopeParameters.Substeps.Tooltip)]
         int m_Substeps = RopeParameters.Substeps.Default;
 
-        [SerializeField, Tooltip(RopeParameters.Iterations.Tooltip)]
+        [SerializeField, Min(RopeParameters.Iterations.Min), Tooltip(RopeParameters.Iterations.Tooltip)]
         int m_Iterations = RopeParameters.Iterations.Default;
 
         [SerializeField, Tooltip(RopeParameters.TensionModel.Tooltip)]
         TensionModel m_TensionModel = RopeParameters.TensionModel.Default;
 
-        [SerializeField, Tooltip(RopeParameters.Gravity.Tooltip)]
+        [SerializeField, Min(RopeParameters.Gravity.Min), Tooltip(RopeParameters.Gravity.Tooltip)]
         Vector3 m_Gravity = new Vector3(RopeParameters.Gravity.DefaultX, RopeParameters.Gravity.DefaultY, RopeParameters.Gravity.DefaultZ);
 
         // ---- Attachments ----------------------------------------------------------------------------------
@@ -64,7 +64,7 @@ namespace HookeRope
         [SerializeField, Tooltip("End of the rope (last particle): a Transform to follow, a Rigidbody to pull two-way (e.g. a harness D-ring), or nothing.")]
         RopeEnd m_End = new RopeEnd();
 
-        [SerializeField, Tooltip(RopeParameters.AttachmentCompliance.Tooltip)]
+        [SerializeField, Min(RopeParameters.AttachmentCompliance.Min), Tooltip(RopeParameters.AttachmentCompliance.Tooltip)]
         float m_AttachmentCompliance = RopeParameters.AttachmentCompliance.Default;
 
         // ---- Collisions -----------------------------------------------------------------------------------
@@ -80,7 +80,7 @@ namespace HookeRope
         [SerializeField, Tooltip("Infinite planes the rope stays above: each Transform's position is a point on the plane, its up axis the normal.")]
         Transform[] m_Planes = Array.Empty<Transform>();
 
-        [SerializeField, Tooltip(RopeParameters.Friction.Tooltip)]
+        [SerializeField, Min(RopeParameters.Friction.Min), Tooltip(RopeParameters.Friction.Tooltip)]
         float m_Friction = RopeParameters.Friction.Default;
 
         // ---- Radius, necking and fracture -----------------------------------------------------------------
@@ -102,7 +102,7 @@ namespace HookeRope
         [SerializeField, Tooltip(RopeParameters.Fracture.Tooltip)]
         bool m_Fracture = RopeParameters.Fracture.Default;
 
-        [SerializeField, Tooltip(RopeParameters.BreakStrain.Tooltip)]
+        [SerializeField, Min(RopeParameters.BreakStrain.Min), Tooltip(RopeParameters.BreakStrain.Tooltip)]
         float m_BreakStrain = RopeParameters.BreakStrain.Default;
 
         [SerializeField, Range(RopeParameters.BreakRadiusFraction.Min, RopeParameters.BreakRadiusFraction.Max), Tooltip(RopeParameters.BreakRadiusFraction.Tooltip)]
@@ -277,6 +277,17 @@ namespace HookeRope
         // ---- Validation and the copy into the core --------------------------------------------------------
         void OnValidate()
         {
+            ClampSerializedFields();
+            if (_rope != null) ApplySettings();   // what cannot change in place is rebuilt by the next step (TopologyChanged)
+        }
+
+        /// <summary>
+        /// Clamps every serialized setting into its table range and logs one warning per changed field naming this
+        /// object, the field, the range and the value kept (OnValidate, and every build: a scene saved out of range
+        /// reaches players, where OnValidate never runs). Allocation-free when every value is in range.
+        /// </summary>
+        void ClampSerializedFields()
+        {
             Report(RopeParameters.Clamp(ref m_RestLength, RopeParameters.RestLength.Row));
             Report(RopeParameters.Clamp(ref m_Radius, RopeParameters.Radius.Row));
             Report(RopeParameters.Clamp(ref m_SegmentCount, RopeParameters.SegmentCount.Row));
@@ -309,7 +320,6 @@ namespace HookeRope
             SyncStiffness();
             if (m_Colliders == null) m_Colliders = Array.Empty<Collider>();
             if (m_Planes == null) m_Planes = Array.Empty<Transform>();
-            if (_rope != null) ApplySettings();   // what cannot change in place is rebuilt by the next step (TopologyChanged)
         }
 
         static float Area(float radius) => MathF.PI * radius * radius;

@@ -5,71 +5,77 @@ using UnityEngine.Rendering;
 namespace HookeRope
 {
     /// <summary>
-    /// The material a rope gets when its renderer has none, built for the active render pipeline so the rope never
-    /// renders magenta:
-    /// <list type="number">
-    /// <item>a Scriptable Render Pipeline (URP, HDRP, custom) is active
-    /// (<see cref="GraphicsSettings.currentRenderPipeline"/> not null): a copy of its
-    /// <see cref="RenderPipelineAsset.defaultMaterial"/> (URP and HDRP return it in the Editor only), else a new
-    /// material on its <see cref="RenderPipelineAsset.defaultShader"/>, else on "Universal Render Pipeline/Lit" or
-    /// "HDRP/Lit" found by name. Never the Built-in Standard shader, which an SRP draws magenta;</item>
-    /// <item>the Built-in pipeline (no pipeline asset): a material on the "Standard" shader.</item>
-    /// </list>
-    /// Textures and colours are written by property name for every pipeline's lit shader (<see cref="SetBaseMap"/>,
-    /// <see cref="SetBaseColor"/>), not through <see cref="Material.mainTexture"/>, which only reaches a property
-    /// named _MainTex or tagged [MainTexture]. In a player, <see cref="Shader.Find"/> only finds shaders that the
-    /// build includes; assign your own materials to be safe.
+    /// The materials a rope gets when its renderer has none. The tube material comes from the active render pipeline
+    /// (<see cref="RopeMaterialSource"/>: the SRP's default material or Lit shader, or Built-in "Standard", else
+    /// "Legacy Shaders/Diffuse"), in its shader's default opaque state, so the rope never renders magenta while a
+    /// shader is available. The burr strands at a broken end are real geometry (three triangles per strand, see
+    /// <see cref="HookeRope.Geometry.TubeVertex"/> and the core mesh builder), so they need no alpha test: their
+    /// material is a copy of the tube material with the burr texture as colour map (<see cref="CreateBurr"/>), drawn
+    /// with the tube's shader, keywords and render queue. Nothing here depends on a shader_feature keyword that a
+    /// player build may strip. Textures and colours are written by property name for every pipeline's lit shader
+    /// (<see cref="SetBaseMap"/>, <see cref="SetBaseColor"/>), not through <see cref="Material.mainTexture"/>,
+    /// which only reaches a property named _MainTex or tagged [MainTexture]. In a player, Shader.Find only finds
+    /// shaders that the build includes; material assets assigned to the renderer are always safe.
     /// </summary>
     public static class RopeDefaultMaterial
     {
-        /// <summary>Render queue of alpha-tested geometry (Unity's AlphaTest queue).</summary>
-        const int AlphaTestQueue = 2450;
-
-        /// <summary>Lit shaders of the Unity pipelines, tried by name when an SRP exposes neither a default material nor a default shader.</summary>
-        static readonly string[] s_PipelineLitShaders = { "Universal Render Pipeline/Lit", "HDRP/Lit" };
-
         /// <summary>Colour-map properties: URP Lit (_BaseMap), HDRP Lit (_BaseColorMap), Built-in Standard and legacy shaders (_MainTex).</summary>
         static readonly string[] s_BaseMapProperties = { "_BaseMap", "_BaseColorMap", "_MainTex" };
 
-        /// <summary>Colour properties: URP and HDRP Lit (_BaseColor), Built-in Standard (_Color).</summary>
+        /// <summary>Colour properties: URP and HDRP Lit (_BaseColor), Built-in Standard and legacy shaders (_Color).</summary>
         static readonly string[] s_BaseColorProperties = { "_BaseColor", "_Color" };
 
         /// <summary>
-        /// Creates the burr-strand material: <see cref="Create"/> with <paramref name="burrTexture"/> and alpha
-        /// clipping turned on the way each pipeline's lit shader expects it (keyword _ALPHATEST_ON; _Cutoff for
-        /// Built-in Standard and URP Lit, plus _AlphaClip for URP Lit; _AlphaCutoffEnable and _AlphaCutoff for HDRP
-        /// Lit; properties a shader lacks are skipped), so only the texture's strands are drawn. HDRP validates
-        /// material keywords and passes only in its material inspector or through its own HDMaterial API, so a
-        /// generated HDRP burr material may draw unclipped: assign an alpha-clipped material there. Null when no
-        /// shader is available.
+        /// Creates the burr-strand material (caller owns and destroys it; DontSave): a copy of
+        /// <paramref name="tubeMaterial"/> (same shader, keywords and render queue, so it draws wherever the tube
+        /// draws) with <paramref name="burrTexture"/> (may be null) in its colour-map properties. No keyword and no
+        /// alpha-clip property is touched: the strands are opaque triangles. If the tube material itself clips alpha
+        /// (a user's asset), the copy clips the burr texture's alpha too, with a variant the build keeps for that asset.
+        /// Null when <paramref name="tubeMaterial"/> is null.
         /// </summary>
-        public static Material CreateBurr(Texture burrTexture)
+        public static Material CreateBurr(Material tubeMaterial, Texture burrTexture)
         {
-            var material = Create(burrTexture);
-            if (material == null) return null;
-            material.name = "Elastic Rope Burr (generated)";
-            material.EnableKeyword("_ALPHATEST_ON");
-            SetFloatIfPresent(material, "_Cutoff", 0.5f);
-            SetFloatIfPresent(material, "_AlphaClip", 1f);
-            SetFloatIfPresent(material, "_AlphaCutoffEnable", 1f);
-            SetFloatIfPresent(material, "_AlphaCutoff", 0.5f);
-            material.renderQueue = AlphaTestQueue;
+            if (tubeMaterial == null) return null;
+            var material = new Material(tubeMaterial)
+            {
+                name = "Elastic Rope Burr (generated)",
+                hideFlags = HideFlags.DontSave,
+            };
+            if (burrTexture != null) SetBaseMap(material, burrTexture);
             return material;
         }
 
         /// <summary>
-        /// Creates the material (caller owns and destroys it) with <paramref name="texture"/> (may be null) as its
-        /// colour map, or null when no suitable shader is available.
+        /// Creates the tube material for the active render pipeline (caller owns and destroys it; DontSave) with
+        /// <paramref name="texture"/> (may be null) as its colour map, or null when no suitable shader is available
+        /// (then <see cref="MissingShaderAdvice"/> says why and what to do).
         /// </summary>
-        public static Material Create(Texture texture)
+        public static Material Create(Texture texture) => Create(texture, GraphicsSettings.currentRenderPipeline, Shader.Find);
+
+        /// <summary>
+        /// <see cref="Create(Texture)"/> for <paramref name="pipeline"/> (null: Built-in) with shaders looked up by
+        /// <paramref name="findShader"/>: the seam through which tests play player builds without a shader.
+        /// </summary>
+        internal static Material Create(Texture texture, RenderPipelineAsset pipeline, System.Func<string, Shader> findShader)
         {
-            var material = CreateForActivePipeline();
+            var material = RopeMaterialSource.Create(pipeline, findShader);
             if (material == null) return null;
             material.name = "Elastic Rope (generated)";
             material.hideFlags = HideFlags.DontSave;
             if (texture != null) SetBaseMap(material, texture);
             return material;
         }
+
+        /// <summary>
+        /// Why no rope material could be generated for <paramref name="pipeline"/> (null: Built-in) and how to fix it:
+        /// the shaders tried and the two remedies (assign material assets, or add a shader to Always Included Shaders).
+        /// </summary>
+        public static string MissingShaderAdvice(RenderPipelineAsset pipeline) =>
+            "no shader for the generated rope material (" + (pipeline == null ? "Built-in pipeline" : "render pipeline '" + pipeline.name + "'") +
+            ": no default material or shader, and none of " + RopeMaterialSource.ShadersTried(pipeline) +
+            " is in this build), so the rope draws without materials. Fix: assign material assets to the MeshRenderer " +
+            "(Element 0 tube, Element 1 burr strands; the build then keeps their shaders), or add one of those shaders " +
+            "to Project Settings > Graphics > Always Included Shaders.";
 
         /// <summary>Writes <paramref name="texture"/> into every colour-map property the material's shader has (_BaseMap, _BaseColorMap, _MainTex).</summary>
         public static void SetBaseMap(Material material, Texture texture)
@@ -103,26 +109,6 @@ namespace HookeRope
             texture.SetPixelData(pixels, 0);
             texture.Apply(updateMipmaps: false, makeNoLongerReadable: true);
             return texture;
-        }
-
-        static Material CreateForActivePipeline()
-        {
-            var pipeline = GraphicsSettings.currentRenderPipeline;
-            if (pipeline == null)
-            {
-                var standard = Shader.Find("Standard");
-                return standard != null ? new Material(standard) : null;
-            }
-            var source = pipeline.defaultMaterial;
-            if (source != null) return new Material(source);
-            var shader = pipeline.defaultShader;
-            for (int i = 0; shader == null && i < s_PipelineLitShaders.Length; i++) shader = Shader.Find(s_PipelineLitShaders[i]);
-            return shader != null ? new Material(shader) : null;
-        }
-
-        static void SetFloatIfPresent(Material material, string property, float value)
-        {
-            if (material.HasProperty(property)) material.SetFloat(property, value);
         }
     }
 }

@@ -5,7 +5,8 @@ namespace HookeRope.Fracture
     /// <summary>
     /// Procedural burr texture: a row of inverted triangles (base along the top edge v = 1, apex pointing down
     /// toward v = 0, where the burr strands have their tips), one per strand, with seeded heights, apex offsets
-    /// and fibre streaks; outside the triangles the alpha is 0 (use alpha clipping). Output is RGBA32, row 0
+    /// and fibre streaks; outside the triangles the alpha is 0 (only an alpha-clipped material reads it; the generated
+    /// burr material is opaque and uses the colour as fibre streaks). Output is RGBA32, row 0
     /// first = v = 0 = the bottom row (the order of Unity's Texture2D.LoadRawTextureData).
     /// </summary>
     internal static class BurrTextureGenerator

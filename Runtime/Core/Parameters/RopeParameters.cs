@@ -774,7 +774,7 @@ namespace HookeRope
             public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Mesh, ParameterKind.Int, Min, Max, Default, Tooltip, Json, false);
         }
 
-        /// <summary>Generate the burr-strand material with the procedural burr texture (renderer).</summary>
+        /// <summary>Draw the burr strands with a copy of the tube material carrying the procedural burr texture (renderer).</summary>
         public static class BurrTexture
         {
             /// <summary>Property name.</summary>
@@ -786,7 +786,7 @@ namespace HookeRope
             /// <summary>Lab JSON name (none).</summary>
             public const string Json = null;
             /// <summary>Inspector tooltip.</summary>
-            public const string Tooltip = "Generate the burr-strand material with the procedural burr texture when the renderer has no second material.";
+            public const string Tooltip = "When the renderer has no second material: draw the burr strands (opaque geometry) with a copy of the tube material carrying the procedural burr texture. Off: the strands use the tube material.";
             /// <summary>Default.</summary>
             public const bool Default = true;
             /// <summary>The table row.</summary>

@@ -177,6 +177,34 @@ namespace HookeRope.Tests.Components
             Assert.That(rope.Gravity, Is.EqualTo(new Vector3((float)row.Max, (float)row.Min, 0f)));
         }
 
+        /// <summary>
+        /// Every numeric serialized field (float, int, Vector3) of both components carries Unity's [Min] or [Range], so
+        /// the Inspector clamps a typed value quietly; the attribute's arguments are the row's Min (and Max) constants.
+        /// A Min-only field keeps OnValidate's clamp with a warning for values above Max.
+        /// </summary>
+        [Test]
+        public void EveryNumericSerializedFieldHasMinOrRangeFromTheTable()
+        {
+            int checkedFields = 0;
+            foreach (var type in s_Components)
+            foreach (var field in SerializedFields(type).Where(f => f.FieldType == typeof(float) || f.FieldType == typeof(int) || f.FieldType == typeof(Vector3)))
+            {
+                string where = type.Name + "." + field.Name;
+                var row = RopeParameters.All.FirstOrDefault(r => FieldName(r) == field.Name);
+                Assert.That(row, Is.Not.Null, where + " is numeric but has no row in RopeParameters");
+                var data = field.GetCustomAttributesData();
+                var range = data.SingleOrDefault(a => a.AttributeType == typeof(UnityEngine.RangeAttribute));
+                var min = data.SingleOrDefault(a => a.AttributeType == typeof(MinAttribute));
+                Assert.That(range == null ^ min == null, Is.True, where + " needs exactly one of [Min] and [Range]");
+                var lower = (range ?? min).ConstructorArguments[0].Value;
+                Assert.That(Convert.ToDouble(lower), Is.EqualTo((double)(float)row.Min), where + " minimum");
+                if (range != null)
+                    Assert.That(Convert.ToDouble(range.ConstructorArguments[1].Value), Is.EqualTo((double)(float)row.Max), where + " maximum");
+                checkedFields++;
+            }
+            Assert.That(checkedFields, Is.EqualTo(18), "numeric serialized fields of ElasticRope (17) and RopeMeshRenderer (1)");
+        }
+
         static IEnumerable<string> InspectorRowNames() => InspectorRows.Select(r => r.Name);
 
         static IEnumerable<string> ClampedRowNames() => ClampedRows.Select(r => r.Name);

@@ -69,7 +69,7 @@ namespace HookeRope.Tests.Components
         }
 
         [Test]
-        public void BuiltInPipelineGetsAnOrangeTubeAndAnAlphaClippedBurrMaterial()
+        public void BuiltInPipelineGetsAnOrangeTubeAndAnOpaqueBurrCopy()
         {
             if (UnityEngine.Rendering.GraphicsSettings.currentRenderPipeline != null)
                 Assert.Ignore("the generated materials checked here are the Built-in pipeline's");
@@ -85,11 +85,15 @@ namespace HookeRope.Tests.Components
             Assert.That(orange.g, Is.EqualTo(0.5f).Within(1e-6f));
             Assert.That(orange.b, Is.EqualTo(0.12f).Within(1e-6f));
             var burr = materials[1];
-            Assert.That(burr.IsKeywordEnabled("_ALPHATEST_ON"), Is.True);
-            Assert.That(burr.GetFloat("_Cutoff"), Is.EqualTo(0.5f));
-            Assert.That(burr.renderQueue, Is.EqualTo(2450), "AlphaTest queue");
+            Assert.That(burr, Is.Not.SameAs(tube));
+            Assert.That(burr.shader, Is.SameAs(tube.shader), "the strands are geometry: the tube's opaque shader draws them");
+            Assert.That(burr.IsKeywordEnabled("_ALPHATEST_ON"), Is.False, "no shader_feature keyword a player could strip");
+            Assert.That(burr.shaderKeywords.Length, Is.EqualTo(0));
+            Assert.That(burr.renderQueue, Is.EqualTo(2000), "Geometry queue");
+            Assert.That(burr.GetColor("_Color").g, Is.EqualTo(0.5f).Within(1e-6f), "the rope's colour, streaked by the texture");
             var texture = burr.GetTexture("_MainTex");
             Assert.That(texture, Is.Not.Null);
+            Assert.That(tube.GetTexture("_MainTex"), Is.Null);
             Assert.That(texture.width, Is.EqualTo(256));
             Assert.That(texture.height, Is.EqualTo(64));
             Assert.That(texture.isReadable, Is.False, "the CPU copy is released after the upload");
@@ -180,6 +184,82 @@ namespace HookeRope.Tests.Components
             var triangles = renderer.Mesh.triangles;
             Assert.That(triangles.Length, Is.EqualTo(update.IndexCount));
             for (int k = 0; k < update.IndexCount; k++) Assert.That(triangles[k], Is.EqualTo(indices[k]), "index " + k);
+        }
+
+        /// <summary>The test rope, broken and drawn: its mesh has the tube (submesh 0) and the burr strands (submesh 1).</summary>
+        (ElasticRope Rope, RopeMeshRenderer Renderer, Mesh Mesh) BrokenAndDrawn()
+        {
+            var (rope, renderer, grip) = Build();
+            BreakIt(rope, grip);
+            Assert.That(renderer.Render(1f), Is.True);
+            Assert.That(renderer.Mesh.subMeshCount, Is.EqualTo(2));
+            return (rope, renderer, renderer.Mesh);
+        }
+
+        static Vector3 WindingNormal(Vector3[] p, int[] t, int k) => Vector3.Cross(p[t[k + 1]] - p[t[k]], p[t[k + 2]] - p[t[k]]);
+
+        /// <summary>
+        /// Issue 13 item 6: the burr ends are real geometry, so any opaque material draws them. Submesh 1 holds, per
+        /// broken end, one strand per radial segment, each a closed three-sided spike of three triangles, every one
+        /// with area and Unity's front-face winding (geometric normal Cross(b − a, c − a)) along its vertex normal
+        /// and away from the strand's centre.
+        /// </summary>
+        [Test]
+        public void BurrStrandsAreOutwardFacingTrianglesWithArea()
+        {
+            var (rope, renderer, mesh) = BrokenAndDrawn();
+            var positions = mesh.vertices;
+            var normals = mesh.normals;
+            var strands = mesh.GetTriangles(1);
+            int radial = renderer.RadialSegments;
+            Assert.That(strands.Length, Is.EqualTo(2 * radial * 9), "two broken ends × one strand per radial segment × 3 triangles");
+
+            float r = rope.Radius;
+            float smallestArea = float.PositiveInfinity, leastAlignment = float.PositiveInfinity, leastOutward = float.PositiveInfinity;
+            for (int s = 0; s < strands.Length; s += 9)
+            {
+                // The spike's four corners (three base points and the tip) average to a point inside it.
+                var centre = Vector3.zero;
+                for (int q = 0; q < 9; q++) centre += positions[strands[s + q]];
+                centre /= 9f;
+                for (int k = s; k < s + 9; k += 3)
+                {
+                    var winding = WindingNormal(positions, strands, k);
+                    float area = 0.5f * winding.magnitude;
+                    smallestArea = System.Math.Min(smallestArea, area / (r * r));
+                    var unit = winding.normalized;
+                    var faceCentre = (positions[strands[k]] + positions[strands[k + 1]] + positions[strands[k + 2]]) / 3f;
+                    for (int c = 0; c < 3; c++) leastAlignment = System.Math.Min(leastAlignment, Vector3.Dot(unit, normals[strands[k + c]]));
+                    leastOutward = System.Math.Min(leastOutward, Vector3.Dot(unit, (faceCentre - centre).normalized));
+                }
+            }
+            TestContext.WriteLine("strand triangles: " + strands.Length / 3 + ", smallest area/r² " + smallestArea + ", least normal·winding " + leastAlignment + ", least outward " + leastOutward);
+            Assert.That(smallestArea, Is.GreaterThan(0.1f), "every strand triangle has an area above 10 % of r²");
+            Assert.That(leastAlignment, Is.GreaterThan(0.999f), "vertex normals equal the winding normal: lit on the side drawn");
+            Assert.That(leastOutward, Is.GreaterThan(0.5f), "front faces point away from the strand: back-face culling keeps the outside");
+        }
+
+        /// <summary>The tube and caps of a broken rope use the strands' winding: front faces outward.</summary>
+        [Test]
+        public void TubeAndCapsWindOutwardLikeTheBurrStrands()
+        {
+            var mesh = BrokenAndDrawn().Mesh;
+            var positions = mesh.vertices;
+            var normals = mesh.normals;
+            var tube = mesh.GetTriangles(0);
+            Assert.That(tube.Length, Is.GreaterThan(0));
+            float leastAlignment = float.PositiveInfinity;
+            int degenerate = 0;
+            for (int k = 0; k < tube.Length; k += 3)
+            {
+                var winding = WindingNormal(positions, tube, k);
+                if (winding.sqrMagnitude == 0f) { degenerate++; continue; }
+                var unit = winding.normalized;
+                for (int c = 0; c < 3; c++) leastAlignment = System.Math.Min(leastAlignment, Vector3.Dot(unit, normals[tube[k + c]]));
+            }
+            TestContext.WriteLine("tube and cap triangles: " + tube.Length / 3 + ", least normal·winding " + leastAlignment);
+            Assert.That(degenerate, Is.EqualTo(0));
+            Assert.That(leastAlignment, Is.GreaterThan(0.9f), "one winding convention for the whole mesh: front faces outward");
         }
     }
 }

@@ -6,7 +6,7 @@ using Spectre.Console;
 
 namespace HookeRope.Lab.Commands
 {
-    /// <summary>The lab's command line (System.CommandLine): run, list, report, stability, bench.</summary>
+    /// <summary>The lab's command line (System.CommandLine): run, list, report, stability, bench, figures, accuracy.</summary>
     public static class LabCli
     {
         /// <summary>Exit code for an invalid scenario or argument.</summary>
@@ -68,6 +68,22 @@ namespace HookeRope.Lab.Commands
             };
             bench.SetAction(p => Guard(console, error, () => BenchCommand.Execute(console, p.GetValue(benchQuick))));
             root.Subcommands.Add(bench);
+
+            var figuresOut = OutOption();
+            var figures = new Command("figures", "Render the manual's harness-rig figures (rope mesh from the core, real simulations) as PNG; the committed copies: --out \"Documentation~/images\".")
+            {
+                figuresOut,
+            };
+            figures.SetAction(p => Guard(console, error, () => FiguresCommand.Execute(console, p.GetValue(figuresOut))));
+            root.Subcommands.Add(figures);
+
+            var accuracyOut = OutOption();
+            var accuracy = new Command("accuracy", "The defaults' error against analytic answers at the validated step (1/90 s), 1/60 s and Unity's default 0.02 s: Markdown table.")
+            {
+                accuracyOut,
+            };
+            accuracy.SetAction(p => Guard(console, error, () => AccuracyCommand.Execute(console, p.GetValue(accuracyOut))));
+            root.Subcommands.Add(accuracy);
             return root;
         }
 

@@ -59,8 +59,8 @@ namespace HookeRope.Tests.Lint
 
         /// <summary>
         /// Class name of a serialized object (the "Name:" line after "--- !u!id &amp;fileID" in scenes, prefabs and
-        /// other YAML assets the package ships) → module. The four scene settings objects are written into every
-        /// scene by the editor and need no package.
+        /// other YAML assets the package ships) → module. The four scene settings objects and SceneRoots (the root
+        /// order, class 1660057539, 2022.2+) are written into every scene by the editor and need no package.
         /// </summary>
         public static readonly IReadOnlyDictionary<string, Module> SerializedClasses = new Dictionary<string, Module>
         {
@@ -68,7 +68,7 @@ namespace HookeRope.Tests.Lint
             ["MeshFilter"] = CoreModule, ["MeshRenderer"] = CoreModule, ["Camera"] = CoreModule, ["Light"] = CoreModule,
             ["Material"] = CoreModule, ["Mesh"] = CoreModule, ["Texture2D"] = CoreModule, ["PrefabInstance"] = CoreModule,
             ["OcclusionCullingSettings"] = CoreModule, ["RenderSettings"] = CoreModule,
-            ["LightmapSettings"] = CoreModule, ["NavMeshSettings"] = CoreModule,
+            ["LightmapSettings"] = CoreModule, ["NavMeshSettings"] = CoreModule, ["SceneRoots"] = CoreModule,
             ["Rigidbody"] = PhysicsModule, ["BoxCollider"] = PhysicsModule, ["SphereCollider"] = PhysicsModule,
             ["CapsuleCollider"] = PhysicsModule, ["MeshCollider"] = PhysicsModule,
             ["CharacterController"] = PhysicsModule,

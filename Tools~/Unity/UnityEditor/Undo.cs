@@ -6,8 +6,9 @@ using Object = UnityEngine.Object;
 namespace UnityEditor
 {
     /// <summary>
-    /// Stand-in of UnityEditor.Undo: records operations in the stand-in's undo log (<see cref="UndoLog"/>); nothing
-    /// can be undone (the stand-in has no Edit &gt; Undo).
+    /// Stand-in of UnityEditor.Undo: records operations in the stand-in's undo log (<see cref="UndoLog"/>) in undo
+    /// groups; PerformUndo reverts a group of created objects (**approx.**: recorded property changes cannot be reverted,
+    /// and the Editor's automatic new group per event does not exist: tests call IncrementCurrentGroup).
     /// </summary>
     public class Undo
     {
@@ -25,6 +26,26 @@ namespace UnityEditor
         {
             if (objectToUndo == null) return;
             UndoLog.Add(UndoLog.Kind.RecordObject, objectToUndo, name);
+        }
+
+        /// <summary>Unity automatically groups undo operations by the current group index.</summary>
+        public static int GetCurrentGroup() => UndoLog.CurrentGroup;
+
+        /// <summary>Unity automatically groups undo operations by the current group index; this starts a new group.</summary>
+        public static void IncrementCurrentGroup() => UndoLog.CurrentGroup++;
+
+        /// <summary>
+        /// Perform an Undo operation: reverts the latest group that has records. A created object is destroyed (with its
+        /// children); a group holding a property or RecordObject record throws (the stand-in keeps no previous state).
+        /// </summary>
+        public static void PerformUndo()
+        {
+            var group = UndoLog.PopLatestGroup();
+            foreach (var entry in group)
+                if (entry.What != UndoLog.Kind.CreatedObject)
+                    throw StandInError.Unsupported("Undo.PerformUndo of a " + entry.What + " record (the stand-in reverts created objects only)");
+            foreach (var entry in group)
+                if (entry.Target != null) Object.DestroyImmediate(entry.Target);
         }
     }
 }

@@ -5,7 +5,7 @@ namespace HookeRope.StandIn
 {
     /// <summary>
     /// Not part of Unity: what Shader.Find can find. The stand-in models an Editor project on the Built-in render
-    /// pipeline with no SRP package installed: "Standard" is always found; "Universal Render Pipeline/Lit" and
+    /// pipeline with no SRP package installed: "Standard" and "Legacy Shaders/Diffuse" are always found; "Universal Render Pipeline/Lit" and
     /// "HDRP/Lit" only after a test calls <see cref="Install"/> for their package (in Unity, a package's shaders are
     /// findable in the Editor whenever the package is installed, whichever pipeline is active). Any other name
     /// returns null. Each name maps to one shared Shader instance, as in Unity. World.Reset uninstalls the packages.
@@ -15,6 +15,7 @@ namespace HookeRope.StandIn
         static readonly ShaderDefinition[] s_Known =
         {
             StandardShaderTable.Definition,
+            LegacyDiffuseShaderTable.Definition,
             UniversalLitShaderTable.Definition,
             HighDefinitionLitShaderTable.Definition,
         };
