@@ -70,11 +70,18 @@ namespace HookeRope.Lab.Commands
             root.Subcommands.Add(bench);
 
             var figuresOut = OutOption();
-            var figures = new Command("figures", "Render the manual's harness-rig figures (rope mesh from the core, real simulations) as PNG; the committed copies: --out \"Documentation~/images\".")
+            var figureSet = new Argument<string>("set")
             {
-                figuresOut,
+                Description = "harness: the manual's harness-rig figures; paper: the seed paper's Figs. 5–9a with captions and the burr texture; all: both.",
+                Arity = ArgumentArity.ZeroOrOne,
+                DefaultValueFactory = _ => FiguresCommand.Harness,
             };
-            figures.SetAction(p => Guard(console, error, () => FiguresCommand.Execute(console, p.GetValue(figuresOut))));
+            figureSet.AcceptOnlyFromAmong(FiguresCommand.Harness, FiguresCommand.Paper, FiguresCommand.All);
+            var figures = new Command("figures", "Render figures from the core's mesh of real simulations as PNG (harness rig, or the paper's Figs. 5–9a); the committed copies: --out \"Documentation~/images\".")
+            {
+                figureSet, figuresOut,
+            };
+            figures.SetAction(p => Guard(console, error, () => FiguresCommand.Execute(console, p.GetValue(figuresOut), p.GetValue(figureSet))));
             root.Subcommands.Add(figures);
 
             var accuracyOut = OutOption();

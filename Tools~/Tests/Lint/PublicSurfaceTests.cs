@@ -21,8 +21,9 @@ namespace HookeRope.Tests.Lint
             // Radius model (read-only queries) and its analytic formulas
             "HookeRope.Radius.RadiusSettings", "HookeRope.Radius.RadiusModel", "HookeRope.Radius.NeckMode", "HookeRope.Radius.BreakReason",
             "HookeRope.Radius.PoissonRadius", "HookeRope.Radius.NeckHyperbola",
-            // Mesh data
+            // Mesh data; the burr texture every renderer of the strands needs (the lab's figures, a glTF export, a non-Unity host)
             "HookeRope.Geometry.TubeMeshSettings", "HookeRope.Fracture.BurrSettings", "HookeRope.Geometry.TubeVertex", "HookeRope.Geometry.TubeMeshUpdate",
+            "HookeRope.Fracture.BurrTextureGenerator",
             // Mathematics
             "HookeRope.Mathematics.Float3", "HookeRope.Mathematics.Quat",
         };
