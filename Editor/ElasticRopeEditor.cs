@@ -21,7 +21,7 @@ namespace HookeRope.Editor
         SerializedProperty m_StiffnessInput, m_YoungsModulus, m_AxialStiffness, m_Density, m_PoissonRatio, m_Damping;
         SerializedProperty m_RestLength, m_Radius, m_SegmentCount;
         SerializedProperty m_Solver, m_Substeps, m_Iterations, m_TensionModel, m_Gravity;
-        SerializedProperty m_Start, m_End, m_AttachmentCompliance;
+        SerializedProperty m_Start, m_End, m_AttachmentCompliance, m_OnStepped;
         SerializedProperty m_CollisionMode, m_Colliders, m_CollisionLayers, m_Planes, m_Friction;
         SerializedProperty m_RadiusModel, m_Necking, m_NeckMode, m_NeckRadiusFraction, m_DefectPosition, m_Fracture, m_BreakStrain, m_BreakRadiusFraction, m_OnBreak;
 
@@ -45,6 +45,7 @@ namespace HookeRope.Editor
             m_Start = so.FindProperty(nameof(m_Start));
             m_End = so.FindProperty(nameof(m_End));
             m_AttachmentCompliance = so.FindProperty(nameof(m_AttachmentCompliance));
+            m_OnStepped = so.FindProperty(nameof(m_OnStepped));
             m_CollisionMode = so.FindProperty(nameof(m_CollisionMode));
             m_Colliders = so.FindProperty(nameof(m_Colliders));
             m_CollisionLayers = so.FindProperty(nameof(m_CollisionLayers));
@@ -100,6 +101,7 @@ namespace HookeRope.Editor
                 EditorGUILayout.PropertyField(m_End, includeChildren: true);
                 AttachToSelectionButtons();
                 Field(m_AttachmentCompliance);
+                EditorGUILayout.PropertyField(m_OnStepped, includeChildren: true);
                 EditorGUI.BeginDisabledGroup(EditorApplication.isPlaying || serializedObject.isEditingMultipleObjects);
                 if (GUILayout.Button("Preview static sag")) StaticSagPreview.Compute(rope);
                 EditorGUI.EndDisabledGroup();

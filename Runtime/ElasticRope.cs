@@ -146,7 +146,8 @@ namespace HookeRope
         /// <summary>
         /// Advances the rope by <paramref name="deltaTime"/> seconds: copies attachment and collider poses in,
         /// steps the core simulation (substeps inside; it updates the read-outs), applies the rope's forces to attached
-        /// Rigidbodies and raises <see cref="OnBreak"/> on the first break. FixedUpdate calls it with Time.fixedDeltaTime when Physics.simulationMode is FixedUpdate, Update with Time.deltaTime in Update mode; in Script mode and edit-mode code call it yourself.
+        /// Rigidbodies, records where rigs without a Rigidbody must move, raises <see cref="OnBreak"/> on the first break
+        /// and <see cref="OnStepped"/> after every step. FixedUpdate calls it with Time.fixedDeltaTime when Physics.simulationMode is FixedUpdate, Update with Time.deltaTime in Update mode; in Script mode and edit-mode code call it yourself.
         /// </summary>
         public void Simulate(float deltaTime)
         {
@@ -154,7 +155,7 @@ namespace HookeRope
                 throw new ArgumentOutOfRangeException(nameof(deltaTime), deltaTime, "deltaTime must be in (0, +inf) seconds");
             if (_rope == null || TopologyChanged()) Rebuild();
 
-            if (_attachments.CopyIn(_rope, _origin)) _simulation.Readouts.ArrestLoad = _attachments.EndLoad;
+            if (_attachments.CopyIn(_rope, _origin, deltaTime)) _simulation.Readouts.ArrestLoad = _attachments.EndLoad;
             _colliderBinding.BeforeStep(_rope, _origin, Reach);
 
             _stopwatch.Restart();
@@ -171,6 +172,7 @@ namespace HookeRope
                 _breakRaised = true;
                 m_OnBreak?.Invoke(_origin + firstBreak.Value.Position.ToVector3(), firstBreak.Value.Tension);
             }
+            m_OnStepped?.Invoke(_attachments.StartForce, _attachments.EndForce);
         }
 
         /// <summary>Clears <see cref="PeakTension"/> and <see cref="PeakArrestForce"/>.</summary>
