@@ -54,6 +54,7 @@ namespace HookeRope.Solver
         public readonly double[] SolveDX, SolveDY, SolveDZ;
         public readonly double[] BaseVelX, BaseVelY, BaseVelZ;
         public readonly float[] PrevVelX, PrevVelY, PrevVelZ;
+        public readonly float[] PredictedDX, PredictedDY, PredictedDZ; // m, the scheme's prediction d_pred of this substep
 
         // contacts (allocated by EnsureContacts when the rope gets its first collider; null before)
         public float[] ContactNX, ContactNY, ContactNZ; // outward unit surface normal at the particle
@@ -87,6 +88,7 @@ namespace HookeRope.Solver
             SolveDX = new double[n]; SolveDY = new double[n]; SolveDZ = new double[n];
             BaseVelX = new double[n]; BaseVelY = new double[n]; BaseVelZ = new double[n];
             PrevVelX = new float[n]; PrevVelY = new float[n]; PrevVelZ = new float[n];
+            PredictedDX = new float[n]; PredictedDY = new float[n]; PredictedDZ = new float[n];
         }
 
         /// <summary>

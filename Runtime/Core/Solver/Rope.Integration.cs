@@ -56,6 +56,7 @@ namespace HookeRope.Solver
             float[] vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ, ux = chain.PrevVelX, uy = chain.PrevVelY, uz = chain.PrevVelZ;
             float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
             double[] bx = chain.BaseVelX, by = chain.BaseVelY, bz = chain.BaseVelZ;
+            float[] qx = chain.PredictedDX, qy = chain.PredictedDY, qz = chain.PredictedDZ;
             bool[] kinematic = chain.Kinematic;
             bool bdf2 = scheme == TimeIntegrator.Bdf2;
             double invH = 1.0 / h, h2 = h * h, c = 4.0 * h2 / 9.0, e = 2.0 * h / 3.0;
@@ -84,6 +85,7 @@ namespace HookeRope.Solver
                     bx[i] = 0.0; by[i] = 0.0; bz[i] = 0.0;
                 }
                 ux[i] = (float)wx; uy[i] = (float)wy; uz[i] = (float)wz;
+                qx[i] = dx[i]; qy[i] = dy[i]; qz[i] = dz[i];
             }
             Array.Clear(chain.SolveDX, 0, n);
             Array.Clear(chain.SolveDY, 0, n);
@@ -126,9 +128,24 @@ namespace HookeRope.Solver
             float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
             double[] bx = chain.BaseVelX, by = chain.BaseVelY, bz = chain.BaseVelZ;
             double[] sx = chain.SolveDX, sy = chain.SolveDY, sz = chain.SolveDZ;
+            float[] wx = chain.PrevVelX, wy = chain.PrevVelY, wz = chain.PrevVelZ;
+            float[] qx = chain.PredictedDX, qy = chain.PredictedDY, qz = chain.PredictedDZ;
+            bool[] kinematic = chain.Kinematic;
             double invH = 1.0 / h, k = scheme == TimeIntegrator.Bdf2 ? 0.5 * invH : 0.0;
             for (int i = 0; i < n; i++)
             {
+                // what moved the particle besides the prediction and the chain solve (collider push-out, friction, a pin
+                // target) is a velocity kick c/h, as in backward Euler; boosting the history by it too (v_prev += c/h) makes
+                // the next prediction carry it exactly once instead of 11/9 times
+                double cx = dx[i] - qx[i] - sx[i], cy = dy[i] - qy[i] - sy[i], cz = dz[i] - qz[i] - sz[i];
+                if (kinematic[i])
+                {
+                    wx[i] = (float)(dx[i] * invH); wy[i] = (float)(dy[i] * invH); wz[i] = (float)(dz[i] * invH);
+                }
+                else if (cx != 0.0 || cy != 0.0 || cz != 0.0)
+                {
+                    wx[i] += (float)(cx * invH); wy[i] += (float)(cy * invH); wz[i] += (float)(cz * invH);
+                }
                 float ux = (float)(bx[i] + dx[i] * invH + k * sx[i]);
                 float uy = (float)(by[i] + dy[i] * invH + k * sy[i]);
                 float uz = (float)(bz[i] + dz[i] * invH + k * sz[i]);
