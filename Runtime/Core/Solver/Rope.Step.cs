@@ -119,8 +119,11 @@ namespace HookeRope.Solver
                 // Gauss–Seidel is the solver itself, or a polish sweep after an exact solve whose
                 // linearisation was poor somewhere (a fold); on a taut chain the sweep would change nothing
                 bool sweep = !exact || ExactChainSolver.Iterate(chain, hEff, solveBeta, tensionOnly);
+                // after an exact solve the polish sweep is a nonlinear projection (a fold), which a second-order scheme
+                // takes as a correction (a velocity kick, as a collider push) rather than as a constraint force
+                if (trackSolve && exact) TrackSolveDisplacement(1.0);
                 if (sweep) GaussSeidelSolver.Iterate(chain, hEff, solveBeta, tensionOnly);
-                if (trackSolve) TrackSolveDisplacement(1.0);
+                if (trackSolve && !exact) TrackSolveDisplacement(1.0);
                 if (softPins) ReleaseCompliantPins(hEff, t);
                 CollidePhase(h, it == iterations - 1 ? ContactPass.LastIteration : ContactPass.BetweenIterations);
             }
