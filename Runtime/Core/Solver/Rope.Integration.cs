@@ -123,8 +123,6 @@ namespace HookeRope.Solver
         private void UpdateVelocitiesSecondOrder(TimeIntegrator scheme, double h, bool violent)
         {
             int n = chain.ParticleCount;
-            float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
-            float[] vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ;
             float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
             double[] bx = chain.BaseVelX, by = chain.BaseVelY, bz = chain.BaseVelZ;
             double[] sx = chain.SolveDX, sy = chain.SolveDY, sz = chain.SolveDZ;
@@ -146,22 +144,7 @@ namespace HookeRope.Solver
                 {
                     wx[i] += (float)(cx * invH); wy[i] += (float)(cy * invH); wz[i] += (float)(cz * invH);
                 }
-                float ux = (float)(bx[i] + dx[i] * invH + k * sx[i]);
-                float uy = (float)(by[i] + dy[i] * invH + k * sy[i]);
-                float uz = (float)(bz[i] + dz[i] * invH + k * sz[i]);
-                float nx = px[i] + dx[i], ny = py[i] + dy[i], nz = pz[i] + dz[i];
-                if (float.IsFinite(ux + uy + uz) && float.IsFinite(nx + ny + nz))
-                {
-                    x[i] = nx; y[i] = ny; z[i] = nz;
-                    vx[i] = ux; vy[i] = uy; vz[i] = uz;
-                }
-                else
-                {
-                    // never let a non-finite value into the state: fall back to the last good position at rest
-                    x[i] = px[i]; y[i] = py[i]; z[i] = pz[i];
-                    vx[i] = 0f; vy[i] = 0f; vz[i] = 0f;
-                    dx[i] = 0f; dy[i] = 0f; dz[i] = 0f;
-                }
+                CommitParticle(i, (float)(bx[i] + dx[i] * invH + k * sx[i]), (float)(by[i] + dy[i] * invH + k * sy[i]), (float)(bz[i] + dz[i] * invH + k * sz[i]));
             }
             // a violent substep (see ViolentStrain) restarts the history: the next substep is backward Euler
             historyValid = !violent;

@@ -241,24 +241,30 @@ namespace HookeRope.Solver
         {
             int n = chain.ParticleCount;
             float invH = 1f / h;
-            float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
-            float[] vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ;
             float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
-            for (int i = 0; i < n; i++)
+            for (int i = 0; i < n; i++) CommitParticle(i, dx[i] * invH, dy[i] * invH, dz[i] * invH);
+        }
+
+        /// <summary>
+        /// Ends particle i's substep at x = x_prev + d with velocity (ux, uy, uz) m/s. Never lets a non-finite value into the
+        /// state: then the particle falls back to its last good position, at rest, with no displacement.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private void CommitParticle(int i, float ux, float uy, float uz)
+        {
+            float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
+            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
+            float nx = px[i] + dx[i], ny = py[i] + dy[i], nz = pz[i] + dz[i];
+            if (float.IsFinite(ux + uy + uz) && float.IsFinite(nx + ny + nz))
             {
-                float ux = dx[i] * invH, uy = dy[i] * invH, uz = dz[i] * invH;
-                float nx = px[i] + dx[i], ny = py[i] + dy[i], nz = pz[i] + dz[i];
-                if (float.IsFinite(ux + uy + uz) && float.IsFinite(nx + ny + nz))
-                {
-                    x[i] = nx; y[i] = ny; z[i] = nz;
-                    vx[i] = ux; vy[i] = uy; vz[i] = uz;
-                }
-                else
-                {
-                    // never let a non-finite value into the state: fall back to the last good position at rest
-                    x[i] = px[i]; y[i] = py[i]; z[i] = pz[i];
-                    vx[i] = 0f; vy[i] = 0f; vz[i] = 0f;
-                }
+                x[i] = nx; y[i] = ny; z[i] = nz;
+                chain.VelX[i] = ux; chain.VelY[i] = uy; chain.VelZ[i] = uz;
+            }
+            else
+            {
+                x[i] = px[i]; y[i] = py[i]; z[i] = pz[i];
+                chain.VelX[i] = 0f; chain.VelY[i] = 0f; chain.VelZ[i] = 0f;
+                dx[i] = 0f; dy[i] = 0f; dz[i] = 0f;
             }
         }
 
