@@ -74,12 +74,16 @@ namespace HookeRope.Lab.Commands
             var stabilityOut = OutOption();
             var stabilityQuick = new Option<bool>("--quick") { Description = "Reduced sweep for CI." };
             var stabilityQuiet = QuietOption();
+            var stabilityFull = new Option<bool>("--full") { Description = "The integrator grid (1 356 cases, both integrators, both tension models, with and without a collider) after the scenario sweep." };
+            var stabilityGrid = new Option<bool>("--grid") { Description = "The CI subset of the integrator grid (--full runs all of it)." };
             var stability = new Command("stability", "Sweep of stiff and extreme cases; exit code 1 if any case fails.")
             {
-                stabilityOut, stabilityQuick, stabilityQuiet,
+                stabilityOut, stabilityQuick, stabilityQuiet, stabilityFull, stabilityGrid,
             };
             stability.SetAction(p => Guard(console, error, () =>
-                StabilityCommand.Execute(console, p.GetValue(stabilityOut), p.GetValue(stabilityQuick), p.GetValue(stabilityQuiet) ? null : error)));
+                p.GetValue(stabilityFull) || p.GetValue(stabilityGrid)
+                    ? GridCommand.Execute(console, p.GetValue(stabilityOut), full: p.GetValue(stabilityFull))
+                    : StabilityCommand.Execute(console, p.GetValue(stabilityOut), p.GetValue(stabilityQuick), p.GetValue(stabilityQuiet) ? null : error)));
             root.Subcommands.Add(stability);
 
             var benchQuick = new Option<bool>("--quick") { Description = "Fewer sizes and shorter timings." };

@@ -17,7 +17,7 @@ namespace HookeRope.Tests.Lint
             "HookeRope.RopeParameters", "HookeRope.ParameterInfo", "HookeRope.ParameterKind", "HookeRope.ParameterGroup",
             // Solver
             "HookeRope.Solver.Rope", "HookeRope.Solver.RopeSettings", "HookeRope.Solver.StepReport", "HookeRope.Solver.RopeBreakEvent",
-            "HookeRope.Solver.ColliderShape", "HookeRope.Solver.ColliderKind", "HookeRope.Solver.ConstraintSolverKind", "HookeRope.Solver.TensionModel",
+            "HookeRope.Solver.ColliderShape", "HookeRope.Solver.ColliderKind", "HookeRope.Solver.ConstraintSolverKind", "HookeRope.Solver.TensionModel", "HookeRope.Solver.TimeIntegrator",
             // Radius model (read-only queries) and its analytic formulas
             "HookeRope.Radius.RadiusSettings", "HookeRope.Radius.RadiusModel", "HookeRope.Radius.NeckMode", "HookeRope.Radius.BreakReason",
             "HookeRope.Radius.PoissonRadius", "HookeRope.Radius.NeckHyperbola",
