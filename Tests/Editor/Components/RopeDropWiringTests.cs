@@ -23,6 +23,7 @@ namespace HookeRope.Tests.Components
         static readonly Vector3 DRingOffset = new Vector3(0f, 0.4f, 0.1f);
         UnityRopeScene _scene;
         int _wiringLines;
+        string _lastLine;
 
         [SetUp]
         public void SetUp()
@@ -42,7 +43,11 @@ namespace HookeRope.Tests.Components
 
         void CountWiringLines(string message, string stackTrace, LogType type)
         {
-            if (type == LogType.Log && message.StartsWith(LinePrefix, System.StringComparison.Ordinal)) _wiringLines++;
+            if (type == LogType.Log && message.StartsWith(LinePrefix, System.StringComparison.Ordinal))
+            {
+                _wiringLines++;
+                _lastLine = message;
+            }
         }
 
         ElasticRope DropPrefab(Transform parent)
@@ -81,6 +86,8 @@ namespace HookeRope.Tests.Components
             AssertWiredOnto(rope, worker, dRing);
             Assert.That(worker.mass, Is.EqualTo(100f));
             Assert.That(_wiringLines, Is.EqualTo(1));
+            Assert.That(_lastLine, Is.EqualTo(LinePrefix + "Elastic Rope: End pulls Rigidbody 'Worker' at 'Harness D-Ring'; Start anchored at 'Elastic Rope Anchor' 2 m above it."),
+                "the line names the anchor it created (described before wiring, not as an existing one)");
 
             yield return null; // the anchor's own creation event is published now: nothing more to wire
             Assert.That(_wiringLines, Is.EqualTo(1));
