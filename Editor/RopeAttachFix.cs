@@ -57,11 +57,17 @@ namespace HookeRope.Editor
         }
 
         /// <summary>Wires the rope (Undo-able: the rope's fields and the created anchor).</summary>
-        internal void Apply()
+        internal void Apply() => Apply(_rope, _wiring, ButtonLabel);
+
+        /// <summary>
+        /// Carries out <paramref name="wiring"/> on <paramref name="rope"/> with Undo named <paramref name="undoName"/>:
+        /// the rope's fields recorded, a created anchor registered (shared with the drop hook, <see cref="RopeDropWiring"/>).
+        /// </summary>
+        internal static void Apply(ElasticRope rope, RopeAutoWiring wiring, string undoName)
         {
-            Undo.RecordObject(_rope, ButtonLabel);
-            var created = _wiring.Apply();
-            if (created != null) Undo.RegisterCreatedObjectUndo(created, ButtonLabel);
+            Undo.RecordObject(rope, undoName);
+            var created = wiring.Apply();
+            if (created != null) Undo.RegisterCreatedObjectUndo(created, undoName);
         }
 
         static bool PointOnBodyWithoutBody(RopeEnd end) =>

@@ -25,8 +25,9 @@ namespace HookeRope
         {
             var wiring = RopeAutoWiring.For(this);
             if (wiring == null) return;
+            string line = "HookeRope wired onto the rig: " + wiring.Describe(); // before Apply: afterwards a new anchor reads as an existing one
             wiring.Apply();
-            Debug.Log("HookeRope wired onto the rig: " + wiring.Describe(), this);
+            Debug.Log(line, this);
         }
     }
 }

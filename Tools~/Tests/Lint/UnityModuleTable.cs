@@ -122,6 +122,12 @@ namespace HookeRope.Tests.Lint
                 "EditorGUI", "EditorGUILayout", "GameObjectUtility", "GizmoType", "Handles", "MenuCommand", "MenuItem",
                 "MessageType", "ObjectFactory", "PrefabUtility", "Selection", "SerializedObject", "SerializedProperty",
                 "SerializedPropertyType", "Undo");
+            // the drop hook (issue 13 item 1): also "Implemented in: UnityEditor.CoreModule"
+            Add(EditorCoreModule, "UnityEditor",
+                "ChangeGameObjectParentEventArgs", "CreateGameObjectHierarchyEventArgs", "EditorUtility",
+                "InitializeOnLoadAttribute", "ObjectChangeEventStream", "ObjectChangeEvents",
+                "ObjectChangeEvents+ObjectChangeEventsHandler", "ObjectChangeKind");
+            Add(EditorCoreModule, "UnityEditor.SceneManagement", "PrefabStage", "PrefabStageUtility");
             return t;
         }
     }

@@ -39,10 +39,22 @@ namespace HookeRope.StandIn
                 {
                     World.Reset();
                     World.IsPlaying = _platform == StandInPlatform.PlayMode;
+                    RunEditorLoad();
                 }
                 return;
             }
             LogExpectations.Begin();
+        }
+
+        /// <summary>
+        /// The editor's assembly load, when the run has the stand-in's UnityEditor beside it: its internal
+        /// HookeRope.StandIn.EditorLoad.Run (the [InitializeOnLoad] static constructors, once per process). Found by
+        /// name so that this assembly, which runtime test code also compiles against, does not reference UnityEditor.
+        /// </summary>
+        static void RunEditorLoad()
+        {
+            var load = Type.GetType("HookeRope.StandIn.EditorLoad, UnityEditor", throwOnError: false);
+            load?.GetMethod("Run", System.Reflection.BindingFlags.NonPublic | System.Reflection.BindingFlags.Static)?.Invoke(null, null);
         }
 
         public void AfterTest(ITest test)

@@ -19,6 +19,21 @@ namespace UnityEditor
                 throw new ArgumentException("Cannot call 'RegisterCreatedObjectUndo' on Transform components, as transforms cannot be created/destroyed independently from their game object");
             if (objectToUndo == null) throw new ArgumentNullException(nameof(objectToUndo));
             UndoLog.Add(UndoLog.Kind.CreatedObject, objectToUndo, name);
+            if (objectToUndo is GameObject created) ObjectChangeLog.RecordCreated(created);
+        }
+
+        /// <summary>Sets the parent of transform to the new parent (keeping its world pose) and records an undo operation.</summary>
+        public static void SetTransformParent(Transform transform, Transform newParent, string name) =>
+            SetTransformParent(transform, newParent, true, name);
+
+        /// <summary>Sets the parent of transform to the new parent and records an undo operation (publishes ChangeGameObjectParent when the parent changed).</summary>
+        public static void SetTransformParent(Transform transform, Transform newParent, bool worldPositionStays, string name)
+        {
+            if (transform is null) throw new ArgumentNullException(nameof(transform));
+            var previous = transform.parent;
+            UndoLog.Add(UndoLog.Kind.TransformParent, transform, name);
+            transform.SetParent(newParent, worldPositionStays);
+            if (transform.parent != previous) ObjectChangeLog.RecordParentChanged(transform.gameObject, previous, transform.parent);
         }
 
         /// <summary>Records any changes done on the object after the RecordObject function.</summary>

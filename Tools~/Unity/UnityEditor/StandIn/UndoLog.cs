@@ -20,6 +20,8 @@ namespace HookeRope.StandIn
             RecordObject,
             /// <summary>SerializedObject.ApplyModifiedProperties (state before the applied edits).</summary>
             ModifiedProperties,
+            /// <summary>Undo.SetTransformParent (the previous parent).</summary>
+            TransformParent,
         }
 
         /// <summary>One undo record.</summary>

@@ -36,6 +36,9 @@ namespace HookeRope.StandIn
         /// <summary>Seconds between frames (a VR headset's 90 Hz by default, like a fixed Time.captureDeltaTime).</summary>
         internal static float FrameInterval { get; set; } = DefaultFrameInterval;
 
+        /// <summary>Raised at the start of every frame, before the fixed steps: the editor's update (the stand-in's UnityEditor publishes its ObjectChangeEvents there).</summary>
+        internal static event Action EditorUpdate;
+
         /// <summary>True while a frame has started and not yet ended.</summary>
         internal static bool InFrame => s_Frame != null;
 
@@ -85,6 +88,7 @@ namespace HookeRope.StandIn
         static IEnumerator<LoopPoint> Frame()
         {
             Time.BeginFrame(FrameInterval);
+            EditorUpdate?.Invoke();
             if (World.IsPlaying)
             {
                 while (Time.TryBeginFixedStep())
