@@ -200,7 +200,7 @@ namespace HookeRope.World
             }
             bool step = (passPhase & PhaseStep) != 0;
             for (int i = 0; i < count; i++)
-                costs[i] = WorkPartition.Cost(ropes[i], step, (passPhase & PhaseMesh) != 0 && slots[i] != null);
+                costs[i] = WorkPartition.Cost(ropes[i], step, (passPhase & PhaseMesh) != 0 ? slots[i] : null);
             WorkPartition.Split(costs, count, bounds);
         }
 

@@ -5,20 +5,25 @@ namespace HookeRope.World
 {
     /// <summary>
     /// Static partition of the world's ropes into contiguous blocks, one per worker, of about equal estimated cost:
-    /// particles × substeps × iterations for the step plus the mesh vertices when meshes are filled. It decides only
+    /// particles × substeps × iterations for the step plus the mesh vertices when meshes are filled (the count of the
+    /// slot's last fill; before the first, one ring of sides + 1 per particle). It decides only
     /// which thread steps which rope; each rope is stepped by exactly one thread with the same code, so the results are
     /// the same bits whatever the partition and the worker count.
     /// </summary>
     internal static class WorkPartition
     {
-        /// <summary>Estimated cost of one rope's pass (arbitrary units, ≥ 1).</summary>
-        public static double Cost(RopeSimulation simulation, bool step, bool mesh)
+        /// <summary>Estimated cost of one rope's pass (arbitrary units, ≥ 1); <paramref name="mesh"/> null = no mesh fill in this pass.</summary>
+        public static double Cost(RopeSimulation simulation, bool step, RopeMeshSlot mesh)
         {
             Rope rope = simulation.Rope;
             double cost = 1.0;
             if (step) cost += (double)rope.ParticleCount * rope.Settings.Substeps * rope.Settings.Iterations;
             // a tube vertex costs roughly what a particle-substep costs (both a few tens of ns, Documentation~/solver.md)
-            if (mesh) cost += (double)rope.ParticleCount * (simulation.MeshSettings.RadialSegments + 1);
+            if (mesh != null)
+            {
+                int vertices = mesh.Update.VertexCount;
+                cost += vertices > 0 ? vertices : (double)rope.ParticleCount * (simulation.MeshSettings.RadialSegments + 1);
+            }
             return cost;
         }
 
