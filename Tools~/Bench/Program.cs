@@ -6,11 +6,16 @@ using BenchmarkDotNet.Toolchains.InProcess.Emit;
 
 namespace HookeRope.Bench
 {
-    /// <summary>Entry point: a short in-process job so the whole suite runs in a few minutes.</summary>
+    /// <summary>
+    /// Entry point: <c>goal …</c> and <c>frames …</c> run <see cref="GoalCommand"/> (issue 18's table of many ropes);
+    /// anything else runs BenchmarkDotNet with a short in-process job so the whole suite runs in a few minutes.
+    /// </summary>
     public static class Program
     {
-        public static void Main(string[] args)
+        public static int Main(string[] args)
         {
+            if (args.Length > 0 && args[0] == "goal") return GoalCommand.Execute(args);
+            if (args.Length == 5 && args[0] == "frames") return GoalCommand.Frames(args);
             var job = Job.Default
                 .WithToolchain(InProcessEmitToolchain.Instance)
                 .WithWarmupCount(2)
@@ -24,6 +29,7 @@ namespace HookeRope.Bench
                 .WithOptions(ConfigOptions.DisableOptimizationsValidator)
                 .WithArtifactsPath(System.IO.Path.Combine(System.IO.Path.GetTempPath(), "HookeRope.Bench"));
             BenchmarkSwitcher.FromAssembly(typeof(Program).Assembly).Run(args, config);
+            return 0;
         }
     }
 }

@@ -1,0 +1,76 @@
+using System;
+using HookeRope.Geometry;
+
+namespace HookeRope.World
+{
+    /// <summary>
+    /// The tube-mesh buffers of one rope in a <see cref="RopeWorld"/>: the world fills them on a worker thread
+    /// (<see cref="RopeWorld.FillMeshes"/>, <see cref="RopeWorld.StepAndFillMeshes"/>) and the host uploads them
+    /// afterwards on its own thread (copy-out). Positions come either from the rope itself (rope-local frame, the
+    /// default) or from caller-owned arrays written before the pass (copy-in, e.g. interpolated and in a renderer's
+    /// local frame, see <see cref="UseCallerPositions"/>). The buffers grow when the topology needs more (a break),
+    /// so a pass allocates only then.
+    /// </summary>
+    public sealed class RopeMeshSlot
+    {
+        private float[] callerX, callerY, callerZ;
+        private float radiusScale = 1f;
+
+        internal RopeMeshSlot()
+        {
+        }
+
+        /// <summary>Vertices of the last fill (the first <see cref="TubeMeshUpdate.VertexCount"/> of <see cref="Update"/> are valid).</summary>
+        public TubeVertex[] Vertices { get; private set; } = Array.Empty<TubeVertex>();
+
+        /// <summary>Indices of the last fill (rewritten only when <see cref="TubeMeshUpdate.TopologyChanged"/>; the first <see cref="TubeMeshUpdate.IndexCount"/> are valid).</summary>
+        public int[] Indices { get; private set; } = Array.Empty<int>();
+
+        /// <summary>Result of the last fill: counts, topology flag, bounds (m, in the positions' frame).</summary>
+        public TubeMeshUpdate Update { get; private set; }
+
+        /// <summary>Fills served so far (0 before the first pass).</summary>
+        public int FillCount { get; private set; }
+
+        /// <summary>True when the positions come from <see cref="UseCallerPositions"/> rather than the rope.</summary>
+        public bool UsesCallerPositions => callerX != null;
+
+        /// <summary>
+        /// From the next fill on, builds the tube through <paramref name="x"/>, <paramref name="y"/>, <paramref name="z"/>
+        /// (m, at least ParticleCount each, written by the caller before every pass, in the frame the vertices should
+        /// be in) with ring radii times <paramref name="radiusScaleFactor"/> (&gt; 0, e.g. 1/|lossyScale.x|). The arrays
+        /// are read, not copied: do not write them while a pass runs.
+        /// </summary>
+        public void UseCallerPositions(float[] x, float[] y, float[] z, float radiusScaleFactor)
+        {
+            if (x == null) throw new ArgumentNullException(nameof(x));
+            if (y == null) throw new ArgumentNullException(nameof(y));
+            if (z == null) throw new ArgumentNullException(nameof(z));
+            if (!float.IsFinite(radiusScaleFactor) || !(radiusScaleFactor > 0f))
+                throw new ArgumentOutOfRangeException(nameof(radiusScaleFactor), radiusScaleFactor, "radiusScaleFactor must be finite and in (0, +inf).");
+            callerX = x;
+            callerY = y;
+            callerZ = z;
+            radiusScale = radiusScaleFactor;
+        }
+
+        /// <summary>From the next fill on, builds the tube through the rope's own positions (rope-local frame, radius scale 1).</summary>
+        public void UseRopePositions()
+        {
+            callerX = callerY = callerZ = null;
+            radiusScale = 1f;
+        }
+
+        /// <summary>Fills the buffers from <paramref name="simulation"/> (called by the world on a worker thread).</summary>
+        internal void Fill(RopeSimulation simulation)
+        {
+            int vertexCount = simulation.GetVertexCount(), indexCount = simulation.GetIndexCount();
+            if (Vertices.Length < vertexCount) Vertices = new TubeVertex[vertexCount];
+            if (Indices.Length < indexCount) Indices = new int[indexCount];
+            Update = callerX == null
+                ? simulation.FillMesh(Vertices, Indices)
+                : simulation.FillMesh(callerX, callerY, callerZ, Vertices, Indices, radiusScale);
+            FillCount++;
+        }
+    }
+}

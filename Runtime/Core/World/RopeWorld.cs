@@ -1,0 +1,252 @@
+using System;
+using System.Threading;
+using HookeRope.Solver;
+
+namespace HookeRope.World
+{
+    /// <summary>
+    /// Steps a set of independent <see cref="RopeSimulation"/>s on a fixed pool of worker threads (the calling thread
+    /// is worker 0; <see cref="WorkerCount"/> − 1 long-lived background threads do the rest). Each pass splits the
+    /// ropes into contiguous blocks of about equal cost, one per worker; every rope is stepped by exactly one thread
+    /// with the same code, so the results are the same bits for any worker count. Allocation-free per pass after
+    /// warm-up (a rope whose mesh grows reallocates its slot once). An exception thrown by a rope is caught, the other
+    /// ropes still finish the pass, and the caller gets an <see cref="InvalidOperationException"/> naming the lowest
+    /// failing rope index with the rope's exception inside; the world stays usable. Ropes must not share state (a
+    /// rope, its settings object, caller position arrays) and the host must not touch them while a pass runs. One
+    /// caller thread at a time; <see cref="Dispose"/> joins the threads.
+    /// </summary>
+    public sealed class RopeWorld : IDisposable
+    {
+        private const int PhaseStep = 1, PhaseMesh = 2;
+
+        private readonly WorkerPool pool;
+        private readonly int[] bounds;
+        private readonly Exception[] failure;
+        private readonly int[] failureIndex;
+        private RopeSimulation[] ropes = new RopeSimulation[4];
+        private RopeMeshSlot[] slots = new RopeMeshSlot[4];
+        private StepReport[] reports = new StepReport[4];
+        private double[] costs = new double[4];
+        private int count;
+        private int phase;
+        private float deltaTime;
+        private bool running;
+
+        /// <summary>
+        /// Creates a world that runs every pass on <paramref name="workerCount"/> threads (1 … 64, the calling thread
+        /// included; 1 = no extra thread). <see cref="DefaultWorkerCount"/> is one per logical processor.
+        /// </summary>
+        public RopeWorld(int workerCount = 1)
+        {
+            if (workerCount < 1 || workerCount > 64)
+                throw new ArgumentOutOfRangeException(nameof(workerCount), workerCount, "workerCount must be in [1, 64].");
+            bounds = new int[workerCount + 1];
+            failure = new Exception[workerCount];
+            failureIndex = new int[workerCount];
+            pool = new WorkerPool(workerCount, Work, "HookeRope world worker");
+        }
+
+        /// <summary>One worker per logical processor (<see cref="Environment.ProcessorCount"/>), at most 64.</summary>
+        public static int DefaultWorkerCount => Math.Max(1, Math.Min(64, Environment.ProcessorCount));
+
+        /// <summary>Threads per pass, the calling thread included.</summary>
+        public int WorkerCount => pool.WorkerCount;
+
+        /// <summary>Ropes in the world.</summary>
+        public int Count => count;
+
+        /// <summary>True once <see cref="Dispose"/> has run.</summary>
+        public bool IsDisposed => pool.IsDisposed;
+
+        /// <summary>Called on each worker's thread with its index at the end of its share of every pass (tests measure per-thread allocation with it).</summary>
+        internal Action<int> WorkerProbe { get; set; }
+
+        /// <summary>True while any worker thread is alive (false after <see cref="Dispose"/>).</summary>
+        internal bool AnyWorkerAlive => pool.AnyThreadAlive;
+
+        /// <summary>The rope at <paramref name="index"/> (0 … <see cref="Count"/> − 1, in the order added).</summary>
+        public RopeSimulation GetRope(int index)
+        {
+            CheckIndex(index);
+            return ropes[index];
+        }
+
+        /// <summary>The report of the rope's last step in this world (default before its first step).</summary>
+        public StepReport GetLastReport(int index)
+        {
+            CheckIndex(index);
+            return reports[index];
+        }
+
+        /// <summary>The rope's mesh slot, or null when its mesh is not filled by the world (<see cref="EnableMesh"/>).</summary>
+        public RopeMeshSlot GetMeshSlot(int index)
+        {
+            CheckIndex(index);
+            return slots[index];
+        }
+
+        /// <summary>
+        /// Adds <paramref name="simulation"/> at the end and returns its index. Not during a pass; a rope can be in one
+        /// world once. Allocates only when the world's arrays grow.
+        /// </summary>
+        public int Add(RopeSimulation simulation)
+        {
+            if (simulation == null) throw new ArgumentNullException(nameof(simulation));
+            CheckIdle();
+            if (IndexOf(simulation) >= 0) throw new ArgumentException("The rope is already in this world.", nameof(simulation));
+            if (count == ropes.Length)
+            {
+                int capacity = ArrayGrowth.NextCapacity(count);
+                Array.Resize(ref ropes, capacity);
+                Array.Resize(ref slots, capacity);
+                Array.Resize(ref reports, capacity);
+                Array.Resize(ref costs, capacity);
+            }
+            ropes[count] = simulation;
+            slots[count] = null;
+            reports[count] = default;
+            return count++;
+        }
+
+        /// <summary>Removes <paramref name="simulation"/> (the ropes after it move down one index); false when it is not in the world. Not during a pass.</summary>
+        public bool Remove(RopeSimulation simulation)
+        {
+            CheckIdle();
+            int index = IndexOf(simulation);
+            if (index < 0) return false;
+            int tail = count - index - 1;
+            Array.Copy(ropes, index + 1, ropes, index, tail);
+            Array.Copy(slots, index + 1, slots, index, tail);
+            Array.Copy(reports, index + 1, reports, index, tail);
+            count--;
+            ropes[count] = null;
+            slots[count] = null;
+            reports[count] = default;
+            return true;
+        }
+
+        /// <summary>Index of <paramref name="simulation"/> in the world, or −1.</summary>
+        public int IndexOf(RopeSimulation simulation)
+        {
+            for (int i = 0; i < count; i++)
+                if (ReferenceEquals(ropes[i], simulation)) return i;
+            return -1;
+        }
+
+        /// <summary>Lets the world fill the tube mesh of the rope at <paramref name="index"/> in its mesh passes; returns the slot (the same one if already on).</summary>
+        public RopeMeshSlot EnableMesh(int index)
+        {
+            CheckIndex(index);
+            CheckIdle();
+            return slots[index] ??= new RopeMeshSlot();
+        }
+
+        /// <summary>Stops filling the mesh of the rope at <paramref name="index"/> (its slot is dropped).</summary>
+        public void DisableMesh(int index)
+        {
+            CheckIndex(index);
+            CheckIdle();
+            slots[index] = null;
+        }
+
+        /// <summary>Steps every rope by <paramref name="hostDeltaTime"/> seconds ((0, 1] s) in parallel (<see cref="RopeSimulation.Step"/>).</summary>
+        public void Step(float hostDeltaTime) => RunPass(PhaseStep, hostDeltaTime);
+
+        /// <summary>Fills the mesh slot of every rope that has one (<see cref="EnableMesh"/>) in parallel, from the positions the slot names.</summary>
+        public void FillMeshes() => RunPass(PhaseMesh, 0f);
+
+        /// <summary>
+        /// One pass that steps every rope by <paramref name="hostDeltaTime"/> seconds and then fills its mesh slot (if
+        /// any) while the rope's data is still in the worker's cache: for hosts that draw the latest step.
+        /// </summary>
+        public void StepAndFillMeshes(float hostDeltaTime) => RunPass(PhaseStep | PhaseMesh, hostDeltaTime);
+
+        /// <summary>Stops and joins the worker threads. The ropes are left as they are; a pass after this throws <see cref="ObjectDisposedException"/>. Idempotent.</summary>
+        public void Dispose()
+        {
+            CheckIdle();
+            pool.Dispose();
+        }
+
+        private void RunPass(int passPhase, float hostDeltaTime)
+        {
+            if (pool.IsDisposed) throw new ObjectDisposedException(nameof(RopeWorld));
+            CheckIdle();
+            if ((passPhase & PhaseStep) != 0 && !(hostDeltaTime > 0f && hostDeltaTime <= 1f))
+                throw new ArgumentOutOfRangeException(nameof(hostDeltaTime), hostDeltaTime, "hostDeltaTime must be in (0, 1] s");
+            phase = passPhase;
+            deltaTime = hostDeltaTime;
+            Partition(passPhase);
+            running = true;
+            try
+            {
+                pool.Run();
+            }
+            finally
+            {
+                running = false;
+            }
+            ThrowFirstFailure();
+        }
+
+        private void Partition(int passPhase)
+        {
+            int workers = bounds.Length - 1;
+            if (workers == 1)
+            {
+                bounds[0] = 0;
+                bounds[1] = count;
+                return;
+            }
+            bool step = (passPhase & PhaseStep) != 0;
+            for (int i = 0; i < count; i++)
+                costs[i] = WorkPartition.Cost(ropes[i], step, (passPhase & PhaseMesh) != 0 ? slots[i] : null);
+            WorkPartition.Split(costs, count, bounds);
+        }
+
+        private void Work(int worker)
+        {
+            bool step = (phase & PhaseStep) != 0, mesh = (phase & PhaseMesh) != 0;
+            float dt = deltaTime;
+            int end = bounds[worker + 1];
+            for (int i = bounds[worker]; i < end; i++)
+            {
+                try
+                {
+                    if (step) reports[i] = ropes[i].Step(dt);
+                    if (mesh && slots[i] != null) slots[i].Fill(ropes[i]);
+                }
+                catch (Exception e)
+                {
+                    if (failure[worker] != null) continue;
+                    failure[worker] = e;
+                    failureIndex[worker] = i;
+                }
+            }
+            WorkerProbe?.Invoke(worker);
+        }
+
+        private void ThrowFirstFailure()
+        {
+            int first = -1;
+            for (int w = 0; w < failure.Length; w++)
+                if (failure[w] != null && (first < 0 || failureIndex[w] < failureIndex[first])) first = w;
+            if (first < 0) return;
+            Exception e = failure[first];
+            int index = failureIndex[first];
+            Array.Clear(failure, 0, failure.Length);
+            throw new InvalidOperationException("Rope " + index + " of the world failed during the pass (the other ropes finished it): " + e.Message, e);
+        }
+
+        private void CheckIndex(int index)
+        {
+            if ((uint)index >= (uint)count)
+                throw new ArgumentOutOfRangeException(nameof(index), index, "index must be in [0, Count).");
+        }
+
+        private void CheckIdle()
+        {
+            if (Volatile.Read(ref running)) throw new InvalidOperationException("The world is running a pass; change it between passes, from the thread that runs them.");
+        }
+    }
+}

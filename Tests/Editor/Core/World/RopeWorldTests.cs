@@ -1,0 +1,245 @@
+using System;
+using System.Collections.Generic;
+using HookeRope.Geometry;
+using HookeRope.Mathematics;
+using HookeRope.Solver;
+using HookeRope.World;
+using NUnit.Framework;
+
+namespace HookeRope.Tests.Core.World
+{
+    /// <summary>The many-ropes world: same bits for any worker count, no allocation per pass, failures on the caller, clean shutdown.</summary>
+    public sealed class RopeWorldTests
+    {
+        private const float Frame = 1f / 90f;
+
+        /// <summary>A varied scene: segment counts 8 … 52, both solvers, pinned ends, loads, a sphere under some ropes, a radius model on some.</summary>
+        private static List<RopeSimulation> Scene(int ropeCount)
+        {
+            var list = new List<RopeSimulation>();
+            for (int r = 0; r < ropeCount; r++)
+            {
+                int segments = 8 + (r * 11) % 45;
+                var settings = new RopeSettings
+                {
+                    RestLength = 1.5f + 0.1f * r,
+                    SegmentCount = segments,
+                    Solver = r % 3 == 1 ? ConstraintSolverKind.GaussSeidel : ConstraintSolverKind.ExactChain,
+                };
+                var start = new Float3(r * 0.7f, 3f, 0f);
+                var end = new Float3(r * 0.7f + 1.2f, 2.5f, 0.3f);
+                var sim = new RopeSimulation(settings, start, end, r % 2 == 0 ? new HookeRope.Radius.RadiusSettings() : null);
+                sim.Rope.AddPin(0, start);
+                if (r % 4 == 0) sim.Rope.AddPin(segments, end);
+                else sim.Rope.AddLoad(segments, 0.5f + r);
+                if (r % 5 == 2) sim.Rope.AddCollider(ColliderShape.Sphere(new Float3(r * 0.7f + 0.6f, 2.4f, 0.1f), 0.3f));
+                list.Add(sim);
+            }
+            return list;
+        }
+
+        /// <summary>Positions and mesh vertices of a scene as raw bits after <paramref name="frames"/> passes on <paramref name="workers"/> workers.</summary>
+        private static List<int> RunBits(int workers, int ropeCount, int frames)
+        {
+            var scene = Scene(ropeCount);
+            var bits = new List<int>();
+            using (var world = new RopeWorld(workers))
+            {
+                foreach (var sim in scene) world.EnableMesh(world.Add(sim));
+                for (int f = 0; f < frames; f++) world.StepAndFillMeshes(Frame);
+                for (int i = 0; i < world.Count; i++)
+                {
+                    Rope rope = world.GetRope(i).Rope;
+                    for (int p = 0; p < rope.ParticleCount; p++)
+                    {
+                        bits.Add(BitConverter.SingleToInt32Bits(rope.PositionX[p]));
+                        bits.Add(BitConverter.SingleToInt32Bits(rope.PositionY[p]));
+                        bits.Add(BitConverter.SingleToInt32Bits(rope.PositionZ[p]));
+                    }
+                    bits.Add(BitConverter.SingleToInt32Bits(world.GetLastReport(i).Residual));
+                    RopeMeshSlot slot = world.GetMeshSlot(i);
+                    for (int v = 0; v < slot.Update.VertexCount; v++)
+                    {
+                        TubeVertex vertex = slot.Vertices[v];
+                        bits.Add(BitConverter.SingleToInt32Bits(vertex.PX));
+                        bits.Add(BitConverter.SingleToInt32Bits(vertex.PY));
+                        bits.Add(BitConverter.SingleToInt32Bits(vertex.NZ));
+                    }
+                }
+            }
+            return bits;
+        }
+
+        private static int Mismatches(List<int> a, List<int> b)
+        {
+            if (a.Count != b.Count) return int.MaxValue;
+            int n = 0;
+            for (int i = 0; i < a.Count; i++)
+                if (a[i] != b[i]) n++;
+            return n;
+        }
+
+        [TestCase(2)]
+        [TestCase(3)]
+        public void ResultsAreTheSameBitsForOneAndSeveralWorkers(int workers)
+        {
+            var one = RunBits(1, 13, 45);
+            var several = RunBits(workers, 13, 45);
+            Assert.That(one.Count, Is.GreaterThan(13 * 9 * 3), "positions, residuals and mesh vertices compared");
+            Assert.That(Mismatches(one, several), Is.EqualTo(0));
+        }
+
+        [Test]
+        public void WorldStepIsTheSameBitsAsSteppingEachRopeAlone()
+        {
+            var alone = Scene(7);
+            var inWorld = Scene(7);
+            using (var world = new RopeWorld(2))
+            {
+                foreach (var sim in inWorld) world.Add(sim);
+                for (int f = 0; f < 30; f++)
+                {
+                    world.Step(Frame);
+                    foreach (var sim in alone) sim.Step(Frame);
+                }
+            }
+            int differing = 0;
+            double sag = 0;
+            for (int r = 0; r < alone.Count; r++)
+            {
+                Rope a = alone[r].Rope, b = inWorld[r].Rope;
+                for (int p = 0; p < a.ParticleCount; p++)
+                {
+                    if (BitConverter.SingleToInt32Bits(a.PositionY[p]) != BitConverter.SingleToInt32Bits(b.PositionY[p])) differing++;
+                    sag = Math.Max(sag, -b.PositionY[p]);
+                }
+            }
+            Assert.That(differing, Is.EqualTo(0));
+            Assert.That(sag, Is.GreaterThan(0.05), "the ropes did move (metres below their start)");
+        }
+
+        [TestCase(1)]
+        [TestCase(2)]
+        public void APassAllocatesNothingOnAnyThread(int workers)
+        {
+            var scene = Scene(20);
+            using (var world = new RopeWorld(workers))
+            {
+                foreach (var sim in scene) world.EnableMesh(world.Add(sim));
+                var perWorker = new long[workers];
+                var lastSeen = new long[workers];
+                world.WorkerProbe = w =>
+                {
+                    long now = GC.GetAllocatedBytesForCurrentThread();
+                    if (lastSeen[w] != 0) perWorker[w] += now - lastSeen[w];
+                    lastSeen[w] = now;
+                };
+                for (int i = 0; i < 60; i++) world.StepAndFillMeshes(Frame);
+                // The fewest bytes over several rounds (as SteadyStateAllocation): the runtime may allocate once on some
+                // thread while it re-compiles a hot method (tiered JIT), which lands in one round; an allocation of the
+                // world or the ropes lands in every round.
+                long fewestCaller = long.MaxValue, fewestWorkers = long.MaxValue;
+                for (int round = 0; round < 6; round++)
+                {
+                    Array.Clear(perWorker, 0, workers);
+                    fewestCaller = Math.Min(fewestCaller, MeasureCaller(world, 50));
+                    long workerBytes = 0;
+                    foreach (long b in perWorker) workerBytes += b;
+                    fewestWorkers = Math.Min(fewestWorkers, workerBytes);
+                }
+                Assert.That(fewestCaller, Is.EqualTo(0), "bytes on the calling thread (worker 0) over 50 passes");
+                Assert.That(fewestWorkers, Is.EqualTo(0), "bytes on all worker threads over 50 passes (the probe allocates nothing)");
+            }
+        }
+
+        private static long MeasureCaller(RopeWorld world, int passes)
+        {
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            for (int i = 0; i < passes; i++) world.StepAndFillMeshes(Frame);
+            return GC.GetAllocatedBytesForCurrentThread() - before;
+        }
+
+        [TestCase(1)]
+        [TestCase(2)]
+        public void AFailingRopeIsReportedOnTheCallerAndTheOthersStillStep(int workers)
+        {
+            var scene = Scene(6);
+            using (var world = new RopeWorld(workers))
+            {
+                foreach (var sim in scene) world.Add(sim);
+                // rope 4 draws through caller positions too short for it: its mesh fill throws on a worker
+                world.EnableMesh(4).UseCallerPositions(new float[1], new float[1], new float[1], 1f);
+                float before = scene[5].Rope.PositionY[5];
+                var error = Assert.Throws<InvalidOperationException>(() => world.StepAndFillMeshes(Frame));
+                Assert.That(error.Message, Does.StartWith("Rope 4 of the world failed"));
+                Assert.That(error.InnerException, Is.InstanceOf<ArgumentException>());
+                Assert.That(scene[5].Rope.PositionY[5], Is.LessThan(before), "rope 5 (after the failing one) still stepped: it fell (m)");
+                Assert.That(world.GetLastReport(0).Residual, Is.LessThan(1e-3f), "rope 0 still stepped");
+
+                world.DisableMesh(4);
+                world.StepAndFillMeshes(Frame);
+                Assert.That(world.Count, Is.EqualTo(6), "the world is still usable after the failure");
+            }
+        }
+
+        [TestCase(1)]
+        [TestCase(2)]
+        [TestCase(4)]
+        public void DisposeJoinsTheWorkersAndLaterPassesThrow(int workers)
+        {
+            var world = new RopeWorld(workers);
+            foreach (var sim in Scene(3)) world.Add(sim);
+            world.Step(Frame);
+            Assert.That(world.AnyWorkerAlive, Is.EqualTo(workers > 1));
+            world.Dispose();
+            world.Dispose();
+            Assert.That(world.AnyWorkerAlive, Is.False);
+            Assert.That(world.IsDisposed, Is.True);
+            Assert.Throws<ObjectDisposedException>(() => world.Step(Frame));
+        }
+
+        [Test]
+        public void AddRemoveKeepOrderAndRejectDuplicates()
+        {
+            var scene = Scene(4);
+            using (var world = new RopeWorld(2))
+            {
+                foreach (var sim in scene) world.Add(sim);
+                Assert.Throws<ArgumentException>(() => world.Add(scene[2]));
+                Assert.That(world.Remove(scene[1]), Is.True);
+                Assert.That(world.Remove(scene[1]), Is.False);
+                Assert.That(world.Count, Is.EqualTo(3));
+                Assert.That(world.GetRope(1), Is.SameAs(scene[2]));
+                Assert.That(world.IndexOf(scene[3]), Is.EqualTo(2));
+                Assert.Throws<ArgumentOutOfRangeException>(() => world.Step(0f));
+                Assert.Throws<ArgumentOutOfRangeException>(() => world.GetRope(3));
+                Assert.Throws<ArgumentOutOfRangeException>(() => new RopeWorld(0));
+            }
+        }
+
+        [Test]
+        public void EmptyWorldPassesDoNothing()
+        {
+            using (var world = new RopeWorld(2))
+            {
+                world.StepAndFillMeshes(Frame);
+                world.FillMeshes();
+                Assert.That(world.Count, Is.EqualTo(0));
+            }
+        }
+
+        [Test]
+        public void PartitionSplitsContiguousBlocksOfEqualCost()
+        {
+            var bounds = new int[3];
+            WorkPartition.Split(new double[] { 1, 1, 1, 1 }, 4, bounds);
+            Assert.That(bounds, Is.EqualTo(new[] { 0, 2, 4 }));
+            WorkPartition.Split(new double[] { 6, 1, 1, 1, 1, 1, 1 }, 7, bounds);
+            Assert.That(bounds, Is.EqualTo(new[] { 0, 1, 7 }), "one heavy rope alone against six light ones (6 against 6)");
+            var four = new int[5];
+            WorkPartition.Split(new double[] { 1, 1 }, 2, four);
+            Assert.That(four, Is.EqualTo(new[] { 0, 0, 1, 1, 2 }).Or.EqualTo(new[] { 0, 1, 1, 2, 2 }).Or.EqualTo(new[] { 0, 0, 1, 2, 2 }),
+                "more workers than ropes: some blocks are empty, every rope once");
+        }
+    }
+}

@@ -1,0 +1,71 @@
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using System.IO;
+
+namespace HookeRope.Bench
+{
+    /// <summary>
+    /// Stopwatch measurement of <see cref="GoalScene"/> worlds: the goal rows (100 × 64, 1 and 2 workers) and the cost
+    /// curves against rope count and segment count. Every frame is timed on its own; the row keeps the median and the
+    /// fastest frame. Timings are printed, never asserted.
+    /// </summary>
+    internal static class GoalBench
+    {
+        /// <summary>Measures one configuration for about <paramref name="seconds"/> of frames (at least 15).</summary>
+        public static GoalRow Measure(string id, int ropes, int segments, int workers, double seconds)
+        {
+            var row = new GoalRow { Id = id, Ropes = ropes, Segments = segments, Substeps = GoalScene.Substeps, MeshSides = GoalScene.MeshSides, Workers = workers };
+            using (var world = GoalScene.Build(ropes, segments, workers))
+            {
+                var watch = new Stopwatch();
+                var samples = new List<double>();
+                var process = Process.GetCurrentProcess();
+                process.Refresh();
+                TimeSpan cpuBefore = process.TotalProcessorTime;
+                var total = Stopwatch.StartNew();
+                while (samples.Count < 15 || total.Elapsed.TotalSeconds < seconds)
+                {
+                    watch.Restart();
+                    world.StepAndFillMeshes(GoalScene.Frame);
+                    watch.Stop();
+                    samples.Add(watch.Elapsed.TotalMilliseconds);
+                    if (samples.Count >= 2000) break;
+                }
+                process.Refresh();
+                row.CpuMsPerFrame = (process.TotalProcessorTime - cpuBefore).TotalMilliseconds / samples.Count;
+                samples.Sort();
+                row.MsPerFrame = samples[samples.Count / 2];
+                row.MinMsPerFrame = samples[0];
+            }
+            row.NsPerUnit = row.MsPerFrame * 1e6 / row.UnitsPerFrame;
+            row.LoadAverage = LoadAverage();
+            return row;
+        }
+
+        /// <summary>The rows of the table: goal at 1 and 2 workers, then rope counts 1 … 500 and segment counts 16 … 1 024 at 2 workers.</summary>
+        public static List<(string Id, int Ropes, int Segments, int Workers)> Plan(bool quick)
+        {
+            var plan = new List<(string, int, int, int)> { ("goal 100x64 w1", 100, 64, 1), ("goal 100x64 w2", 100, 64, 2) };
+            int[] ropeCounts = quick ? new[] { 1, 10, 100, 500 } : new[] { 1, 2, 5, 10, 20, 50, 100, 200, 500 };
+            foreach (int r in ropeCounts) plan.Add(($"ropes {r}x64 w2", r, 64, 2));
+            int[] segmentCounts = quick ? new[] { 16, 256 } : new[] { 16, 32, 64, 128, 256, 1024 };
+            foreach (int s in segmentCounts) plan.Add(($"segments 10x{s} w2", 10, s, 2));
+            return plan;
+        }
+
+        /// <summary>1-minute load average from /proc/loadavg, or −1 where it is not available.</summary>
+        public static double LoadAverage()
+        {
+            try
+            {
+                string text = File.ReadAllText("/proc/loadavg");
+                return double.Parse(text.Split(' ')[0], System.Globalization.CultureInfo.InvariantCulture);
+            }
+            catch (Exception)
+            {
+                return -1;
+            }
+        }
+    }
+}

@@ -1,0 +1,60 @@
+using System;
+using System.Diagnostics;
+using System.Globalization;
+using System.Text.RegularExpressions;
+
+namespace HookeRope.Bench
+{
+    /// <summary>
+    /// Instructions per unit from callgrind, stable on a loaded machine where wall-clock is not: runs this tool's
+    /// <c>frames</c> mode under <c>valgrind --tool=callgrind</c> (tiered compilation off, so every method is compiled
+    /// once, fully optimised) for a short and a long run and divides the difference of the collected instruction counts
+    /// (all threads) by the difference in work units, so start-up, JIT and scene building cancel out.
+    /// </summary>
+    internal static class InstructionCounter
+    {
+        /// <summary>Instructions per segment-substep (mesh included) for the goal scene, or 0 when valgrind is missing or fails.</summary>
+        public static double PerUnit(int ropes, int segments, int workers, int shortFrames, int longFrames, Action<string> log)
+        {
+            long a = Collected(ropes, segments, workers, shortFrames, log);
+            long b = Collected(ropes, segments, workers, longFrames, log);
+            if (a <= 0 || b <= a) return 0;
+            double units = (double)ropes * segments * GoalScene.Substeps * (longFrames - shortFrames);
+            return (b - a) / units;
+        }
+
+        private static long Collected(int ropes, int segments, int workers, int frames, Action<string> log)
+        {
+            string dll = typeof(Program).Assembly.Location;
+            var info = new ProcessStartInfo("valgrind")
+            {
+                RedirectStandardError = true,
+                RedirectStandardOutput = true,
+                UseShellExecute = false,
+            };
+            foreach (string arg in new[] { "--tool=callgrind", "--callgrind-out-file=/dev/null", "dotnet", dll, "frames",
+                         ropes.ToString(CultureInfo.InvariantCulture), segments.ToString(CultureInfo.InvariantCulture),
+                         workers.ToString(CultureInfo.InvariantCulture), frames.ToString(CultureInfo.InvariantCulture) })
+                info.ArgumentList.Add(arg);
+            info.Environment["DOTNET_TieredCompilation"] = "0";
+            try
+            {
+                using (var process = Process.Start(info))
+                {
+                    process.StandardOutput.ReadToEndAsync();
+                    string errors = process.StandardError.ReadToEnd();
+                    process.WaitForExit();
+                    Match m = Regex.Match(errors, @"Collected\s*:\s*(\d+)");
+                    long collected = m.Success ? long.Parse(m.Groups[1].Value, CultureInfo.InvariantCulture) : -1;
+                    log?.Invoke($"callgrind {ropes}x{segments} w{workers} {frames} frames: {collected} instructions");
+                    return collected;
+                }
+            }
+            catch (Exception e)
+            {
+                log?.Invoke("callgrind not run: " + e.Message);
+                return -1;
+            }
+        }
+    }
+}
