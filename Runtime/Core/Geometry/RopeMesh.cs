@@ -11,9 +11,6 @@ namespace HookeRope.Geometry
     /// </summary>
     internal sealed class RopeMesh
     {
-        /// <summary>Rings placed inside the Zone-mode neck zone (the ring layout is refined there).</summary>
-        internal const int RingsInNeckZone = 16;
-
         private readonly RopeSimulation simulation;
         private TubeMeshBuilder builder;
         private float[] ringRadii = Array.Empty<float>();
@@ -98,7 +95,7 @@ namespace HookeRope.Geometry
             zone = zoneDiameters;
             Rope rope = simulation.Rope;
             RingLayout layout = zoneNeck
-                ? RingLayout.Refined(rope.RestLengths, s.RingsPerSegment, model.DefectRestArc, model.NeckZoneRestLength, RingsInNeckZone)
+                ? RingLayout.Adapted(rope.RestLengths, s.RingsPerSegment, model.DefectRestArc, model.NeckZoneRestLength, simulation.RestRadius, s.RadialSegments)
                 : new RingLayout(rope.SegmentCount, s.RingsPerSegment);
             builder = new TubeMeshBuilder(s, layout);
             ringRadii = new float[layout.RingCount];
