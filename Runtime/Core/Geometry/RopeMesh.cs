@@ -20,6 +20,8 @@ namespace HookeRope.Geometry
         private bool zoneLayout;
         private float defect;
         private float zone;
+        private float restRadius;
+        private float fibreDensity;
 
         internal RopeMesh(RopeSimulation simulation, TubeMeshSettings settings)
         {
@@ -85,7 +87,9 @@ namespace HookeRope.Geometry
                 && burr == s.Burr.Enabled
                 && zoneLayout == zoneNeck
                 && defect == defectPosition
-                && zone == zoneDiameters)
+                && zone == zoneDiameters
+                && restRadius == simulation.RestRadius
+                && fibreDensity == s.Burr.FibreDensity)
                 return builder;
             rings = s.RingsPerSegment;
             caps = s.CapEnds;
@@ -93,11 +97,13 @@ namespace HookeRope.Geometry
             zoneLayout = zoneNeck;
             defect = defectPosition;
             zone = zoneDiameters;
+            restRadius = simulation.RestRadius;
+            fibreDensity = s.Burr.FibreDensity;
             Rope rope = simulation.Rope;
             RingLayout layout = zoneNeck
                 ? RingLayout.Adapted(rope.RestLengths, s.RingsPerSegment, model.DefectRestArc, model.NeckZoneRestLength, simulation.RestRadius, s.RadialSegments)
                 : new RingLayout(rope.SegmentCount, s.RingsPerSegment);
-            builder = new TubeMeshBuilder(s, layout);
+            builder = new TubeMeshBuilder(s, layout, restRadius);
             ringRadii = new float[layout.RingCount];
             TopologyVersion++;
             return builder;

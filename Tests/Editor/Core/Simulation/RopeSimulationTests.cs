@@ -82,7 +82,10 @@ namespace HookeRope.Tests.Core.Simulation
             var vertices = new TubeVertex[sim.GetVertexCount()];
             var indices = new int[sim.GetIndexCount()];
             var update = sim.FillMesh(vertices, indices);
-            Assert.That(update.BurrIndexCount, Is.EqualTo(2 * 16 * 9));
+            // Fibres per end: 40 per cm² of the rest cross-section, at least the 16 radial segments, at most 256.
+            double byArea = Math.Round(40.0 * Math.PI * Math.Pow(sim.RestRadius * 100.0, 2.0));
+            int fibres = (int)Math.Min(256.0, Math.Max(16.0, byArea));
+            Assert.That(update.BurrIndexCount, Is.EqualTo(2 * fibres * 9));
             Assert.That(MeshChecks.AllFiniteAndUnit(vertices, update.VertexCount), Is.True);
         }
 
