@@ -53,11 +53,13 @@ namespace HookeRope.Geometry
 
         /// <summary>Fills the mesh from positions in the caller's frame; ring radii are multiplied by <paramref name="radiusScale"/>.</summary>
         internal TubeMeshUpdate Fill(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
-            TubeVertex[] vertices, int[] indices, float radiusScale)
+            TubeVertex[] vertices, int[] indices, float radiusScale, bool ropeFrame = false)
         {
             TubeMeshBuilder b = Ensure();
             ComputeRingRadii(b.Layout, radiusScale);
             Rope rope = simulation.Rope;
+            // Positions in the rope's own frame (the rope-local fill) can be checked against its colliders.
+            b.SetContactColliders(ropeFrame ? rope : null, rope.Origin);
             return b.BuildWithRingRadii(x, y, z, rope.RestLengths, ringRadii, rope.BrokenSegments, vertices, indices);
         }
 

@@ -35,6 +35,8 @@ namespace HookeRope.Geometry
         private readonly bool[] lastBroken;
         private int[] lastIndices;
         private Float3 frameOrigin;
+        private HookeRope.Solver.Rope contactRope;
+        private Float3 contactOffset;
         private bool topologyValid;
 
         /// <summary>Builder for <paramref name="segmentCount"/> segments (≥ 1) with settings.RingsPerSegment rings in each.</summary>
@@ -97,6 +99,18 @@ namespace HookeRope.Geometry
 
         /// <summary>Burr fibres at each broken end (fixed at construction; see <see cref="BurrSettings.FibreCount"/>).</summary>
         public int FibreCount => fibreCount;
+
+        /// <summary>
+        /// Colliders to keep the drawn tube out of (null = none): before a build in which the positions are
+        /// <paramref name="rope"/>'s own frame shifted by <paramref name="worldOffset"/> (m; world = position + offset), each
+        /// ring centre closer to a collider than its ring radius is pushed out along the collider's normal, so the
+        /// drawn surface does not sink into a collider the rope wraps between its contact particles.
+        /// </summary>
+        internal void SetContactColliders(HookeRope.Solver.Rope rope, Float3 worldOffset)
+        {
+            contactRope = rope;
+            contactOffset = worldOffset;
+        }
 
         /// <summary>Vertices the mesh needs for these broken-segment flags (empty = intact rope).</summary>
         public int GetVertexCount(ReadOnlySpan<bool> brokenSegments)
@@ -264,6 +278,7 @@ namespace HookeRope.Geometry
             int first = layout.FirstRing(a);
             int last = layout.FirstRing(b);
             ComputeCenters(a, b, first, last, x, y, z, origin);
+            if (contactRope != null && contactRope.ColliderCount > 0) PushCentersOutOfColliders(first, last);
             ComputeFrames(first, last);
             ComputeSlopes(first, last);
 
@@ -335,6 +350,30 @@ namespace HookeRope.Geometry
                     }
                 }
                 centers[k] = c;
+            }
+        }
+
+        private void PushCentersOutOfColliders(int first, int last)
+        {
+            Float3 toWorld = frameOrigin + contactOffset;
+            int colliders = contactRope.ColliderCount;
+            for (int k = first; k <= last; k++)
+            {
+                float r = ringRadii[k];
+                for (int q = 0; q < colliders; q++)
+                {
+                    Float3 world = centers[k] + toWorld;
+                    float d = contactRope.ColliderDistance(q, world);
+                    if (!(d < r) || !float.IsFinite(d)) continue;
+                    float h = 0.01f * r + 1e-6f;
+                    var gradient = new Float3(
+                        contactRope.ColliderDistance(q, world + new Float3(h, 0f, 0f)) - contactRope.ColliderDistance(q, world - new Float3(h, 0f, 0f)),
+                        contactRope.ColliderDistance(q, world + new Float3(0f, h, 0f)) - contactRope.ColliderDistance(q, world - new Float3(0f, h, 0f)),
+                        contactRope.ColliderDistance(q, world + new Float3(0f, 0f, h)) - contactRope.ColliderDistance(q, world - new Float3(0f, 0f, h)));
+                    Float3 normal = gradient.NormalizedOr(Float3.Zero);
+                    if (normal.LengthSquared == 0f) continue;
+                    centers[k] = centers[k] + normal * (r - d);
+                }
             }
         }
 
