@@ -107,6 +107,16 @@ namespace HookeRope.Tests.Core.Radius
             Assert.That(model.RadiusAt(Segments - 1, 0.5f), Is.EqualTo(poisson).Within(1e-6 * R));
         }
 
+        [Test]
+        public void ANeckOfZeroLengthIsRejectedNamingTheRange()
+        {
+            var s = new RadiusSettings();
+            var e = Assert.Throws<ArgumentOutOfRangeException>(() => s.NeckZoneDiameters = 0f);
+            Assert.That(e.ParamName, Is.EqualTo("NeckZoneDiameters"));
+            Assert.That(e.Message, Does.Contain("[0.5, 1000]"));
+            Assert.That(s.NeckZoneDiameters, Is.EqualTo(4f));
+        }
+
         [TestCase(8)]
         [TestCase(16)]
         [TestCase(32)]
