@@ -140,6 +140,45 @@ namespace HookeRope.Tests.Core.Simulation
             return s + rest[segment] * fraction;
         }
 
+        /// <summary>
+        /// Issue 17: after the break's first frame (the topology change), stepping and filling a frayed, broken rope that
+        /// lies over a sphere (ring centres pushed out of the collider) allocates nothing, and the drawn tube stays outside
+        /// the sphere.
+        /// </summary>
+        [Test]
+        public void BrokenRopeOverASphereFillsWithoutAllocating()
+        {
+            var settings = Soft(1f, 20, 300f, 0.2f);
+            // Pinned 5 cm above the centre of a 10 cm sphere: the rope is pulled over its top.
+            var sim = new RopeSimulation(settings, new Float3(-0.5f, 0.15f, 0f), new Float3(0.5f, 0.15f, 0f), new RadiusSettings { PoissonRatio = 0.5f, Fracture = false });
+            sim.Rope.AddPin(0, new Float3(-0.5f, 0.05f, 0f));
+            sim.Rope.AddPin(20, new Float3(0.5f, 0.05f, 0f));
+            sim.Rope.AddCollider(ColliderShape.Sphere(Float3.Zero, 0.1f));
+            for (int i = 0; i < 90; i++) sim.Step(Step);
+            sim.Rope.BreakSegment(17);
+            var vertices = new TubeVertex[sim.GetVertexCount()];
+            var indices = new int[sim.GetIndexCount()];
+            var first = sim.FillMesh(vertices, indices);
+            Assert.That(first.TopologyChanged, Is.True);
+            Assert.That(first.BurrIndexCount, Is.EqualTo(2 * 126 * 9), "R = 10 mm: 40 fibres per cm² of πR²");
+            double deepest = double.MaxValue;
+            for (int k = 0; k < first.TubeIndexCount; k++)
+            {
+                TubeVertex v = vertices[indices[k]];
+                double x = v.PX + sim.Rope.Origin.X, y = v.PY + sim.Rope.Origin.Y, z = v.PZ + sim.Rope.Origin.Z;
+                deepest = Math.Min(deepest, Math.Sqrt(x * x + y * y + z * z) - 0.1);
+            }
+            TestContext.WriteLine("drawn tube to sphere: " + deepest / R + " R");
+            Assert.That(deepest, Is.GreaterThan(-0.02 * R), "the drawn tube stays outside the sphere it lies on");
+            Assert.That(deepest, Is.LessThan(0.05 * R), "it does lie on the sphere");
+            long bytes = SteadyStateAllocation.Bytes(() =>
+            {
+                sim.Step(Step);
+                sim.FillMesh(vertices, indices);
+            }, 30);
+            Assert.That(bytes, Is.EqualTo(0));
+        }
+
         [Test]
         public void ThinnedRopeLiesLowerOnTheGround()
         {
