@@ -10,7 +10,8 @@ namespace HookeRope.Editor
     /// Inspector of <see cref="ElasticRope"/>, grouped Material / Geometry / Solver / Attachments / Collisions /
     /// Fracture / Read-outs. Warns when the settings predict a large stretch error and previews the static
     /// sag in edit mode. Read-outs repaint live in Play; with several ropes selected they show a table with one
-    /// column per rope (<see cref="RopeReadoutTable"/>).
+    /// column per rope (<see cref="RopeReadoutTable"/>). Attachments has "Attach Start/End to selection"
+    /// (<see cref="RopeAttachToSelection"/>); the Scene view shows a position handle per attached end (<see cref="RopeEndHandles"/>).
     /// </summary>
     [CustomEditor(typeof(ElasticRope)), CanEditMultipleObjects]
     sealed class ElasticRopeEditor : UnityEditor.Editor
@@ -20,7 +21,7 @@ namespace HookeRope.Editor
         SerializedProperty m_StiffnessInput, m_YoungsModulus, m_AxialStiffness, m_Density, m_PoissonRatio, m_Damping;
         SerializedProperty m_RestLength, m_Radius, m_SegmentCount;
         SerializedProperty m_Solver, m_Substeps, m_Iterations, m_TensionModel, m_Gravity;
-        SerializedProperty m_Start, m_End, m_AttachmentCompliance;
+        SerializedProperty m_Start, m_End, m_AttachmentCompliance, m_OnStepped;
         SerializedProperty m_CollisionMode, m_Colliders, m_CollisionLayers, m_Planes, m_Friction;
         SerializedProperty m_RadiusModel, m_Necking, m_NeckMode, m_NeckRadiusFraction, m_DefectPosition, m_Fracture, m_BreakStrain, m_BreakRadiusFraction, m_OnBreak;
 
@@ -44,6 +45,7 @@ namespace HookeRope.Editor
             m_Start = so.FindProperty(nameof(m_Start));
             m_End = so.FindProperty(nameof(m_End));
             m_AttachmentCompliance = so.FindProperty(nameof(m_AttachmentCompliance));
+            m_OnStepped = so.FindProperty(nameof(m_OnStepped));
             m_CollisionMode = so.FindProperty(nameof(m_CollisionMode));
             m_Colliders = so.FindProperty(nameof(m_Colliders));
             m_CollisionLayers = so.FindProperty(nameof(m_CollisionLayers));
@@ -97,7 +99,9 @@ namespace HookeRope.Editor
                 if (!serializedObject.isEditingMultipleObjects) AttachFixBox(rope);
                 EditorGUILayout.PropertyField(m_Start, includeChildren: true);
                 EditorGUILayout.PropertyField(m_End, includeChildren: true);
+                AttachToSelectionButtons();
                 Field(m_AttachmentCompliance);
+                EditorGUILayout.PropertyField(m_OnStepped, includeChildren: true);
                 EditorGUI.BeginDisabledGroup(EditorApplication.isPlaying || serializedObject.isEditingMultipleObjects);
                 if (GUILayout.Button("Preview static sag")) StaticSagPreview.Compute(rope);
                 EditorGUI.EndDisabledGroup();
@@ -163,6 +167,29 @@ namespace HookeRope.Editor
             EditorGUILayout.HelpBox(fix.Message, MessageType.Warning);
             if (!GUILayout.Button(fix.ButtonLabel)) return;
             fix.Apply();
+            serializedObject.Update();
+        }
+
+        /// <summary>Scene view: a position handle on each attached end (called once per selected rope, with target set to it).</summary>
+        void OnSceneGUI() => RopeEndHandles.Draw((ElasticRope)target, s_PositionHandle);
+
+        static readonly System.Func<Vector3, Vector3> s_PositionHandle = position => Handles.PositionHandle(position, Quaternion.identity);
+
+        void AttachToSelectionButtons()
+        {
+            var ropes = new ElasticRope[targets.Length];
+            for (int i = 0; i < ropes.Length; i++) ropes[i] = (ElasticRope)targets[i];
+            var selection = Selection.activeTransform;
+            string unavailable = RopeAttachToSelection.Unavailable(ropes, selection);
+            EditorGUI.BeginDisabledGroup(unavailable != null);
+            bool start = GUILayout.Button(RopeAttachToSelection.AttachStartName);
+            bool end = GUILayout.Button(RopeAttachToSelection.AttachEndName);
+            EditorGUI.EndDisabledGroup();
+            if (unavailable != null) EditorGUILayout.HelpBox(unavailable, MessageType.None);
+            if (!start && !end) return;
+            foreach (var rope in ropes)
+                RopeAttachToSelection.Attach(rope, start ? rope.StartAttachment : rope.EndAttachment, selection,
+                    start ? RopeAttachToSelection.AttachStartName : RopeAttachToSelection.AttachEndName);
             serializedObject.Update();
         }
 

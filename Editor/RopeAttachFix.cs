@@ -7,7 +7,7 @@ namespace HookeRope.Editor
     /// The inspector's one-click fix for a rope that is half on a rig: an end's Point sits under a Rigidbody while
     /// that end's Body is empty, so the rig would be pinned like a Transform instead of pulled. <see cref="For"/>
     /// decides whether the rope needs it and what it would do (the self-wiring of <see cref="RopeAutoWiring"/>:
-    /// End onto the body at its D-ring, Start onto a root-level anchor above it); <see cref="Apply"/> does it with Undo.
+    /// End onto the body at its D-ring, Start onto a root-level anchor above it, snapped to the beam within reach); <see cref="Apply"/> does it with Undo.
     /// The IMGUI part (HelpBox and button) is in <see cref="ElasticRopeEditor"/>.
     /// </summary>
     internal sealed class RopeAttachFix
@@ -30,8 +30,11 @@ namespace HookeRope.Editor
         /// <summary>True when the Start would move onto a root-level anchor.</summary>
         internal bool MovesStart => _wiring.RewiresStart;
 
-        /// <summary>Where that anchor would be (m, world), the rest length above the D-ring.</summary>
+        /// <summary>Where that anchor would be (m, world): on the beam's underside when one is within reach, else the rest length above the D-ring.</summary>
         internal Vector3 AnchorPosition => _wiring.AnchorPosition;
+
+        /// <summary>The collider (beam) the anchor would be snapped to, or null.</summary>
+        internal Collider Beam => _wiring.Beam;
 
         /// <summary>The button's label: "Attach to &lt;body name&gt;".</summary>
         internal string ButtonLabel => "Attach to " + Body.name;

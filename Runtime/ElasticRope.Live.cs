@@ -11,6 +11,7 @@ namespace HookeRope
         // inspector (SerializedObject, OnValidate) rebuild at the next step.
         Transform _builtStartPoint, _builtEndPoint;
         Rigidbody _builtStartBody, _builtEndBody;
+        float _builtStartRigMass, _builtEndRigMass;
         RopeCollisionMode _builtCollisionMode;
         int _builtLayers;
         float _builtFriction, _builtCompliance;
@@ -22,6 +23,7 @@ namespace HookeRope
         {
             _builtStartPoint = m_Start.Point; _builtStartBody = m_Start.Body;
             _builtEndPoint = m_End.Point; _builtEndBody = m_End.Body;
+            _builtStartRigMass = m_Start.RigMass; _builtEndRigMass = m_End.RigMass;
             _builtCollisionMode = m_CollisionMode;
             _builtLayers = m_CollisionLayers.value;
             _builtFriction = m_Friction;
@@ -32,7 +34,7 @@ namespace HookeRope
 
         /// <summary>
         /// True when a field the core cannot change in place differs from what the rope was built from: segment
-        /// count, radius model on/off, an end's Point or Body, collision mode, layers, friction, colliders, planes,
+        /// count, radius model on/off, an end's Point, Body or RigMass, collision mode, layers, friction, colliders, planes,
         /// attachment compliance. Allocation-free.
         /// </summary>
         bool TopologyChanged()
@@ -42,6 +44,7 @@ namespace HookeRope
             if (m_Start == null || m_End == null) return false;
             if (m_Start.Point != _builtStartPoint || m_Start.Body != _builtStartBody) return true;
             if (m_End.Point != _builtEndPoint || m_End.Body != _builtEndBody) return true;
+            if (m_Start.RigMass != _builtStartRigMass || m_End.RigMass != _builtEndRigMass) return true;
             if (m_CollisionMode != _builtCollisionMode || m_CollisionLayers.value != _builtLayers) return true;
             if (m_Friction != _builtFriction || m_AttachmentCompliance != _builtCompliance) return true;
             return !SameElements(m_Colliders, _builtColliders) || !SameElements(m_Planes, _builtPlanes);

@@ -277,6 +277,17 @@ namespace HookeRope
         // ---- Validation and the copy into the core --------------------------------------------------------
         void OnValidate()
         {
+            ClampSerializedFields();
+            if (_rope != null) ApplySettings();   // what cannot change in place is rebuilt by the next step (TopologyChanged)
+        }
+
+        /// <summary>
+        /// Clamps every serialized setting into its table range and logs one warning per changed field naming this
+        /// object, the field, the range and the value kept (OnValidate, and every build: a scene saved out of range
+        /// reaches players, where OnValidate never runs). Allocation-free when every value is in range.
+        /// </summary>
+        void ClampSerializedFields()
+        {
             Report(RopeParameters.Clamp(ref m_RestLength, RopeParameters.RestLength.Row));
             Report(RopeParameters.Clamp(ref m_Radius, RopeParameters.Radius.Row));
             Report(RopeParameters.Clamp(ref m_SegmentCount, RopeParameters.SegmentCount.Row));
@@ -309,7 +320,6 @@ namespace HookeRope
             SyncStiffness();
             if (m_Colliders == null) m_Colliders = Array.Empty<Collider>();
             if (m_Planes == null) m_Planes = Array.Empty<Transform>();
-            if (_rope != null) ApplySettings();   // what cannot change in place is rebuilt by the next step (TopologyChanged)
         }
 
         static float Area(float radius) => MathF.PI * radius * radius;

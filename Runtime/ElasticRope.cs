@@ -39,6 +39,7 @@ namespace HookeRope
         readonly RadiusSettings _radiusSettings = new RadiusSettings();
         RopeSimulation _simulation;
         readonly Stopwatch _stopwatch = new Stopwatch();
+        RopeInputGuard _guard;
         Vector3 _origin;
         bool _breakRaised;
 
@@ -129,6 +130,7 @@ namespace HookeRope
         /// </summary>
         public void Rebuild()
         {
+            ClampSerializedFields();   // a scene or prefab saved out of range (OnValidate does not run in players)
             _settings = new RopeSettings();
             WriteRadiusSettings(_radiusSettings);
             _simulation = BuildSimulation(_settings, _attachments, RadiusFeaturesOn ? _radiusSettings : null, out _origin);
@@ -137,13 +139,15 @@ namespace HookeRope
             _simulation.Readouts.ArrestLoad = _attachments.EndLoad;
 
             RecordBuiltTopology();
+            Guard.RecordAttachments(m_Start, m_End);
             _breakRaised = false;
         }
 
         /// <summary>
         /// Advances the rope by <paramref name="deltaTime"/> seconds: copies attachment and collider poses in,
         /// steps the core simulation (substeps inside; it updates the read-outs), applies the rope's forces to attached
-        /// Rigidbodies and raises <see cref="OnBreak"/> on the first break. FixedUpdate calls it with Time.fixedDeltaTime when Physics.simulationMode is FixedUpdate, Update with Time.deltaTime in Update mode; in Script mode and edit-mode code call it yourself.
+        /// Rigidbodies, records where rigs without a Rigidbody must move, raises <see cref="OnBreak"/> on the first break
+        /// and <see cref="OnStepped"/> after every step. FixedUpdate calls it with Time.fixedDeltaTime when Physics.simulationMode is FixedUpdate, Update with Time.deltaTime in Update mode; in Script mode and edit-mode code call it yourself.
         /// </summary>
         public void Simulate(float deltaTime)
         {
@@ -151,13 +155,14 @@ namespace HookeRope
                 throw new ArgumentOutOfRangeException(nameof(deltaTime), deltaTime, "deltaTime must be in (0, +inf) seconds");
             if (_rope == null || TopologyChanged()) Rebuild();
 
-            _attachments.CopyIn(_rope, _origin);
+            if (_attachments.CopyIn(_rope, _origin, deltaTime)) _simulation.Readouts.ArrestLoad = _attachments.EndLoad;
             _colliderBinding.BeforeStep(_rope, _origin, Reach);
 
             _stopwatch.Restart();
             _simulation.Step(deltaTime);
             _stopwatch.Stop();
             StepMilliseconds = (float)_stopwatch.Elapsed.TotalMilliseconds;
+            Guard.WatchStepCost(StepMilliseconds, deltaTime, m_SegmentCount, m_Substeps, m_Iterations);
 
             _attachments.ApplyForces(_rope);
 
@@ -167,6 +172,7 @@ namespace HookeRope
                 _breakRaised = true;
                 m_OnBreak?.Invoke(_origin + firstBreak.Value.Position.ToVector3(), firstBreak.Value.Tension);
             }
+            m_OnStepped?.Invoke(_attachments.StartForce, _attachments.EndForce);
         }
 
         /// <summary>Clears <see cref="PeakTension"/> and <see cref="PeakArrestForce"/>.</summary>
@@ -232,13 +238,20 @@ namespace HookeRope
         {
             WriteSettings(settings);
             settings.SegmentCount = m_SegmentCount;
+            // a non-finite attachment pose is reported and replaced: the start by this object, the end by the hanging fallback
             Vector3 start = m_Start.WorldPosition(transform.position);
-            Vector3 end = m_End.WorldPosition(new Vector3(start.x, start.y - m_RestLength, start.z));
+            if (!Guard.AcceptPose(RopeInputGuard.Start, m_Start, start)) start = transform.position;
+            Vector3 hanging = new Vector3(start.x, start.y - m_RestLength, start.z);
+            Vector3 end = m_End.WorldPosition(hanging);
+            if (!Guard.AcceptPose(RopeInputGuard.End, m_End, end)) end = hanging;
             origin = start;
             var rope = new Rope(settings, (start - origin).ToFloat3(), (end - origin).ToFloat3());
-            attachments.Attach(rope, m_Start, m_End, origin, m_AttachmentCompliance);
+            attachments.Attach(rope, m_Start, m_End, origin, m_AttachmentCompliance, Guard);
             return new RopeSimulation(rope, radiusSettings);
         }
+
+        /// <summary>Checks and reports what reaches this rope from the scene (see <see cref="RopeInputGuard"/>).</summary>
+        RopeInputGuard Guard => _guard ??= new RopeInputGuard(this, nameof(ElasticRope));
 
         /// <summary>
         /// A simulation of the current settings and attachment poses that this component does not own or step

@@ -7,9 +7,11 @@ namespace HookeRope
     /// Self-wiring of an <see cref="ElasticRope"/> dropped onto a harness rig (a hierarchy with a Rigidbody): the End
     /// becomes a two-way load on the rig's body at its D-ring (a Transform in the body's hierarchy named like
     /// "D-ring", "Dring", "D ring" or "Harness Attachment", case-insensitive, spaces/hyphens/underscores ignored; else
-    /// the body's position), and the Start becomes an anchor outside the rig: a root-level "&lt;rope name&gt; Anchor"
-    /// placed above the D-ring by the rest length (against gravity), created or reused. An instance is the plan for
-    /// one rope, made by <see cref="For"/> (null when nothing needs wiring) and carried out by <see cref="Apply"/>.
+    /// the body's position), and the Start becomes an anchor outside the rig: a root-level "&lt;rope name&gt; Anchor",
+    /// created or reused, placed against gravity above the D-ring: on the first collider a ray from the D-ring hits
+    /// within the rest length (the beam's underside; see <see cref="FindBeam"/>), else the rest length above it. An
+    /// instance is the plan for one rope, made by <see cref="For"/> (null when nothing needs wiring) and carried out by
+    /// <see cref="Apply"/>.
     /// The rope object itself stays where it is: once both ends are wired its pose carries neither end (the mesh is
     /// rebuilt from world positions every frame), and Unity refuses to re-parent objects inside a prefab instance.
     /// </summary>
@@ -27,18 +29,26 @@ namespace HookeRope
         /// <summary>World position (m) of the anchor the Start gets when <see cref="RewiresStart"/>.</summary>
         internal Vector3 AnchorPosition { get; }
 
+        /// <summary>The collider the anchor is snapped to (the beam), or null when none is within reach.</summary>
+        internal Collider Beam { get; }
+
+        /// <summary>Distance (m) from the D-ring up to <see cref="AnchorPosition"/>: the hit distance, else the rest length.</summary>
+        internal float AnchorHeight { get; }
+
         /// <summary>Name of the root-level anchor object (created or reused).</summary>
         internal string AnchorName { get; }
 
         readonly ElasticRope _rope;
 
-        RopeAutoWiring(ElasticRope rope, Rigidbody body, Transform endPoint, bool rewiresStart, Vector3 anchorPosition)
+        RopeAutoWiring(ElasticRope rope, Rigidbody body, Transform endPoint, bool rewiresStart, Vector3 anchorPosition, Collider beam, float anchorHeight)
         {
             _rope = rope;
             Body = body;
             EndPoint = endPoint;
             RewiresStart = rewiresStart;
             AnchorPosition = anchorPosition;
+            Beam = beam;
+            AnchorHeight = anchorHeight;
             AnchorName = rope.name + " Anchor";
         }
 
@@ -74,7 +84,44 @@ namespace HookeRope
 
             Vector3 dRing = endPoint != null ? endPoint.position : body.position;
             Vector3 up = rope.Gravity.sqrMagnitude > 0f ? -rope.Gravity.normalized : Vector3.up;
-            return new RopeAutoWiring(rope, body, endPoint, rewiresStart, dRing + up * rope.RestLength);
+            float reach = rope.RestLength;
+            Collider beam = null;
+            float height = reach;
+            if (rewiresStart && FindBeam(dRing, up, reach, rig, rope.transform, out var hit))
+            {
+                beam = hit.collider;
+                height = hit.distance;
+            }
+            return new RopeAutoWiring(rope, body, endPoint, rewiresStart, dRing + up * height, beam, height);
+        }
+
+        /// <summary>
+        /// The beam above the D-ring: the nearest collider a ray from <paramref name="dRing"/> along the unit
+        /// <paramref name="up"/> enters within <paramref name="reach"/> m (the rest length, so the rope is never
+        /// pre-stretched at build), on Physics.DefaultRaycastLayers, triggers ignored, leaving out colliders in the
+        /// rig's hierarchy (or attached to its body) and in the rope's own. In edit mode Transform changes are synced
+        /// into physics first (Physics.autoSyncTransforms is off by default), so a beam just moved in the Scene view is
+        /// found where it is; in Play the query sees the poses of the last step, as any query does (a sync there would
+        /// also push interpolated Transforms into the bodies). Allocates (RaycastAll): once per wiring, never per step.
+        /// </summary>
+        static bool FindBeam(Vector3 dRing, Vector3 up, float reach, Transform rig, Transform rope, out RaycastHit nearest)
+        {
+            nearest = default;
+            if (!(reach > 0f)) return false;
+            if (!Application.isPlaying) Physics.SyncTransforms();
+            var hits = Physics.RaycastAll(dRing, up, reach, Physics.DefaultRaycastLayers, QueryTriggerInteraction.Ignore);
+            bool found = false;
+            foreach (var hit in hits)
+            {
+                var collider = hit.collider;
+                if (collider == null || IsInside(collider.transform, rig) || IsInside(collider.transform, rope)) continue;
+                var attached = collider.attachedRigidbody;
+                if (attached != null && attached.transform == rig) continue;
+                if (found && !(hit.distance < nearest.distance)) continue; // RaycastAll's order is undefined
+                nearest = hit;
+                found = true;
+            }
+            return found;
         }
 
         /// <summary>
@@ -104,9 +151,13 @@ namespace HookeRope
         }
 
         /// <summary>One line for the console naming what was (or would be) wired.</summary>
+        /// <remarks>An anchor of that name already at the root is reused where it stands, and the line says so.</remarks>
         internal string Describe() =>
             _rope.name + ": End pulls Rigidbody '" + Body.name + "' at " + (EndPoint != null ? "'" + EndPoint.name + "'" : "its position") +
-            (RewiresStart ? "; Start anchored at '" + AnchorName + "' " + _rope.RestLength.ToString("G4", System.Globalization.CultureInfo.InvariantCulture) + " m above it" : "") + ".";
+            (!RewiresStart ? "" :
+             FindRootAnchor(AnchorName) != null ? "; Start anchored at the existing '" + AnchorName + "', kept where it is" :
+             "; Start anchored at '" + AnchorName + "'" + (Beam != null ? ", snapped to '" + Beam.name + "'," : "") + " " +
+             AnchorHeight.ToString("G4", System.Globalization.CultureInfo.InvariantCulture) + " m above it") + ".";
 
         /// <summary>
         /// True when <paramref name="name"/> names a D-ring: after dropping spaces, hyphens and underscores and

@@ -9,5 +9,7 @@ namespace HookeRope
         Transform,
         /// <summary>A Rigidbody the rope pulls and is pulled by (two-way).</summary>
         Rigidbody,
+        /// <summary>A rig without a Rigidbody at the Point (CharacterController, kinematic XR rig): the rope carries it as a load of RopeEnd.RigMass kg and reports where it must move.</summary>
+        KinematicRig,
     }
 }

@@ -79,6 +79,7 @@ namespace HookeRope
         Material _generatedBurrMaterial;
         Texture2D _generatedTexture;
         bool _reportedMissingShader;
+        RopeInputGuard _guard;
 
         /// <summary>Vertices around the tube, range <see cref="RopeParameters.RadialSegments"/>. A new value rebuilds the tube topology at the next frame.</summary>
         public int RadialSegments
@@ -147,8 +148,9 @@ namespace HookeRope
         /// step, 1 = latest) and uploads it. LateUpdate calls it; call it yourself in edit-mode code and tests.
         /// In edit mode, before the rope is built, it draws the edit-mode shape instead (straight between the ends,
         /// or the static-sag preview; see the class remarks; this path allocates a detached core simulation).
-        /// Returns false when nothing was drawn (no rope, or in Play before the build). Allocation-free unless the
-        /// topology grew.
+        /// Returns false when nothing was drawn (no rope, or in Play before the build) or when the mesh kept its last
+        /// frame because this object's scale cannot be inverted or a position was not finite (one warning per cause,
+        /// Documentation~/index.md, "Bad input"). Allocation-free unless the topology grew.
         /// </summary>
         public bool Render(float alpha)
         {
@@ -168,10 +170,14 @@ namespace HookeRope
                 alpha = 1f;
             }
             else return false;
+            // a transform that cannot be inverted (scale 0) or non-finite positions: keep the last uploaded mesh
+            _guard ??= new RopeInputGuard(this, nameof(RopeMeshRenderer));
+            if (!_guard.AcceptDrawingFrame(transform)) return false;
             EnsureMesh();
 
             if (simulation.MeshSettings.RadialSegments != m_RadialSegments) simulation.MeshSettings.RadialSegments = m_RadialSegments;
             InterpolateIntoLocalSpace(simulation.Rope, alpha, origin, alignEnds);
+            if (!_guard.AcceptMeshPositions(_x, _y, _z, simulation.Rope.ParticleCount)) return false;
             int vertexCount = simulation.GetVertexCount(), indexCount = simulation.GetIndexCount();
             if (_vertices.Length < vertexCount) _vertices = new TubeVertex[vertexCount];
             if (_indices.Length < indexCount) _indices = new int[indexCount];
@@ -217,6 +223,8 @@ namespace HookeRope
             int last = particles - 1;
             var startOffset = startHeld ? (start.DrawnPosition() - origin - new Vector3(_x[0], _y[0], _z[0])).ToFloat3() : default;
             var endOffset = endHeld ? (end.DrawnPosition() - origin - new Vector3(_x[last], _y[last], _z[last])).ToFloat3() : default;
+            startHeld &= startOffset.IsFinite;   // an attachment at a non-finite pose (reported by the rope) is not followed
+            endHeld &= endOffset.IsFinite;
             if (startHeld || endHeld) EndAlignment.Apply(_x, _y, _z, rope.BrokenSegments, startHeld, startOffset, endHeld, endOffset);
             var frame = transform;
             for (int i = 0; i < particles; i++)

@@ -11,16 +11,58 @@ namespace HookeRope.Tests
     /// "Harness D-Ring" child, as a prefab dropped onto the rig does. Awake wires it without a field touched: End pulls
     /// the worker at the D-ring, Start hangs from a root-level anchor the rest length above it, one console line says so,
     /// and the falling worker is arrested (the lanyard pulls, the worker stays within the stretched lanyard's reach).
+    /// With a beam 1.5 m above the D-ring, the anchor is snapped to the beam's underside instead.
     /// </summary>
     public sealed class RopeDropOnRigTests
     {
-        GameObject _worker, _anchor;
+        GameObject _worker, _anchor, _beam;
 
         [TearDown]
         public void TearDown()
         {
             if (_worker != null) Object.Destroy(_worker);
             if (_anchor != null) Object.Destroy(_anchor);
+            if (_beam != null) Object.Destroy(_beam);
+        }
+
+        [UnityTest]
+        public IEnumerator DroppedUnderARigBelowABeamTheAnchorSnapsToTheBeamsUnderside()
+        {
+            // a static 4 × 0.2 × 0.4 m beam, underside 1.5 m above the D-ring (within the 2 m rest length)
+            _beam = new GameObject("Beam");
+            _beam.transform.position = new Vector3(0f, 4f, 0f);
+            _beam.AddComponent<BoxCollider>().size = new Vector3(4f, 0.2f, 0.4f);
+            _worker = new GameObject("Worker");
+            _worker.transform.position = new Vector3(0f, 2f, 0f);
+            var body = _worker.AddComponent<Rigidbody>();
+            body.mass = 100f;
+            _worker.AddComponent<CapsuleCollider>(); // the rig's own collider: the ray starts inside it, and it is the rig's
+            var dRing = new GameObject("Harness D-Ring").transform;
+            dRing.SetParent(_worker.transform, false);
+            dRing.localPosition = new Vector3(0f, 0.4f, 0.1f);
+
+            var ropeObject = new GameObject("Beam Lanyard"); // its own anchor name, whatever the other test left behind
+            ropeObject.SetActive(false);
+            ropeObject.transform.SetParent(_worker.transform, false);
+            var rope = ropeObject.AddComponent<ElasticRope>();
+            rope.RestLength = 2f;
+            ropeObject.SetActive(true);
+
+            var anchor = rope.StartAttachment.Point;
+            Assert.That(anchor, Is.Not.Null);
+            _anchor = anchor.gameObject;
+            Assert.That(anchor.name, Is.EqualTo("Beam Lanyard Anchor"));
+            Assert.That(rope.EndAttachment.Body, Is.SameAs(body));
+            Assert.That((anchor.position - new Vector3(0f, 3.9f, 0.1f)).magnitude, Is.LessThan(1e-5f), "on the beam's underside");
+            Assert.That((rope.GetParticlePosition(0) - anchor.position).magnitude, Is.LessThan(1e-5f));
+            yield return new WaitForFixedUpdate();
+            Assert.That(rope.IsBroken, Is.False);
+
+            // gone before the next test looks for a beam or a root-level anchor (Destroy acts at the end of the frame)
+            Object.Destroy(_beam);
+            Object.Destroy(_anchor);
+            Object.Destroy(_worker);
+            yield return null;
         }
 
         [UnityTest]

@@ -8,15 +8,7 @@ namespace HookeRope.Lab.Tests
     [TestFixture]
     public sealed class CliTests : TempFolderTest
     {
-        int Invoke(out string output, out string error, params string[] args)
-        {
-            var o = new StringWriter();
-            var e = new StringWriter();
-            int code = LabCli.Invoke(args, LabConsole.Plain(o), o, e);
-            output = o.ToString();
-            error = e.ToString();
-            return code;
-        }
+        static int Invoke(out string output, out string error, params string[] args) => InvokeLab(out output, out error, args);
 
         [Test]
         public void DefaultRunWritesCsvPlotAndSummary()
@@ -70,7 +62,7 @@ namespace HookeRope.Lab.Tests
         public void UnknownOptionIsAParseError()
         {
             int code = Invoke(out _, out string error, "run", "--frobnicate", "--out", dir);
-            Assert.That(code, Is.Not.EqualTo(0));
+            Assert.That(code, Is.EqualTo(LabCli.InvalidInput));
             Assert.That(error, Does.Not.Contain("   at "));
         }
 

@@ -50,6 +50,8 @@ namespace HookeRope.Lab.Tests
             [RopeParameters.NeckRadiusFraction.Name] = Rope(RopeParameters.NeckRadiusFraction.Json, s => s.Rope.NeckRadiusFraction),
             [RopeParameters.DefectPosition.Name] = Rope(RopeParameters.DefectPosition.Json, s => s.Rope.DefectPosition),
             [RopeParameters.BreakStrain.Name] = Rope(RopeParameters.BreakStrain.Json, s => s.Rope.BreakStrain),
+            [RopeParameters.NeckZoneDiameters.Name] = Rope(RopeParameters.NeckZoneDiameters.Json, s => s.Rope.NeckZoneDiameters),
+            [RopeParameters.NeckGrowthStrain.Name] = Rope(RopeParameters.NeckGrowthStrain.Json, s => s.Rope.NeckGrowthStrain),
             [RopeParameters.BreakRadiusFraction.Name] = Rope(RopeParameters.BreakRadiusFraction.Json, s => s.Rope.BreakRadiusFraction),
             [RopeParameters.RadialSegments.Name] = Rope(RopeParameters.RadialSegments.Json, s => s.Rope.RadialSegments),
             [RopeParameters.BurrSeed.Name] = Rope(RopeParameters.BurrSeed.Json, s => s.Rope.Seed),
@@ -64,6 +66,7 @@ namespace HookeRope.Lab.Tests
             [RopeParameters.PoissonThinning.Name] = s => s.Rope.PoissonThinning ? 1 : 0,
             [RopeParameters.Necking.Name] = s => s.Rope.Necking ? 1 : 0,
             [RopeParameters.Fracture.Name] = s => s.Rope.Fracture ? 1 : 0,
+            [RopeParameters.SlackKeepsRestRadius.Name] = s => s.Rope.SlackKeepsRestRadius ? 1 : 0,
             [RopeParameters.Gravity.Name] = s => double.NaN,
         };
 

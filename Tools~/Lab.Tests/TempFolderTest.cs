@@ -16,6 +16,17 @@ namespace HookeRope.Lab.Tests
             Directory.CreateDirectory(dir);
         }
 
+        /// <summary>Runs the lab's command line with plain consoles; returns the exit code, stdout and stderr.</summary>
+        protected static int InvokeLab(out string output, out string error, params string[] args)
+        {
+            var o = new StringWriter();
+            var e = new StringWriter();
+            int code = HookeRope.Lab.Commands.LabCli.Invoke(args, HookeRope.Lab.Commands.LabConsole.Plain(o), o, e);
+            output = o.ToString();
+            error = e.ToString();
+            return code;
+        }
+
         [TearDown]
         public void DeleteFolder()
         {

@@ -10,7 +10,7 @@ namespace HookeRope.Lab
         /// <summary>Parses the command line and runs the chosen command; returns the process exit code.</summary>
         public static int Main(string[] args)
         {
-            return LabCli.Invoke(args, AnsiConsole.Console, Console.Out, Console.Error);
+            return LabCli.Invoke(args, LabConsole.ForProcess(AnsiConsole.Console, Console.IsOutputRedirected), Console.Out, Console.Error);
         }
     }
 }

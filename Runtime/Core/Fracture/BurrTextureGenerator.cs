@@ -9,7 +9,7 @@ namespace HookeRope.Fracture
     /// burr material is opaque and uses the colour as fibre streaks). Output is RGBA32, row 0
     /// first = v = 0 = the bottom row (the order of Unity's Texture2D.LoadRawTextureData).
     /// </summary>
-    internal static class BurrTextureGenerator
+    public static class BurrTextureGenerator
     {
         /// <summary>Largest width or height in pixels.</summary>
         public const int MaxSize = 4096;

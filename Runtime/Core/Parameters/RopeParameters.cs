@@ -523,7 +523,7 @@ namespace HookeRope
             public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Radius, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
         }
 
-        /// <summary>Zone mode: rest length of the neck zone in rope diameters 2R (dimensionless; core only).</summary>
+        /// <summary>Zone mode: rest length of the neck zone in rope diameters 2R (dimensionless).</summary>
         public static class NeckZoneDiameters
         {
             /// <summary>Property name.</summary>
@@ -532,8 +532,8 @@ namespace HookeRope
             public const string Label = "Neck zone diameters";
             /// <summary>Unit (rope diameters).</summary>
             public const string Unit = "";
-            /// <summary>Lab JSON name (none).</summary>
-            public const string Json = null;
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "neckZoneDiameters";
             /// <summary>Tooltip.</summary>
             public const string Tooltip = "Zone mode: rest length of the neck zone in rope diameters 2R, centred on the defect.";
             /// <summary>Lower bound.</summary>
@@ -546,7 +546,7 @@ namespace HookeRope
             public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Radius, ParameterKind.Float, Min, Max, Default, Tooltip, Json, false);
         }
 
-        /// <summary>Zone mode: strain beyond onset over which the neck deepens to the full hyperbola (dimensionless; core only).</summary>
+        /// <summary>Zone mode: strain beyond onset over which the neck deepens to the full hyperbola (dimensionless).</summary>
         public static class NeckGrowthStrain
         {
             /// <summary>Property name.</summary>
@@ -555,8 +555,8 @@ namespace HookeRope
             public const string Label = "Neck growth strain";
             /// <summary>Unit (dimensionless).</summary>
             public const string Unit = "";
-            /// <summary>Lab JSON name (none).</summary>
-            public const string Json = null;
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "neckGrowthStrain";
             /// <summary>Tooltip.</summary>
             public const string Tooltip = "Zone mode: strain beyond onset over which the neck deepens from zero to the full hyperbola.";
             /// <summary>Exclusive lower bound.</summary>
@@ -571,7 +571,7 @@ namespace HookeRope
             public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Radius, ParameterKind.Float, Min, Max, Default, Tooltip, Json, false, minExclusive: true);
         }
 
-        /// <summary>A segment shorter than its rest length keeps the rest radius (core only).</summary>
+        /// <summary>A segment shorter than its rest length keeps the rest radius.</summary>
         public static class SlackKeepsRestRadius
         {
             /// <summary>Property name.</summary>
@@ -580,8 +580,8 @@ namespace HookeRope
             public const string Label = "Slack keeps rest radius";
             /// <summary>Unit (none).</summary>
             public const string Unit = "";
-            /// <summary>Lab JSON name (none).</summary>
-            public const string Json = null;
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "slackKeepsRestRadius";
             /// <summary>Tooltip.</summary>
             public const string Tooltip = "A segment shorter than its rest length keeps the rest radius: a tension-only rope goes slack instead of being compressed.";
             /// <summary>Default.</summary>

@@ -32,6 +32,8 @@ namespace HookeRope.Solver
         public readonly float[] Compliance;       // m/N, α = L/(E·A); 0 = inextensible
         public readonly double[] Lambda;          // N·s², accumulated over the substep, ≤ 0 pulls
         public readonly float[] Tension;          // N, ≥ 0 pulls
+        public readonly float[] PeakTension;      // N, largest substep tension of the last host step
+        public readonly float[] MeanTension;      // N, mean substep tension of the last host step (sum while stepping)
         public readonly float[] Length;           // m, current
         public readonly bool[] Broken;
         public int BrokenCount;                   // segments with Broken set
@@ -46,6 +48,13 @@ namespace HookeRope.Solver
         public readonly float[] TangentX, TangentY, TangentZ;
         public readonly bool[] Augmented;
         public int AugmentedCount;
+
+        // second-order integrator (see Rope.Integration): the chain solve's displacement of this substep Δ (m), the velocity
+        // the scheme adds to d/h + κΔ/h (m/s), and the velocity of the substep before (m/s)
+        public readonly double[] SolveDX, SolveDY, SolveDZ;
+        public readonly double[] BaseVelX, BaseVelY, BaseVelZ;
+        public readonly float[] PrevVelX, PrevVelY, PrevVelZ;
+        public readonly float[] PredictedDX, PredictedDY, PredictedDZ; // m, the scheme's prediction d_pred of this substep
 
         // contacts (allocated by EnsureContacts when the rope gets its first collider; null before)
         public float[] ContactNX, ContactNY, ContactNZ; // outward unit surface normal at the particle
@@ -69,13 +78,17 @@ namespace HookeRope.Solver
             Mass = new float[n]; InverseMass = new float[n]; LoadMass = new float[n];
             Kinematic = new bool[n]; Radius = new float[n];
             RestLength = new float[s]; Compliance = new float[s]; Lambda = new double[s];
-            Tension = new float[s]; Length = new float[s]; Broken = new bool[s];
+            Tension = new float[s]; PeakTension = new float[s]; MeanTension = new float[s]; Length = new float[s]; Broken = new bool[s];
             DirX = new float[s]; DirY = new float[s]; DirZ = new float[s];
             Upper = new double[s]; Rhs = new double[s]; Delta = new double[s];
             FullDiagonal = new double[s]; FullLower = new double[s]; FullUpper = new double[s]; FullRhs = new double[s];
             Active = new bool[s];
             TransverseInverseMass = new float[n]; TangentX = new float[n]; TangentY = new float[n]; TangentZ = new float[n];
             Augmented = new bool[n];
+            SolveDX = new double[n]; SolveDY = new double[n]; SolveDZ = new double[n];
+            BaseVelX = new double[n]; BaseVelY = new double[n]; BaseVelZ = new double[n];
+            PrevVelX = new float[n]; PrevVelY = new float[n]; PrevVelZ = new float[n];
+            PredictedDX = new float[n]; PredictedDY = new float[n]; PredictedDZ = new float[n];
         }
 
         /// <summary>

@@ -150,6 +150,30 @@ namespace HookeRope.Solver
             return l;
         }
 
+        /// <summary>
+        /// Takes a load's mass (kg) back out of its particle (the host body is gone): the particle keeps its position
+        /// and velocity and carries only its share of the rope's mass again; the load's forces read zero from the
+        /// next step on. Releasing a released load does nothing. Allocation-free.
+        /// </summary>
+        public void ReleaseLoad(int load)
+        {
+            CheckLoad(load);
+            float mass = loadMass[load];
+            if (mass == 0f) return;
+            int particle = loadParticle[load];
+            chain.LoadMass[particle] = Math.Max(0f, chain.LoadMass[particle] - mass);
+            loadMass[load] = 0f;
+            loadForce[load] = Float3.Zero;
+            UpdateMass(particle, settings.LinearDensity);
+        }
+
+        /// <summary>True once <see cref="ReleaseLoad"/> took the load's mass out of its particle.</summary>
+        public bool IsLoadReleased(int load)
+        {
+            CheckLoad(load);
+            return loadMass[load] == 0f;
+        }
+
         /// <summary>Particle index a load is lumped into.</summary>
         public int GetLoadParticle(int load)
         {

@@ -43,15 +43,23 @@ namespace HookeRope.Solver
                 loadStartPosition[l] = new Float3(chain.X[i], chain.Y[i], chain.Z[i]);
             }
 
+            TimeIntegrator integrator = settings.Integrator;
+            bool secondOrder = integrator != TimeIntegrator.BackwardEuler;
             for (int k = 0; k < substeps; k++)
             {
                 float t = (float)(k + 1) / substeps;
-                PredictPhase(t, hostDeltaTime, h, g);
+                TimeIntegrator scheme = SubstepScheme(integrator, hd);
+                double hEff = EffectiveStep(scheme, hd);
+                if (secondOrder) PredictSecondOrderPhase(t, hostDeltaTime, scheme, hd, g);
+                else PredictPhase(t, hostDeltaTime, h, g);
                 // push the prediction out of the colliders and find the contacts the chain solve folds in
                 CollidePhase(h, ContactPass.StartOfSubstep);
-                SolvePhase(h, hd, t, beta, tensionOnly, exact, iterations, compliantPins > 0);
-                FinishPhase(h, hd, g);
+                SolvePhase(h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder);
+                if (secondOrder) UpdateVelocitiesSecondOrder(scheme, hd, Violent());
+                else UpdateVelocities(h);
+                FinishPhase(hd, hEff, g, k == 0);
             }
+            ScaleMeanTensions(1f / substeps);
             RefreshLengths();
             if (hasColliders) colliders.EndStep();
             for (int p = 0; p < pinCount; p++) pinStart[p] = pinEnd[p];
@@ -78,6 +86,16 @@ namespace HookeRope.Solver
             if (pinCount > 0) Array.Clear(pinLambda, 0, pinCount * 3);
         }
 
+        /// <summary>Phase 1 of a second-order substep: as <see cref="PredictPhase"/>, with the scheme's prediction (<see cref="PredictSecondOrder"/>).</summary>
+        private void PredictSecondOrderPhase(float t, float hostDeltaTime, TimeIntegrator scheme, double h, Float3 g)
+        {
+            if (colliders.Count > 0) colliders.PrepareSubstep(t, hostDeltaTime);
+            PredictSecondOrder(scheme, h, g);
+            MovePins(t);
+            Array.Clear(chain.Lambda, 0, chain.SegmentCount);
+            if (pinCount > 0) Array.Clear(pinLambda, 0, pinCount * 3);
+        }
+
         /// <summary>Phase 2 (and the end of each iteration): push the particles out of the colliders; the pass decides contact detection and friction.</summary>
         private void CollidePhase(float h, ContactPass pass)
         {
@@ -89,28 +107,34 @@ namespace HookeRope.Solver
         /// iteration folds in the compliant pins, solves the chain (exact, plus a Gauss–Seidel polish sweep where its
         /// linearisation was poor; or Gauss–Seidel alone), releases the pins and runs a collision pass.
         /// </summary>
-        private void SolvePhase(float h, double hd, float t, double beta, bool tensionOnly, bool exact, int iterations, bool hasCompliantPins)
+        private void SolvePhase(float h, double hd, double hEff, float t, double beta, bool tensionOnly, bool exact, int iterations, bool hasCompliantPins, bool trackSolve)
         {
-            if (exact) chain.UpdateTransverseMass(hd); else chain.AugmentedCount = 0;
+            // the solve runs with α̃ = α/h_eff² (the integrator's effective step) and keeps the dashpot γ = β/h
+            double solveBeta = beta * (hEff / hd);
+            if (exact) chain.UpdateTransverseMass(hEff); else chain.AugmentedCount = 0;
             for (int it = 0; it < iterations; it++)
             {
-                bool softPins = hasCompliantPins && ProjectCompliantPins(hd, t);
+                if (trackSolve) TrackSolveDisplacement(-1.0);
+                bool softPins = hasCompliantPins && ProjectCompliantPins(hEff, t);
                 // Gauss–Seidel is the solver itself, or a polish sweep after an exact solve whose
                 // linearisation was poor somewhere (a fold); on a taut chain the sweep would change nothing
-                bool sweep = !exact || ExactChainSolver.Iterate(chain, hd, beta, tensionOnly);
-                if (sweep) GaussSeidelSolver.Iterate(chain, hd, beta, tensionOnly);
-                if (softPins) ReleaseCompliantPins(hd, t);
+                bool sweep = !exact || ExactChainSolver.Iterate(chain, hEff, solveBeta, tensionOnly);
+                // after an exact solve the polish sweep is a nonlinear projection (a fold), which a second-order scheme
+                // takes as a correction (a velocity kick, as a collider push) rather than as a constraint force
+                if (trackSolve && exact) TrackSolveDisplacement(1.0);
+                if (sweep) GaussSeidelSolver.Iterate(chain, hEff, solveBeta, tensionOnly);
+                if (trackSolve && !exact) TrackSolveDisplacement(1.0);
+                if (softPins) ReleaseCompliantPins(hEff, t);
                 CollidePhase(h, it == iterations - 1 ? ContactPass.LastIteration : ContactPass.BetweenIterations);
             }
         }
 
-        /// <summary>Phase 4: velocities from the displacements, time, tensions, pin forces (and pin breaks). The segment lengths are refreshed once, after the last substep.</summary>
-        private void FinishPhase(float h, double hd, Float3 g)
+        /// <summary>Phase 4 (after the velocities): time, tensions T = −λ/h_eff², pin forces (and pin breaks). The segment lengths are refreshed once, after the last substep.</summary>
+        private void FinishPhase(double hd, double hEff, Float3 g, bool firstSubstep)
         {
-            UpdateVelocities(h);
             time += hd;
-            UpdateTensions(hd);
-            if (pinCount > 0) UpdatePinForces(hd, g);
+            UpdateTensions(hEff, firstSubstep);
+            if (pinCount > 0) UpdatePinForces(hEff, g);
         }
 
         private void Predict(float h, Float3 g)
@@ -217,41 +241,60 @@ namespace HookeRope.Solver
         {
             int n = chain.ParticleCount;
             float invH = 1f / h;
-            float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
-            float[] vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ;
             float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
-            for (int i = 0; i < n; i++)
+            for (int i = 0; i < n; i++) CommitParticle(i, dx[i] * invH, dy[i] * invH, dz[i] * invH);
+        }
+
+        /// <summary>
+        /// Ends particle i's substep at x = x_prev + d with velocity (ux, uy, uz) m/s. Never lets a non-finite value into the
+        /// state: then the particle falls back to its last good position, at rest, with no displacement.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private void CommitParticle(int i, float ux, float uy, float uz)
+        {
+            float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
+            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
+            float nx = px[i] + dx[i], ny = py[i] + dy[i], nz = pz[i] + dz[i];
+            if (float.IsFinite(ux + uy + uz) && float.IsFinite(nx + ny + nz))
             {
-                float ux = dx[i] * invH, uy = dy[i] * invH, uz = dz[i] * invH;
-                float nx = px[i] + dx[i], ny = py[i] + dy[i], nz = pz[i] + dz[i];
-                if (float.IsFinite(ux + uy + uz) && float.IsFinite(nx + ny + nz))
-                {
-                    x[i] = nx; y[i] = ny; z[i] = nz;
-                    vx[i] = ux; vy[i] = uy; vz[i] = uz;
-                }
-                else
-                {
-                    // never let a non-finite value into the state: fall back to the last good position at rest
-                    x[i] = px[i]; y[i] = py[i]; z[i] = pz[i];
-                    vx[i] = 0f; vy[i] = 0f; vz[i] = 0f;
-                }
+                x[i] = nx; y[i] = ny; z[i] = nz;
+                chain.VelX[i] = ux; chain.VelY[i] = uy; chain.VelZ[i] = uz;
+            }
+            else
+            {
+                x[i] = px[i]; y[i] = py[i]; z[i] = pz[i];
+                chain.VelX[i] = 0f; chain.VelY[i] = 0f; chain.VelZ[i] = 0f;
+                dx[i] = 0f; dy[i] = 0f; dz[i] = 0f;
             }
         }
 
-        /// <summary>Tensions T = −λ/h² (N) from the multipliers of the substep h (s); 0 for a broken segment.</summary>
-        private void UpdateTensions(double h)
+        /// <summary>
+        /// Tensions T = −λ/h² (N) from the multipliers of the substep (h: the integrator's effective step, s); 0 for a broken
+        /// segment. Also the largest and the summed substep tension of the host step (restarted on its first substep).
+        /// </summary>
+        private void UpdateTensions(double h, bool firstSubstep)
         {
             double invH2 = 1.0 / (h * h);
             int s = chain.SegmentCount;
             double[] lambda = chain.Lambda;
-            float[] tension = chain.Tension;
+            float[] tension = chain.Tension, peak = chain.PeakTension, sum = chain.MeanTension;
             bool[] broken = chain.Broken;
             for (int j = 0; j < s; j++)
             {
                 double t = broken[j] ? 0.0 : -lambda[j] * invH2;
                 float value = (float)t;
-                tension[j] = float.IsFinite(value) ? value : float.MaxValue;
+                value = float.IsFinite(value) ? value : float.MaxValue;
+                tension[j] = value;
+                if (firstSubstep) { peak[j] = value; sum[j] = value; }
+                else { if (value > peak[j]) peak[j] = value; sum[j] += value; }
             }
+        }
+
+        /// <summary>Turns the summed substep tensions into their mean (factor = 1/substeps).</summary>
+        private void ScaleMeanTensions(float factor)
+        {
+            float[] mean = chain.MeanTension;
+            for (int j = 0; j < chain.SegmentCount; j++) mean[j] *= factor;
         }
 
         private void UpdatePinForces(double h, Float3 g)

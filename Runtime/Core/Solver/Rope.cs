@@ -82,6 +82,12 @@ namespace HookeRope.Solver
         /// <summary>Tension of each segment in newtons over the last substep, ≥ 0 = pulling (T = −λ/h²).</summary>
         public ReadOnlySpan<float> Tensions => chain.Tension;
 
+        /// <summary>Largest tension (N) of each segment over the substeps of the last host step: a short peak (a snatch) that ends between steps still reads.</summary>
+        public ReadOnlySpan<float> PeakTensions => chain.PeakTension;
+
+        /// <summary>Mean tension (N) of each segment over the substeps of the last host step.</summary>
+        public ReadOnlySpan<float> MeanTensions => chain.MeanTension;
+
         /// <summary>Collision radius of each particle in metres (default: the rest radius; the radius model of <see cref="RopeSimulation"/> writes it).</summary>
         public ReadOnlySpan<float> ParticleRadius => chain.Radius;
 
@@ -163,6 +169,7 @@ namespace HookeRope.Solver
         {
             CheckParticle(particle);
             CheckFinite(velocity, nameof(velocity), "a finite velocity in m/s");
+            BoostHistory(particle, velocity.X - chain.VelX[particle], velocity.Y - chain.VelY[particle], velocity.Z - chain.VelZ[particle]);
             chain.VelX[particle] = velocity.X;
             chain.VelY[particle] = velocity.Y;
             chain.VelZ[particle] = velocity.Z;

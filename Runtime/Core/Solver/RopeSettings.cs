@@ -26,6 +26,10 @@ namespace HookeRope.Solver
         private int iterations = RopeParameters.Iterations.Default;
         private ConstraintSolverKind solver = RopeParameters.Solver.Default;
         private TensionModel tension = RopeParameters.TensionModel.Default;
+        private TimeIntegrator integrator = DefaultIntegrator;
+
+        /// <summary>Default of <see cref="Integrator"/>.</summary>
+        public const TimeIntegrator DefaultIntegrator = TimeIntegrator.BackwardEuler;
 
         /// <summary>Incremented by every successful setter; a rope re-reads its settings when it changes.</summary>
         public int Version { get; private set; }
@@ -92,6 +96,17 @@ namespace HookeRope.Solver
         {
             get => tension;
             set { CheckChoice((int)value, (int)TensionModel.TensionOnly, (int)TensionModel.Bilateral, nameof(Tension)); tension = value; Version++; }
+        }
+
+        /// <summary>
+        /// Time integrator of each substep: <see cref="TimeIntegrator.Bdf2"/> (second order, low dissipation) or
+        /// <see cref="TimeIntegrator.BackwardEuler"/> (most robust, dissipative). An unknown value throws an
+        /// <see cref="ArgumentException"/> naming the property and changes nothing.
+        /// </summary>
+        public TimeIntegrator Integrator
+        {
+            get => integrator;
+            set { CheckChoice((int)value, (int)TimeIntegrator.BackwardEuler, (int)TimeIntegrator.Bdf2, nameof(Integrator)); integrator = value; Version++; }
         }
 
         /// <summary>A copy with the same values (version 0).</summary>

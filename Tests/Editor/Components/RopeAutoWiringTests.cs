@@ -14,7 +14,9 @@ namespace HookeRope.Tests.Components
     /// lanyard F = M·g + sqrt((M·g)² + 2·M·g·k·h), k = E·A/L, undamped as in <see cref="WorkerFallArrestTests"/>: within
     /// −4 %/+2 % (measured −2.8 % at 50 Hz: the peak falls between steps, and the lanyard, at rest at build, is jerked
     /// into motion by the moving worker; the prefab's damping β = 2 ms lowers the peak by a further ≈ 2 %).
-    /// And the fix decision: a rope whose End.Point is under a Rigidbody while End.Body is empty needs it.
+    /// And the fix decision: a rope whose End.Point is under a Rigidbody while End.Body is empty needs it. The anchor
+    /// snaps to the underside of a beam 1.5 m above the D-ring (within the 2 m rest length), stays the rest length up
+    /// when the beam is 2.1 m up, and skips the rig's, the rope's own and trigger colliders on the way.
     /// </summary>
     [TestFixture]
     public sealed class RopeAutoWiringTests
@@ -27,14 +29,7 @@ namespace HookeRope.Tests.Components
         [SetUp] public void SetUp() { _scene = new UnityRopeScene(); _scene.Begin(); }
         [TearDown] public void TearDown() => _scene.End();
 
-        Rigidbody Worker(out Transform dRing)
-        {
-            var worker = _scene.Body("Worker", new Vector3(0f, 2f, 0f), Mass);
-            dRing = new GameObject("Harness D-Ring").transform;
-            dRing.SetParent(worker.transform, false);
-            dRing.localPosition = DRingOffset;
-            return worker;
-        }
+        Rigidbody Worker(out Transform dRing) => _scene.Rig(new Vector3(0f, 2f, 0f), Mass, DRingOffset, out dRing);
 
         [Test]
         public void PrefabDroppedOnAWorkerRigIsWiredAndArrestsTheFall()
@@ -119,6 +114,109 @@ namespace HookeRope.Tests.Components
             rope.StartAttachment.Point = beam;
             rope.EndAttachment.Point = hand;
             Assert.That(RopeAttachFix.For(rope), Is.Null);
+        }
+
+        // ---- the anchor snaps to the beam (the first collider above the D-ring within the rest length) --------------
+
+        /// <summary>A rope under the worker whose End.Point is the D-ring while End.Body is empty: it needs the fix.</summary>
+        ElasticRope RopeOnWorker(Rigidbody worker, Transform dRing)
+        {
+            var rope = _scene.Rope("Lanyard", worker.position);
+            rope.transform.SetParent(worker.transform, true);
+            rope.RestLength = 2f;
+            rope.EndAttachment.Point = dRing;
+            return rope;
+        }
+
+        /// <summary>A 4 m × 0.2 m × 0.4 m box beam along x centred at height <paramref name="centreY"/> (m): underside at centreY − 0.1.</summary>
+        BoxCollider Beam(float centreY)
+        {
+            var beam = _scene.Point("Beam", new Vector3(0f, centreY, 0f)).gameObject.AddComponent<BoxCollider>();
+            beam.size = new Vector3(4f, 0.2f, 0.4f);
+            return beam;
+        }
+
+        [Test]
+        public void TheAnchorSnapsToTheUndersideOfABeamWithinReach()
+        {
+            var worker = Worker(out var dRing); // D-ring at (0, 2.4, 0.1)
+            var beam = Beam(4f);                // underside y = 3.9: 1.5 m above the D-ring, within the 2 m rest length
+            var rope = RopeOnWorker(worker, dRing);
+
+            var fix = RopeAttachFix.For(rope);
+            Assert.That(fix, Is.Not.Null);
+            Assert.That(fix.MovesStart, Is.True);
+            Assert.That(fix.Beam, Is.SameAs(beam));
+            Assert.That((fix.AnchorPosition - new Vector3(0f, 3.9f, 0.1f)).magnitude, Is.LessThan(1e-5f));
+            StringAssert.Contains("snapped to 'Beam', 1.5 m above it", fix.Message);
+
+            fix.Apply();
+            var anchor = rope.StartAttachment.Point;
+            _scene.Track(anchor.gameObject);
+            Assert.That(anchor.parent, Is.Null);
+            Assert.That((anchor.position - new Vector3(0f, 3.9f, 0.1f)).magnitude, Is.LessThan(1e-5f), "on the beam's underside");
+            Assert.That(rope.EndAttachment.Body, Is.SameAs(worker));
+
+            rope.Rebuild();
+            Assert.That((rope.GetParticlePosition(0) - anchor.position).magnitude, Is.LessThan(1e-5f));
+            Assert.That((rope.GetParticlePosition(rope.ParticleCount - 1) - dRing.position).magnitude, Is.LessThan(1e-5f));
+        }
+
+        [Test]
+        public void ABeamBeyondReachLeavesTheAnchorTheRestLengthAbove()
+        {
+            var worker = Worker(out var dRing);
+            Beam(4.6f); // underside y = 4.5: 2.1 m above the D-ring, beyond the 2 m rest length
+            var rope = RopeOnWorker(worker, dRing);
+
+            var fix = RopeAttachFix.For(rope);
+            Assert.That(fix.Beam, Is.Null);
+            Assert.That((fix.AnchorPosition - new Vector3(0f, 4.4f, 0.1f)).magnitude, Is.LessThan(1e-5f));
+            StringAssert.DoesNotContain("snapped", fix.Message);
+            StringAssert.Contains("'Lanyard Anchor' 2 m above it", fix.Message);
+        }
+
+        [Test]
+        public void AnExistingRootAnchorIsReusedWhereItStandsAndTheMessageSaysSo()
+        {
+            var worker = Worker(out var dRing);
+            Beam(4f); // within reach, but the user's own anchor wins
+            var existing = _scene.Point("Lanyard Anchor", new Vector3(1f, 5f, 0f));
+            var rope = RopeOnWorker(worker, dRing);
+
+            var fix = RopeAttachFix.For(rope);
+            StringAssert.Contains("the existing 'Lanyard Anchor', kept where it is", fix.Message);
+            StringAssert.DoesNotContain("snapped", fix.Message);
+            fix.Apply();
+            Assert.That(rope.StartAttachment.Point, Is.SameAs(existing));
+            Assert.That((existing.position - new Vector3(1f, 5f, 0f)).magnitude, Is.EqualTo(0f), "not moved");
+        }
+
+        [Test]
+        public void TheRigsTheRopesAndTriggerCollidersAboveTheDRingAreIgnored()
+        {
+            var worker = Worker(out var dRing);
+            var helmet = new GameObject("Helmet").AddComponent<SphereCollider>();   // the rig's own, 0.45 m above the D-ring
+            helmet.transform.SetParent(worker.transform, false);
+            helmet.transform.localPosition = DRingOffset + new Vector3(0f, 0.6f, 0f);
+            helmet.radius = 0.15f;
+            var beam = Beam(4f);
+            var rope = _scene.Rope("Lanyard", worker.position); // at the root: the rig is found through End.Point
+            rope.RestLength = 2f;
+            rope.EndAttachment.Point = dRing;
+            var ropeOwn = new GameObject("Rope Clip").AddComponent<BoxCollider>();   // the rope's own, 0.7 m above
+            ropeOwn.transform.SetParent(rope.transform, false);
+            ropeOwn.transform.position = dRing.position + new Vector3(0f, 0.8f, 0f);
+            ropeOwn.size = new Vector3(0.2f, 0.2f, 0.2f);
+            var zone = _scene.Point("Safety Zone", dRing.position + new Vector3(0f, 1f, 0f)).gameObject.AddComponent<BoxCollider>();
+            zone.isTrigger = true;                                                     // a trigger, entered 0.5 m above
+
+            Physics.SyncTransforms(); // colliders moved after they were added reach the queries at a sync
+            Assert.That(Physics.RaycastAll(dRing.position, Vector3.up, 2f, Physics.DefaultRaycastLayers, QueryTriggerInteraction.Collide).Length,
+                Is.EqualTo(4), "all four are on the ray within reach");
+            var fix = RopeAttachFix.For(rope);
+            Assert.That(fix.Beam, Is.SameAs(beam));
+            Assert.That((fix.AnchorPosition - new Vector3(0f, 3.9f, 0.1f)).magnitude, Is.LessThan(1e-5f));
         }
 
         static float Sqrt(float x) => (float)System.Math.Sqrt(x);

@@ -71,5 +71,18 @@ namespace HookeRope.Tests.Components
                 Physics.Simulate(dt);
             }
         }
+
+        /// <summary>
+        /// A worker rig: a Rigidbody of <paramref name="mass"/> kg at <paramref name="position"/> (m) with a "Harness D-Ring"
+        /// child at <paramref name="dRingOffset"/> (m, local).
+        /// </summary>
+        public Rigidbody Rig(Vector3 position, float mass, Vector3 dRingOffset, out Transform dRing)
+        {
+            var worker = Body("Worker", position, mass);
+            dRing = new GameObject("Harness D-Ring").transform;
+            dRing.SetParent(worker.transform, false);
+            dRing.localPosition = dRingOffset;
+            return worker;
+        }
     }
 }

@@ -1,5 +1,7 @@
 using System;
+using System.Collections.Generic;
 using System.CommandLine;
+using System.CommandLine.Parsing;
 using System.IO;
 using HookeRope.Lab.Scenarios;
 using Spectre.Console;
@@ -9,10 +11,12 @@ namespace HookeRope.Lab.Commands
     /// <summary>The lab's command line (System.CommandLine): run, list, report, stability, bench, figures, accuracy.</summary>
     public static class LabCli
     {
-        /// <summary>Exit code for an invalid scenario or argument.</summary>
+        /// <summary>Exit code for an invalid scenario, argument, option or output path.</summary>
         public const int InvalidInput = 2;
+        /// <summary>Exit code for an I/O error while writing the outputs (and a failed stability case).</summary>
+        public const int Failure = 1;
 
-        /// <summary>Builds the command tree writing through <paramref name="console"/> (errors to <paramref name="error"/>).</summary>
+        /// <summary>Builds the command tree writing through <paramref name="console"/> (errors and progress lines to <paramref name="error"/>).</summary>
         public static RootCommand Build(IAnsiConsole console, TextWriter error)
         {
             var root = new RootCommand(
@@ -27,13 +31,23 @@ namespace HookeRope.Lab.Commands
             var runOut = OutOption();
             var svg = new Option<bool>("--svg") { Description = "Also write the plots as SVG." };
             var gltf = new Option<bool>("--gltf") { Description = "Export the tube mesh at outputs.gltfTimes as .glb." };
-            var strict = new Option<bool>("--check") { Description = "Exit non-zero when a physics check of the scenario fails." };
-            var run = new Command("run", "Run a scenario: CSV time series, force and radius plots, one-screen summary.")
+            var strict = new Option<bool>("--check") { Description = "Exit 4 when the run is unconverged or a physics check of the scenario fails." };
+            var runQuiet = QuietOption();
+            var json = new Option<bool>("--json") { Description = "Print the machine-readable summary (JSON) instead of the table; no progress." };
+            var run = new Command("run", "Run a scenario: CSV time series, JSON summary, plots, one-screen summary with a convergence verdict.")
             {
-                scenario, runOut, svg, gltf, strict,
+                scenario, runOut, svg, gltf, strict, runQuiet, json,
             };
             run.SetAction(p => Guard(console, error, () =>
-                RunCommand.Execute(console, p.GetValue(scenario), p.GetValue(runOut), p.GetValue(svg), p.GetValue(gltf), p.GetValue(strict))));
+            {
+                string chosen = p.GetValue(scenario);
+                if (chosen != null && chosen.StartsWith("-") && !File.Exists(chosen))
+                    throw new UsageException($"unknown option \"{chosen}\" for run" + Suggestions.DidYouMean(chosen, OptionNames(run))
+                        + "; see `run --help` for the options");
+                var mode = p.GetValue(json) ? RunCommand.Mode.Json : p.GetValue(runQuiet) ? RunCommand.Mode.Quiet : RunCommand.Mode.Summary;
+                return RunCommand.Execute(console, p.GetValue(scenario), p.GetValue(runOut), p.GetValue(svg), p.GetValue(gltf), p.GetValue(strict),
+                    mode, mode == RunCommand.Mode.Summary ? error : null);
+            }));
             root.Subcommands.Add(run);
 
             var list = new Command("list", "List the built-in scenarios.");
@@ -42,23 +56,34 @@ namespace HookeRope.Lab.Commands
 
             var reportOut = OutOption();
             var reportQuick = new Option<bool>("--quick") { Description = "Reduced grid and one repeat (a smoke run, not for numbers)." };
-            var repeats = new Option<int>("--repeats") { Description = "Timed repeats per configuration (median is reported).", DefaultValueFactory = _ => 5 };
+            var repeats = new Option<int>("--repeats") { Description = "Timed repeats per configuration, 1–50 (median is reported).", DefaultValueFactory = _ => 5 };
+            repeats.Validators.Add(r =>
+            {
+                if (r.Tokens.Count == 0 || !int.TryParse(r.Tokens[0].Value, out int n)) return;
+                if (n < 1 || n > 50) r.AddError($"--repeats: {n} is out of range [1, 50]");
+            });
+            var reportQuiet = QuietOption();
             var report = new Command("report", "Error against run time for reference scenarios and solver configurations: Markdown + Pareto plot.")
             {
-                reportOut, reportQuick, repeats,
+                reportOut, reportQuick, repeats, reportQuiet,
             };
             report.SetAction(p => Guard(console, error, () =>
-                ReportCommand.Execute(console, p.GetValue(reportOut), p.GetValue(reportQuick), p.GetValue(repeats))));
+                ReportCommand.Execute(console, p.GetValue(reportOut), p.GetValue(reportQuick), p.GetValue(repeats), p.GetValue(reportQuiet) ? null : error)));
             root.Subcommands.Add(report);
 
             var stabilityOut = OutOption();
             var stabilityQuick = new Option<bool>("--quick") { Description = "Reduced sweep for CI." };
+            var stabilityQuiet = QuietOption();
+            var stabilityFull = new Option<bool>("--full") { Description = "The integrator grid (1 356 cases, both integrators, both tension models, with and without a collider) after the scenario sweep." };
+            var stabilityGrid = new Option<bool>("--grid") { Description = "The CI subset of the integrator grid (--full runs all of it)." };
             var stability = new Command("stability", "Sweep of stiff and extreme cases; exit code 1 if any case fails.")
             {
-                stabilityOut, stabilityQuick,
+                stabilityOut, stabilityQuick, stabilityQuiet, stabilityFull, stabilityGrid,
             };
             stability.SetAction(p => Guard(console, error, () =>
-                StabilityCommand.Execute(console, p.GetValue(stabilityOut), p.GetValue(stabilityQuick))));
+                p.GetValue(stabilityFull) || p.GetValue(stabilityGrid)
+                    ? GridCommand.Execute(console, p.GetValue(stabilityOut), full: p.GetValue(stabilityFull))
+                    : StabilityCommand.Execute(console, p.GetValue(stabilityOut), p.GetValue(stabilityQuick), p.GetValue(stabilityQuiet) ? null : error)));
             root.Subcommands.Add(stability);
 
             var benchQuick = new Option<bool>("--quick") { Description = "Fewer sizes and shorter timings." };
@@ -70,11 +95,18 @@ namespace HookeRope.Lab.Commands
             root.Subcommands.Add(bench);
 
             var figuresOut = OutOption();
-            var figures = new Command("figures", "Render the manual's harness-rig figures (rope mesh from the core, real simulations) as PNG; the committed copies: --out \"Documentation~/images\".")
+            var figureSet = new Argument<string>("set")
             {
-                figuresOut,
+                Description = "harness: the manual's harness-rig figures; paper: the seed paper's Figs. 5–9a with captions and the burr texture; all: both.",
+                Arity = ArgumentArity.ZeroOrOne,
+                DefaultValueFactory = _ => FiguresCommand.Harness,
             };
-            figures.SetAction(p => Guard(console, error, () => FiguresCommand.Execute(console, p.GetValue(figuresOut))));
+            figureSet.AcceptOnlyFromAmong(FiguresCommand.Harness, FiguresCommand.Paper, FiguresCommand.All);
+            var figures = new Command("figures", "Render figures from the core's mesh of real simulations as PNG (harness rig, or the paper's Figs. 5–9a); the committed copies: --out \"Documentation~/images\".")
+            {
+                figureSet, figuresOut,
+            };
+            figures.SetAction(p => Guard(console, error, () => FiguresCommand.Execute(console, p.GetValue(figuresOut), p.GetValue(figureSet))));
             root.Subcommands.Add(figures);
 
             var accuracyOut = OutOption();
@@ -93,7 +125,12 @@ namespace HookeRope.Lab.Commands
             DefaultValueFactory = _ => "lab-out~",
         };
 
-        /// <summary>Runs a command body; invalid input becomes a one-line message and exit code 2, never a stack trace.</summary>
+        static Option<bool> QuietOption() => new Option<bool>("--quiet", "-q")
+        {
+            Description = "No progress lines; for run only the verdict line (errors still go to stderr).",
+        };
+
+        /// <summary>Runs a command body; every error becomes one friendly line (no .NET exception text) and its exit code.</summary>
         static int Guard(IAnsiConsole console, TextWriter error, Func<int> body)
         {
             try
@@ -105,34 +142,108 @@ namespace HookeRope.Lab.Commands
                 error.WriteLine("error: invalid scenario: " + e.Message);
                 return InvalidInput;
             }
-            catch (ArgumentException e)
+            catch (UsageException e)
             {
                 error.WriteLine("error: " + e.Message);
                 return InvalidInput;
             }
-            catch (IOException e)
+            catch (UnauthorizedAccessException)
             {
-                error.WriteLine("error: " + e.Message);
-                return 1;
+                error.WriteLine("error: permission denied while writing the output files; choose a writable folder with --out");
+                return Failure;
             }
-            catch (UnauthorizedAccessException e)
+            catch (DirectoryNotFoundException)
             {
-                error.WriteLine("error: " + e.Message);
-                return 1;
+                error.WriteLine("error: a folder of the output path does not exist or vanished; check --out");
+                return Failure;
+            }
+            catch (PathTooLongException)
+            {
+                error.WriteLine("error: the output path is too long; choose a shorter --out");
+                return Failure;
+            }
+            catch (IOException)
+            {
+                error.WriteLine("error: could not write the output files (the disk may be full, read-only, or a file is open in another program); check --out");
+                return Failure;
             }
             catch (Exception e) when (Environment.GetEnvironmentVariable("HOOKEROPE_LAB_TRACE") == null)
             {
-                error.WriteLine("internal error: " + e.GetType().Name + ": " + e.Message + " (set HOOKEROPE_LAB_TRACE=1 for the stack trace)");
-                return 1;
+                error.WriteLine("internal error (a bug in the lab, please report it): " + e.GetType().Name + " (set HOOKEROPE_LAB_TRACE=1 for the details)");
+                return Failure;
             }
         }
 
-        /// <summary>Parses and runs <paramref name="args"/>; returns the exit code.</summary>
+        /// <summary>Parses and runs <paramref name="args"/>; returns the exit code (2 for a usage error, with "did you mean …").</summary>
         public static int Invoke(string[] args, IAnsiConsole console, TextWriter output, TextWriter error)
         {
             var root = Build(console, error);
             var parse = root.Parse(args);
+            if (parse.Errors.Count > 0)
+            {
+                foreach (var line in UsageErrors(parse, root)) error.WriteLine(line);
+                return InvalidInput;
+            }
             return parse.Invoke(new InvocationConfiguration { Output = output, Error = error });
         }
+
+        /// <summary>One friendly line per parse error, with the closest command, option or scenario name, and a pointer to --help.</summary>
+        public static List<string> UsageErrors(ParseResult parse, RootCommand root)
+        {
+            var lines = new List<string>();
+            var command = parse.CommandResult.Command;
+            var commands = new List<string>();
+            foreach (var c in root.Subcommands) commands.Add(c.Name);
+            var options = OptionNames(command);
+            var explained = new HashSet<string>();
+            foreach (var token in parse.UnmatchedTokens)
+            {
+                explained.Add(token);
+                if (token.StartsWith("-"))
+                    lines.Add($"error: unknown option \"{token}\" for {Name(command)}" + Suggestions.DidYouMean(token, options));
+                else if (command == root)
+                    lines.Add($"error: unknown command \"{token}\"" + Suggestions.DidYouMean(token, commands) + "; the commands are " + string.Join(", ", commands));
+                else if (command.Name == "run")
+                    lines.Add($"error: \"{token}\" is one argument too many: run takes one scenario name or file");
+                else
+                    lines.Add($"error: unexpected argument \"{token}\" for {Name(command)}");
+            }
+            foreach (var e in parse.Errors)
+            {
+                bool aboutExplained = false;
+                foreach (var token in explained) if (e.Message.Contains("'" + token + "'")) aboutExplained = true;
+                if (aboutExplained) continue;
+                if (e.Message.Contains("Required command"))
+                {
+                    if (parse.UnmatchedTokens.Count == 0)
+                        lines.Add("error: no command given; the commands are " + string.Join(", ", commands) + " (the main job: `run`)");
+                }
+                else
+                    lines.Add("error: " + Friendly(e.Message));
+            }
+            if (lines.Count == 0) lines.Add("error: invalid command line");
+            lines.Add(HelpHint(command));
+            return lines;
+        }
+
+        static string Name(Command command) => command is RootCommand ? "the lab" : command.Name;
+
+        static string HelpHint(Command command) => command is RootCommand ? "see `--help` for the commands and options" : $"see `{command.Name} --help` for the options";
+
+        static List<string> OptionNames(Command command)
+        {
+            var names = new List<string>();
+            foreach (var o in command.Options)
+            {
+                names.Add(o.Name);
+                foreach (var alias in o.Aliases) names.Add(alias);
+            }
+            return names;
+        }
+
+        /// <summary>System.CommandLine's message with .NET type names put in words.</summary>
+        static string Friendly(string message) => message
+            .Replace("'System.Int32'", "a whole number").Replace("'System.Double'", "a number")
+            .Replace("'System.Boolean'", "true or false").Replace("'System.String'", "text");
     }
 }

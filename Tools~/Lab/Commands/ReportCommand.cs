@@ -10,11 +10,11 @@ namespace HookeRope.Lab.Commands
     /// <summary><c>report</c>: error against run time, Markdown + log–log Pareto plot + recommended defaults.</summary>
     public static class ReportCommand
     {
-        /// <summary>Runs the grid and writes report.md and report-pareto.png to <paramref name="outDir"/>.</summary>
-        public static int Execute(IAnsiConsole console, string outDir, bool quick, int repeats)
+        /// <summary>Runs the grid and writes report.md and report-pareto.png to <paramref name="outDir"/>; <paramref name="progress"/> gets periodic lines with an ETA when the console is not interactive.</summary>
+        public static int Execute(IAnsiConsole console, string outDir, bool quick, int repeats, TextWriter progress = null)
         {
-            if (repeats < 1 || repeats > 50) throw new System.ArgumentOutOfRangeException(nameof(repeats), repeats, "--repeats must be in [1, 50]");
-            Directory.CreateDirectory(outDir);
+            if (repeats < 1 || repeats > 50) throw new UsageException($"--repeats: {repeats} is out of range [1, 50]");
+            OutputFolder.Ensure(outDir);
             console.MarkupLine("[bold]HookeRope lab · report[/]  " + Markup.Escape(MachineInfo.Describe()));
             ReportResult result = null;
             int total = ErrorReport.Grid(quick).Count * ErrorReport.ReferenceScenarios.Length;
@@ -28,26 +28,31 @@ namespace HookeRope.Lab.Commands
             }
             else
             {
-                result = ErrorReport.Measure(quick, quick ? 1 : repeats, null);
+                var lines = progress == null ? null : new ProgressLines("report (configurations × scenarios)", total, progress);
+                int done = 0;
+                result = ErrorReport.Measure(quick, quick ? 1 : repeats, lines == null ? null : _ => lines.Report(++done));
             }
             var series = new List<Plots.Series>();
             var byFamily = new Dictionary<string, Plots.Series>();
             for (int i = 0; i < result.Configs.Count; i++)
             {
                 var c = result.Configs[i];
-                string family = c.Method == SolverMethod.GaussSeidel ? $"Gauss–Seidel, {c.Iterations} iteration(s)" : $"exact chain, {c.Iterations} iteration(s)";
+                string family = (c.Method == SolverMethod.GaussSeidel ? "Gauss–Seidel, " : "exact chain, ") + c.Iterations + (c.Iterations == 1 ? " iteration" : " iterations");
                 if (!byFamily.TryGetValue(family, out var s))
                 {
                     s = new Plots.Series { Label = family };
                     byFamily.Add(family, s);
                     series.Add(s);
                 }
-                double error = result.WorstError(i);
                 s.Cost.Add(result.MeanCost(i));
-                s.Error.Add(double.IsFinite(error) ? error : 10);
+                s.Error.Add(result.WorstError(i));
+                s.Failed.Add(result.Failed(i));
             }
+            int recommended = result.Recommended();
             string plot = Path.Combine(outDir, "report-pareto.png");
-            Plots.Pareto("worst relative error over the reference scenarios against run time (substeps vary along each family)", series, plot);
+            Plots.Pareto("worst error over the reference scenarios against run time (substeps grow along each family)", series,
+                recommended >= 0 ? result.MeanCost(recommended) : double.NaN, recommended >= 0 ? result.WorstError(recommended) : double.NaN,
+                recommended >= 0 ? result.Configs[recommended].Label : "").SavePng(plot, 1200, 640);
             string md = Path.Combine(outDir, "report.md");
             File.WriteAllText(md, ErrorReport.Markdown(result, "report-pareto.png"));
 

@@ -11,10 +11,10 @@ namespace HookeRope.Lab.Commands
     /// <summary><c>stability</c>: the extreme-case sweep as a table; exit code 1 if any case fails.</summary>
     public static class StabilityCommand
     {
-        /// <summary>Runs the sweep, prints the table and writes stability.md to <paramref name="outDir"/>.</summary>
-        public static int Execute(IAnsiConsole console, string outDir, bool quick)
+        /// <summary>Runs the sweep, prints the table and writes stability.md to <paramref name="outDir"/>; <paramref name="progress"/> gets periodic lines with an ETA when the console is not interactive.</summary>
+        public static int Execute(IAnsiConsole console, string outDir, bool quick, TextWriter progress = null)
         {
-            Directory.CreateDirectory(outDir);
+            OutputFolder.Ensure(outDir);
             var cases = StabilitySweep.Cases(quick);
             var outcomes = new List<StabilityOutcome>();
             if (console.Profile.Capabilities.Interactive)
@@ -31,7 +31,12 @@ namespace HookeRope.Lab.Commands
             }
             else
             {
-                foreach (var c in cases) outcomes.Add(StabilitySweep.Run(c));
+                var lines = progress == null ? null : new ProgressLines("stability cases", cases.Count, progress);
+                foreach (var c in cases)
+                {
+                    outcomes.Add(StabilitySweep.Run(c));
+                    lines?.Report(outcomes.Count);
+                }
             }
             var table = new Table().Border(TableBorder.Rounded).Title("HookeRope stability sweep" + (quick ? " (quick)" : ""));
             table.AddColumn("case");

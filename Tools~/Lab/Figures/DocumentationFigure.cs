@@ -15,19 +15,25 @@ namespace HookeRope.Lab.Figures
         public List<FigureAnnotation> Annotations = new List<FigureAnnotation>();
         /// <summary>Optional zoomed detail drawn into the figure (same scene, its own camera), or null.</summary>
         public FigureInset Inset;
+        /// <summary>Further panels drawn into the figure, each with its own scene and camera (multi-panel figures).</summary>
+        public List<FigureInset> Panels = new List<FigureInset>();
+        /// <summary>The figure's caption (also drawn in the image by the paper figures), or null.</summary>
+        public string Caption;
         /// <summary>Measured numbers the annotations quote (name → value), for the console summary and the tests.</summary>
         public Dictionary<string, double> Numbers = new Dictionary<string, double>();
     }
 
-    /// <summary>A zoomed detail of the same scene placed on the figure.</summary>
+    /// <summary>A zoomed detail of the same scene (or a panel with its own scene) placed on the figure.</summary>
     public sealed class FigureInset
     {
         /// <summary>The detail's camera (its own size and scale).</summary>
         public OrthographicView View;
         /// <summary>Top-left corner on the figure (px).</summary>
         public SkiaSharp.SKPoint Position;
-        /// <summary>Caption drawn in the detail's top-left corner.</summary>
+        /// <summary>Caption drawn under the detail's frame.</summary>
         public string Caption;
+        /// <summary>The detail's own triangles (a panel of a multi-panel figure), or null for the figure's scene.</summary>
+        public FigureScene Scene;
     }
 
     /// <summary>What writing a figure produced.</summary>
@@ -43,6 +49,8 @@ namespace HookeRope.Lab.Figures
         public long Bytes;
         /// <summary>Pixels (final resolution, fractional from the supersampling) where the rope is visible in the render.</summary>
         public double RopePixels;
+        /// <summary>Pixels (final resolution) where burr strands are visible in the main render.</summary>
+        public double BurrPixels;
         /// <summary>Projected area of the rope mesh's front faces (px² at the final resolution).</summary>
         public double ProjectedRopeArea;
 

@@ -7,7 +7,8 @@ namespace HookeRope.Lab.Figures
 {
     /// <summary>
     /// The triangles of one documentation figure (world metres, Y up): the rope's tube mesh exactly as the core builds
-    /// it (<see cref="RopeSimulation.FillMesh(TubeVertex[], int[])"/>), plus boxes and a torus for the rig.
+    /// it (<see cref="RopeSimulation.FillMesh(TubeVertex[], int[])"/>, burr strands included), plus boxes, a torus and a
+    /// cylinder for the rigs.
     /// </summary>
     public sealed class FigureScene
     {
@@ -29,24 +30,71 @@ namespace HookeRope.Lab.Figures
             if (triangle.Kind == SurfaceKind.Rope) RopeTriangleCount++;
         }
 
+        /// <summary>Number of burr-strand triangles (the core's second submesh).</summary>
+        public int BurrTriangleCount { get; private set; }
+
         /// <summary>
-        /// Adds the rope's current tube mesh from the core (vertices in the rope-local frame, moved by the rope's origin),
-        /// each triangle's normal the mean of its three vertex normals.
+        /// Adds the rope's current mesh from the core (vertices in the rope-local frame, moved by the rope's origin and by
+        /// <paramref name="offset"/> m): the tube and caps in <paramref name="color"/>, and the burr strands of broken ends
+        /// (when any) in the same colour tinted by <paramref name="burrTexture"/> at the core's uvs (the package's burr
+        /// material: a copy of the tube material with the burr texture; null draws the strands untextured). Each
+        /// triangle's normal is the mean of its three vertex normals. Returns what the core wrote.
         /// </summary>
-        public void AddRope(RopeSimulation simulation, uint color)
+        public TubeMeshUpdate AddRope(RopeSimulation simulation, uint color, Float3 offset = default, FigureTexture burrTexture = null)
         {
             var vertices = new TubeVertex[simulation.GetVertexCount()];
             var indices = new int[simulation.GetIndexCount()];
             var update = simulation.FillMesh(vertices, indices);
-            var origin = simulation.Rope.Origin;
-            for (int i = 0; i + 2 < update.TubeIndexCount; i += 3)
+            var origin = simulation.Rope.Origin + offset;
+            for (int i = 0; i + 2 < update.IndexCount; i += 3)
             {
                 var a = vertices[indices[i]];
                 var b = vertices[indices[i + 1]];
                 var c = vertices[indices[i + 2]];
                 var normal = new Float3(a.NX + b.NX + c.NX, a.NY + b.NY + c.NY, a.NZ + b.NZ + c.NZ);
-                Add(new SceneTriangle(Position(a) + origin, Position(b) + origin, Position(c) + origin, normal, color, SurfaceKind.Rope));
+                if (i < update.TubeIndexCount)
+                    Add(new SceneTriangle(Position(a) + origin, Position(b) + origin, Position(c) + origin, normal, color, SurfaceKind.Rope));
+                else
+                {
+                    Add(new SceneTriangle(Position(a) + origin, Position(b) + origin, Position(c) + origin, normal, color, SurfaceKind.Burr,
+                        burrTexture, a.U, a.V, b.U, b.V, c.U, c.V));
+                    BurrTriangleCount++;
+                }
             }
+            return update;
+        }
+
+        /// <summary>
+        /// Adds a closed cylinder (a bar) around the segment <paramref name="from"/> → <paramref name="to"/> (m) of
+        /// <paramref name="radius"/> m with <paramref name="sides"/> flat sides and two caps.
+        /// </summary>
+        public void AddCylinder(Float3 from, Float3 to, float radius, uint color, int sides = 96)
+        {
+            var axis = (to - from).NormalizedOr(new Float3(0f, 0f, 1f));
+            var u = FrameAxis(axis);
+            var v = Float3.Cross(axis, u);
+            Float3 Around(int i)
+            {
+                double a = 2 * Math.PI * i / sides;
+                return u * (float)Math.Cos(a) + v * (float)Math.Sin(a);
+            }
+            for (int i = 0; i < sides; i++)
+            {
+                var d0 = Around(i);
+                var d1 = Around(i + 1);
+                var normal = d0 + d1;
+                Add(new SceneTriangle(from + d0 * radius, from + d1 * radius, to + d1 * radius, normal, color, SurfaceKind.Prop));
+                Add(new SceneTriangle(from + d0 * radius, to + d1 * radius, to + d0 * radius, normal, color, SurfaceKind.Prop));
+                Add(new SceneTriangle(from, from + d1 * radius, from + d0 * radius, -axis, color, SurfaceKind.Prop));
+                Add(new SceneTriangle(to, to + d0 * radius, to + d1 * radius, axis, color, SurfaceKind.Prop));
+            }
+        }
+
+        /// <summary>A unit vector perpendicular to <paramref name="axis"/>.</summary>
+        static Float3 FrameAxis(Float3 axis)
+        {
+            var helper = Math.Abs(axis.Y) < 0.9f ? new Float3(0f, 1f, 0f) : new Float3(1f, 0f, 0f);
+            return Float3.Cross(helper, axis).NormalizedOr(new Float3(1f, 0f, 0f));
         }
 
         static Float3 Position(TubeVertex v) => new Float3(v.PX, v.PY, v.PZ);

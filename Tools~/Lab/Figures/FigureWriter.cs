@@ -30,6 +30,7 @@ namespace HookeRope.Lab.Figures
                 Width = view.Width,
                 Height = view.Height,
                 RopePixels = raster.CountVisible(SurfaceKind.Rope) / (double)(Supersampling * Supersampling),
+                BurrPixels = raster.CountVisible(SurfaceKind.Burr) / (double)(Supersampling * Supersampling),
                 ProjectedRopeArea = ZBufferRasterizer.ProjectedFrontArea(figure.Scene.Triangles, view, SurfaceKind.Rope),
             };
             using (var bitmap = Downsample(raster.Color, view.Width, view.Height, Supersampling))
@@ -38,8 +39,9 @@ namespace HookeRope.Lab.Figures
                 using (var typeface = SKTypeface.FromFamilyName("DejaVu Sans") ?? SKTypeface.Default)
                 using (var font = new SKFont(typeface, 15f) { Edging = SKFontEdging.Antialias })
                 {
+                    foreach (var panel in figure.Panels) DrawInset(canvas, panel, figure.Scene, font);
                     foreach (var annotation in figure.Annotations) annotation.Draw(canvas, view, font);
-                    if (figure.Inset != null) DrawInset(canvas, figure, font);
+                    if (figure.Inset != null) DrawInset(canvas, figure.Inset, figure.Scene, font);
                 }
                 var directory = System.IO.Path.GetDirectoryName(System.IO.Path.GetFullPath(path));
                 Directory.CreateDirectory(directory);
@@ -51,12 +53,11 @@ namespace HookeRope.Lab.Figures
             return stats;
         }
 
-        /// <summary>Renders the figure's inset (same scene, its own camera) and draws it framed at its position.</summary>
-        static void DrawInset(SKCanvas canvas, DocumentationFigure figure, SKFont font)
+        /// <summary>Renders an inset or panel (its own scene, else <paramref name="scene"/>; its own camera) and draws it framed at its position.</summary>
+        static void DrawInset(SKCanvas canvas, FigureInset inset, FigureScene scene, SKFont font)
         {
-            var inset = figure.Inset;
             var raster = new ZBufferRasterizer(inset.View.Scaled(Supersampling), Background);
-            raster.Draw(figure.Scene.Triangles);
+            raster.Draw((inset.Scene ?? scene).Triangles);
             using (var detail = Downsample(raster.Color, inset.View.Width, inset.View.Height, Supersampling))
             {
                 var frame = SKRect.Create(inset.Position.X, inset.Position.Y, inset.View.Width, inset.View.Height);

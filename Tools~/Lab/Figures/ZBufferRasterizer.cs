@@ -6,7 +6,8 @@ namespace HookeRope.Lab.Figures
 {
     /// <summary>
     /// A small depth-buffered rasterizer for the documentation figures: flat-shaded triangles (one colour per triangle from
-    /// its normal and a light fixed to the camera), a per-pixel depth test (no painter's-order artefacts), and a per-pixel
+    /// its normal and a light fixed to the camera), a per-pixel depth test (no painter's-order artefacts), an optional colour map per triangle (the burr texture, affine
+    /// uv: exact for the orthographic camera), and a per-pixel
     /// record of which <see cref="SurfaceKind"/> is visible. Samples at pixel centres; the caller supersamples for smooth edges.
     /// </summary>
     public sealed class ZBufferRasterizer
@@ -52,11 +53,16 @@ namespace HookeRope.Lab.Figures
         }
 
         /// <summary>The flat-shaded colour of a face with unit normal <paramref name="normal"/> (0xRRGGBB).</summary>
-        public uint Shade(uint color, Float3 normal)
+        public uint Shade(uint color, Float3 normal) => Tint(color, Lighting(normal), 1f, 1f, 1f);
+
+        /// <summary>Brightness factor (unitless, <see cref="Ambient"/> … 1) of a face with unit normal <paramref name="normal"/>.</summary>
+        public float Lighting(Float3 normal) => Ambient + (1f - Ambient) * Math.Max(0f, Float3.Dot(normal, light));
+
+        /// <summary><paramref name="color"/> (0xRRGGBB) times <paramref name="lit"/> times a texel (r, g, b in [0, 1]).</summary>
+        static uint Tint(uint color, float lit, float r, float g, float b)
         {
-            float lit = Ambient + (1f - Ambient) * Math.Max(0f, Float3.Dot(normal, light));
-            uint r = Channel(color >> 16, lit), g = Channel(color >> 8, lit), b = Channel(color, lit);
-            return (r << 16) | (g << 8) | b;
+            uint cr = Channel(color >> 16, lit * r), cg = Channel(color >> 8, lit * g), cb = Channel(color, lit * b);
+            return (cr << 16) | (cg << 8) | cb;
         }
 
         static uint Channel(uint value, float scale) => (uint)Math.Min(255f, (value & 0xFF) * scale + 0.5f);
@@ -74,7 +80,9 @@ namespace HookeRope.Lab.Figures
             int y0 = Math.Max(0, (int)Math.Floor(Math.Min(ay, Math.Min(by, cy))));
             int y1 = Math.Min(view.Height - 1, (int)Math.Ceiling(Math.Max(ay, Math.Max(by, cy))));
             if (x0 > x1 || y0 > y1) return;
-            uint shaded = Shade(t.Color, t.Normal);
+            float lit = Lighting(t.Normal);
+            uint shaded = Tint(t.Color, lit, 1f, 1f, 1f);
+            var texture = t.Texture;
             float inverse = 1f / area;
             for (int y = y0; y <= y1; y++)
             {
@@ -91,7 +99,12 @@ namespace HookeRope.Lab.Figures
                     int i = row + x;
                     if (z >= depth[i]) continue;
                     depth[i] = z;
-                    Color[i] = shaded;
+                    if (texture == null) Color[i] = shaded;
+                    else
+                    {
+                        var (tr, tg, tb) = texture.Sample(wa * t.UA + wb * t.UB + wc * t.UC, wa * t.VA + wb * t.VB + wc * t.VC);
+                        Color[i] = Tint(t.Color, lit, tr, tg, tb);
+                    }
                     Kind[i] = t.Kind;
                 }
             }

@@ -5,7 +5,7 @@ using HookeRope.Lab.Simulation;
 
 namespace HookeRope.Lab.Output
 {
-    /// <summary>Writes a run's time series as CSV (invariant culture, SI units in the header).</summary>
+    /// <summary>Writes a run's time series as CSV (invariant culture, full precision, no "-0", SI units in the header).</summary>
     public static class CsvWriter
     {
         /// <summary>Header line: one column per <see cref="Sample"/> field, unit as suffix.</summary>
@@ -41,7 +41,37 @@ namespace HookeRope.Lab.Output
             }
         }
 
-        static StringBuilder Append(StringBuilder line, double value) =>
-            line.Append(value.ToString("G9", CultureInfo.InvariantCulture));
+        /// <summary>Header of the radius-profile CSV (long format: one row per instant and point along the rope).</summary>
+        public const string RadiusHeader = "time_s,moment,arc_m,radius_m";
+
+        /// <summary>Writes the radius profiles of <paramref name="result"/> (outputs.profileTimes, "requested", and the key moments: neck onset, thinnest (intact), break) to <paramref name="path"/>.</summary>
+        public static void WriteRadiusProfiles(RunResult result, string path)
+        {
+            using (var writer = new StreamWriter(path, false, new UTF8Encoding(false)))
+            {
+                writer.WriteLine(RadiusHeader);
+                var line = new StringBuilder(64);
+                var all = new System.Collections.Generic.List<RadiusProfile>(result.KeyProfiles);
+                all.AddRange(result.Profiles);
+                all.Sort((a, b) => a.Time.CompareTo(b.Time));
+                foreach (var profile in all)
+                    for (int i = 0; i < profile.Radius.Length; i++)
+                    {
+                        line.Clear();
+                        Append(line, profile.Time).Append(',');
+                        line.Append(profile.Label.Length > 0 ? profile.Label : "requested").Append(',');
+                        Append(line, profile.Arc[i]).Append(',');
+                        Append(line, profile.Radius[i]);
+                        writer.WriteLine(line.ToString());
+                    }
+            }
+        }
+
+        /// <summary>Appends <paramref name="value"/> at full precision (shortest round-trip form, invariant culture); −0 is written as 0.</summary>
+        public static StringBuilder Append(StringBuilder line, double value) =>
+            line.Append(Format(value));
+
+        /// <summary><paramref name="value"/> at full precision (shortest text that reads back to the same double); −0 becomes "0".</summary>
+        public static string Format(double value) => (value == 0 ? 0.0 : value).ToString("R", CultureInfo.InvariantCulture);
     }
 }

@@ -1,30 +1,84 @@
 using System;
 using System.Collections.Generic;
+using System.Globalization;
 using HookeRope.Lab.Simulation;
 using ScottPlot;
 
 namespace HookeRope.Lab.Output
 {
-    /// <summary>PNG/SVG plots of a run (ScottPlot 5, headless SkiaSharp).</summary>
+    /// <summary>
+    /// PNG/SVG plots of a run (ScottPlot 5, headless SkiaSharp), chosen by the scenario: force against time
+    /// (autoscaled, analytic references), for fall arrests the load displacement and the limits, for ropes whose
+    /// radius changes the radius at the defect against time and the profiles at the moments that matter. Each
+    /// builder returns the <see cref="Plot"/> so tests can read back its axes, labels and lines.
+    /// </summary>
     public static class Plots
     {
         /// <summary>EN 355 energy-absorber limit, N.</summary>
         public const double En355Limit = 6000;
         /// <summary>ANSI Z359 / OSHA 1926.502 maximum arrest force, N.</summary>
         public const double OshaLimit = 8000;
+        /// <summary>A radius plot is drawn only when the smallest radius falls below this fraction of R (else it is a flat line).</summary>
+        public const double RadiusChangeFraction = 0.995;
 
-        /// <summary>Anchor and load force against time with the 6 kN / 8 kN limits; writes PNG and, if asked, SVG.</summary>
-        public static void Force(RunResult result, string pngPath, string svgPath = null)
+        static readonly CultureInfo Invariant = CultureInfo.InvariantCulture;
+
+        /// <summary>Writes the plots the scenario calls for under <paramref name="stem"/>; returns the files written.</summary>
+        public static List<string> WriteAll(RunResult r, ConvergenceVerdict verdict, IList<CheckResult> checks, string stem, bool svg)
         {
-            int n = result.Samples.Count;
+            var files = new List<string>();
+            void Save(Plot plot, string suffix, int width, int height)
+            {
+                plot.SavePng(stem + suffix + ".png", width, height);
+                files.Add(stem + suffix + ".png");
+                if (svg) plot.SaveSvg(stem + suffix + ".svg", width, height);
+            }
+            Save(Force(r, verdict, checks), "-force", 1000, 560);
+            if (r.Scenario.IsFallArrest && !double.IsNaN(r.TautTime)) Save(Displacement(r, verdict), "-displacement", 1000, 560);
+            if (RadiusChanges(r))
+            {
+                Save(DefectRadius(r), "-neck", 1000, 500);
+                if (ProfilesVary(r)) Save(RadiusProfiles(r), "-radius", 1000, 500);
+            }
+            return files;
+        }
+
+        /// <summary>True when some radius profile varies along the rope by more than 0.5 % of R (a uniformly thinned rope gives flat profiles: the radius-against-time plot says it all).</summary>
+        public static bool ProfilesVary(RunResult r)
+        {
+            var all = new List<RadiusProfile>(r.KeyProfiles);
+            all.AddRange(r.Profiles);
+            foreach (var p in all)
+            {
+                double min = double.PositiveInfinity, max = double.NegativeInfinity;
+                foreach (var v in p.Radius) { min = Math.Min(min, v); max = Math.Max(max, v); }
+                if (max - min > (1 - RadiusChangeFraction) * r.Scenario.Rope.Radius) return true;
+            }
+            return false;
+        }
+
+        /// <summary>True when the smallest recorded radius fell below <see cref="RadiusChangeFraction"/>·R.</summary>
+        public static bool RadiusChanges(RunResult r) => SummaryView.MinRadius(r) < RadiusChangeFraction * r.Scenario.Rope.Radius;
+
+        /// <summary>
+        /// Anchor force and force on the load against time, autoscaled (kN above 1 kN, else N), with the
+        /// analytic force of each check in newtons as a dashed line; for a converged fall arrest the 6 kN / 8 kN limits.
+        /// </summary>
+        public static Plot Force(RunResult r, ConvergenceVerdict verdict, IList<CheckResult> checks)
+        {
+            double peak = Math.Max(r.PeakTopForce, r.PeakLoadForce);
+            bool limits = r.Scenario.IsFallArrest && verdict.Converged;
+            bool kilo = peak >= 1000 || limits;
+            double scale = kilo ? 1e-3 : 1;
+            int n = r.Samples.Count;
             var t = new double[n];
             var top = new double[n];
             var bottom = new double[n];
             for (int i = 0; i < n; i++)
             {
-                t[i] = result.Samples[i].Time;
-                top[i] = result.Samples[i].TopTension / 1000;
-                bottom[i] = result.Samples[i].BottomTension / 1000;
+                t[i] = r.Samples[i].Time;
+                top[i] = r.Samples[i].TopTension * scale;
+                bottom[i] = r.Samples[i].BottomTension * scale;
             }
             var plot = new Plot();
             var a = plot.Add.ScatterLine(t, top);
@@ -34,84 +88,246 @@ namespace HookeRope.Lab.Output
             b.LegendText = "force on the load (last segment)";
             b.LinePattern = LinePattern.Dotted;
             b.LineWidth = 2;
-            var en = plot.Add.HorizontalLine(En355Limit / 1000, 1.5f, Colors.Orange, LinePattern.Dashed);
-            en.LegendText = "6 kN: EN 355 energy absorber";
-            var osha = plot.Add.HorizontalLine(OshaLimit / 1000, 1.5f, Colors.Red, LinePattern.Dashed);
-            osha.LegendText = "8 kN: ANSI Z359 / OSHA 1926.502";
-            plot.Title($"{result.Scenario.Name}: force against time (peak {result.PeakTopForce / 1000:F2} kN)");
+            double high = peak * scale, low = Math.Min(0, Min(top, bottom));
+            foreach (var c in checks)
+            {
+                if (c.Unit != "N" || !double.IsFinite(c.Expected)) continue;
+                var line = plot.Add.HorizontalLine(c.Expected * scale, 1.5f, Colors.Green, LinePattern.Dashed);
+                line.LegendText = $"analytic {c.Quantity}: {Num(c.Expected * scale)} {(kilo ? "kN" : "N")} ({c.Formula})";
+                high = Math.Max(high, c.Expected * scale);
+            }
+            if (limits)
+            {
+                var en = plot.Add.HorizontalLine(En355Limit * scale, 1.5f, Colors.Orange, LinePattern.Dashed);
+                en.LegendText = "6 kN: EN 355 energy absorber";
+                var osha = plot.Add.HorizontalLine(OshaLimit * scale, 1.5f, Colors.Red, LinePattern.Dashed);
+                osha.LegendText = "8 kN: ANSI Z359 / OSHA 1926.502";
+                high = Math.Max(high, OshaLimit * scale);
+            }
+            string note = verdict.Converged ? "" : $" — {verdict.Word.ToUpperInvariant()}: numbers not trustworthy";
+            plot.Title($"{r.Scenario.Name}: force against time (peak {SummaryView.Force(peak)}){note}");
             plot.XLabel("time (s)");
-            plot.YLabel("force (kN)");
-            double max = Math.Max(OshaLimit / 1000 * 1.1, result.PeakTopForce / 1000 * 1.1);
-            plot.Axes.SetLimits(0, Math.Max(t.Length > 0 ? t[t.Length - 1] : 1, 1e-3), 0, max);
+            plot.YLabel(kilo ? "force (kN)" : "force (N)");
+            if (high <= low) high = low + 1;
+            plot.Axes.SetLimits(0, EndTime(r), low, high + 0.1 * (high - low));
             plot.ShowLegend(Alignment.UpperRight);
-            plot.SavePng(pngPath, 1000, 560);
-            if (svgPath != null) plot.SaveSvg(svgPath, 1000, 560);
+            return plot;
         }
 
-        /// <summary>Radius along the rope at the scenario's profile instants.</summary>
-        public static void RadiusProfiles(RunResult result, string pngPath, string svgPath = null)
+        /// <summary>Fall arrest: drop of the load below its release point against time, with the taut instant and the 1.07 m OSHA deceleration distance past it (converged runs).</summary>
+        public static Plot Displacement(RunResult r, ConvergenceVerdict verdict)
+        {
+            int n = r.LoadDrop.Length;
+            var t = new double[n + 1];
+            var drop = new double[n + 1];
+            for (int k = 0; k < n; k++)
+            {
+                t[k + 1] = (k + 1) * r.HostStep;
+                drop[k + 1] = r.LoadDrop[k];
+            }
+            var plot = new Plot();
+            var line = plot.Add.ScatterLine(t, drop);
+            line.LegendText = "load drop below the release point";
+            line.LineWidth = 2;
+            double tautDrop = r.TotalDrop - r.ArrestDistance;
+            var taut = plot.Add.VerticalLine(r.TautTime, 1.5f, Colors.Gray, LinePattern.Dotted);
+            taut.LegendText = $"rope taut at {Num(r.TautTime)} s (free fall {Num(tautDrop)} m)";
+            double high = r.TotalDrop;
+            if (verdict.Converged)
+            {
+                double limit = tautDrop + SummaryView.OshaDecelerationDistance;
+                var osha = plot.Add.HorizontalLine(limit, 1.5f, Colors.Red, LinePattern.Dashed);
+                osha.LegendText = $"taut + 1.07 m: OSHA deceleration distance (arrest distance {Num(r.ArrestDistance)} m)";
+                high = Math.Max(high, limit);
+            }
+            plot.Title($"{r.Scenario.Name}: load displacement (lowest {Num(r.TotalDrop)} m below release)");
+            plot.XLabel("time (s)");
+            plot.YLabel("drop below release (m)");
+            plot.Axes.SetLimits(0, EndTime(r), Math.Min(0, Min(drop, drop)), high * 1.1 + 1e-6);
+            plot.Axes.InvertY();
+            plot.ShowLegend(Alignment.LowerLeft);
+            return plot;
+        }
+
+        /// <summary>Radius at the defect (neck included) and the smallest radius against time, with r_min, the break radius and the break instant where they apply.</summary>
+        public static Plot DefectRadius(RunResult r)
+        {
+            var rope = r.Scenario.Rope;
+            int n = r.Samples.Count;
+            var t = new double[n];
+            var neck = new double[n];
+            var min = new double[n];
+            for (int i = 0; i < n; i++)
+            {
+                t[i] = r.Samples[i].Time;
+                neck[i] = r.Samples[i].NeckRadius * 1000;
+                min[i] = r.Samples[i].MinRadius * 1000;
+            }
+            var plot = new Plot();
+            var a = plot.Add.ScatterLine(t, neck);
+            a.LegendText = $"radius at the defect ({Num(rope.DefectPosition)} of L)";
+            a.LineWidth = 2;
+            var b = plot.Add.ScatterLine(t, min);
+            b.LegendText = "smallest radius";
+            b.LinePattern = LinePattern.Dotted;
+            var rest = plot.Add.HorizontalLine(rope.Radius * 1000, 1f, Colors.Gray, LinePattern.Dotted);
+            rest.LegendText = $"rest radius R = {Num(rope.Radius * 1000)} mm";
+            if (rope.Necking)
+            {
+                var onset = plot.Add.HorizontalLine(rope.NeckRadiusFraction * rope.Radius * 1000, 1.5f, Colors.Orange, LinePattern.Dashed);
+                onset.LegendText = $"neck onset r_min = {Num(rope.NeckRadiusFraction)} R";
+                if (rope.Fracture && rope.BreakRadiusFraction > 0)
+                {
+                    var brk = plot.Add.HorizontalLine(rope.BreakRadiusFraction * rope.Radius * 1000, 1.5f, Colors.Red, LinePattern.Dashed);
+                    brk.LegendText = $"break radius {Num(rope.BreakRadiusFraction)} R";
+                }
+            }
+            if (!double.IsNaN(r.BreakTime))
+            {
+                var at = plot.Add.VerticalLine(r.BreakTime, 1.5f, Colors.Red, LinePattern.Dotted);
+                at.LegendText = $"break at {Num(r.BreakTime)} s";
+            }
+            plot.Title($"{r.Scenario.Name}: radius at the defect against time");
+            plot.XLabel("time (s)");
+            plot.YLabel("radius (mm)");
+            plot.Axes.SetLimits(0, EndTime(r), 0, rope.Radius * 1000 * 1.1);
+            plot.ShowLegend(Alignment.LowerLeft);
+            return plot;
+        }
+
+        /// <summary>Radius along the rope at outputs.profileTimes and at the moments that matter (neck onset, thinnest intact state, break).</summary>
+        public static Plot RadiusProfiles(RunResult r)
         {
             var plot = new Plot();
-            foreach (var profile in result.Profiles)
+            var all = new List<RadiusProfile>(r.KeyProfiles);
+            all.AddRange(r.Profiles);
+            foreach (var profile in all)
             {
                 var mm = new double[profile.Radius.Length];
                 for (int i = 0; i < mm.Length; i++) mm[i] = profile.Radius[i] * 1000;
                 var line = plot.Add.ScatterLine(profile.Arc, mm);
-                line.LegendText = $"t = {profile.Time:G4} s";
+                line.LegendText = $"t = {Num(profile.Time)} s" + (profile.Label.Length > 0 ? " (" + profile.Label + ")" : "");
                 line.LineWidth = 2;
+                if (profile.Label.Length == 0) line.LinePattern = LinePattern.Dashed;
             }
-            plot.Title($"{result.Scenario.Name}: radius along the rope");
+            var rope = r.Scenario.Rope;
+            if (rope.Necking)
+            {
+                var onset = plot.Add.HorizontalLine(rope.NeckRadiusFraction * rope.Radius * 1000, 1f, Colors.Orange, LinePattern.Dotted);
+                onset.LegendText = $"r_min = {Num(rope.NeckRadiusFraction)} R";
+            }
+            plot.Title($"{r.Scenario.Name}: radius along the rope");
             plot.XLabel("rest arc length from the start (m)");
             plot.YLabel("radius (mm)");
-            plot.Axes.SetLimitsY(0, result.Scenario.Rope.Radius * 1000 * 1.15);
+            plot.Axes.SetLimits(0, rope.RestLength, 0, rope.Radius * 1000 * 1.15);
             plot.ShowLegend(Alignment.LowerRight);
-            plot.SavePng(pngPath, 1000, 500);
-            if (svgPath != null) plot.SaveSvg(svgPath, 1000, 500);
+            return plot;
         }
 
-        /// <summary>One point set of the Pareto plot: a solver configuration family.</summary>
+        /// <summary>One configuration family of the Pareto plot (one method and iteration count; substeps vary along it).</summary>
         public sealed class Series
         {
             /// <summary>Legend text.</summary>
             public string Label;
             /// <summary>Wall time per simulated second, ms.</summary>
             public List<double> Cost = new List<double>();
-            /// <summary>Relative error (dimensionless).</summary>
+            /// <summary>Worst relative error (dimensionless); not finite when the run failed.</summary>
             public List<double> Error = new List<double>();
+            /// <summary>True when the configuration failed (diverged, NaN or no result) on a reference scenario.</summary>
+            public List<bool> Failed = new List<bool>();
         }
 
-        /// <summary>Log–log scatter of error against run time (the report's Pareto plot).</summary>
-        public static void Pareto(string title, IList<Series> series, string pngPath, string svgPath = null)
+        /// <summary>
+        /// Log–log plot of the worst error in % against the run time: each family joined in order of cost,
+        /// failed runs (diverged, NaN, no result) in a separate band a decade above the largest error, a 1 % line, the recommended configuration ringed,
+        /// the legend outside the data.
+        /// </summary>
+        public static Plot Pareto(string title, IList<Series> series, double recommendedCost, double recommendedError, string recommendedLabel)
         {
             var plot = new Plot();
+            var palette = new ScottPlot.Palettes.Category10();
+            double top = 2;   // log10(100 %)
+            foreach (var s in series)
+                for (int i = 0; i < s.Error.Count; i++)
+                    if (!s.Failed[i] && double.IsFinite(s.Error[i])) top = Math.Max(top, Math.Log10(Math.Max(s.Error[i] * 100, 1e-7)));
+            double bandLow = Math.Ceiling(top) + 1, bandHigh = bandLow + 1;   // a decade of empty axis, then the band
+            int colour = 0;
             foreach (var s in series)
             {
-                var x = new double[s.Cost.Count];
-                var y = new double[s.Error.Count];
-                for (int i = 0; i < x.Length; i++)
+                var order = new List<int>();
+                for (int i = 0; i < s.Cost.Count; i++) order.Add(i);
+                order.Sort((a, b) => s.Cost[a].CompareTo(s.Cost[b]));
+                var x = new List<double>();
+                var y = new List<double>();
+                var fx = new List<double>();
+                var fy = new List<double>();
+                foreach (int i in order)
                 {
-                    x[i] = Math.Log10(Math.Max(s.Cost[i], 1e-6));
-                    y[i] = Math.Log10(Math.Max(s.Error[i], 1e-9));
+                    double lx = Math.Log10(Math.Max(s.Cost[i], 1e-6));
+                    if (s.Failed[i] || !double.IsFinite(s.Error[i]))
+                    {
+                        fx.Add(lx);
+                        fy.Add((bandLow + bandHigh) / 2);
+                        continue;
+                    }
+                    x.Add(lx);
+                    y.Add(Math.Log10(Math.Max(s.Error[i] * 100, 1e-7)));
                 }
-                var scatter = plot.Add.ScatterPoints(x, y);
-                scatter.LegendText = s.Label;
-                scatter.MarkerSize = 9;
+                var color = palette.GetColor(colour++);
+                if (x.Count > 0)
+                {
+                    var joined = plot.Add.Scatter(x.ToArray(), y.ToArray(), color);
+                    joined.LegendText = s.Label;
+                    joined.MarkerSize = 8;
+                    joined.LineWidth = 1.5f;
+                }
+                if (fx.Count > 0)
+                {
+                    var failed = plot.Add.ScatterPoints(fx.ToArray(), fy.ToArray(), color);
+                    failed.MarkerShape = MarkerShape.Eks;
+                    failed.MarkerSize = 10;
+                    failed.LegendText = s.Label + ": failed";
+                }
             }
-            plot.Axes.Bottom.TickGenerator = LogTicks();
-            plot.Axes.Left.TickGenerator = LogTicks();
+            var band = plot.Add.VerticalSpan(bandLow, bandHigh);
+            band.LegendText = "diverged / NaN / no result (not an error value)";
+            band.FillStyle.Color = Colors.Red.WithAlpha(0.08);
+            var onePercent = plot.Add.HorizontalLine(0, 1.5f, Colors.Black, LinePattern.Dashed);
+            onePercent.LegendText = "1 % error";
+            if (double.IsFinite(recommendedCost) && double.IsFinite(recommendedError))
+            {
+                var ring = plot.Add.Marker(Math.Log10(recommendedCost), Math.Log10(Math.Max(recommendedError * 100, 1e-7)), MarkerShape.OpenCircle, 22, Colors.Black);
+                ring.LegendText = "recommended: " + recommendedLabel;
+            }
+            plot.Axes.Bottom.TickGenerator = LogTicks("", double.PositiveInfinity);
+            plot.Axes.Left.TickGenerator = LogTicks(" %", bandLow);
             plot.Title(title);
             plot.XLabel("wall time per simulated second (ms, log)");
-            plot.YLabel("relative error (log)");
-            plot.ShowLegend(Alignment.UpperRight);
-            plot.SavePng(pngPath, 1000, 640);
-            if (svgPath != null) plot.SaveSvg(svgPath, 1000, 640);
+            plot.YLabel("worst error over the reference scenarios (%, log)");
+            plot.Axes.AutoScale();
+            var limits = plot.Axes.GetLimits();
+            plot.Axes.SetLimitsY(Math.Min(limits.Bottom, -1) - 0.2, bandHigh + 0.2);
+            plot.ShowLegend(Edge.Right);
+            return plot;
         }
 
-        static ScottPlot.TickGenerators.NumericAutomatic LogTicks() => new ScottPlot.TickGenerators.NumericAutomatic
+        static ScottPlot.TickGenerators.NumericAutomatic LogTicks(string unit, double blankFrom) => new ScottPlot.TickGenerators.NumericAutomatic
         {
             MinorTickGenerator = new ScottPlot.TickGenerators.LogMinorTickGenerator(),
             IntegerTicksOnly = true,
-            LabelFormatter = v => Math.Pow(10, v).ToString("G3", System.Globalization.CultureInfo.InvariantCulture),
+            LabelFormatter = v => v >= blankFrom - 1.01 ? "" : Math.Pow(10, v).ToString(v >= 6 ? "0E0" : "G6", Invariant) + unit,
         };
+
+        static double EndTime(RunResult r) => Math.Max(r.Steps * r.HostStep, 1e-3);
+
+        static double Min(double[] a, double[] b)
+        {
+            double min = double.PositiveInfinity;
+            foreach (var v in a) min = Math.Min(min, v);
+            foreach (var v in b) min = Math.Min(min, v);
+            return double.IsFinite(min) ? min : 0;
+        }
+
+        static string Num(double v) => v.ToString("G3", Invariant);
     }
 }

@@ -13,7 +13,7 @@ namespace HookeRope.Lab.Output
         static readonly CultureInfo Invariant = CultureInfo.InvariantCulture;
 
         /// <summary>Prints the summary of <paramref name="result"/> and the files written.</summary>
-        public static void Print(IAnsiConsole console, RunResult result, IList<CheckResult> checks, IList<string> files)
+        public static void Print(IAnsiConsole console, RunResult result, ConvergenceVerdict verdict, IList<CheckResult> checks, IList<string> files)
         {
             var s = result.Scenario;
             console.Write(new Rule($"[bold]HookeRope lab · {Markup.Escape(s.Name)}[/]").LeftJustified());
@@ -24,44 +24,70 @@ namespace HookeRope.Lab.Output
                 Force(s.Rope.ResolvedAxialStiffness), Num(s.Rope.ResolvedLinearDensity), s.Solver.Substeps, s.Solver.Iterations,
                 s.HostStep * 1000, s.Duration, s.Solver.Substeps == 1 ? "" : "s", s.Solver.Iterations == 1 ? "" : "s")));
 
+            console.MarkupLine(VerdictLine(verdict));
+            bool limits = verdict.Converged && s.IsFallArrest;
+            string notAssessed = s.IsFallArrest ? "[yellow]limits not assessed: the run " + verdict.Word + "[/]" : "";
+
             var table = new Table().Border(TableBorder.Rounded);
             table.AddColumn("quantity");
             table.AddColumn(new TableColumn("value").RightAligned());
             table.AddColumn("reference");
-            table.AddRow("peak anchor force", Force(result.PeakTopForce), Limits(result.PeakTopForce));
+            table.AddRow("peak anchor force", Force(result.PeakTopForce), limits ? Limits(result.PeakTopForce) : notAssessed);
             table.AddRow("peak force on the load", Force(result.PeakLoadForce), "");
             if (!double.IsNaN(result.TautTime))
             {
                 table.AddRow("rope taut at", Num(result.TautTime) + " s", "");
                 table.AddRow("free fall before taut", Num(result.TotalDrop - result.ArrestDistance) + " m", "");
                 table.AddRow("arrest distance (taut → lowest)", Num(result.ArrestDistance) + " m",
-                    result.ArrestDistance <= 1.07 ? "[green]≤ 1.07 m OSHA deceleration distance[/]" : "[yellow]> 1.07 m OSHA deceleration distance[/]");
+                    !limits ? "" : result.ArrestDistance <= OshaDecelerationDistance
+                        ? "[green]≤ 1.07 m OSHA deceleration distance[/]" : "[yellow]> 1.07 m OSHA deceleration distance[/]");
             }
             table.AddRow("max elongation", Num(result.MaxElongation) + " m",
-                Markup.Escape(string.Format(Invariant, "strain {0:P1}", result.MaxElongation / s.Rope.RestLength)));
+                Markup.Escape("strain " + Percent(result.MaxElongation / s.Rope.RestLength))
+                + (verdict.Kind == Convergence.Diverged ? " [red](diverged: not physical)[/]" : ""));
             if (result.Samples.Count > 0)
-            {
-                double minRadius = double.MaxValue;
-                foreach (var sample in result.Samples) minRadius = Math.Min(minRadius, sample.MinRadius);
-                table.AddRow("min radius", Num(minRadius * 1000) + " mm", Markup.Escape(string.Format(Invariant, "rest radius {0:G4} mm", s.Rope.Radius * 1000)));
-            }
+                table.AddRow("min radius", Num(MinRadius(result) * 1000) + " mm", Markup.Escape(string.Format(Invariant, "rest radius {0:G4} mm", s.Rope.Radius * 1000)));
             table.AddRow("broken", double.IsNaN(result.BreakTime) ? "no" : "[red]yes[/]",
-                double.IsNaN(result.BreakTime) ? "" : Markup.Escape(string.Format(Invariant, "at {0:G4} s, tension {1} before", result.BreakTime, Force(result.BreakTension))));
+                double.IsNaN(result.BreakTime) ? "" : result.BrokenAtConstruction
+                    ? Markup.Escape("while the rope was built: its initial stretch is past the break criterion, tension " + Force(result.BreakTension))
+                    : Markup.Escape(string.Format(Invariant, "at {0:G4} s, tension {1} before", result.BreakTime, Force(result.BreakTension))));
+            foreach (var e in result.Events)
+                table.AddRow("event at " + Num(e.Time) + " s", "", Markup.Escape(e.What));
             foreach (var check in checks)
             {
                 string value = check.Unit.Length > 0 ? Num(check.Measured) + " " + check.Unit : Num(check.Measured);
                 string reference = string.Format(Invariant, "{0} {1} {2} ({3})", check.Passed ? "[green]✓[/]" : "[red]✗[/]",
                     Markup.Escape(Num(check.Expected) + (check.Unit.Length > 0 ? " " + check.Unit : "")),
-                    Markup.Escape(check.Absolute ? "" : string.Format(Invariant, "error {0:P2}", check.Error)),
+                    Markup.Escape(check.Absolute ? "" : "error " + (double.IsFinite(check.Error) ? (check.Error * 100).ToString("0.00", Invariant) + " %" : "n/a")),
                     Markup.Escape(check.Formula));
                 table.AddRow("check: " + Markup.Escape(check.Quantity), value, reference);
             }
-            table.AddRow("solver residual (max)", Num(result.MaxResidual), result.NonFinite ? "[red]NaN/∞ in positions[/]" : "finite");
+            table.AddRow("solver residual (max)", Num(result.MaxResidual), Markup.Escape(string.Format(Invariant,
+                "strain error > {0} on {1} of the host steps", Percent(ConvergenceVerdict.UnconvergedStrainError), Percent(verdict.UnconvergedFraction))));
             table.AddRow("wall time", Num(result.WallSeconds * 1000) + " ms",
                 Markup.Escape(string.Format(Invariant, "{0} host steps, {1:G3}× real time", result.Steps,
                     result.Steps * s.HostStep / Math.Max(result.WallSeconds, 1e-9))));
             console.Write(table);
+            if (!verdict.Converged) console.MarkupLine("[bold]what to change:[/] " + Markup.Escape(verdict.Advice));
             foreach (var file in files) console.MarkupLine("[grey]wrote[/] " + Markup.Escape(file));
+        }
+
+        /// <summary>Smallest radius over the recorded samples in m (NaN without samples).</summary>
+        public static double MinRadius(RunResult result)
+        {
+            double min = double.NaN;
+            foreach (var sample in result.Samples) if (!(sample.MinRadius >= min)) min = sample.MinRadius;
+            return min;
+        }
+
+        /// <summary>OSHA 1926.502(d)(16)(iv): the deceleration distance of a personal fall arrest system is at most 1.07 m.</summary>
+        public const double OshaDecelerationDistance = 1.07;
+
+        /// <summary>The verdict in one line: word, colour and reason.</summary>
+        public static string VerdictLine(ConvergenceVerdict verdict)
+        {
+            string colour = verdict.Kind == Convergence.Converged ? "green" : verdict.Kind == Convergence.Unconverged ? "yellow" : "red";
+            return $"[bold {colour}]verdict: {verdict.Word}[/] — " + Markup.Escape(verdict.Reason);
         }
 
         static string Limits(double force)
@@ -75,6 +101,9 @@ namespace HookeRope.Lab.Output
         public static string Force(double newtons) => Math.Abs(newtons) >= 1000
             ? (newtons / 1000).ToString("G4", Invariant) + " kN"
             : newtons.ToString("G4", Invariant) + " N";
+
+        /// <summary>A fraction as a percentage with one decimal and no digit grouping ("109.7 %").</summary>
+        public static string Percent(double fraction) => (fraction * 100).ToString("0.0", Invariant) + " %";
 
         /// <summary>A number with 4 significant digits, invariant culture.</summary>
         public static string Num(double value) => value.ToString("G4", Invariant);

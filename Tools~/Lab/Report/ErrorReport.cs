@@ -28,6 +28,11 @@ namespace HookeRope.Lab.Report
         public double Error;
         /// <summary>Median wall time per simulated second in ms.</summary>
         public double MsPerSecond;
+        /// <summary>Convergence verdict of the first repeat (<see cref="ConvergenceVerdict"/>).</summary>
+        public Convergence Verdict;
+
+        /// <summary>True when the run has no usable result: diverged, NaN, or no measurable quantity.</summary>
+        public bool Failed => Verdict == Convergence.Diverged || !double.IsFinite(Error);
     }
 
     /// <summary>Everything the report measured.</summary>
@@ -71,21 +76,51 @@ namespace HookeRope.Lab.Report
             for (int i = 0; i < Configs.Count; i++)
             {
                 if (method.HasValue && Configs[i].Method != method.Value) continue;
-                if (!(WorstError(i) <= Target)) continue;
+                if (!(WorstError(i) <= Target) || !Converged(i)) continue;
                 if (best < 0 || MeanCost(i) < MeanCost(best)) best = i;
             }
             return best;
         }
 
-        /// <summary>Configurations not beaten on both worst error and mean cost, cheapest first.</summary>
+        /// <summary>True when a configuration failed (diverged, NaN or no result) on any scenario.</summary>
+        public bool Failed(int config)
+        {
+            foreach (var cell in Cells[config]) if (cell.Failed) return true;
+            return false;
+        }
+
+        /// <summary>"converged", "unconverged", "diverged" or "no result": the worst over the scenarios of a configuration.</summary>
+        public string WorstVerdict(int config)
+        {
+            var worst = Convergence.Converged;
+            bool noResult = false;
+            foreach (var cell in Cells[config])
+            {
+                if (cell.Verdict > worst) worst = cell.Verdict;
+                if (!double.IsFinite(cell.Error)) noResult = true;
+            }
+            if (worst == Convergence.Diverged) return "diverged";
+            if (noResult) return "no result";
+            return worst == Convergence.Converged ? "converged" : "unconverged";
+        }
+
+        /// <summary>True when a configuration converged (<see cref="ConvergenceVerdict"/>) on every scenario with a finite error.</summary>
+        public bool Converged(int config)
+        {
+            foreach (var cell in Cells[config]) if (cell.Failed || cell.Verdict != Convergence.Converged) return false;
+            return true;
+        }
+
+        /// <summary>Converged configurations not beaten by another converged one on both worst error and mean cost, cheapest first (an unconverged or diverged run is never Pareto-optimal, however cheap).</summary>
         public List<int> ParetoFront()
         {
             var front = new List<int>();
             for (int i = 0; i < Configs.Count; i++)
             {
+                if (!Converged(i)) continue;
                 bool dominated = false;
                 for (int j = 0; j < Configs.Count && !dominated; j++)
-                    if (j != i && WorstError(j) <= WorstError(i) && MeanCost(j) <= MeanCost(i) &&
+                    if (j != i && Converged(j) && WorstError(j) <= WorstError(i) && MeanCost(j) <= MeanCost(i) &&
                         (WorstError(j) < WorstError(i) || MeanCost(j) < MeanCost(i)))
                         dominated = true;
                 if (!dominated) front.Add(i);
@@ -134,6 +169,7 @@ namespace HookeRope.Lab.Report
                 {
                     var times = new List<double>();
                     double error = double.NaN;
+                    var verdict = Convergence.Converged;
                     for (int r = 0; r < result.Repeats; r++)
                     {
                         var s = BuiltInScenarios.Load(ReferenceScenarios[k]);
@@ -146,10 +182,11 @@ namespace HookeRope.Lab.Report
                         {
                             var checks = PhysicsChecks.Evaluate(run);
                             error = PrimaryError(run, checks);
+                            verdict = ConvergenceVerdict.Judge(run).Kind;
                             if (checks.Count > 0) result.Quantities[k] = checks[0].Quantity;
                         }
                     }
-                    cells[k] = new ReportCell { Error = error, MsPerSecond = Stats.Median(times) };
+                    cells[k] = new ReportCell { Error = error, MsPerSecond = Stats.Median(times), Verdict = verdict };
                     progress?.Invoke(config.Label + " · " + ReferenceScenarios[k]);
                 }
                 result.Cells.Add(cells);
@@ -216,14 +253,14 @@ namespace HookeRope.Lab.Report
             sb.Append(gs >= 0
                 ? $"- Cheapest Gauss–Seidel configuration within {r.Target:P0}: {r.Configs[gs].Label} ({Ms(r.MeanCost(gs))} ms per simulated second).\n"
                 : $"- No Gauss–Seidel configuration of the grid reaches {r.Target:P0} on every scenario (the heavy mass ratio defeats it): use the exact chain solve.\n");
-            sb.Append("\n## All configurations\n\n| configuration | worst error | mean ms/s |");
+            sb.Append("\n## All configurations\n\nverdict: the worst convergence verdict over the scenarios (only converged configurations can be Pareto-optimal or recommended).\n\n| configuration | verdict | worst error | mean ms/s |");
             foreach (var s in r.Scenarios) sb.Append(' ').Append(s).Append(" error | ms/s |");
-            sb.Append("\n|---|---:|---:|");
+            sb.Append("\n|---|---|---:|---:|");
             foreach (var _ in r.Scenarios) sb.Append("---:|---:|");
             sb.Append('\n');
             for (int i = 0; i < r.Configs.Count; i++)
             {
-                sb.Append("| ").Append(r.Configs[i].Label).Append(" | ").Append(Pct(r.WorstError(i))).Append(" | ").Append(Ms(r.MeanCost(i))).Append(" |");
+                sb.Append("| ").Append(r.Configs[i].Label).Append(" | ").Append(r.WorstVerdict(i)).Append(" | ").Append(Pct(r.WorstError(i))).Append(" | ").Append(Ms(r.MeanCost(i))).Append(" |");
                 foreach (var cell in r.Cells[i]) sb.Append(' ').Append(Pct(cell.Error)).Append(" | ").Append(Ms(cell.MsPerSecond)).Append(" |");
                 sb.Append('\n');
             }

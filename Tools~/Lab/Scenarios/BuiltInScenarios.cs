@@ -42,7 +42,10 @@ namespace HookeRope.Lab.Scenarios
             if (string.IsNullOrEmpty(nameOrPath)) return Load(Default);
             if (Contains(nameOrPath)) return Load(nameOrPath);
             if (!File.Exists(nameOrPath))
-                throw new ScenarioException("$", $"\"{nameOrPath}\" is neither a built-in scenario ({string.Join(", ", Names)}) nor an existing file");
+                throw new ScenarioException("$", $"\"{nameOrPath}\" is neither a built-in scenario nor an existing file"
+                    + Commands.Suggestions.DidYouMean(nameOrPath, Names) + $"; the built-in scenarios are {string.Join(", ", Names)}");
+            if (Directory.Exists(nameOrPath))
+                throw new ScenarioException("$", $"\"{nameOrPath}\" is a folder; give a scenario JSON file or a built-in name");
             var info = new FileInfo(nameOrPath);
             if (info.Length > ScenarioParser.MaxDocumentBytes)
                 throw new ScenarioException("$", $"file too large ({info.Length} bytes, at most {ScenarioParser.MaxDocumentBytes})");

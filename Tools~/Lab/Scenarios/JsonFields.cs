@@ -116,7 +116,8 @@ namespace HookeRope.Lab.Scenarios
         {
             string text = String(name, fallback);
             if (System.Array.IndexOf(allowed, text) < 0)
-                throw new ScenarioException(Child(name), $"\"{text}\" is not one of: {string.Join(", ", allowed)}");
+                throw new ScenarioException(Child(name), $"\"{text}\" is not one of: {string.Join(", ", allowed)}"
+                    + Commands.Suggestions.DidYouMean(text, allowed));
             return text;
         }
 

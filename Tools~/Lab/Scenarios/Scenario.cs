@@ -28,10 +28,18 @@ namespace HookeRope.Lab.Scenarios
         public InitialSpec Initial = new InitialSpec();
         /// <summary>Static or kinematic colliders.</summary>
         public List<ColliderSpec> Colliders = new List<ColliderSpec>();
+        /// <summary>Timed events (pin targets and velocities, releases, impulses, damping, cuts), sorted by time.</summary>
+        public List<EventSpec> Events = new List<EventSpec>();
         /// <summary>Sampling and export settings.</summary>
         public OutputSpec Outputs = new OutputSpec();
         /// <summary>Which physics check the lab applies to the run (set by built-in scenarios).</summary>
         public ExpectationSpec Expect = new ExpectationSpec();
+
+        /// <summary>
+        /// True for a fall-arrest scenario (its check is "fall-arrest", or a body falls from <c>initial.fallHeight</c>):
+        /// the only scenarios whose summary and plots carry the EN 355 / ANSI / OSHA limits.
+        /// </summary>
+        public bool IsFallArrest => Expect.Check == "fall-arrest" || (Initial.FallHeight.HasValue && End.Kind == AttachmentKind.Body);
 
         /// <summary>Number of host steps to cover <see cref="Duration"/>.</summary>
         public int StepCount => (int)System.Math.Ceiling(Duration / HostStep - 1e-9);
@@ -95,6 +103,12 @@ namespace HookeRope.Lab.Scenarios
         public double NeckRadiusFraction = RopeParameters.NeckRadiusFraction.Default;
         /// <summary>Weak spot where the neck starts and the rope breaks, as a fraction of the rest length from the start, 0…1.</summary>
         public double DefectPosition = RopeParameters.DefectPosition.Default;
+        /// <summary>Zone neck: rest length of the neck zone in rope diameters 2R.</summary>
+        public double NeckZoneDiameters = RopeParameters.NeckZoneDiameters.Default;
+        /// <summary>Zone neck: strain beyond onset over which the neck deepens to the full hyperbola.</summary>
+        public double NeckGrowthStrain = RopeParameters.NeckGrowthStrain.Default;
+        /// <summary>A segment shorter than its rest length keeps the rest radius.</summary>
+        public bool SlackKeepsRestRadius = RopeParameters.SlackKeepsRestRadius.Default;
         /// <summary>Let the rope break at the defect.</summary>
         public bool Fracture = RopeParameters.Fracture.Default;
         /// <summary>Strain l/L − 1 of the defect segment at which it breaks.</summary>
@@ -239,7 +253,7 @@ namespace HookeRope.Lab.Scenarios
     {
         /// <summary>CSV rows per simulated second (0 = every host step).</summary>
         public double SampleRate = 200.0;
-        /// <summary>Instants (s) of the radius-profile plot.</summary>
+        /// <summary>Instants (s) of the radius profiles (plot and NAME-radius.csv).</summary>
         public List<double> ProfileTimes = new List<double>();
         /// <summary>Instants (s) at which the tube mesh is exported to glTF (empty = none).</summary>
         public List<double> GltfTimes = new List<double>();

@@ -20,6 +20,8 @@ namespace HookeRope.Lab.Scenarios
         public const int MaxKeyframes = 10000;
         /// <summary>Most instants in outputs.profileTimes / outputs.gltfTimes.</summary>
         public const int MaxInstants = 32;
+        /// <summary>Most timed events in one scenario.</summary>
+        public const int MaxEvents = 256;
         /// <summary>Most CSV rows one run may write.</summary>
         public const double MaxRows = 2e6;
         /// <summary>Most host steps one run may take.</summary>
@@ -84,6 +86,10 @@ namespace HookeRope.Lab.Scenarios
             var colliders = root.Array("colliders", MaxColliders);
             for (int i = 0; i < colliders.Count; i++)
                 s.Colliders.Add(ReadCollider(new JsonFields(colliders[i], $"$.colliders[{i}]")));
+            var events = root.Array("events", MaxEvents);
+            for (int i = 0; i < events.Count; i++)
+                s.Events.Add(ReadEvent(new JsonFields(events[i], $"$.events[{i}]"), s));
+            s.Events = System.Linq.Enumerable.ToList(System.Linq.Enumerable.OrderBy(s.Events, e => e.Time));   // stable: ties keep file order
             var outputs = root.Object("outputs");
             if (outputs != null) ReadOutputs(outputs, s.Outputs, s.Duration);
             var expect = root.Object("expect");
@@ -132,6 +138,9 @@ namespace HookeRope.Lab.Scenarios
             r.Fracture = f.Parameter(RopeParameters.Fracture.Row, r.Fracture);
             r.BreakStrain = f.Parameter(RopeParameters.BreakStrain.Row, r.BreakStrain);
             r.BreakRadiusFraction = f.Parameter(RopeParameters.BreakRadiusFraction.Row, r.BreakRadiusFraction);
+            r.NeckZoneDiameters = f.Parameter(RopeParameters.NeckZoneDiameters.Row, r.NeckZoneDiameters);
+            r.NeckGrowthStrain = f.Parameter(RopeParameters.NeckGrowthStrain.Row, r.NeckGrowthStrain);
+            r.SlackKeepsRestRadius = f.Parameter(RopeParameters.SlackKeepsRestRadius.Row, r.SlackKeepsRestRadius);
             r.RadialSegments = f.Parameter(RopeParameters.RadialSegments.Row, r.RadialSegments);
             r.Seed = f.Parameter(RopeParameters.BurrSeed.Row, r.Seed);
             f.RejectUnknown();
@@ -185,6 +194,61 @@ namespace HookeRope.Lab.Scenarios
             }
             f.RejectUnknown();
             return a;
+        }
+
+        /// <summary>Event type names in the JSON, in <see cref="EventKind"/> order.</summary>
+        public static readonly string[] EventTypes = { "pin-target", "pin-velocity", "release-pin", "impulse", "damping", "cut" };
+
+        static EventSpec ReadEvent(JsonFields f, Scenario s)
+        {
+            var e = new EventSpec();
+            if (!f.Has("time")) throw new ScenarioException(f.Child("time"), "required (s, in [0, duration])");
+            if (!f.Has("type")) throw new ScenarioException(f.Child("type"), "required: one of " + string.Join(", ", EventTypes));
+            e.Time = f.Number("time", 0, double.NegativeInfinity, double.PositiveInfinity);
+            if (e.Time < 0 || e.Time > s.Duration)
+                throw new ScenarioException(f.Child("time"), $"{JsonFields.Format(e.Time)} s is outside the run [0, {JsonFields.Format(s.Duration)}] s");
+            e.Type = f.Choice("type", "", EventTypes);
+            e.Kind = (EventKind)System.Array.IndexOf(EventTypes, e.Type);
+            switch (e.Kind)
+            {
+                case EventKind.PinTarget:
+                case EventKind.PinVelocity:
+                case EventKind.ReleasePin:
+                {
+                    if (!f.Has("end")) throw new ScenarioException(f.Child("end"), "required: \"start\" or \"end\"");
+                    e.AtStart = f.Choice("end", "", "start", "end") == "start";
+                    var held = e.AtStart ? s.Start : s.End;
+                    if (held.Kind != AttachmentKind.Fixed && held.Kind != AttachmentKind.Keyframes)
+                        throw new ScenarioException(f.Child("end"), $"the {(e.AtStart ? "start" : "end")} is not pinned (its type is not \"fixed\" or \"keyframes\")");
+                    if (e.Kind == EventKind.PinTarget) e.Vector = Required(f, "position", 1e6);
+                    if (e.Kind == EventKind.PinVelocity)
+                    {
+                        e.Vector = Required(f, "velocity", 1e4);
+                        e.Until = f.Number("until", s.Duration, e.Time, s.Duration, minExclusive: true);
+                    }
+                    break;
+                }
+                case EventKind.Impulse:
+                    e.Vector = Required(f, "impulse", 1e6);
+                    e.At = f.Number("at", 1, 0, 1);
+                    break;
+                case EventKind.Damping:
+                    if (!f.Has(RopeParameters.Damping.Json)) throw new ScenarioException(f.Child(RopeParameters.Damping.Json), "required (s)");
+                    e.Value = f.Parameter(RopeParameters.Damping.Row, 0.0);
+                    break;
+                default:
+                    if (!f.Has("at")) throw new ScenarioException(f.Child("at"), "required: where to cut, as a fraction of the rest length from the start (0…1)");
+                    e.At = f.Number("at", 0.5, 0, 1);
+                    break;
+            }
+            f.RejectUnknown();
+            return e;
+        }
+
+        static Float3 Required(JsonFields f, string name, double limit)
+        {
+            if (!f.Has(name)) throw new ScenarioException(f.Child(name), "required");
+            return f.Vector(name, Float3.Zero, limit);
         }
 
         static void ReadInitial(JsonFields f, InitialSpec spec)

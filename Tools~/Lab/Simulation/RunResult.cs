@@ -35,6 +35,8 @@ namespace HookeRope.Lab.Simulation
     {
         /// <summary>Simulated time in s.</summary>
         public double Time;
+        /// <summary>Why this instant: "" for outputs.profileTimes, else "neck onset", "thinnest (intact)" or "break".</summary>
+        public string Label = "";
         /// <summary>Rest arc length of each particle from the start, m.</summary>
         public double[] Arc;
         /// <summary>Particle radius in m.</summary>
@@ -61,8 +63,12 @@ namespace HookeRope.Lab.Simulation
         public Scenario Scenario;
         /// <summary>Time series (one entry per CSV row).</summary>
         public List<Sample> Samples = new List<Sample>();
+        /// <summary>Timed events as they were applied.</summary>
+        public List<AppliedEvent> Events = new List<AppliedEvent>();
         /// <summary>Radius profiles at outputs.profileTimes.</summary>
         public List<RadiusProfile> Profiles = new List<RadiusProfile>();
+        /// <summary>Radius profiles at the moments that matter, found during the run: neck onset, the thinnest intact state, the break.</summary>
+        public List<RadiusProfile> KeyProfiles = new List<RadiusProfile>();
         /// <summary>Meshes at outputs.gltfTimes.</summary>
         public List<MeshSnapshot> Meshes = new List<MeshSnapshot>();
         /// <summary>Largest anchor force in N.</summary>
@@ -79,6 +85,8 @@ namespace HookeRope.Lab.Simulation
         public double TautTime = double.NaN;
         /// <summary>Time of the first break (s), or NaN.</summary>
         public double BreakTime = double.NaN;
+        /// <summary>True when the rope broke while it was built (its initial stretch already past the break criterion).</summary>
+        public bool BrokenAtConstruction;
         /// <summary>Tension just before the first break in N, or NaN.</summary>
         public double BreakTension = double.NaN;
         /// <summary>Largest residual over the run.</summary>
@@ -113,6 +121,8 @@ namespace HookeRope.Lab.Simulation
         public double[] LoadDrop;
         /// <summary>Tension of the first segment after each host step, N.</summary>
         public double[] TopTensionSeries;
+        /// <summary>Solver residual (strain error, dimensionless) after each host step.</summary>
+        public float[] ResidualSeries;
         /// <summary>Elongation after each host step, m.</summary>
         public double[] ElongationSeries;
         /// <summary>Host step in s (series index k is time (k + 1)·HostStep).</summary>

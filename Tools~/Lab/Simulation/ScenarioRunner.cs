@@ -81,6 +81,9 @@ namespace HookeRope.Lab.Simulation
             settings.Fracture = r.Fracture;
             settings.BreakStrain = (float)r.BreakStrain;
             settings.BreakRadiusFraction = (float)r.BreakRadiusFraction;
+            settings.NeckZoneDiameters = (float)r.NeckZoneDiameters;
+            settings.NeckGrowthStrain = (float)r.NeckGrowthStrain;
+            settings.SlackKeepsRestRadius = r.SlackKeepsRestRadius;
             return settings;
         }
 
@@ -144,6 +147,14 @@ namespace HookeRope.Lab.Simulation
             double lowest = 0, tautDrop = double.NaN;
             var readouts = setup.Simulation.Readouts;
             if (setup.EndLoad >= 0) readouts.ArrestLoad = setup.EndLoad;
+            var constructionBreak = readouts.FirstBreak;
+            if (constructionBreak.HasValue)
+            {
+                // the radius model's fracture decision ran once while the rope was built (RopeSimulation's constructor)
+                result.BrokenAtConstruction = true;
+                result.BreakTime = 0;
+                result.BreakTension = constructionBreak.Value.Tension;
+            }
             result.InitialEnergy = options.TrackEnergy ? rope.TotalEnergy() : 0;
             result.MaxEnergy = result.InitialEnergy;
             double dt = s.HostStep;
@@ -152,6 +163,7 @@ namespace HookeRope.Lab.Simulation
             result.LoadDrop = new double[steps];
             result.ElongationSeries = new double[steps];
             result.TopTensionSeries = new double[steps];
+            result.ResidualSeries = new float[steps];
             double sampleInterval = s.Outputs.SampleRate > 0 ? 1.0 / s.Outputs.SampleRate : 0;
             double nextSample = 0;
             int nextProfile = 0, nextMesh = 0;
@@ -162,15 +174,21 @@ namespace HookeRope.Lab.Simulation
                 result.Samples.Add(Measure(setup, 0, options));
                 nextSample = sampleInterval;
             }
+            bool keyMoments = options.Captures && setup.Simulation.RadiusModel != null && (s.Rope.PoissonThinning || s.Rope.Necking);
+            double onsetRadius = s.Rope.NeckRadiusFraction * s.Rope.Radius, deepest = s.Rope.Radius;
+            RadiusProfile thinnest = null;
+            bool onsetSeen = false, breakSeen = !double.IsNaN(result.BreakTime);
+            var player = new EventPlayer(s, setup);
+            result.Events = player.Applied;
             var watch = Stopwatch.StartNew();
             for (int k = 0; k < steps; k++)
             {
                 double t = (k + 1) * dt;
-                if (s.Start.Kind == AttachmentKind.Keyframes) rope.SetPinTarget(setup.StartPin, s.Start.PositionAt(t));
-                if (s.End.Kind == AttachmentKind.Keyframes) rope.SetPinTarget(setup.EndPin, s.End.PositionAt(t));
+                player.BeforeStep(k * dt, dt);
                 var report = setup.Step((float)dt);
                 result.Steps = k + 1;
                 if (report.Residual > result.MaxResidual) result.MaxResidual = report.Residual;
+                result.ResidualSeries[k] = report.Residual;
                 var load = rope.GetPosition(last);
                 if (!load.IsFinite || !AllFinite(rope))
                 {
@@ -201,6 +219,25 @@ namespace HookeRope.Lab.Simulation
                     tautDrop = drop;
                     result.TautTime = t;
                 }
+                if (keyMoments)
+                {
+                    double neck = readouts.NeckRadius;
+                    if (!breakSeen && !double.IsNaN(result.BreakTime))
+                    {
+                        breakSeen = true;
+                        result.KeyProfiles.Add(Labelled(Profile(setup, t), "break"));
+                    }
+                    if (s.Rope.Necking && !onsetSeen && neck < onsetRadius)
+                    {
+                        onsetSeen = true;
+                        result.KeyProfiles.Add(Labelled(Profile(setup, t), "neck onset"));
+                    }
+                    if (!breakSeen && neck < deepest - 0.002 * s.Rope.Radius)
+                    {
+                        deepest = neck;   // a new deepest point, at most 500 captures over a run
+                        thinnest = Labelled(Profile(setup, t), "thinnest (intact)");
+                    }
+                }
                 if (options.TrackEnergy) RecordEnergy(rope, result, late: k >= steps / 2);
                 options.Progress?.Invoke(k);
                 if (options.RecordSamples && t >= nextSample - 1e-9)
@@ -225,11 +262,14 @@ namespace HookeRope.Lab.Simulation
                 }
             }
             result.WallSeconds = watch.Elapsed.TotalSeconds;
+            if (thinnest != null) result.KeyProfiles.Add(thinnest);
+            result.KeyProfiles.Sort((a, b) => a.Time.CompareTo(b.Time));
             if (result.Steps < steps)
             {
                 Array.Resize(ref result.LoadDrop, result.Steps);
                 Array.Resize(ref result.ElongationSeries, result.Steps);
                 Array.Resize(ref result.TopTensionSeries, result.Steps);
+                Array.Resize(ref result.ResidualSeries, result.Steps);
             }
             result.TotalDrop = lowest;
             result.ArrestDistance = double.IsNaN(tautDrop) ? 0 : lowest - tautDrop;
@@ -293,6 +333,12 @@ namespace HookeRope.Lab.Simulation
                 Residual = readouts.Residual,
                 Energy = options.TrackEnergy ? rope.TotalEnergy() : 0,
             };
+        }
+
+        static RadiusProfile Labelled(RadiusProfile profile, string label)
+        {
+            profile.Label = label;
+            return profile;
         }
 
         static RadiusProfile Profile(RopeSetup setup, double t)

@@ -136,24 +136,16 @@ namespace HookeRope.Lab.Stability
         {
             var s = c.Scenario;
             var r = ScenarioRunner.Run(s, new RunOptions { RecordSamples = false, Captures = false, TrackEnergy = true });
-            double mass = s.Rope.Mass + s.End.LoadMass;
-            double scale = mass * s.Gravity.Length * s.Rope.RestLength * (1 + s.Initial.Stretch) + Math.Abs(r.InitialEnergy);
-            // Blow-up: the motion energy (kinetic + gravitational) rises above all the energy the rope
-            // started with AND is still growing, i.e. the second half of the run reaches above everything
-            // of the first half. Elastic energy is left out of the criterion: it is read from the
-            // geometric strain at the nominal stiffness, and an unconverged solver (Gauss–Seidel carrying
-            // a heavy load) leaves the rope over-stretched, which inflates that reading without creating
-            // any motion — an accuracy problem (the constraint-error column), not an instability.
-            double tolerance = 0.05 * scale + 1e-3;
-            double motionRise = r.LateMaxMotionEnergy - r.InitialEnergy;
-            bool growing = r.LateMaxMotionEnergy > Math.Max(r.EarlyMaxMotionEnergy, r.InitialEnergy) + tolerance;
+            // Blow-up and explosion use the run verdict's criteria (ConvergenceVerdict: motion energy, not
+            // the elastic reading an unconverged solver inflates).
+            bool blowUp = ConvergenceVerdict.EnergyBlowUp(s, r, out double motionRise);
             return new StabilityOutcome
             {
                 Case = c,
                 NonFinite = r.NonFinite,
                 EnergyRise = motionRise,
-                EnergyBlowUp = !c.DrivenAnchor && (!double.IsFinite(motionRise) || (motionRise > tolerance && growing)),
-                Exploded = r.MaxExtent > 100 * s.Rope.RestLength * (1 + s.Initial.Stretch) + 10,
+                EnergyBlowUp = !c.DrivenAnchor && blowUp,
+                Exploded = ConvergenceVerdict.Exploded(s, r),
                 Settled = r.FinalMaxSpeed < 0.1,
                 MaxConstraintError = r.MaxResidual,
                 WallSeconds = r.WallSeconds,

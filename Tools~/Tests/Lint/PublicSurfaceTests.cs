@@ -17,12 +17,13 @@ namespace HookeRope.Tests.Lint
             "HookeRope.RopeParameters", "HookeRope.ParameterInfo", "HookeRope.ParameterKind", "HookeRope.ParameterGroup",
             // Solver
             "HookeRope.Solver.Rope", "HookeRope.Solver.RopeSettings", "HookeRope.Solver.StepReport", "HookeRope.Solver.RopeBreakEvent",
-            "HookeRope.Solver.ColliderShape", "HookeRope.Solver.ColliderKind", "HookeRope.Solver.ConstraintSolverKind", "HookeRope.Solver.TensionModel",
+            "HookeRope.Solver.ColliderShape", "HookeRope.Solver.ColliderKind", "HookeRope.Solver.ConstraintSolverKind", "HookeRope.Solver.TensionModel", "HookeRope.Solver.TimeIntegrator",
             // Radius model (read-only queries) and its analytic formulas
             "HookeRope.Radius.RadiusSettings", "HookeRope.Radius.RadiusModel", "HookeRope.Radius.NeckMode", "HookeRope.Radius.BreakReason",
             "HookeRope.Radius.PoissonRadius", "HookeRope.Radius.NeckHyperbola",
-            // Mesh data
+            // Mesh data; the burr texture every renderer of the strands needs (the lab's figures, a glTF export, a non-Unity host)
             "HookeRope.Geometry.TubeMeshSettings", "HookeRope.Fracture.BurrSettings", "HookeRope.Geometry.TubeVertex", "HookeRope.Geometry.TubeMeshUpdate",
+            "HookeRope.Fracture.BurrTextureGenerator",
             // Mathematics
             "HookeRope.Mathematics.Float3", "HookeRope.Mathematics.Quat",
         };

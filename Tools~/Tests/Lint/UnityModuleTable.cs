@@ -106,7 +106,7 @@ namespace HookeRope.Tests.Lint
             // (Rigidbody, Collider and its subclasses, Physics, ForceMode, QueryTriggerInteraction, SimulationMode,
             // RigidbodyInterpolation, RigidbodyConstraints, CharacterController).
             Add(PhysicsModule, "UnityEngine",
-                "BoxCollider", "CapsuleCollider", "CharacterController", "Collider", "ForceMode", "MeshCollider",
+                "BoxCollider", "CapsuleCollider", "CharacterController", "Collider", "CollisionFlags", "ForceMode", "MeshCollider",
                 "Physics", "QueryTriggerInteraction", "RaycastHit", "Rigidbody", "RigidbodyConstraints",
                 "RigidbodyInterpolation", "SimulationMode", "SphereCollider");
 

@@ -70,6 +70,36 @@ namespace HookeRope.StandIn.SampleChecks
         }
 
         [UnityTest]
+        public IEnumerator FallArrestSampleArrestsTheCharacterControllerWorkerAsTheRigidbodyWorker()
+        {
+            float start = Time.time;
+            new GameObject("Fall Arrest", typeof(FallArrestBootstrap));
+            yield return null;
+            var lanyard = Find<ElasticRope>("Lanyard");
+            var characterLanyard = Find<ElasticRope>("Lanyard (CharacterController)");
+            var rig = Find<CharacterController>("Worker (CharacterController)");
+            Assert.That(rig.GetComponent<Rigidbody>(), Is.Null, "the rig has no Rigidbody");
+            Assert.That(characterLanyard.EndAttachment.Kind, Is.EqualTo(RopeEndKind.KinematicRig));
+            float lowestDRing = float.PositiveInfinity;
+            while (Time.time < start + 2f)
+            {
+                lowestDRing = Math.Min(lowestDRing, rig.transform.position.y + 0.7f);
+                yield return null;
+            }
+
+            float weight = 100f * G, k = 30000f / 2f;
+            float expected = weight + (float)Math.Sqrt(weight * weight + 2f * weight * k * 4f);
+            TestContext.WriteLine("peak arrest force: Rigidbody worker " + lanyard.PeakArrestForce + " N, CharacterController worker " +
+                                  characterLanyard.PeakArrestForce + " N, energy balance " + expected + " N");
+            Assert.That(characterLanyard.PeakArrestForce, Is.EqualTo(lanyard.PeakArrestForce).Within(2).Percent);
+            Assert.That(characterLanyard.PeakArrestForce, Is.EqualTo(expected).Within(6).Percent);
+            Assert.That(characterLanyard.PeakArrestForce, Is.LessThan(expected));
+            Assert.That(lowestDRing, Is.EqualTo(9f - 2f - characterLanyard.PeakArrestForce / k).Within(0.03f));
+            // the controller moved itself: its velocity is its last Move over the fixed step
+            Assert.That(rig.velocity.y, Is.EqualTo(characterLanyard.EndRigDisplacement.y / Time.fixedDeltaTime).Within(1e-3f));
+        }
+
+        [UnityTest]
         public IEnumerator CollisionBendSampleDrapesBothRopes()
         {
             new GameObject("Collision Bend", typeof(CollisionBendBootstrap));

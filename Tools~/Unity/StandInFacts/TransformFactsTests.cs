@@ -1,5 +1,8 @@
+using System.Collections.Generic;
+using System.Text.RegularExpressions;
 using NUnit.Framework;
 using UnityEngine;
+using UnityEngine.TestTools;
 
 namespace HookeRope.StandIn.Facts
 {
@@ -19,6 +22,35 @@ namespace HookeRope.StandIn.Facts
             Assert.That(actual.x, Is.EqualTo(expected.x).Within(tolerance), "x of " + actual);
             Assert.That(actual.y, Is.EqualTo(expected.y).Within(tolerance), "y of " + actual);
             Assert.That(actual.z, Is.EqualTo(expected.z).Within(tolerance), "z of " + actual);
+        }
+
+        [Test]
+        public void NonFinitePoseIsRefusedWithUnitysErrorAndTheOldValueKept()
+        {
+            var hand = new GameObject("Hand").transform;
+            hand.position = new Vector3(1f, 2f, 3f);
+            hand.rotation = Quaternion.Euler(0f, 90f, 0f);
+            LogAssert.Expect(LogType.Error, new Regex(@"^transform\.position assign attempt for 'Hand' is not valid\. Input position is \{ NaN, 0\.000000, 0\.000000 \}\.$"));
+            hand.position = new Vector3(float.NaN, 0f, 0f);
+            LogAssert.Expect(LogType.Error, new Regex(@"^transform\.localPosition assign attempt for 'Hand' is not valid\. Input localPosition is"));
+            hand.localPosition = new Vector3(0f, float.PositiveInfinity, 0f);
+            LogAssert.Expect(LogType.Error, new Regex(@"^transform\.localRotation assign attempt for 'Hand' is not valid\. Input rotation is \{ NaN, 0\.000000, 0\.000000, 0\.000000 \}\.$"));
+            hand.localRotation = new Quaternion(float.NaN, 0f, 0f, 0f);
+            AssertVector(hand.position, new Vector3(1f, 2f, 3f));
+            AssertVector(hand.rotation * Vector3.right, new Vector3(0f, 0f, -1f));
+        }
+
+        [Test]
+        public void LogMessageReceivedSeesEveryConsoleEntryWithItsType()
+        {
+            var seen = new List<string>();
+            Application.LogCallback collect = (condition, stackTrace, type) => seen.Add(type + ": " + condition);
+            Application.logMessageReceived += collect;
+            Debug.LogWarning("w");
+            Debug.Log("l");
+            Application.logMessageReceived -= collect;
+            Debug.LogWarning("after");
+            Assert.That(seen, Is.EqualTo(new[] { "Warning: w", "Log: l" }));
         }
 
         [Test]

@@ -10,5 +10,20 @@ namespace UnityEngine
 
         /// <summary>Whether the game is running inside the Unity Editor (Read Only); the stand-in plays the Editor.</summary>
         public static bool isEditor => true;
+
+        /// <summary>Use this delegate type with logMessageReceived to monitor what gets logged.</summary>
+        public delegate void LogCallback(string condition, string stackTrace, LogType type);
+
+        static LogCallback s_LogCallbackHandler;
+
+        /// <summary>Event that is fired if a log message is received (on the main thread; the stand-in passes an empty stack trace).</summary>
+        public static event LogCallback logMessageReceived
+        {
+            add => s_LogCallbackHandler += value;
+            remove => s_LogCallbackHandler -= value;
+        }
+
+        /// <summary>Stand-in: the console forwards every entry here.</summary>
+        internal static void CallLogCallback(string condition, LogType type) => s_LogCallbackHandler?.Invoke(condition, string.Empty, type);
     }
 }

@@ -38,6 +38,21 @@ namespace UnityEngine
             return WorldShape.NotSupported(this);
         }
 
+        /// <summary>
+        /// World direction of the front faces of the primitive rectangle in <paramref name="frame"/> (Plane: local +Y,
+        /// Quad: local −Z, reversed by a negative scale on that axis, as the inverse-transpose carries normals): raycasts
+        /// skip back faces (Physics.queriesHitBackfaces is false by default). Zero for other meshes.
+        /// </summary>
+        internal Vector3 FrontNormal(in ShapeFrame frame)
+        {
+            var mesh = m_SharedMesh;
+            if (mesh is null || !mesh.IsAlive) return Vector3.zero;
+            var primitive = PrimitiveMeshes.TypeOf(mesh);
+            if (primitive == PrimitiveType.Plane) return frame.Rotation * new Vector3(0f, frame.Scale.y < 0f ? -1f : 1f, 0f);
+            if (primitive == PrimitiveType.Quad) return frame.Rotation * new Vector3(0f, 0f, frame.Scale.z < 0f ? 1f : -1f);
+            return Vector3.zero;
+        }
+
         internal override string UnsupportedGeometry() =>
             "MeshCollider " + Describe() + " with the mesh '" + (m_SharedMesh is null ? "" : m_SharedMesh.name) +
             "' (the stand-in has geometry only for the Plane and Quad primitive meshes)";

@@ -65,5 +65,30 @@ namespace UnityEngine
             if (results == null) throw new ArgumentNullException(nameof(results));
             return PhysicsWorld.OverlapSphere(position, radius, results, layerMask, queryTriggerInteraction);
         }
+
+        /// <summary>Casts a ray, from point origin, in direction direction, of length maxDistance, against all colliders in the Scene; the nearest hit goes to hitInfo.</summary>
+        public static bool Raycast(Vector3 origin, Vector3 direction, out RaycastHit hitInfo, float maxDistance = float.PositiveInfinity, int layerMask = DefaultRaycastLayers, QueryTriggerInteraction queryTriggerInteraction = QueryTriggerInteraction.UseGlobal)
+        {
+            hitInfo = default;
+            float length = direction.magnitude;
+            if (!(length > float.Epsilon)) return false;
+            bool found = false;
+            var hits = PhysicsWorld.RaycastAll(origin, direction / length, maxDistance, layerMask, queryTriggerInteraction);
+            for (int i = 0; i < hits.Length; i++)
+            {
+                if (found && !(hits[i].distance < hitInfo.distance)) continue;
+                hitInfo = hits[i];
+                found = true;
+            }
+            return found;
+        }
+
+        /// <summary>Casts a ray through the Scene and returns all hits. Note that order of the results is undefined.</summary>
+        public static RaycastHit[] RaycastAll(Vector3 origin, Vector3 direction, float maxDistance = float.PositiveInfinity, int layerMask = DefaultRaycastLayers, QueryTriggerInteraction queryTriggerInteraction = QueryTriggerInteraction.UseGlobal)
+        {
+            float length = direction.magnitude;
+            if (!(length > float.Epsilon)) return new RaycastHit[0];
+            return PhysicsWorld.RaycastAll(origin, direction / length, maxDistance, layerMask, queryTriggerInteraction);
+        }
     }
 }

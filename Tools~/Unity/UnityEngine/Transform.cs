@@ -27,28 +27,48 @@ namespace UnityEngine
         public Vector3 position
         {
             get { EnsureAlive(); return m_Parent is null ? m_LocalPosition : m_Parent.TransformPoint(m_LocalPosition); }
-            set { EnsureAlive(); m_LocalPosition = m_Parent is null ? value : m_Parent.InverseTransformPoint(value); }
+            set
+            {
+                EnsureAlive();
+                if (RejectsNonFinite("position", "position", value.x, value.y, value.z)) return;
+                m_LocalPosition = m_Parent is null ? value : m_Parent.InverseTransformPoint(value);
+            }
         }
 
         /// <summary>A Quaternion that stores the rotation of the Transform in world space.</summary>
         public Quaternion rotation
         {
             get { EnsureAlive(); return m_Parent is null ? m_LocalRotation : m_Parent.rotation * m_LocalRotation; }
-            set { EnsureAlive(); m_LocalRotation = Quaternion.Normalize(m_Parent is null ? value : Quaternion.Inverse(m_Parent.rotation) * value); }
+            set
+            {
+                EnsureAlive();
+                if (RejectsNonFinite("rotation", "rotation", value.x, value.y, value.z, value.w)) return;
+                m_LocalRotation = Quaternion.Normalize(m_Parent is null ? value : Quaternion.Inverse(m_Parent.rotation) * value);
+            }
         }
 
         /// <summary>Position of the transform relative to the parent transform.</summary>
         public Vector3 localPosition
         {
             get { EnsureAlive(); return m_LocalPosition; }
-            set { EnsureAlive(); m_LocalPosition = value; }
+            set
+            {
+                EnsureAlive();
+                if (RejectsNonFinite("localPosition", "localPosition", value.x, value.y, value.z)) return;
+                m_LocalPosition = value;
+            }
         }
 
         /// <summary>The rotation of the transform relative to the transform rotation of the parent.</summary>
         public Quaternion localRotation
         {
             get { EnsureAlive(); return m_LocalRotation; }
-            set { EnsureAlive(); m_LocalRotation = Quaternion.Normalize(value); }
+            set
+            {
+                EnsureAlive();
+                if (RejectsNonFinite("localRotation", "rotation", value.x, value.y, value.z, value.w)) return;
+                m_LocalRotation = Quaternion.Normalize(value);
+            }
         }
 
         /// <summary>The scale of the transform relative to the GameObjects parent.</summary>
@@ -218,6 +238,21 @@ namespace UnityEngine
 
         Vector3 DivideByScale(Vector3 v) =>
             new Vector3(SafeDivide(v.x, m_LocalScale.x), SafeDivide(v.y, m_LocalScale.y), SafeDivide(v.z, m_LocalScale.z));
+
+        /// <summary>
+        /// Unity's refusal of a non-finite pose: logs "transform.position assign attempt for 'X' is not valid. Input
+        /// position is { NaN, 0.000000, 0.000000 }." and keeps the old value (true). False when every value is finite.
+        /// </summary>
+        bool RejectsNonFinite(string member, string input, float x, float y, float z, float w = 0f)
+        {
+            if (float.IsFinite(x) && float.IsFinite(y) && float.IsFinite(z) && float.IsFinite(w)) return false;
+            bool quaternion = input == "rotation";
+            Debug.LogError("transform." + member + " assign attempt for '" + NameCore + "' is not valid. Input " + input + " is { " +
+                           Number(x) + ", " + Number(y) + ", " + Number(z) + (quaternion ? ", " + Number(w) : "") + " }.", this);
+            return true;
+        }
+
+        static string Number(float v) => float.IsNaN(v) ? "NaN" : v.ToString("F6", System.Globalization.CultureInfo.InvariantCulture);
 
         /// <summary>A zero scale axis maps back to 0 (the stand-in's approximation of Unity's inverse of a singular matrix).</summary>
         static float SafeDivide(float a, float b) => b == 0f ? 0f : a / b;

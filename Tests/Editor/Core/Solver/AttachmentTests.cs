@@ -33,6 +33,39 @@ namespace HookeRope.Tests.Solver
         }
 
         [Test]
+        public void ReleasedLoadLeavesOnlyTheRopesShareAndItsTensionGoes()
+        {
+            // a 10 kg load on a 1 m rope: released, the end particle keeps its position and velocity and carries only μ·L/(2·8) again
+            var settings = RopeTestKit.Legacy(length: 1f, segments: 8);
+            var rope = new Rope(settings, Float3.Zero, new Float3(0f, -1f, 0f));
+            rope.AddPin(0, Float3.Zero);
+            int load = rope.AddLoad(8, 10f);
+            for (int i = 0; i < 90; i++) rope.Step(RopeTestKit.HostStep);
+            float share = (float)(0.5 * settings.LinearDensity * 1.0 / 8);
+            var position = rope.GetPosition(8);
+            Assert.That(rope.GetParticleMass(8), Is.EqualTo(10f + share).Within(1e-5f));
+            Assert.That(rope.Tensions[0], Is.GreaterThan(10f * RopeTestKit.G * 0.9f), "holds the load (N)");
+
+            rope.ReleaseLoad(load);
+            rope.ReleaseLoad(load); // a second release does nothing
+            Assert.That(rope.IsLoadReleased(load), Is.True);
+            Assert.That(rope.GetParticleMass(8), Is.EqualTo(share).Within(1e-6f), "kg");
+            Assert.That(rope.GetPosition(8), Is.EqualTo(position), "released in place");
+            // over 2 s the pin carries on average the rope's own weight μ·L·g (momentum balance), not the 98 N it held
+            double meanPinForce = 0.0;
+            const int Steps = 180;
+            for (int i = 0; i < Steps; i++)
+            {
+                rope.Step(RopeTestKit.HostStep);
+                meanPinForce += rope.GetPinForce(0).Y / Steps;
+            }
+            Assert.That(rope.GetLoadForce(load), Is.EqualTo(Float3.Zero));
+            Assert.That(rope.GetLoadHostForce(load), Is.EqualTo(Float3.Zero));
+            TestContext.WriteLine($"released load: mean pin force {meanPinForce:G4} N, rope weight {settings.LinearDensity * RopeTestKit.G:G4} N");
+            Assert.That(-meanPinForce, Is.EqualTo(settings.LinearDensity * 1.0 * RopeTestKit.G).Within(5).Percent, "N");
+        }
+
+        [Test]
         public void PinBreaksWhenItsForcePassesTheBreakForce()
         {
             var settings = RopeTestKit.Legacy(length: 1f, segments: 8);

@@ -31,6 +31,7 @@ namespace HookeRope.Tests.Solver
             yield return Case(s => s.Iterations = 1001, RopeParameters.Iterations.Row, "Iterations too many");
             yield return new TestCaseData(new Action<RopeSettings>(s => s.Solver = (ConstraintSolverKind)7), "Solver", "named values").SetName("Solver undefined");
             yield return new TestCaseData(new Action<RopeSettings>(s => s.Tension = (TensionModel)7), "Tension", "named values").SetName("Tension undefined");
+            yield return new TestCaseData(new Action<RopeSettings>(s => s.Integrator = (TimeIntegrator)7), "Integrator", "named values").SetName("Integrator undefined");
         }
 
         /// <summary>A bad value of a table parameter: the error names the row and its range and unit.</summary>

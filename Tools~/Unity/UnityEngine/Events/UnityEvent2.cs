@@ -18,8 +18,13 @@ namespace UnityEngine.Events
         public void RemoveListener(UnityAction<T0, T1> call) => RemoveRuntime(call);
 
         /// <summary>Invoke all registered callbacks (runtime and persistent).</summary>
-        public void Invoke(T0 arg0, T1 arg1) =>
-            InvokeAll(new object[] { arg0, arg1 }, call => ((UnityAction<T0, T1>)call)(arg0, arg1));
+        public void Invoke(T0 arg0, T1 arg1)
+        {
+            if (HasPersistentCalls) InvokePersistent(new object[] { arg0, arg1 });
+            var runtime = RuntimeSnapshot();
+            for (int i = 0; i < runtime.Length; i++)
+                if (!IsDestroyedTarget(runtime[i])) ((UnityAction<T0, T1>)runtime[i])(arg0, arg1);
+        }
 
         internal override Type[] EventTypes => s_Types;
     }

@@ -25,7 +25,11 @@ namespace UnityEngine.Events
         public string GetPersistentMethodName(int index) => index >= 0 && index < Persistent.Count ? Persistent[index].MethodName ?? string.Empty : string.Empty;
 
         /// <summary>Remove all non-persistent (ie created from script) listeners from the event.</summary>
-        public void RemoveAllListeners() => m_RuntimeCalls.Clear();
+        public void RemoveAllListeners()
+        {
+            m_RuntimeCalls.Clear();
+            m_RuntimeSnapshot = null;
+        }
 
         /// <inheritdoc/>
         public override string ToString() => base.ToString() + " " + GetType().FullName;
@@ -40,25 +44,34 @@ namespace UnityEngine.Events
         {
             if (call == null) throw new ArgumentNullException(nameof(call));
             m_RuntimeCalls.Add(call);
+            m_RuntimeSnapshot = null;
         }
 
         internal void RemoveRuntime(Delegate call)
         {
             if (call == null) return;
             m_RuntimeCalls.RemoveAll(d => d.Target == call.Target && d.Method.Equals(call.Method));
+            m_RuntimeSnapshot = null;
         }
 
-        /// <summary>Runs the persistent listeners, then a snapshot of the runtime ones; runtime listeners on destroyed objects are skipped.</summary>
-        internal void InvokeAll(object[] arguments, Action<Delegate> invokeRuntime)
+        // Unity's InvokableCallList.PrepareInvoke keeps the list of calls to execute and rebuilds it only after a
+        // listener was added or removed, so an Invoke allocates nothing once warm; the stand-in keeps a snapshot alike.
+        [NonSerialized] Delegate[] m_RuntimeSnapshot;
+
+        /// <summary>Whether any persistent listener is bound (the arguments array is made only then).</summary>
+        internal bool HasPersistentCalls => Persistent.Count > 0;
+
+        /// <summary>Runs the persistent listeners over a snapshot.</summary>
+        internal void InvokePersistent(object[] arguments)
         {
             var persistent = Persistent.ToArray();
-            var runtime = m_RuntimeCalls.ToArray();
             for (int i = 0; i < persistent.Length; i++) persistent[i].Invoke(EventTypes, arguments);
-            for (int i = 0; i < runtime.Length; i++)
-            {
-                if (runtime[i].Target is Object target && target == null) continue;
-                invokeRuntime(runtime[i]);
-            }
         }
+
+        /// <summary>The runtime listeners as they were when the invocation starts (rebuilt only after AddListener/RemoveListener).</summary>
+        internal Delegate[] RuntimeSnapshot() => m_RuntimeSnapshot ??= m_RuntimeCalls.ToArray();
+
+        /// <summary>A runtime listener whose target is a destroyed Object is skipped.</summary>
+        internal static bool IsDestroyedTarget(Delegate call) => call.Target is Object target && target == null;
     }
 }

@@ -31,6 +31,7 @@ namespace HookeRope.StandIn
             s_Entries.Add(entry);
             Console.WriteLine("[Unity " + type + "] " + (message is Exception ex ? ex.ToString() : text));
             Logged?.Invoke(entry);
+            Application.CallLogCallback(text, type);
         }
 
         internal static void Clear() => s_Entries.Clear();

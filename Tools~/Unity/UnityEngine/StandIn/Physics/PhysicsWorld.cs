@@ -151,21 +151,57 @@ namespace HookeRope.StandIn
         /// <summary>Physics.OverlapSphereNonAlloc over the registered colliders (in the order they were added).</summary>
         internal static int OverlapSphere(Vector3 position, float radius, Collider[] results, int layerMask, QueryTriggerInteraction queryTriggerInteraction)
         {
-            bool hitTriggers = queryTriggerInteraction == QueryTriggerInteraction.Collide ||
-                               queryTriggerInteraction == QueryTriggerInteraction.UseGlobal && QueriesHitTriggers;
+            bool hitTriggers = HitsTriggers(queryTriggerInteraction);
             int count = 0;
             for (int i = 0; i < s_Colliders.Count && count < results.Length; i++)
             {
                 var collider = s_Colliders[i];
-                collider.SyncIfRejoined();
-                if (!collider.InScene) continue;
-                if ((layerMask & (1 << collider.gameObject.layer)) == 0) continue;
-                if (collider.isTrigger && !hitTriggers) continue;
-                var shape = collider.PhysicsShape(collider.attachedRigidbody);
-                if (shape.Kind == ShapeKind.Unsupported) throw StandInError.Unsupported(shape.Unsupported + " in Physics.OverlapSphereNonAlloc");
+                if (!Queried(collider, layerMask, hitTriggers, "Physics.OverlapSphereNonAlloc", out var shape)) continue;
                 if (ShapeOverlap.SphereTouches(position, radius, shape)) results[count++] = collider;
             }
             return count;
+        }
+
+        /// <summary>
+        /// Physics.RaycastAll over the registered colliders (in the order they were added): every collider the ray
+        /// (unit <paramref name="direction"/>) enters within <paramref name="maxDistance"/> m, not those it starts
+        /// inside; layer and trigger rules as <see cref="OverlapSphere"/>. Allocates the result array, as Unity does.
+        /// </summary>
+        internal static RaycastHit[] RaycastAll(Vector3 origin, Vector3 direction, float maxDistance, int layerMask, QueryTriggerInteraction queryTriggerInteraction)
+        {
+            bool hitTriggers = HitsTriggers(queryTriggerInteraction);
+            var hits = new List<RaycastHit>();
+            for (int i = 0; i < s_Colliders.Count; i++)
+            {
+                var collider = s_Colliders[i];
+                if (!Queried(collider, layerMask, hitTriggers, "Physics.RaycastAll", out var shape)) continue;
+                // mesh rectangles are one-sided for raycasts (Physics.queriesHitBackfaces, false by default, is not modelled)
+                if (collider is MeshCollider mesh && !(Vector3.Dot(direction, mesh.FrontNormal(collider.PhysicsFrame(collider.attachedRigidbody))) < 0f)) continue;
+                if (!ShapeRaycast.Enter(origin, direction, shape, out double distance, out Vector3 normal) || !(distance <= maxDistance)) continue;
+                hits.Add(new RaycastHit(ShapeRaycast.At(origin, direction, distance), normal, (float)distance, collider));
+            }
+            return hits.ToArray();
+        }
+
+        /// <summary>Whether a query with <paramref name="interaction"/> reports triggers (UseGlobal: Physics.queriesHitTriggers).</summary>
+        static bool HitsTriggers(QueryTriggerInteraction interaction) =>
+            interaction == QueryTriggerInteraction.Collide || interaction == QueryTriggerInteraction.UseGlobal && QueriesHitTriggers;
+
+        /// <summary>
+        /// Whether a query (named <paramref name="query"/> for the exception) looks at <paramref name="collider"/>: in the
+        /// scene, on a layer in <paramref name="layerMask"/>, not a trigger unless <paramref name="hitTriggers"/>; then its
+        /// shape as the engine has it (throws for geometry the stand-in cannot test).
+        /// </summary>
+        static bool Queried(Collider collider, int layerMask, bool hitTriggers, string query, out WorldShape shape)
+        {
+            shape = WorldShape.Nothing;
+            collider.SyncIfRejoined();
+            if (!collider.InScene) return false;
+            if ((layerMask & (1 << collider.gameObject.layer)) == 0) return false;
+            if (collider.isTrigger && !hitTriggers) return false;
+            shape = collider.PhysicsShape(collider.attachedRigidbody);
+            if (shape.Kind == ShapeKind.Unsupported) throw StandInError.Unsupported(shape.Unsupported + " in " + query);
+            return true;
         }
 
         static void WriteTransform(Rigidbody body, Vector3 position, Quaternion rotation)
