@@ -1,4 +1,5 @@
 using System;
+using System.Linq;
 using HookeRope.Geometry;
 using HookeRope.Radius;
 using NUnit.Framework;
@@ -12,12 +13,7 @@ namespace HookeRope.Tests.Core.Radius
         private const int Segments = 20;
         private const float SegmentLength = 0.05f;
 
-        private static float[] Uniform(float value)
-        {
-            var a = new float[Segments];
-            Array.Fill(a, value);
-            return a;
-        }
+        private static float[] Uniform(float value) => Enumerable.Repeat(value, Segments).ToArray();
 
         private static RadiusModel Stretched(float fraction, float stretch)
         {
