@@ -151,7 +151,7 @@ namespace HookeRope
         /// through the rope's own positions: vertices in the rope-local frame (world = <see cref="Solver.Rope.Origin"/> + v).
         /// </summary>
         public TubeMeshUpdate FillMesh(TubeVertex[] vertices, int[] indices) =>
-            mesh.Fill(Rope.PositionX, Rope.PositionY, Rope.PositionZ, vertices, indices, 1f);
+            mesh.Fill(Rope.PositionX, Rope.PositionY, Rope.PositionZ, vertices, indices, 1f, ropeFrame: true);
 
         private void OnRopeBroken(RopeBreakEvent e)
         {

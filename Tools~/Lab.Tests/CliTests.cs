@@ -39,6 +39,12 @@ namespace HookeRope.Lab.Tests
             var positions = model.LogicalMeshes[0].Primitives[0].GetVertexAccessor("POSITION").AsVector3Array();
             Assert.That(positions.Count, Is.GreaterThan(100));
             foreach (var p in positions) Assert.That(float.IsFinite(p.X) && float.IsFinite(p.Y) && float.IsFinite(p.Z), Is.True);
+            // Issue 17: the burr fibres are a second primitive with their own material.
+            var primitives = model.LogicalMeshes[0].Primitives;
+            Assert.That(primitives.Count, Is.EqualTo(2));
+            Assert.That(primitives[0].Material.Name, Is.EqualTo("rope"));
+            Assert.That(primitives[1].Material.Name, Is.EqualTo("burr fibres"));
+            Assert.That(primitives[1].IndexAccessor.Count, Is.EqualTo(2 * 126 * 9), "two broken ends of 126 fibres (R = 10 mm), three triangles each");
         }
 
         [Test]

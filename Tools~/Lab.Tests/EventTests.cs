@@ -130,8 +130,8 @@ namespace HookeRope.Lab.Tests
             Assert.That(LabCli.Invoke(new[] { "run", "necking", "--out", dir }, LabConsole.Plain(o), o, o), Is.EqualTo(0), o.ToString());
             var lines = File.ReadAllLines(Path.Combine(dir, "necking-radius.csv"));
             Assert.That(lines[0], Is.EqualTo(CsvWriter.RadiusHeader));
-            Assert.That(lines.Length, Is.EqualTo(1 + 5 * (20 * 8 + 1)), "3 requested instants and 2 key moments (neck onset, thinnest intact) × (8 points per segment + 1)");
-            Assert.That(System.Linq.Enumerable.Count(lines, l => l.Contains(",neck onset,")), Is.EqualTo(161));
+            Assert.That(lines.Length, Is.EqualTo(1 + 5 * (21 * 8 + 1)), "3 requested instants and 2 key moments (neck onset, thinnest intact) × (8 points per segment + 1), 21 segments");
+            Assert.That(System.Linq.Enumerable.Count(lines, l => l.Contains(",neck onset,")), Is.EqualTo(21 * 8 + 1));
             double thinnest = double.MaxValue;
             foreach (var line in lines)
             {

@@ -22,8 +22,18 @@ namespace HookeRope.Geometry
         {
         }
 
-        /// <summary>Layout with a ring count (1 … 1024) per segment.</summary>
+        /// <summary>Layout with a ring count (1 … 1024) per segment, rings evenly spaced in each segment.</summary>
         public RingLayout(ReadOnlySpan<int> ringsPerSegment)
+            : this(ringsPerSegment, ReadOnlySpan<float>.Empty)
+        {
+        }
+
+        /// <summary>
+        /// Layout with a ring count (1 … 1024) per segment and, when <paramref name="fractions"/> is not empty, the
+        /// fraction of every ring in its segment (Σ counts values, segment by segment; each segment's first 0, then
+        /// strictly increasing below 1). Empty fractions space the rings evenly.
+        /// </summary>
+        public RingLayout(ReadOnlySpan<int> ringsPerSegment, ReadOnlySpan<float> fractions)
         {
             int n = ringsPerSegment.Length;
             if (n < 1) throw new ArgumentException("ringsPerSegment must hold at least one segment (1 … any).", nameof(ringsPerSegment));
@@ -38,6 +48,8 @@ namespace HookeRope.Geometry
                 total += m;
             }
             firstRing[n] = total;
+            if (fractions.Length != 0 && fractions.Length != total)
+                throw new ArgumentException("fractions must be empty or hold one value per ring (" + total + ").", nameof(fractions));
             ringSegment = new int[total + 1];
             ringFraction = new float[total + 1];
             for (int j = 0; j < n; j++)
@@ -45,8 +57,13 @@ namespace HookeRope.Geometry
                 int m = ringsPerSegment[j];
                 for (int i = 0; i < m; i++)
                 {
-                    ringSegment[firstRing[j] + i] = j;
-                    ringFraction[firstRing[j] + i] = (float)i / m;
+                    int k = firstRing[j] + i;
+                    float t = fractions.Length == 0 ? (float)i / m : fractions[k];
+                    bool valid = i == 0 ? t == 0f : t > ringFraction[k - 1] && t < 1f;
+                    if (!valid)
+                        throw new ArgumentOutOfRangeException(nameof(fractions), t, "each segment's fractions must start at 0 and increase strictly in [0, 1).");
+                    ringSegment[k] = j;
+                    ringFraction[k] = t;
                 }
             }
             ringSegment[total] = n - 1;
@@ -98,6 +115,86 @@ namespace HookeRope.Geometry
                 }
             }
             return new RingLayout(counts);
+        }
+
+        /// <summary>
+        /// A layout with <paramref name="ringsPerSegment"/> rings per segment outside the neck zone
+        /// [<paramref name="zoneCenter"/> ± <paramref name="zoneLength"/>/2] (rest arc, m) and, inside it, rings whose
+        /// density follows the curvature of a deep neck profile (<see cref="HookeRope.Radius.NeckProfile"/>, waist
+        /// ratio <see cref="ReferenceWaistRatio"/>, rope radius <paramref name="restRadius"/> in m): the profile's
+        /// tangent turns by at most π/<paramref name="radialSegments"/> between rings, the angle between neighbouring
+        /// vertices around the tube, plus <see cref="BaseRingsInZone"/> evenly spread rings. The waist is then as round
+        /// along the rope as the rings are around it, from 8 to 32 radial segments.
+        /// </summary>
+        public static RingLayout Adapted(ReadOnlySpan<float> restLengths, int ringsPerSegment, float zoneCenter, float zoneLength,
+            float restRadius, int radialSegments)
+        {
+            int n = restLengths.Length;
+            int[] counts = Uniform(n, ringsPerSegment);
+            if (!(zoneLength > 0f) || !(restRadius > 0f) || radialSegments < 3) return new RingLayout(counts);
+            double[] stations = NeckStations(zoneCenter, zoneLength, restRadius, radialSegments);
+            var all = new System.Collections.Generic.List<float>();
+            double arc = 0.0;
+            double start = stations[0], end = stations[stations.Length - 1];
+            for (int j = 0; j < n; j++)
+            {
+                double length = restLengths[j], next = arc + length;
+                int before = all.Count;
+                all.Add(0f);
+                int m = counts[j];
+                int z = 0;
+                while (z < stations.Length && stations[z] <= arc) z++;
+                for (int i = 1; i < m || z < stations.Length && stations[z] < next; )
+                {
+                    double uniform = i < m ? arc + length * i / m : double.MaxValue;
+                    if (i < m && uniform > start && uniform < end) { i++; continue; }
+                    double station = z < stations.Length && stations[z] < next ? stations[z] : double.MaxValue;
+                    double s = Math.Min(uniform, station);
+                    if (s == uniform) i++; else z++;
+                    float t = (float)((s - arc) / length);
+                    if (t > all[all.Count - 1] + 1e-3f && t < 1f - 1e-3f && all.Count - before < MaxRingsPerSegment) all.Add(t);
+                }
+                counts[j] = all.Count - before;
+                arc = next;
+            }
+            return new RingLayout(counts, all.ToArray());
+        }
+
+        /// <summary>Waist ratio ρ of the neck profile the adapted layout is made for (a neck close to breaking).</summary>
+        public const float ReferenceWaistRatio = 0.2f;
+
+        /// <summary>Evenly spread rings in the neck zone of an adapted layout, on top of the curvature-driven ones.</summary>
+        public const int BaseRingsInZone = 12;
+
+        /// <summary>Rest-arc stations (m) of the rings in the neck zone: equal steps of (x / BaseRingsInZone + turn / (π/radial)).</summary>
+        private static double[] NeckStations(float zoneCenter, float zoneLength, float restRadius, int radialSegments)
+        {
+            const int samples = 512;
+            double scale = 2.0 * restRadius / zoneLength; // d(r/R)/dx → dr/ds
+            double angleStep = Math.PI / radialSegments;
+            var monitor = new double[samples + 1];
+            double previous = Math.Atan(scale * Radius.NeckProfile.Slope(-1.0, ReferenceWaistRatio));
+            for (int i = 1; i <= samples; i++)
+            {
+                double x = -1.0 + 2.0 * i / samples;
+                double angle = Math.Atan(scale * Radius.NeckProfile.Slope(x, ReferenceWaistRatio));
+                monitor[i] = monitor[i - 1] + (double)BaseRingsInZone / samples + Math.Abs(angle - previous) / angleStep;
+                previous = angle;
+            }
+            int count = 2 * (int)Math.Ceiling(0.5 * monitor[samples]); // even: one ring exactly on the waist
+            var stations = new double[count + 1];
+            int sample = 0;
+            for (int k = 0; k <= count; k++)
+            {
+                double target = monitor[samples] * k / count;
+                while (sample < samples - 1 && monitor[sample + 1] < target) sample++;
+                double span = monitor[sample + 1] - monitor[sample];
+                double f = span > 0.0 ? (target - monitor[sample]) / span : 0.0;
+                double x = -1.0 + 2.0 * (sample + f) / samples;
+                stations[k] = zoneCenter + 0.5 * zoneLength * x;
+            }
+            stations[count / 2] = zoneCenter;
+            return stations;
         }
 
         private static int[] Uniform(int segmentCount, int ringsPerSegment)

@@ -11,9 +11,6 @@ namespace HookeRope.Geometry
     /// </summary>
     internal sealed class RopeMesh
     {
-        /// <summary>Rings placed inside the Zone-mode neck zone (the ring layout is refined there).</summary>
-        internal const int RingsInNeckZone = 16;
-
         private readonly RopeSimulation simulation;
         private TubeMeshBuilder builder;
         private float[] ringRadii = Array.Empty<float>();
@@ -23,6 +20,8 @@ namespace HookeRope.Geometry
         private bool zoneLayout;
         private float defect;
         private float zone;
+        private float restRadius;
+        private float fibreDensity;
 
         internal RopeMesh(RopeSimulation simulation, TubeMeshSettings settings)
         {
@@ -54,11 +53,13 @@ namespace HookeRope.Geometry
 
         /// <summary>Fills the mesh from positions in the caller's frame; ring radii are multiplied by <paramref name="radiusScale"/>.</summary>
         internal TubeMeshUpdate Fill(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
-            TubeVertex[] vertices, int[] indices, float radiusScale)
+            TubeVertex[] vertices, int[] indices, float radiusScale, bool ropeFrame = false)
         {
             TubeMeshBuilder b = Ensure();
             ComputeRingRadii(b.Layout, radiusScale);
             Rope rope = simulation.Rope;
+            // Positions in the rope's own frame (the rope-local fill) can be checked against its colliders.
+            b.SetContactColliders(ropeFrame ? rope : null, rope.Origin);
             return b.BuildWithRingRadii(x, y, z, rope.RestLengths, ringRadii, rope.BrokenSegments, vertices, indices);
         }
 
@@ -88,7 +89,9 @@ namespace HookeRope.Geometry
                 && burr == s.Burr.Enabled
                 && zoneLayout == zoneNeck
                 && defect == defectPosition
-                && zone == zoneDiameters)
+                && zone == zoneDiameters
+                && restRadius == simulation.RestRadius
+                && fibreDensity == s.Burr.FibreDensity)
                 return builder;
             rings = s.RingsPerSegment;
             caps = s.CapEnds;
@@ -96,11 +99,13 @@ namespace HookeRope.Geometry
             zoneLayout = zoneNeck;
             defect = defectPosition;
             zone = zoneDiameters;
+            restRadius = simulation.RestRadius;
+            fibreDensity = s.Burr.FibreDensity;
             Rope rope = simulation.Rope;
             RingLayout layout = zoneNeck
-                ? RingLayout.Refined(rope.RestLengths, s.RingsPerSegment, model.DefectRestArc, model.NeckZoneRestLength, RingsInNeckZone)
+                ? RingLayout.Adapted(rope.RestLengths, s.RingsPerSegment, model.DefectRestArc, model.NeckZoneRestLength, simulation.RestRadius, s.RadialSegments)
                 : new RingLayout(rope.SegmentCount, s.RingsPerSegment);
-            builder = new TubeMeshBuilder(s, layout);
+            builder = new TubeMeshBuilder(s, layout, restRadius);
             ringRadii = new float[layout.RingCount];
             TopologyVersion++;
             return builder;

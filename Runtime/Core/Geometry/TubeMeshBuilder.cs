@@ -13,7 +13,6 @@ namespace HookeRope.Geometry
     /// </summary>
     internal sealed class TubeMeshBuilder
     {
-        private const float InnerStrandRadius = 0.45f;
         private const float MaxSlope = 10f;
 
         private readonly TubeMeshSettings settings;
@@ -21,6 +20,7 @@ namespace HookeRope.Geometry
         private readonly int radial;
         private readonly bool capEnds;
         private readonly bool burrEnabled;
+        private readonly int fibreCount;
         private readonly float[] cos;
         private readonly float[] sin;
         private readonly float[] w0, w1, w2, w3;
@@ -35,6 +35,8 @@ namespace HookeRope.Geometry
         private readonly bool[] lastBroken;
         private int[] lastIndices;
         private Float3 frameOrigin;
+        private HookeRope.Solver.Rope contactRope;
+        private Float3 contactOffset;
         private bool topologyValid;
 
         /// <summary>Builder for <paramref name="segmentCount"/> segments (≥ 1) with settings.RingsPerSegment rings in each.</summary>
@@ -43,14 +45,18 @@ namespace HookeRope.Geometry
         {
         }
 
-        /// <summary>Builder with an explicit ring layout (e.g. refined around the neck zone).</summary>
-        internal TubeMeshBuilder(TubeMeshSettings settings, RingLayout layout)
+        /// <summary>
+        /// Builder with an explicit ring layout (e.g. adapted to the neck zone) for a rope of rest radius
+        /// <paramref name="restRadius"/> (m; 0 = unknown), which sets the number of burr fibres at a broken end.
+        /// </summary>
+        internal TubeMeshBuilder(TubeMeshSettings settings, RingLayout layout, float restRadius = 0f)
         {
             this.settings = settings ?? throw new ArgumentNullException(nameof(settings));
             this.layout = layout ?? throw new ArgumentNullException(nameof(layout));
             radial = settings.RadialSegments;
             capEnds = settings.CapEnds;
             burrEnabled = settings.Burr.Enabled;
+            fibreCount = settings.Burr.FibreCount(restRadius, radial);
             cos = new float[radial + 1];
             sin = new float[radial + 1];
             for (int i = 0; i <= radial; i++)
@@ -90,6 +96,21 @@ namespace HookeRope.Geometry
 
         /// <summary>Vertices around the tube (fixed at construction).</summary>
         public int RadialSegments => radial;
+
+        /// <summary>Burr fibres at each broken end (fixed at construction; see <see cref="BurrSettings.FibreCount"/>).</summary>
+        public int FibreCount => fibreCount;
+
+        /// <summary>
+        /// Colliders to keep the drawn tube out of (null = none): before a build in which the positions are
+        /// <paramref name="rope"/>'s own frame shifted by <paramref name="worldOffset"/> (m; world = position + offset), each
+        /// ring centre closer to a collider than its ring radius is pushed out along the collider's normal, so the
+        /// drawn surface does not sink into a collider the rope wraps between its contact particles.
+        /// </summary>
+        internal void SetContactColliders(HookeRope.Solver.Rope rope, Float3 worldOffset)
+        {
+            contactRope = rope;
+            contactOffset = worldOffset;
+        }
 
         /// <summary>Vertices the mesh needs for these broken-segment flags (empty = intact rope).</summary>
         public int GetVertexCount(ReadOnlySpan<bool> brokenSegments)
@@ -246,7 +267,7 @@ namespace HookeRope.Geometry
         private void CountEnd(bool brokenEnd, ref int vertexCount, ref int tubeIndexCount, ref int burrIndexCount)
         {
             if (brokenEnd || capEnds) { vertexCount += radial + 1; tubeIndexCount += radial * 3; }
-            if (brokenEnd && burrEnabled) { vertexCount += radial * 9; burrIndexCount += radial * 9; }
+            if (brokenEnd && burrEnabled) { vertexCount += fibreCount * 9; burrIndexCount += fibreCount * 9; }
         }
 
         private void BuildPiece(int a, int b, ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
@@ -257,6 +278,7 @@ namespace HookeRope.Geometry
             int first = layout.FirstRing(a);
             int last = layout.FirstRing(b);
             ComputeCenters(a, b, first, last, x, y, z, origin);
+            if (contactRope != null && contactRope.ColliderCount > 0) PushCentersOutOfColliders(first, last);
             ComputeFrames(first, last);
             ComputeSlopes(first, last);
 
@@ -328,6 +350,30 @@ namespace HookeRope.Geometry
                     }
                 }
                 centers[k] = c;
+            }
+        }
+
+        private void PushCentersOutOfColliders(int first, int last)
+        {
+            Float3 toWorld = frameOrigin + contactOffset;
+            int colliders = contactRope.ColliderCount;
+            for (int k = first; k <= last; k++)
+            {
+                float r = ringRadii[k];
+                for (int q = 0; q < colliders; q++)
+                {
+                    Float3 world = centers[k] + toWorld;
+                    float d = contactRope.ColliderDistance(q, world);
+                    if (!(d < r) || !float.IsFinite(d)) continue;
+                    float h = 0.01f * r + 1e-6f;
+                    var gradient = new Float3(
+                        contactRope.ColliderDistance(q, world + new Float3(h, 0f, 0f)) - contactRope.ColliderDistance(q, world - new Float3(h, 0f, 0f)),
+                        contactRope.ColliderDistance(q, world + new Float3(0f, h, 0f)) - contactRope.ColliderDistance(q, world - new Float3(0f, h, 0f)),
+                        contactRope.ColliderDistance(q, world + new Float3(0f, 0f, h)) - contactRope.ColliderDistance(q, world - new Float3(0f, 0f, h)));
+                    Float3 normal = gradient.NormalizedOr(Float3.Zero);
+                    if (normal.LengthSquared == 0f) continue;
+                    centers[k] = centers[k] + normal * (r - d);
+                }
             }
         }
 
@@ -439,25 +485,24 @@ namespace HookeRope.Geometry
             Float3 bin = Float3.Cross(t, nrm);
             Float3 outward = atEnd ? t : -t;
             float r = ringRadii[k];
-            float halfStep = MathF.PI / radial;
-            for (int i = 0; i < radial; i++)
+            // Triangular bases of circumradius ≈ sqrt(π/N)·r: together 1.3× the cut's area, so the fibres hide the cap.
+            float baseRadius = r * MathF.Sqrt(MathF.PI / fibreCount);
+            float reach = MathF.Max(0f, r - 0.5f * baseRadius);
+            for (int f = 0; f < fibreCount; f++)
             {
-                BurrStrand strand = BurrStrand.Draw(burr.Seed, endKey, i, burr.Spread);
-                Float3 e0 = nrm * cos[i] + bin * sin[i];
-                Float3 e1 = nrm * cos[i + 1] + bin * sin[i + 1];
-                float mid = 2f * halfStep * i + halfStep;
-                float cm = MathF.Cos(mid), sm = MathF.Sin(mid);
-                Float3 radialMid = nrm * cm + bin * sm;
-                Float3 aroundMid = bin * cm - nrm * sm;
-                Float3 b0 = c + e0 * r;
-                Float3 b1 = c + e1 * r;
-                Float3 b2 = c + radialMid * (InnerStrandRadius * r);
+                BurrStrand fibre = BurrStrand.Draw(burr, endKey, f, fibreCount);
+                float ca = MathF.Cos(fibre.Angle), sa = MathF.Sin(fibre.Angle);
+                Float3 radialDirection = nrm * ca + bin * sa;
+                Float3 around = bin * ca - nrm * sa;
+                Float3 centre = c + radialDirection * (fibre.Radial * reach);
+                Float3 b0 = centre + Corner(nrm, bin, fibre.BaseTurn) * baseRadius;
+                Float3 b1 = centre + Corner(nrm, bin, fibre.BaseTurn + 2.0943951f) * baseRadius;
+                Float3 b2 = centre + Corner(nrm, bin, fibre.BaseTurn + 4.1887902f) * baseRadius;
                 if (!atEnd) { Float3 swap = b0; b0 = b1; b1 = swap; }
-                Float3 side = radialMid * MathF.Cos(strand.Twist) + aroundMid * MathF.Sin(strand.Twist);
-                Float3 direction = outward * MathF.Cos(strand.Tilt) + side * MathF.Sin(strand.Tilt);
-                Float3 centroid = (b0 + b1 + b2) * (1f / 3f);
-                Float3 tip = centroid + direction * (strand.LengthFraction * burr.Length * r);
-                int v = vertexBase + i * 9;
+                Float3 side = radialDirection * MathF.Cos(fibre.Twist) + around * MathF.Sin(fibre.Twist);
+                Float3 direction = outward * MathF.Cos(fibre.Tilt) + side * MathF.Sin(fibre.Tilt);
+                Float3 tip = centre + direction * (fibre.Length * 2f * r);
+                int v = vertexBase + f * 9;
                 WriteStrandFace(vertices, v, b0, b1, tip, outward, ref bounds);
                 WriteStrandFace(vertices, v + 3, b1, b2, tip, outward, ref bounds);
                 WriteStrandFace(vertices, v + 6, b2, b0, tip, outward, ref bounds);
@@ -470,8 +515,10 @@ namespace HookeRope.Geometry
                     burrCursor += 9;
                 }
             }
-            vertexBase += radial * 9;
+            vertexBase += fibreCount * 9;
         }
+
+        private static Float3 Corner(Float3 nrm, Float3 bin, float angle) => nrm * MathF.Cos(angle) + bin * MathF.Sin(angle);
 
         private void WriteStrandFace(TubeVertex[] vertices, int v, Float3 p0, Float3 p1, Float3 tip, Float3 fallback, ref Bounds bounds)
         {
@@ -481,6 +528,7 @@ namespace HookeRope.Geometry
             SetVertex(vertices, v, p0, normal, tangent, 0f, 1f);
             SetVertex(vertices, v + 1, p1, normal, tangent, 1f, 1f);
             SetVertex(vertices, v + 2, tip, normal, tangent, 0.5f, 0f);
+            bounds.Add(p0);
             bounds.Add(tip);
         }
 

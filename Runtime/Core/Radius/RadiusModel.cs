@@ -20,8 +20,7 @@ namespace HookeRope.Radius
         private float defectT;
         private float defectArc;
         private float neckDepth;
-        private float zoneWaistRatio;
-        private float zoneAxisFactor;
+        private float zoneWaistSquared = 1f;
         private float paperWaist;
         private float paperAxisSquared;
         private float paperCenter;
@@ -183,13 +182,8 @@ namespace HookeRope.Radius
             if (neckDepth <= 0f) return baseRadius;
             if (Settings.NeckMode == NeckMode.Zone)
             {
-                float zone = NeckZoneRestLength;
                 float s = restArc[segment] + (restArc[segment + 1] - restArc[segment]) * t;
-                float u = (s - defectArc) / zone;
-                if (u <= -0.5f || u >= 0.5f) return baseRadius;
-                float profile = zoneWaistRatio * MathF.Sqrt(1f + u * u * zoneAxisFactor);
-                if (profile > 1f) profile = 1f;
-                return baseRadius * (1f - neckDepth * (1f - profile));
+                return baseRadius * NeckProfile.Ratio((s - defectArc) / NeckZoneRestLength, zoneWaistSquared);
             }
             if (Settings.NeckMode == NeckMode.Paper && paperNecking)
             {
@@ -248,6 +242,13 @@ namespace HookeRope.Radius
             int j = 0;
             while (j < n - 1 && restArc[j + 1] <= target) j++;
             defectSegment = j;
+            if (Settings.NeckMode == NeckMode.Zone)
+            {
+                // The waist sits in the middle of the segment that breaks: both halves keep the same half-neck.
+                defectT = 0.5f;
+                defectArc = 0.5f * (restArc[j] + restArc[j + 1]);
+                return;
+            }
             float length = restArc[j + 1] - restArc[j];
             float t = (target - restArc[j]) / length;
             defectT = t < 0f ? 0f : (t > 1f ? 1f : t);
@@ -267,10 +268,9 @@ namespace HookeRope.Radius
                 double depth = (strain - onset) / s.NeckGrowthStrain;
                 neckDepth = depth > 0.0 ? (depth < 1.0 ? (float)depth : 1f) : 0f;
                 float zoneLength = NeckZoneRestLength * segmentStretch[defectSegment];
-                float waist = NeckHyperbola.WaistRadius(zoneLength, rMin);
-                float axisSquared = NeckHyperbola.AxisSquared(zoneLength, rMin);
-                zoneWaistRatio = waist / rMin;
-                zoneAxisFactor = axisSquared > 0f ? zoneLength * zoneLength / axisSquared : 0f;
+                float zoneWaistRatio = NeckHyperbola.WaistRadius(zoneLength, rMin) / rMin;
+                float waist = 1f - neckDepth * (1f - zoneWaistRatio);
+                zoneWaistSquared = waist * waist;
                 paperNecking = false;
                 return;
             }

@@ -200,7 +200,7 @@ namespace HookeRope.Tests.Components
 
         /// <summary>
         /// Issue 13 item 6: the burr ends are real geometry, so any opaque material draws them. Submesh 1 holds, per
-        /// broken end, one strand per radial segment, each a closed three-sided spike of three triangles, every one
+        /// broken end, one fibre per 1/40 cm² of the cross-section (issue 17), each a closed three-sided spike of three triangles, every one
         /// with area and Unity's front-face winding (geometric normal Cross(b − a, c − a)) along its vertex normal
         /// and away from the strand's centre.
         /// </summary>
@@ -212,9 +212,11 @@ namespace HookeRope.Tests.Components
             var normals = mesh.normals;
             var strands = mesh.GetTriangles(1);
             int radial = renderer.RadialSegments;
-            Assert.That(strands.Length, Is.EqualTo(2 * radial * 9), "two broken ends × one strand per radial segment × 3 triangles");
-
             float r = rope.Radius;
+            // Issue 17: fibres across the whole cut, 40 per cm² of π R², at least one per radial segment, at most 256.
+            int fibres = (int)System.Math.Min(256.0, System.Math.Max(radial, System.Math.Round(40.0 * System.Math.PI * r * r * 1e4)));
+            Assert.That(strands.Length, Is.EqualTo(2 * fibres * 9), "two broken ends × fibres × 3 triangles");
+
             float smallestArea = float.PositiveInfinity, leastAlignment = float.PositiveInfinity, leastOutward = float.PositiveInfinity;
             for (int s = 0; s < strands.Length; s += 9)
             {
@@ -234,7 +236,7 @@ namespace HookeRope.Tests.Components
                 }
             }
             TestContext.WriteLine("strand triangles: " + strands.Length / 3 + ", smallest area/r² " + smallestArea + ", least normal·winding " + leastAlignment + ", least outward " + leastOutward);
-            Assert.That(smallestArea, Is.GreaterThan(0.1f), "every strand triangle has an area above 10 % of r²");
+            Assert.That(smallestArea, Is.GreaterThan(0.01f), "every fibre triangle has an area above 1 % of r²");
             Assert.That(leastAlignment, Is.GreaterThan(0.999f), "vertex normals equal the winding normal: lit on the side drawn");
             Assert.That(leastOutward, Is.GreaterThan(0.5f), "front faces point away from the strand: back-face culling keeps the outside");
         }

@@ -41,29 +41,49 @@ namespace HookeRope.Lab.Output
                 uvs[2 * i + 1] = v[o + 11];
             }
             var model = ModelRoot.CreateModel();
-            var material = model.CreateMaterial("rope");
+            var gltfMesh = model.CreateMesh(name);
+            var position = Vertices(model, positions, count, DimensionType.VEC3);
+            var normal = Vertices(model, normals, count, DimensionType.VEC3);
+            var tangent = Vertices(model, tangents, count, DimensionType.VEC4);
+            var uv = Vertices(model, uvs, count, DimensionType.VEC2);
+            int tube = mesh.TubeIndexCount > 0 && mesh.TubeIndexCount <= mesh.Indices.Length ? mesh.TubeIndexCount : mesh.Indices.Length;
+            // Submesh 0: tube and caps; submesh 1: the burr fibres, with their own material (issue 17).
+            AddPrimitive(model, gltfMesh, mesh.Indices, 0, tube, NewMaterial(model, "rope", new Vector4(0.85f, 0.55f, 0.1f, 1f)), position, normal, tangent, uv);
+            if (tube < mesh.Indices.Length)
+                AddPrimitive(model, gltfMesh, mesh.Indices, tube, mesh.Indices.Length - tube,
+                    NewMaterial(model, "burr fibres", new Vector4(0.84f, 0.78f, 0.63f, 1f)), position, normal, tangent, uv);
+            model.UseScene("rope").CreateNode(name).Mesh = gltfMesh;
+            model.SaveGLB(path);
+        }
+
+        static Material NewMaterial(ModelRoot model, string name, Vector4 colour)
+        {
+            var material = model.CreateMaterial(name);
             material.InitializePBRMetallicRoughness();
             var baseColor = material.FindChannel("BaseColor");
             if (baseColor.HasValue)
             {
                 var channel = baseColor.Value;
-                channel.Color = new Vector4(0.85f, 0.55f, 0.1f, 1f);
+                channel.Color = colour;
             }
-            var gltfMesh = model.CreateMesh(name);
+            return material;
+        }
+
+        static void AddPrimitive(ModelRoot model, Mesh gltfMesh, int[] allIndices, int start, int length, Material material,
+            Accessor position, Accessor normal, Accessor tangent, Accessor uv)
+        {
             var primitive = gltfMesh.CreatePrimitive();
-            primitive.SetVertexAccessor("POSITION", Vertices(model, positions, count, DimensionType.VEC3));
-            primitive.SetVertexAccessor("NORMAL", Vertices(model, normals, count, DimensionType.VEC3));
-            primitive.SetVertexAccessor("TANGENT", Vertices(model, tangents, count, DimensionType.VEC4));
-            primitive.SetVertexAccessor("TEXCOORD_0", Vertices(model, uvs, count, DimensionType.VEC2));
-            var indexBytes = new byte[mesh.Indices.Length * 4];
-            System.Buffer.BlockCopy(mesh.Indices, 0, indexBytes, 0, indexBytes.Length);
+            primitive.SetVertexAccessor("POSITION", position);
+            primitive.SetVertexAccessor("NORMAL", normal);
+            primitive.SetVertexAccessor("TANGENT", tangent);
+            primitive.SetVertexAccessor("TEXCOORD_0", uv);
+            var indexBytes = new byte[length * 4];
+            System.Buffer.BlockCopy(allIndices, start * 4, indexBytes, 0, indexBytes.Length);
             var indices = model.CreateAccessor();
-            indices.SetIndexData(model.UseBufferView(indexBytes, 0, null, 0, BufferMode.ELEMENT_ARRAY_BUFFER), 0, mesh.Indices.Length, IndexEncodingType.UNSIGNED_INT);
+            indices.SetIndexData(model.UseBufferView(indexBytes, 0, null, 0, BufferMode.ELEMENT_ARRAY_BUFFER), 0, length, IndexEncodingType.UNSIGNED_INT);
             primitive.SetIndexAccessor(indices);
             primitive.DrawPrimitiveType = PrimitiveType.TRIANGLES;
             primitive.Material = material;
-            model.UseScene("rope").CreateNode(name).Mesh = gltfMesh;
-            model.SaveGLB(path);
         }
 
         static Accessor Vertices(ModelRoot model, float[] data, int count, DimensionType dimensions)

@@ -14,7 +14,7 @@ namespace HookeRope.Lab.Simulation
             var indices = new int[sim.GetIndexCount()];
             var update = sim.FillMesh(vertices, indices);
             var origin = setup.Rope.Origin;  // the vertices are in the rope-local frame
-            var snapshot = new MeshSnapshot { Time = t, Vertices = new float[update.VertexCount * 12], Indices = new int[update.IndexCount] };
+            var snapshot = new MeshSnapshot { Time = t, Vertices = new float[update.VertexCount * 12], Indices = new int[update.IndexCount], TubeIndexCount = update.TubeIndexCount };
             for (int i = 0; i < update.VertexCount; i++)
             {
                 var v = vertices[i];

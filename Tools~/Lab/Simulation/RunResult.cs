@@ -50,8 +50,10 @@ namespace HookeRope.Lab.Simulation
         public double Time;
         /// <summary>Interleaved vertices: position(3), normal(3), tangent(4), uv(2).</summary>
         public float[] Vertices;
-        /// <summary>Triangle indices.</summary>
+        /// <summary>Triangle indices: the tube and caps first, then the burr fibres.</summary>
         public int[] Indices;
+        /// <summary>Indices of the tube and caps, [0, TubeIndexCount); the rest are burr fibres (their own material).</summary>
+        public int TubeIndexCount;
     }
 
     /// <summary>Everything a run produced: samples, profiles, meshes and headline numbers.</summary>

@@ -56,36 +56,119 @@ namespace HookeRope.Tests.Core.Fracture
             Assert.That(strandStart, Is.GreaterThan(0));
         }
 
+        /// <summary>Builds a straight rope of rest radius R along +z broken at segment 6, with the radius-dependent fibre count.</summary>
+        private static TubeMeshUpdate BuildFrayed(uint seed, int radial, out TubeVertex[] vertices, out int[] indices, out int fibres)
+        {
+            var settings = new TubeMeshSettings { RadialSegments = radial, RingsPerSegment = 2 };
+            settings.Burr.Seed = seed;
+            var builder = new TubeMeshBuilder(settings, new RingLayout(10, 2), R);
+            fibres = builder.FibreCount;
+            var broken = new bool[10];
+            broken[6] = true;
+            return TubeMeshTopologyTests.Build(builder, RopeShape.Straight(10, 0.1f, 1f, 0f, 0f, 1f), R, broken, out vertices, out indices);
+        }
+
+        [TestCase(0.01f, 8, 126)]
+        [TestCase(0.006f, 8, 45)]
+        [TestCase(0.003f, 16, 16)]
+        [TestCase(0.003f, 8, 11)]
+        [TestCase(0.1f, 8, 256)]
+        [TestCase(0f, 12, 12)]
+        public void FibreCountFollowsTheCrossSection(float restRadius, int radial, int expected)
+        {
+            // 40 fibres per cm² of π R², at least one per radial segment, at most 256.
+            Assert.That(new BurrSettings().FibreCount(restRadius, radial), Is.EqualTo(expected));
+        }
+
         [TestCase(8)]
         [TestCase(16)]
         [TestCase(32)]
-        public void OneStrandPerRadialSegmentWithSeededLengthsPointingAwayFromTheRope(int radial)
+        public void FibresCoverTheCutEndOnAndBothEndsShareTheLengthStatistics(int radial)
         {
-            var update = BuildBroken(7u, radial, out var vertices, out var indices);
-            Assert.That(update.BurrIndexCount, Is.EqualTo(2 * radial * 9)); // two broken ends, three faces per strand
+            var update = BuildFrayed(7u, radial, out var vertices, out var indices, out int fibres);
+            Assert.That(fibres, Is.EqualTo(126));
+            Assert.That(update.BurrIndexCount, Is.EqualTo(2 * fibres * 9));
             var burr = new BurrSettings();
             // Broken segment 6 along +z: the lower piece ends at z = 0.6, the upper starts at z = 0.7.
-            double shortest = double.MaxValue, longest = 0.0;
+            var lengths = new[] { new System.Collections.Generic.List<double>(), new System.Collections.Generic.List<double>() };
+            double farthestBase = 0.0;
             for (int t = update.TubeIndexCount; t < update.IndexCount; t += 9)
             {
-                TubeVertex b0 = vertices[indices[t]], b1 = vertices[indices[t + 1]], tip = vertices[indices[t + 2]];
-                TubeVertex b2 = vertices[indices[t + 3 + 1]];
+                TubeVertex b0 = vertices[indices[t]], b1 = vertices[indices[t + 1]], tip = vertices[indices[t + 2]], b2 = vertices[indices[t + 4]];
                 bool lower = b0.PZ < 0.65f;
-                double cz = (b0.PZ + b1.PZ + b2.PZ) / 3.0, cx = (b0.PX + b1.PX + b2.PX) / 3.0, cy = (b0.PY + b1.PY + b2.PY) / 3.0;
+                double cx = (b0.PX + b1.PX + b2.PX) / 3.0, cy = (b0.PY + b1.PY + b2.PY) / 3.0, cz = (b0.PZ + b1.PZ + b2.PZ) / 3.0;
                 double dz = tip.PZ - cz;
-                double length = Math.Sqrt((tip.PX - cx) * (tip.PX - cx) + (tip.PY - cy) * (tip.PY - cy) + dz * dz);
-                Assert.That(lower ? dz : -dz, Is.GreaterThan(0.0), "the strand leaves the broken end outward");
-                // Base width: one radial segment of the end ring, 2 r sin(π/S): finer meshes give finer burrs.
-                double width = Math.Sqrt((b1.PX - b0.PX) * (b1.PX - b0.PX) + (b1.PY - b0.PY) * (b1.PY - b0.PY) + (b1.PZ - b0.PZ) * (b1.PZ - b0.PZ));
-                Assert.That(width, Is.EqualTo(2.0 * R * Math.Sin(Math.PI / radial)).Within(1e-6));
-                shortest = Math.Min(shortest, length);
-                longest = Math.Max(longest, length);
+                Assert.That(lower ? dz : -dz, Is.GreaterThan(0.0), "the fibre leaves the broken end outward");
+                farthestBase = Math.Max(farthestBase, Math.Sqrt(cx * cx + cy * cy));
+                lengths[lower ? 0 : 1].Add(Math.Sqrt((tip.PX - cx) * (tip.PX - cx) + (tip.PY - cy) * (tip.PY - cy) + dz * dz) / (2.0 * R));
             }
-            Assert.That(shortest, Is.GreaterThanOrEqualTo(0.35 * burr.Length * R - 1e-6));
-            Assert.That(longest, Is.LessThanOrEqualTo(burr.Length * R + 1e-6));
-            Assert.That(longest - shortest, Is.GreaterThan(0.2 * burr.Length * R)); // random lengths
+            Assert.That(farthestBase, Is.LessThan(R), "fibre roots lie on the cut");
+            double[] mean = new double[2], deviation = new double[2];
+            for (int side = 0; side < 2; side++)
+            {
+                foreach (double l in lengths[side]) mean[side] += l / lengths[side].Count;
+                foreach (double l in lengths[side]) deviation[side] += (l - mean[side]) * (l - mean[side]) / lengths[side].Count;
+                deviation[side] = Math.Sqrt(deviation[side]);
+            }
+            double lowerCover = EndOnCoverage(vertices, indices, update, true), upperCover = EndOnCoverage(vertices, indices, update, false);
+            TestContext.WriteLine(radial + " radial, " + fibres + " fibres: mean length " + mean[0] + " / " + mean[1] + " D, spread " + deviation[0] + " / " + deviation[1]
+                + " D; end-on coverage " + lowerCover + " / " + upperCover);
+            for (int side = 0; side < 2; side++)
+            {
+                Assert.That(mean[side], Is.EqualTo(burr.FibreLength).Within(0.03 * burr.FibreLength));
+                Assert.That(deviation[side], Is.EqualTo(burr.FibreLengthSpread).Within(0.1 * burr.FibreLengthSpread));
+            }
+            Assert.That(Math.Abs(mean[0] - mean[1]), Is.LessThan(0.05 * mean[0]));
+            Assert.That(Math.Abs(deviation[0] - deviation[1]), Is.LessThan(0.05 * deviation[0]));
+            Assert.That(lowerCover, Is.GreaterThanOrEqualTo(0.8));
+            Assert.That(upperCover, Is.GreaterThanOrEqualTo(0.8));
             MeshChecks.Faces(vertices, indices, update.TubeIndexCount, update.BurrIndexCount, out double area, out _);
-            Assert.That(area, Is.GreaterThan(1e-3 * R * R / radial));
+            Assert.That(area, Is.GreaterThan(1e-4 * R * R));
+        }
+
+        /// <summary>Fraction of the cut's disc (radius R around the z axis) hidden by the fibres of one end seen along z.</summary>
+        private static double EndOnCoverage(TubeVertex[] vertices, int[] indices, TubeMeshUpdate update, bool lower)
+        {
+            const int grid = 120;
+            int inside = 0, covered = 0;
+            for (int gy = 0; gy < grid; gy++)
+            for (int gx = 0; gx < grid; gx++)
+            {
+                double px = R * (2.0 * (gx + 0.5) / grid - 1.0), py = R * (2.0 * (gy + 0.5) / grid - 1.0);
+                if (px * px + py * py > R * R) continue;
+                inside++;
+                for (int t = update.TubeIndexCount; t < update.IndexCount; t += 3)
+                {
+                    TubeVertex a = vertices[indices[t]], b = vertices[indices[t + 1]], c = vertices[indices[t + 2]];
+                    if ((a.PZ < 0.65f) != lower) continue;
+                    if (InTriangle(px, py, a, b, c)) { covered++; break; }
+                }
+            }
+            return (double)covered / inside;
+        }
+
+        private static bool InTriangle(double px, double py, TubeVertex a, TubeVertex b, TubeVertex c)
+        {
+            double d1 = (px - b.PX) * (a.PY - b.PY) - (a.PX - b.PX) * (py - b.PY);
+            double d2 = (px - c.PX) * (b.PY - c.PY) - (b.PX - c.PX) * (py - c.PY);
+            double d3 = (px - a.PX) * (c.PY - a.PY) - (c.PX - a.PX) * (py - a.PY);
+            bool negative = d1 < 0 || d2 < 0 || d3 < 0, positive = d1 > 0 || d2 > 0 || d3 > 0;
+            return !(negative && positive);
+        }
+
+        [Test]
+        public void FibresSplayMoreAtTheRimAndTaperToATip()
+        {
+            var burr = new BurrSettings();
+            double innerTilt = 0.0, outerTilt = 0.0;
+            int inner = 0, outer = 0;
+            for (int f = 0; f < 126; f++)
+            {
+                BurrStrand fibre = BurrStrand.Draw(burr, 3, f, 126);
+                Assert.That(fibre.Tilt, Is.LessThanOrEqualTo(burr.Spread * fibre.Radial + 1e-6f));
+                if (fibre.Radial < 0.5f) { innerTilt += fibre.Tilt; inner++; } else { outerTilt += fibre.Tilt; outer++; }
+            }
+            Assert.That(outerTilt / outer, Is.GreaterThan(2.0 * innerTilt / inner));
         }
 
         [Test]
@@ -107,9 +190,11 @@ namespace HookeRope.Tests.Core.Fracture
         [Test]
         public void StrandDrawIsAPureFunctionOfSeedEndAndIndex()
         {
-            BurrStrand a = BurrStrand.Draw(9u, 13, 4, 0.6f);
-            BurrStrand b = BurrStrand.Draw(9u, 13, 4, 0.6f);
-            Assert.That(b.LengthFraction, Is.EqualTo(a.LengthFraction));
+            var settings = new BurrSettings { Seed = 9u };
+            BurrStrand a = BurrStrand.Draw(settings, 13, 4, 40);
+            BurrStrand b = BurrStrand.Draw(settings, 13, 4, 40);
+            Assert.That(b.Length, Is.EqualTo(a.Length));
+            Assert.That(b.Radial, Is.EqualTo(a.Radial));
             Assert.That(b.Tilt, Is.EqualTo(a.Tilt));
             Assert.That(b.Twist, Is.EqualTo(a.Twist));
             double mean = 0.0;

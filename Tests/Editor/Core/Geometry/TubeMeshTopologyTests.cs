@@ -117,7 +117,11 @@ namespace HookeRope.Tests.Core.Geometry
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => settings.RadialSegments = 65).ParamName, Is.EqualTo("RadialSegments"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => settings.RingsPerSegment = 0).Message, Does.Contain("[1, 64]"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => settings.VPerMetre = float.NaN).ParamName, Is.EqualTo("VPerMetre"));
-            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => settings.Burr.Length = 0f).ParamName, Is.EqualTo("Length"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => settings.Burr.FibreLength = 0f).Message, Does.Contain("FibreLength").And.Contain("(0, 5]"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => settings.Burr.FibreLength = 5.5f).ParamName, Is.EqualTo("FibreLength"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => settings.Burr.FibreLengthSpread = -0.1f).Message, Does.Contain("FibreLengthSpread").And.Contain("[0, 2]"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => settings.Burr.FibreDensity = 0.5f).Message, Does.Contain("FibreDensity").And.Contain("[1, 400]"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => settings.Burr.FibreDensity = float.NaN).ParamName, Is.EqualTo("FibreDensity"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => settings.Burr.Spread = float.PositiveInfinity).ParamName, Is.EqualTo("Spread"));
 
             var builder = new TubeMeshBuilder(settings, 4);

@@ -105,11 +105,14 @@ namespace HookeRope.Tests.Core.Radius
             var model = new RadiusModel(settings, R, Uniform(SegmentLength));
             model.Update(Uniform(SegmentLength * 1.9f), ReadOnlySpan<bool>.Empty);
             Assert.That(model.DefectSegment, Is.EqualTo(5));
-            Assert.That(model.DefectFraction, Is.EqualTo(0f).Within(1e-5));
+            // The waist is centred in the segment holding the defect (0.25 → segment 5, waist at its middle).
+            Assert.That(model.DefectFraction, Is.EqualTo(0.5f).Within(1e-5));
+            Assert.That(model.DefectRestArc, Is.EqualTo(0.55f).Within(1e-6));
             float poisson = (float)(R / Math.Sqrt(1.9));
-            Assert.That(model.RadiusAt(5, 0f), Is.EqualTo(model.NeckRadius).Within(1e-9));
+            Assert.That(model.RadiusAt(5, 0.5f), Is.EqualTo(model.NeckRadius).Within(1e-9));
             Assert.That(model.NeckRadius, Is.LessThan(0.3f * poisson));
-            Assert.That(model.RadiusAt(5, 0.5f), Is.EqualTo(poisson).Within(1e-6 * R)); // 5 cm away, zone half-length 2.4 cm
+            Assert.That(model.RadiusAt(5, 0f), Is.EqualTo(poisson).Within(1e-6 * R)); // 5 cm away, zone half-length 2.4 cm
+            Assert.That(model.RadiusAt(6, 0f), Is.EqualTo(poisson).Within(1e-6 * R));
             Assert.That(model.RadiusAt(15, 0.5f), Is.EqualTo(poisson).Within(1e-6 * R));
         }
 

@@ -52,7 +52,7 @@ namespace HookeRope.Lab.Figures.Paper
                 Tag(figure, 8, y - sim.RestRadius * ppm - 30,
                     F("r_min = {0:0.##} R: waist {1:0.00} mm at t = {2:0.00} s, l/L = {3:0.00}", Fractions[k], sim.MinRadius * 1000, run.Time, PoissonSweepFigure.Stretch(run)));
             }
-            Caption(figure, "Fig. 6  Neck (necking scenario, R = 10 mm, ν = 0.5, Zone neck at the defect, 40 % of the length): onset radius\n" +
+            Caption(figure, "Fig. 6  Neck (necking scenario, R = 10 mm, ν = 0.5, Zone neck at the defect, in the middle): onset radius\n" +
                             F("r_min = 0.8, 0.75, 0.7 R from top to bottom, each {0:0.0} s after its own onset, centred on its defect.", AfterOnset));
             return figure;
         }
