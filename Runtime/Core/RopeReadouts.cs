@@ -31,7 +31,10 @@ namespace HookeRope
         /// <summary>Tension of the last segment in newtons (0 once it is broken).</summary>
         public float BottomTension { get; private set; }
 
-        /// <summary>Largest tension of any intact segment since the construction or <see cref="ResetPeaks"/>, in newtons.</summary>
+        /// <summary>
+        /// Largest tension of any intact segment since the construction or <see cref="ResetPeaks"/>, in newtons, over every
+        /// substep (<see cref="Rope.PeakTensions"/>): a peak that falls between host steps still reads.
+        /// </summary>
         public float PeakTension { get; private set; }
 
         /// <summary>
@@ -52,7 +55,11 @@ namespace HookeRope
         /// <summary>Force in newtons on the <see cref="ArrestLoad"/> (its magnitude), else <see cref="BottomTension"/>.</summary>
         public float ArrestForce { get; private set; }
 
-        /// <summary>Largest <see cref="ArrestForce"/> since the construction or <see cref="ResetPeaks"/>, in newtons.</summary>
+        /// <summary>
+        /// Largest arrest force since the construction or <see cref="ResetPeaks"/>, in newtons, over every substep: the
+        /// load's <see cref="Rope.GetLoadPeakForce"/> (or the last segment's <see cref="Rope.PeakTensions"/> without an
+        /// <see cref="ArrestLoad"/>), never below <see cref="ArrestForce"/>.
+        /// </summary>
         public float PeakArrestForce { get; private set; }
 
         /// <summary>Smallest radius along the rope in metres, neck included (R without a radius model).</summary>
@@ -86,6 +93,7 @@ namespace HookeRope
         {
             Rope rope = simulation.Rope;
             ReadOnlySpan<float> tensions = rope.Tensions;
+            ReadOnlySpan<float> substepPeaks = rope.PeakTensions;
             ReadOnlySpan<float> lengths = rope.SegmentLengths;
             ReadOnlySpan<float> rest = rope.RestLengths;
             ReadOnlySpan<bool> broken = rope.BrokenSegments;
@@ -97,6 +105,7 @@ namespace HookeRope
                 if (broken[j]) continue;
                 elongation += lengths[j] - rest[j];
                 intactRest += rest[j];
+                if (substepPeaks[j] > peak) peak = substepPeaks[j];
                 if (tensions[j] > peak) peak = tensions[j];
             }
             Elongation = elongation;
@@ -105,7 +114,9 @@ namespace HookeRope
             BottomTension = n > 0 && !broken[n - 1] ? tensions[n - 1] : 0f;
             PeakTension = peak;
             ArrestForce = arrestLoad >= 0 ? rope.GetLoadForce(arrestLoad).Length : BottomTension;
-            if (ArrestForce > PeakArrestForce) PeakArrestForce = ArrestForce;
+            float arrestPeak = arrestLoad >= 0 ? rope.GetLoadPeakForce(arrestLoad)
+                : n > 0 && !broken[n - 1] ? substepPeaks[n - 1] : 0f;
+            PeakArrestForce = Math.Max(PeakArrestForce, Math.Max(ArrestForce, arrestPeak));
             MinRadius = simulation.MinRadius;
             NeckRadius = simulation.NeckRadius;
             Residual = residual;

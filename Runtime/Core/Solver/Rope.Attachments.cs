@@ -18,6 +18,8 @@ namespace HookeRope.Solver
         private int[] loadParticle = new int[0];
         private float[] loadMass = new float[0];
         private Float3[] loadStartVelocity = new Float3[0], loadStartPosition = new Float3[0], loadForce = new Float3[0];
+        private Float3[] loadSubstepVelocity = new Float3[0];   // load velocity at the end of the previous substep, m/s
+        private float[] loadPeakForce = new float[0];           // largest substep load force of the last host step, N
         private float lastStepTime;
 
         /// <summary>Number of pins added so far (broken ones included).</summary>
@@ -140,11 +142,14 @@ namespace HookeRope.Solver
                 Array.Resize(ref loadStartVelocity, size);
                 Array.Resize(ref loadStartPosition, size);
                 Array.Resize(ref loadForce, size);
+                Array.Resize(ref loadSubstepVelocity, size);
+                Array.Resize(ref loadPeakForce, size);
             }
             int l = loadCount++;
             loadParticle[l] = particle;
             loadMass[l] = mass;
             loadForce[l] = Float3.Zero;
+            loadPeakForce[l] = 0f;
             chain.LoadMass[particle] += mass;
             UpdateMass(particle, settings.LinearDensity);
             return l;
@@ -164,6 +169,7 @@ namespace HookeRope.Solver
             chain.LoadMass[particle] = Math.Max(0f, chain.LoadMass[particle] - mass);
             loadMass[load] = 0f;
             loadForce[load] = Float3.Zero;
+            loadPeakForce[load] = 0f;
             UpdateMass(particle, settings.LinearDensity);
         }
 
@@ -189,6 +195,17 @@ namespace HookeRope.Solver
         {
             CheckLoad(load);
             return loadForce[load];
+        }
+
+        /// <summary>
+        /// Largest magnitude in newtons, over the substeps of the last host step, of the force everything but gravity
+        /// exerted on the load during one substep: |M·(Δv/h − g)|. A short peak (a snatch lasting a few host steps)
+        /// that <see cref="GetLoadForce"/>'s mean over the host step flattens still reads. Zero once released.
+        /// </summary>
+        public float GetLoadPeakForce(int load)
+        {
+            CheckLoad(load);
+            return loadPeakForce[load];
         }
 
         /// <summary>Impulse in N·s the rope gave the load over the last host step (GetLoadForce × Δt). The host applies it to its rigid body.</summary>

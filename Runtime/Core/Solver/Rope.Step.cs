@@ -41,6 +41,8 @@ namespace HookeRope.Solver
                 int i = loadParticle[l];
                 loadStartVelocity[l] = new Float3(chain.VelX[i], chain.VelY[i], chain.VelZ[i]);
                 loadStartPosition[l] = new Float3(chain.X[i], chain.Y[i], chain.Z[i]);
+                loadSubstepVelocity[l] = loadStartVelocity[l];
+                loadPeakForce[l] = 0f;
             }
 
             TimeIntegrator integrator = settings.Integrator;
@@ -58,6 +60,7 @@ namespace HookeRope.Solver
                 if (secondOrder) UpdateVelocitiesSecondOrder(scheme, hd, Violent());
                 else UpdateVelocities(h);
                 FinishPhase(hd, hEff, g, k == 0);
+                if (loadCount > 0) TrackLoadPeaks(1f / h, g);
             }
             ScaleMeanTensions(1f / substeps);
             RefreshLengths();
@@ -287,6 +290,19 @@ namespace HookeRope.Solver
                 tension[j] = value;
                 if (firstSubstep) { peak[j] = value; sum[j] = value; }
                 else { if (value > peak[j]) peak[j] = value; sum[j] += value; }
+            }
+        }
+
+        /// <summary>Raises each load's <see cref="GetLoadPeakForce"/> to this substep's |M·(Δv/h − g)| (invH = 1/h in 1/s).</summary>
+        private void TrackLoadPeaks(float invH, Float3 g)
+        {
+            for (int l = 0; l < loadCount; l++)
+            {
+                int i = loadParticle[l];
+                var v = new Float3(chain.VelX[i], chain.VelY[i], chain.VelZ[i]);
+                float force = (((v - loadSubstepVelocity[l]) * invH - g) * loadMass[l]).Length;
+                if (force > loadPeakForce[l]) loadPeakForce[l] = force;
+                loadSubstepVelocity[l] = v;
             }
         }
 

@@ -199,8 +199,8 @@ namespace HookeRope.Lab.Figures
             figure.Annotations.Add(new FigureArrow
             {
                 From = dRing + new Float3(0.12f, 0f, 0f), To = dRing + new Float3(0.12f, arrowLength, 0f), Color = new SKColor(190, 20, 50), Width = 3f,
-                Text = F("ArrestForce = PeakArrestForce = {0:0} N\nanalytic Mg + √((Mg)² + 2Mg·k·h) = {1:0} N\n(h = {2:0.00} m slack, k = E·A/L)\nMeetsEn355 = {3}  (≤ 6 kN)",
-                    readouts.PeakArrestForce, analytic, 2.0 - HarnessRig.Gap, readouts.PeakArrestForce <= 6000f ? "true" : "false"),
+                Text = F("PeakArrestForce = {0:0} N (largest substep)\nArrestForce = {4:0} N (mean of this step)\nanalytic Mg + √((Mg)² + 2Mg·k·h) = {1:0} N\n(h = {2:0.00} m slack, k = E·A/L)\nMeetsEn355 = {3}  (≤ 6 kN)",
+                    readouts.PeakArrestForce, analytic, 2.0 - HarnessRig.Gap, readouts.PeakArrestForce <= 6000f ? "true" : "false", readouts.ArrestForce),
                 TextOffset = new SKPoint(20, -10),
             });
             figure.Annotations.Add(new FigureLabel

@@ -11,7 +11,8 @@ namespace HookeRope.Lab.Output
         /// <summary>Header line: one column per <see cref="Sample"/> field, unit as suffix.</summary>
         public const string Header =
             "time_s,load_x_m,load_y_m,load_z_m,load_vx_mps,load_vy_mps,load_vz_mps," +
-            "top_tension_N,bottom_tension_N,elongation_m,min_radius_m,neck_radius_m,broken,residual,energy_J";
+            "top_tension_N,bottom_tension_N,elongation_m,min_radius_m,neck_radius_m,broken,residual,energy_J," +
+            "top_tension_max_N,top_tension_mean_N,bottom_tension_max_N,bottom_tension_mean_N";
 
         /// <summary>Writes <paramref name="result"/> to <paramref name="path"/>.</summary>
         public static void Write(RunResult result, string path)
@@ -37,6 +38,8 @@ namespace HookeRope.Lab.Output
                 line.Append(s.Broken ? '1' : '0').Append(',');
                 Append(line, s.Residual).Append(',');
                 Append(line, s.Energy);
+                foreach (double value in new[] { s.TopTensionMax, s.TopTensionMean, s.BottomTensionMax, s.BottomTensionMean })
+                    Append(line.Append(','), value);
                 writer.WriteLine(line.ToString());
             }
         }

@@ -28,6 +28,14 @@ namespace HookeRope.Lab.Simulation
         public double Residual;
         /// <summary>Total energy in J.</summary>
         public double Energy;
+        /// <summary>Largest first-segment tension in N over every substep since the previous sample (<see cref="HookeRope.Solver.Rope.PeakTensions"/>).</summary>
+        public double TopTensionMax;
+        /// <summary>Mean first-segment tension in N over every substep since the previous sample (<see cref="HookeRope.Solver.Rope.MeanTensions"/>).</summary>
+        public double TopTensionMean;
+        /// <summary>Largest last-segment tension in N over every substep since the previous sample.</summary>
+        public double BottomTensionMax;
+        /// <summary>Mean last-segment tension in N over every substep since the previous sample.</summary>
+        public double BottomTensionMean;
     }
 
     /// <summary>Radius along the rope at one instant.</summary>

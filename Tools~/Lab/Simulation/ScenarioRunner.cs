@@ -180,6 +180,7 @@ namespace HookeRope.Lab.Simulation
             bool onsetSeen = false, breakSeen = !double.IsNaN(result.BreakTime);
             var player = new EventPlayer(s, setup);
             result.Events = player.Applied;
+            var substepTensions = new SubstepTensionWindow();
             var watch = Stopwatch.StartNew();
             for (int k = 0; k < steps; k++)
             {
@@ -240,9 +241,10 @@ namespace HookeRope.Lab.Simulation
                 }
                 if (options.TrackEnergy) RecordEnergy(rope, result, late: k >= steps / 2);
                 options.Progress?.Invoke(k);
+                if (options.RecordSamples) substepTensions.Add(rope);
                 if (options.RecordSamples && t >= nextSample - 1e-9)
                 {
-                    result.Samples.Add(Measure(setup, t, options));
+                    result.Samples.Add(substepTensions.Complete(Measure(setup, t, options)));
                     nextSample += sampleInterval;
                     if (sampleInterval > 0 && nextSample < t) nextSample = t + sampleInterval;
                 }
