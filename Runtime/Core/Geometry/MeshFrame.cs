@@ -43,7 +43,10 @@ namespace HookeRope.Geometry
         public static MeshFrame Shifted(Float3 origin) => new MeshFrame(origin, Quat.Identity, 1f);
 
         /// <summary>The rope-world position (m) of point <paramref name="p"/> given in the caller frame.</summary>
-        internal Float3 ToWorld(Float3 p) => Origin + Rotation.Rotate(p * Scale);
+        internal Float3 ToWorld(Float3 p) => Origin + DisplacementToWorld(p);
+
+        /// <summary>A caller-frame displacement <paramref name="v"/> expressed in the rope world frame (m).</summary>
+        internal Float3 DisplacementToWorld(Float3 v) => Rotation.Rotate(v * Scale);
 
         /// <summary>A rope-world displacement <paramref name="v"/> (m) expressed in the caller frame.</summary>
         internal Float3 DisplacementFromWorld(Float3 v) => Rotation.Conjugate.Rotate(v) * (1f / Scale);

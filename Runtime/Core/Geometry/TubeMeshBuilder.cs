@@ -356,6 +356,8 @@ namespace HookeRope.Geometry
 
         private void PushCentersOutOfColliders(int first, int last)
         {
+            // centres are relative to the first particle: map that offset once, then only the (small) relative part
+            Float3 firstInWorld = contactFrame.ToWorld(frameOrigin);
             float metresPerUnit = Math.Abs(contactFrame.Scale);
             int colliders = contactRope.ColliderCount;
             for (int k = first; k <= last; k++)
@@ -363,7 +365,7 @@ namespace HookeRope.Geometry
                 float r = ringRadii[k] * metresPerUnit;
                 for (int q = 0; q < colliders; q++)
                 {
-                    Float3 world = contactFrame.ToWorld(centers[k] + frameOrigin);
+                    Float3 world = contactFrame.DisplacementToWorld(centers[k]) + firstInWorld;
                     float d = contactRope.ColliderDistance(q, world);
                     if (!(d < r) || !float.IsFinite(d)) continue;
                     float h = 0.01f * r + 1e-6f;
