@@ -15,7 +15,8 @@ namespace HookeRope
     /// without one), the slots stay empty and one console error per component names the renderer and the fix. Every LateUpdate
     /// it interpolates the rope between the last two physics steps (<see cref="Rope.Interpolate"/>, so 90/120 Hz
     /// headsets see smooth motion at any physics rate) into its one position buffer, in this GameObject's local
-    /// space, lets the core build the tube (<see cref="RopeSimulation.FillMesh(System.ReadOnlySpan{float}, System.ReadOnlySpan{float}, System.ReadOnlySpan{float}, TubeVertex[], int[], float)"/>)
+    /// space, lets the core build the tube (<see cref="RopeSimulation.FillMesh(System.ReadOnlySpan{float}, System.ReadOnlySpan{float}, System.ReadOnlySpan{float}, TubeVertex[], int[], float, MeshFrame)"/>,
+    /// told where that space sits relative to the rope's colliders, so the tube is drawn outside a collider it wraps)
     /// and only uploads it. The mesh is dynamic (MarkDynamic), its vertex layout is set once per topology, vertices
     /// are uploaded with SetVertexBufferData from a preallocated array (no GC per frame), indices only when the
     /// topology changes (new segment count, a break), and the bounds are set explicitly before each vertex upload.
@@ -181,7 +182,7 @@ namespace HookeRope
             int vertexCount = simulation.GetVertexCount(), indexCount = simulation.GetIndexCount();
             if (_vertices.Length < vertexCount) _vertices = new TubeVertex[vertexCount];
             if (_indices.Length < indexCount) _indices = new int[indexCount];
-            var update = simulation.FillMesh(_x, _y, _z, _vertices, _indices, radiusScale: RadiusScale());
+            var update = simulation.FillMesh(_x, _y, _z, _vertices, _indices, RadiusScale(), LocalFrameInRope(origin));
 
             if (update.TopologyChanged || !ReferenceEquals(_uploaded, simulation) || _uploadedTopology != simulation.MeshTopologyVersion ||
                 _vertexCount != update.VertexCount || _indexCount != update.IndexCount)
@@ -249,6 +250,16 @@ namespace HookeRope
             if (preview.Length == core.ParticleCount)
                 for (int i = 0; i < preview.Length; i++) core.SetPosition(i, (preview[i] - origin).ToFloat3());
             return simulation;
+        }
+
+        /// <summary>
+        /// This GameObject's local space in the simulation's frame (whose origin is at world <paramref name="simulationOrigin"/>, m,
+        /// the frame of the rope's colliders): its pose and (uniform) scale, so the core keeps the drawn tube out of them.
+        /// </summary>
+        MeshFrame LocalFrameInRope(Vector3 simulationOrigin)
+        {
+            var frame = transform;
+            return new MeshFrame((frame.position - simulationOrigin).ToFloat3(), frame.rotation.ToQuat(), frame.lossyScale.x);
         }
 
         /// <summary>Ring radii are in world metres; the mesh is in local space, so they shrink by the (uniform) scale.</summary>

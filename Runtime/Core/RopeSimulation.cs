@@ -139,19 +139,33 @@ namespace HookeRope
         /// (<see cref="TubeMeshUpdate.TopologyChanged"/>). Allocation-free after warm-up.
         /// </summary>
         public TubeMeshUpdate FillMesh(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
-            TubeVertex[] vertices, int[] indices, float radiusScale = 1f)
-        {
-            if (!float.IsFinite(radiusScale) || !(radiusScale > 0f))
-                throw new ArgumentOutOfRangeException(nameof(radiusScale), radiusScale, "radiusScale must be finite and in (0, +inf).");
-            return mesh.Fill(x, y, z, vertices, indices, radiusScale);
-        }
+            TubeVertex[] vertices, int[] indices, float radiusScale = 1f) =>
+            mesh.Fill(x, y, z, vertices, indices, CheckedRadiusScale(radiusScale), null);
 
         /// <summary>
         /// <see cref="FillMesh(ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{float}, TubeVertex[], int[], float)"/>
+        /// for positions in a caller frame placed in the rope's world frame by <paramref name="frame"/> (e.g. a
+        /// renderer's local space: its pose relative to the frame of <see cref="Solver.Rope.Origin"/>): ring centres
+        /// closer to one of the rope's colliders than their drawn radius (ring radius × |frame.Scale|, m) are pushed out
+        /// along its normal, so the drawn tube does not sink into a collider it wraps. Allocation-free after warm-up.
+        /// </summary>
+        public TubeMeshUpdate FillMesh(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
+            TubeVertex[] vertices, int[] indices, float radiusScale, MeshFrame frame) =>
+            mesh.Fill(x, y, z, vertices, indices, CheckedRadiusScale(radiusScale), frame);
+
+        /// <summary>
+        /// <see cref="FillMesh(ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{float}, TubeVertex[], int[], float, MeshFrame)"/>
         /// through the rope's own positions: vertices in the rope-local frame (world = <see cref="Solver.Rope.Origin"/> + v).
         /// </summary>
         public TubeMeshUpdate FillMesh(TubeVertex[] vertices, int[] indices) =>
-            mesh.Fill(Rope.PositionX, Rope.PositionY, Rope.PositionZ, vertices, indices, 1f, ropeFrame: true);
+            mesh.Fill(Rope.PositionX, Rope.PositionY, Rope.PositionZ, vertices, indices, 1f, MeshFrame.Shifted(Rope.Origin));
+
+        private static float CheckedRadiusScale(float radiusScale)
+        {
+            if (!float.IsFinite(radiusScale) || !(radiusScale > 0f))
+                throw new ArgumentOutOfRangeException(nameof(radiusScale), radiusScale, "radiusScale must be finite and in (0, +inf).");
+            return radiusScale;
+        }
 
         private void OnRopeBroken(RopeBreakEvent e)
         {

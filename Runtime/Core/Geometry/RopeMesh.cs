@@ -51,15 +51,18 @@ namespace HookeRope.Geometry
 
         internal int GetIndexCount() => Ensure().GetIndexCount(simulation.Rope.BrokenSegments);
 
-        /// <summary>Fills the mesh from positions in the caller's frame; ring radii are multiplied by <paramref name="radiusScale"/>.</summary>
+        /// <summary>
+        /// Fills the mesh from positions in the caller's frame; ring radii are multiplied by <paramref name="radiusScale"/>.
+        /// With <paramref name="frame"/> (where that frame sits in the rope's world) the ring centres are kept out of
+        /// the rope's colliders; without it they are not checked.
+        /// </summary>
         internal TubeMeshUpdate Fill(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
-            TubeVertex[] vertices, int[] indices, float radiusScale, bool ropeFrame = false)
+            TubeVertex[] vertices, int[] indices, float radiusScale, MeshFrame? frame)
         {
             TubeMeshBuilder b = Ensure();
             ComputeRingRadii(b.Layout, radiusScale);
             Rope rope = simulation.Rope;
-            // Positions in the rope's own frame (the rope-local fill) can be checked against its colliders.
-            b.SetContactColliders(ropeFrame ? rope : null, rope.Origin);
+            b.SetContactColliders(frame.HasValue ? rope : null, frame.GetValueOrDefault());
             return b.BuildWithRingRadii(x, y, z, rope.RestLengths, ringRadii, rope.BrokenSegments, vertices, indices);
         }
 

@@ -36,7 +36,7 @@ namespace HookeRope.Geometry
         private int[] lastIndices;
         private Float3 frameOrigin;
         private HookeRope.Solver.Rope contactRope;
-        private Float3 contactOffset;
+        private MeshFrame contactFrame;
         private bool topologyValid;
 
         /// <summary>Builder for <paramref name="segmentCount"/> segments (≥ 1) with settings.RingsPerSegment rings in each.</summary>
@@ -101,15 +101,16 @@ namespace HookeRope.Geometry
         public int FibreCount => fibreCount;
 
         /// <summary>
-        /// Colliders to keep the drawn tube out of (null = none): before a build in which the positions are
-        /// <paramref name="rope"/>'s own frame shifted by <paramref name="worldOffset"/> (m; world = position + offset), each
-        /// ring centre closer to a collider than its ring radius is pushed out along the collider's normal, so the
-        /// drawn surface does not sink into a collider the rope wraps between its contact particles.
+        /// Colliders to keep the drawn tube out of (null = none): before a build whose positions are in
+        /// <paramref name="frame"/> (placed in <paramref name="rope"/>'s world frame, where its colliders are), each
+        /// ring centre closer to a collider than its drawn ring radius (radius × |frame scale| in metres) is pushed out
+        /// along the collider's normal, so the drawn surface does not sink into a collider the rope wraps between its
+        /// contact particles.
         /// </summary>
-        internal void SetContactColliders(HookeRope.Solver.Rope rope, Float3 worldOffset)
+        internal void SetContactColliders(HookeRope.Solver.Rope rope, MeshFrame frame)
         {
             contactRope = rope;
-            contactOffset = worldOffset;
+            contactFrame = frame;
         }
 
         /// <summary>Vertices the mesh needs for these broken-segment flags (empty = intact rope).</summary>
@@ -355,14 +356,16 @@ namespace HookeRope.Geometry
 
         private void PushCentersOutOfColliders(int first, int last)
         {
-            Float3 toWorld = frameOrigin + contactOffset;
+            // centres are relative to the first particle: map that offset once, then only the (small) relative part
+            Float3 firstInWorld = contactFrame.ToWorld(frameOrigin);
+            float metresPerUnit = Math.Abs(contactFrame.Scale);
             int colliders = contactRope.ColliderCount;
             for (int k = first; k <= last; k++)
             {
-                float r = ringRadii[k];
+                float r = ringRadii[k] * metresPerUnit;
                 for (int q = 0; q < colliders; q++)
                 {
-                    Float3 world = centers[k] + toWorld;
+                    Float3 world = contactFrame.DisplacementToWorld(centers[k]) + firstInWorld;
                     float d = contactRope.ColliderDistance(q, world);
                     if (!(d < r) || !float.IsFinite(d)) continue;
                     float h = 0.01f * r + 1e-6f;
@@ -372,7 +375,7 @@ namespace HookeRope.Geometry
                         contactRope.ColliderDistance(q, world + new Float3(0f, 0f, h)) - contactRope.ColliderDistance(q, world - new Float3(0f, 0f, h)));
                     Float3 normal = gradient.NormalizedOr(Float3.Zero);
                     if (normal.LengthSquared == 0f) continue;
-                    centers[k] = centers[k] + normal * (r - d);
+                    centers[k] = centers[k] + contactFrame.DisplacementFromWorld(normal * (r - d));
                 }
             }
         }

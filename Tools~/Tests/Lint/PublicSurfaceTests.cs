@@ -22,7 +22,7 @@ namespace HookeRope.Tests.Lint
             "HookeRope.Radius.RadiusSettings", "HookeRope.Radius.RadiusModel", "HookeRope.Radius.NeckMode", "HookeRope.Radius.BreakReason",
             "HookeRope.Radius.PoissonRadius", "HookeRope.Radius.NeckHyperbola",
             // Mesh data; the burr texture every renderer of the strands needs (the lab's figures, a glTF export, a non-Unity host)
-            "HookeRope.Geometry.TubeMeshSettings", "HookeRope.Fracture.BurrSettings", "HookeRope.Geometry.TubeVertex", "HookeRope.Geometry.TubeMeshUpdate",
+            "HookeRope.Geometry.TubeMeshSettings", "HookeRope.Geometry.MeshFrame", "HookeRope.Fracture.BurrSettings", "HookeRope.Geometry.TubeVertex", "HookeRope.Geometry.TubeMeshUpdate",
             "HookeRope.Fracture.BurrTextureGenerator",
             // Mathematics
             "HookeRope.Mathematics.Float3", "HookeRope.Mathematics.Quat",
