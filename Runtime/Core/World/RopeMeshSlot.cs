@@ -8,13 +8,15 @@ namespace HookeRope.World
     /// (<see cref="RopeWorld.FillMeshes"/>, <see cref="RopeWorld.StepAndFillMeshes"/>) and the host uploads them
     /// afterwards on its own thread (copy-out). Positions come either from the rope itself (rope-local frame, the
     /// default) or from caller-owned arrays written before the pass (copy-in, e.g. interpolated and in a renderer's
-    /// local frame, see <see cref="UseCallerPositions"/>). The buffers grow when the topology needs more (a break),
+    /// local frame, see <see cref="UseCallerPositions(float[], float[], float[], float)"/>). The buffers grow when the topology needs more (a break),
     /// so a pass allocates only then.
     /// </summary>
     public sealed class RopeMeshSlot
     {
         private float[] callerX, callerY, callerZ;
         private float radiusScale = 1f;
+        private MeshFrame frame;
+        private bool hasFrame;
 
         internal RopeMeshSlot()
         {
@@ -32,7 +34,7 @@ namespace HookeRope.World
         /// <summary>Fills served so far (0 before the first pass).</summary>
         public int FillCount { get; private set; }
 
-        /// <summary>True when the positions come from <see cref="UseCallerPositions"/> rather than the rope.</summary>
+        /// <summary>True when the positions come from <see cref="UseCallerPositions(float[], float[], float[], float)"/> rather than the rope.</summary>
         public bool UsesCallerPositions => callerX != null;
 
         /// <summary>
@@ -52,6 +54,20 @@ namespace HookeRope.World
             callerY = y;
             callerZ = z;
             radiusScale = radiusScaleFactor;
+            hasFrame = false;
+        }
+
+        /// <summary>
+        /// <see cref="UseCallerPositions(float[], float[], float[], float)"/> for positions in a caller frame that
+        /// <paramref name="callerFrame"/> places in the rope's world frame (e.g. a renderer's local space): ring centres
+        /// are then kept out of the rope's colliders, as with the <see cref="MeshFrame"/> overload of
+        /// <see cref="RopeSimulation.FillMesh(ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{float}, TubeVertex[], int[], float, MeshFrame)"/>.
+        /// </summary>
+        public void UseCallerPositions(float[] x, float[] y, float[] z, float radiusScaleFactor, MeshFrame callerFrame)
+        {
+            UseCallerPositions(x, y, z, radiusScaleFactor);
+            frame = callerFrame;
+            hasFrame = true;
         }
 
         /// <summary>From the next fill on, builds the tube through the rope's own positions (rope-local frame, radius scale 1).</summary>
@@ -59,6 +75,7 @@ namespace HookeRope.World
         {
             callerX = callerY = callerZ = null;
             radiusScale = 1f;
+            hasFrame = false;
         }
 
         /// <summary>Fills the buffers from <paramref name="simulation"/> (called by the world on a worker thread).</summary>
@@ -67,8 +84,8 @@ namespace HookeRope.World
             int vertexCount = simulation.GetVertexCount(), indexCount = simulation.GetIndexCount();
             if (Vertices.Length < vertexCount) Vertices = new TubeVertex[vertexCount];
             if (Indices.Length < indexCount) Indices = new int[indexCount];
-            Update = callerX == null
-                ? simulation.FillMesh(Vertices, Indices)
+            Update = callerX == null ? simulation.FillMesh(Vertices, Indices)
+                : hasFrame ? simulation.FillMesh(callerX, callerY, callerZ, Vertices, Indices, radiusScale, frame)
                 : simulation.FillMesh(callerX, callerY, callerZ, Vertices, Indices, radiusScale);
             FillCount++;
         }

@@ -18,7 +18,7 @@ namespace HookeRope.Tests.Core.Geometry
         private static readonly Float3 BarCentre = new Float3(0f, 1f, 0f);
 
         /// <summary>A 4-segment rope laid over a 0.1 m sphere at (0, 1, 0), its particles 45° apart on the sphere plus R.</summary>
-        private static RopeSimulation WrappedRope()
+        internal static RopeSimulation WrappedRope()
         {
             var settings = new RopeSettings { RestLength = 0.35f, SegmentCount = 4, Radius = R };
             var sim = new RopeSimulation(settings, new Float3(-0.11f, 1f, 0f), new Float3(0.11f, 1f, 0f));

@@ -182,6 +182,54 @@ namespace HookeRope.Tests.Core.World
             }
         }
 
+        [Test]
+        public void ACallerFrameOnTheSlotKeepsTheWorldDrawnTubeOutOfTheCollider()
+        {
+            // the wrapped rope of MeshFrameTests (0.1 m sphere at (0, 1, 0), R = 1 cm), drawn by the world through
+            // renderer-local positions with their frame: no drawn vertex sinks more than 2 % of R into the sphere, while
+            // the simulation's own frameless fill of the same positions sinks more than 10 % of R
+            RopeSimulation sim = HookeRope.Tests.Core.Geometry.MeshFrameTests.WrappedRope();
+            var frame = new MeshFrame(new Float3(0.4f, 0.3f, -0.2f), Quat.FromAxisAngle(new Float3(1f, 2f, -1f), 0.87f), 1.7f);
+            Rope rope = sim.Rope;
+            int n = rope.ParticleCount;
+            float[] x = new float[n], y = new float[n], z = new float[n];
+            for (int i = 0; i < n; i++)
+            {
+                Float3 local = frame.Rotation.Conjugate.Rotate(rope.Origin + new Float3(rope.PositionX[i], rope.PositionY[i], rope.PositionZ[i]) - frame.Origin) * (1f / frame.Scale);
+                x[i] = local.X; y[i] = local.Y; z[i] = local.Z;
+            }
+            var frameless = new TubeVertex[sim.GetVertexCount()];
+            int framelessCount = sim.FillMesh(x, y, z, frameless, new int[sim.GetIndexCount()], 1f / frame.Scale).VertexCount;
+            const float radius = 0.01f, sphere = 0.1f;
+            var centre = new Float3(0f, 1f, 0f);
+            float Deepest(TubeVertex[] vertices, int count)
+            {
+                float deepest = float.PositiveInfinity;
+                for (int v = 0; v < count; v++)
+                {
+                    Float3 world = frame.Origin + frame.Rotation.Rotate(new Float3(vertices[v].PX, vertices[v].PY, vertices[v].PZ) * frame.Scale);
+                    deepest = Math.Min(deepest, (world - centre).Length - sphere);
+                }
+                return deepest;
+            }
+
+            using (var world = new RopeWorld(1))
+            {
+                world.Add(sim);
+                var slot = world.EnableMesh(0);
+                slot.UseCallerPositions(x, y, z, 1f / frame.Scale, frame);
+                world.FillMeshes();
+                float framed = Deepest(slot.Vertices, slot.Update.VertexCount);
+                TestContext.WriteLine("deepest drawn vertex: framed " + framed / radius + " R, frameless " + Deepest(frameless, framelessCount) / radius + " R");
+                Assert.That(framed, Is.GreaterThan(-0.02f * radius));
+                Assert.That(Deepest(frameless, framelessCount), Is.LessThan(-0.1f * radius));
+
+                slot.UseCallerPositions(x, y, z, 1f / frame.Scale);
+                world.FillMeshes();
+                Assert.That(Deepest(slot.Vertices, slot.Update.VertexCount), Is.LessThan(-0.1f * radius), "the frameless overload clears the frame");
+            }
+        }
+
         [TestCase(1)]
         [TestCase(2)]
         [TestCase(4)]
