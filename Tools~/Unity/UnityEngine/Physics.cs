@@ -70,10 +70,8 @@ namespace UnityEngine
         public static bool Raycast(Vector3 origin, Vector3 direction, out RaycastHit hitInfo, float maxDistance = float.PositiveInfinity, int layerMask = DefaultRaycastLayers, QueryTriggerInteraction queryTriggerInteraction = QueryTriggerInteraction.UseGlobal)
         {
             hitInfo = default;
-            float length = direction.magnitude;
-            if (!(length > float.Epsilon)) return false;
             bool found = false;
-            var hits = PhysicsWorld.RaycastAll(origin, direction / length, maxDistance, layerMask, queryTriggerInteraction);
+            var hits = RaycastAll(origin, direction, maxDistance, layerMask, queryTriggerInteraction);
             for (int i = 0; i < hits.Length; i++)
             {
                 if (found && !(hits[i].distance < hitInfo.distance)) continue;
