@@ -13,8 +13,8 @@ namespace HookeRope.Lab.Commands
         /// <summary>Measures, prints and writes <c>accuracy.md</c> into <paramref name="outDir"/>; returns 0.</summary>
         public static int Execute(IAnsiConsole console, string outDir)
         {
+            OutputFolder.Ensure(outDir);
             string md = FixedStepAccuracy.Markdown(Steps);
-            Directory.CreateDirectory(outDir);
             string path = Path.Combine(outDir, "accuracy.md");
             File.WriteAllText(path, md);
             console.WriteLine(md);

@@ -25,7 +25,7 @@ namespace HookeRope.Lab.Commands
         /// <summary>Writes the figures of <paramref name="set"/> into <paramref name="outDir"/>; returns 0.</summary>
         public static int Execute(IAnsiConsole console, string outDir, string set = Harness)
         {
-            Directory.CreateDirectory(outDir);
+            OutputFolder.Ensure(outDir);
             var table = new Table().Border(TableBorder.Rounded);
             table.AddColumn("file");
             table.AddColumn("size");

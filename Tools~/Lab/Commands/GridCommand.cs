@@ -15,7 +15,7 @@ namespace HookeRope.Lab.Commands
         /// <summary>Runs the grid (whole, or the CI subset), prints and writes stability-grid.md (or stability-grid-ci.md) to <paramref name="outDir"/>.</summary>
         public static int Execute(IAnsiConsole console, string outDir, bool full)
         {
-            Directory.CreateDirectory(outDir);
+            OutputFolder.Ensure(outDir);
             var cases = GridSweep.Cases(full);
             var clock = Stopwatch.StartNew();
             var outcomes = GridSweep.RunAll(cases);

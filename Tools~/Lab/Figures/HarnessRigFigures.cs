@@ -132,10 +132,9 @@ namespace HookeRope.Lab.Figures
             Caption = "detail ×4 (D-ring)",
         };
 
-        /// <summary>The fall of <see cref="Arrest"/>: the wired rope, a 100 kg load released at the D-ring from the static shape.</summary>
-        public static RopeSetup FallSetup()
+        /// <summary>The fall of <see cref="Arrest"/>: the wired rope, a 100 kg load released at the D-ring from the static shape <paramref name="relaxed"/> (<see cref="RelaxedWired"/>).</summary>
+        public static RopeSetup FallSetup(RopeSetup relaxed)
         {
-            var relaxed = RelaxedWired();
             var s = DefaultRope(AttachmentSpec.FixedAt(HarnessRig.SnappedAnchor),
                 new AttachmentSpec { Kind = AttachmentKind.Body, Mass = HarnessRig.WorkerMass, Position = HarnessRig.DRing }, InitialShape.Slack, FallStep);
             var setup = ScenarioRunner.Build(s);
@@ -148,10 +147,10 @@ namespace HookeRope.Lab.Figures
             return setup;
         }
 
-        /// <summary>Steps of <see cref="FallStep"/> from the release to the largest arrest force, and that force (N), within 3 s.</summary>
-        public static int StepsToPeak(out float peak)
+        /// <summary>Steps of <see cref="FallStep"/> from the release (<see cref="FallSetup"/> of <paramref name="relaxed"/>) to the largest arrest force, and that force (N), within 3 s.</summary>
+        public static int StepsToPeak(RopeSetup relaxed, out float peak)
         {
-            var setup = FallSetup();
+            var setup = FallSetup(relaxed);
             int best = 0;
             peak = 0f;
             for (int k = 1; k <= (int)(3.0 / FallStep); k++)
@@ -176,8 +175,9 @@ namespace HookeRope.Lab.Figures
         /// <summary>(3) The fall arrest at the step of peak arrest force, with the read-outs.</summary>
         public static DocumentationFigure Arrest()
         {
-            int steps = StepsToPeak(out _);
-            var setup = FallSetup();
+            var relaxed = RelaxedWired();
+            int steps = StepsToPeak(relaxed, out _);
+            var setup = FallSetup(relaxed);
             for (int k = 0; k < steps; k++) setup.Step((float)FallStep);
             var readouts = setup.Simulation.Readouts;
             var dRing = setup.Rope.GetLoadPosition(setup.EndLoad);

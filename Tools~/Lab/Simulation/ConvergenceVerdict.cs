@@ -95,17 +95,18 @@ namespace HookeRope.Lab.Simulation
             string finer = string.Format(Invariant,
                 "raise solver.substeps (now {0}) or shorten hostStep (now {1:G4} ms)", s.Solver.Substeps, s.HostStep * 1000);
             string exact = "use the exact solver (\"solver\": { \"method\": \"exact-chain\" })";
+            string steadier = gaussSeidel ? exact + "; " + finer : finer;
 
             if (r.NonFinite)
-                return v.Set(Convergence.Diverged, "NaN or ∞ in the particle positions", gaussSeidel ? exact + "; " + finer : finer);
+                return v.Set(Convergence.Diverged, "NaN or ∞ in the particle positions", steadier);
             if (Exploded(s, r))
                 return v.Set(Convergence.Diverged,
                     string.Format(Invariant, "a particle was flung {0:G3} m away (limit {1} rope lengths)", r.MaxExtent, ExplosionLengths),
-                    gaussSeidel ? exact + "; " + finer : finer);
+                    steadier);
             if (strain > MaxCredibleStrain)
                 return v.Set(Convergence.Diverged,
                     string.Format(Invariant, "strain {0:G3} (above {1} = {2} %, no rope stretches that far)", strain, MaxCredibleStrain, MaxCredibleStrain * 100),
-                    gaussSeidel ? exact + "; " + finer : finer);
+                    steadier);
             if (!Driven(s) && r.LateMaxMotionEnergy > double.NegativeInfinity && EnergyBlowUp(s, r, out double rise))
                 return v.Set(Convergence.Diverged,
                     string.Format(Invariant, "the solver created {0:G3} J of motion energy", rise),
