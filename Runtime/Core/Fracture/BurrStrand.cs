@@ -46,13 +46,20 @@ namespace HookeRope.Fracture
         /// stratified: the count's quantiles of the uniform law FibreLength ± √3·FibreLengthSpread are dealt to the
         /// fibres in a seeded order, so every end shows the whole distribution.
         /// </summary>
-        public static BurrStrand Draw(BurrSettings settings, int endKey, int index, int count)
+        public static BurrStrand Draw(BurrSettings settings, int endKey, int index, int count) =>
+            Draw(settings, endKey, index, count, ShuffleOf(settings.Seed, endKey, count));
+
+        /// <summary>
+        /// <see cref="Draw(BurrSettings, int, int, int)"/> with the end's length order <paramref name="shuffle"/> from
+        /// <see cref="ShuffleOf"/> (the same for every fibre of the end: a builder computes it once per end).
+        /// </summary>
+        public static BurrStrand Draw(BurrSettings settings, int endKey, int index, int count, (int Step, int Offset) shuffle)
         {
             uint seed = settings.Seed;
             int key = index * 6;
             float radial = MathF.Sqrt((index + 0.5f) / count);
             float angle = index * GoldenAngle + 0.6f * (SeededRandom.Unit(seed, endKey, key) - 0.5f);
-            int stratum = Shuffle(seed, endKey, index, count);
+            int stratum = (int)(((long)index * shuffle.Step + shuffle.Offset) % count);
             float u = (stratum + 0.5f + 0.9f * (SeededRandom.Unit(seed, endKey, key + 1) - 0.5f)) / count;
             float mean = settings.FibreLength;
             float length = mean + 1.7320508f * settings.FibreLengthSpread * (2f * u - 1f);
@@ -63,13 +70,13 @@ namespace HookeRope.Fracture
             return new BurrStrand(radial, angle, length, tilt, twist, turn);
         }
 
-        /// <summary>A seeded bijection of [0, count): index·step + offset mod count with step coprime to count.</summary>
-        private static int Shuffle(uint seed, int endKey, int index, int count)
+        /// <summary>The seeded bijection of [0, count) that deals the length strata of an end: index·step + offset mod count, step coprime to count.</summary>
+        public static (int Step, int Offset) ShuffleOf(uint seed, int endKey, int count)
         {
             int step = 1 + (int)(SeededRandom.Hash(seed, endKey, -1) % (uint)count);
             while (GreatestCommonDivisor(step, count) != 1) step++;
             int offset = (int)(SeededRandom.Hash(seed, endKey, -2) % (uint)count);
-            return (int)(((long)index * step + offset) % count);
+            return (step, offset);
         }
 
         private static int GreatestCommonDivisor(int a, int b)

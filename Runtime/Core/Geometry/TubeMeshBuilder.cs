@@ -491,9 +491,10 @@ namespace HookeRope.Geometry
             // Triangular bases of circumradius ≈ sqrt(π/N)·r: together 1.3× the cut's area, so the fibres hide the cap.
             float baseRadius = r * MathF.Sqrt(MathF.PI / fibreCount);
             float reach = MathF.Max(0f, r - 0.5f * baseRadius);
+            (int Step, int Offset) shuffle = BurrStrand.ShuffleOf(burr.Seed, endKey, fibreCount);
             for (int f = 0; f < fibreCount; f++)
             {
-                BurrStrand fibre = BurrStrand.Draw(burr, endKey, f, fibreCount);
+                BurrStrand fibre = BurrStrand.Draw(burr, endKey, f, fibreCount, shuffle);
                 float ca = MathF.Cos(fibre.Angle), sa = MathF.Sin(fibre.Angle);
                 Float3 radialDirection = nrm * ca + bin * sa;
                 Float3 around = bin * ca - nrm * sa;

@@ -52,8 +52,7 @@ namespace HookeRope.Solver
                 float t = (float)(k + 1) / substeps;
                 TimeIntegrator scheme = SubstepScheme(integrator, hd);
                 double hEff = EffectiveStep(scheme, hd);
-                if (secondOrder) PredictSecondOrderPhase(t, hostDeltaTime, scheme, hd, g);
-                else PredictPhase(t, hostDeltaTime, h, g);
+                PredictPhase(t, hostDeltaTime, secondOrder, scheme, h, hd, g);
                 // push the prediction out of the colliders and find the contacts the chain solve folds in
                 CollidePhase(h, ContactPass.StartOfSubstep);
                 SolvePhase(h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder);
@@ -79,21 +78,16 @@ namespace HookeRope.Solver
             return new StepReport { Residual = ComputeResidual(), Iterations = iterations, Substeps = substeps };
         }
 
-        /// <summary>Phase 1 of a substep (fraction t of the host step, h s): collider poses, prediction under gravity, rigid pins on their targets, multipliers cleared.</summary>
-        private void PredictPhase(float t, float hostDeltaTime, float h, Float3 g)
+        /// <summary>
+        /// Phase 1 of a substep (fraction t of the host step, h s; hd the same in double): collider poses, prediction under
+        /// gravity (a second-order run: the scheme's, <see cref="PredictSecondOrder"/>), rigid pins on their targets,
+        /// multipliers cleared.
+        /// </summary>
+        private void PredictPhase(float t, float hostDeltaTime, bool secondOrder, TimeIntegrator scheme, float h, double hd, Float3 g)
         {
             if (colliders.Count > 0) colliders.PrepareSubstep(t, hostDeltaTime);
-            Predict(h, g);
-            MovePins(t);
-            Array.Clear(chain.Lambda, 0, chain.SegmentCount);
-            if (pinCount > 0) Array.Clear(pinLambda, 0, pinCount * 3);
-        }
-
-        /// <summary>Phase 1 of a second-order substep: as <see cref="PredictPhase"/>, with the scheme's prediction (<see cref="PredictSecondOrder"/>).</summary>
-        private void PredictSecondOrderPhase(float t, float hostDeltaTime, TimeIntegrator scheme, double h, Float3 g)
-        {
-            if (colliders.Count > 0) colliders.PrepareSubstep(t, hostDeltaTime);
-            PredictSecondOrder(scheme, h, g);
+            if (secondOrder) PredictSecondOrder(scheme, hd, g);
+            else Predict(h, g);
             MovePins(t);
             Array.Clear(chain.Lambda, 0, chain.SegmentCount);
             if (pinCount > 0) Array.Clear(pinLambda, 0, pinCount * 3);
