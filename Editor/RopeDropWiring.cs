@@ -81,11 +81,7 @@ namespace HookeRope.Editor
         static bool InOpenPrefabStage(Transform t)
         {
             var stage = PrefabStageUtility.GetCurrentPrefabStage();
-            if (stage == null) return false;
-            var root = stage.prefabContentsRoot.transform;
-            for (; t != null; t = t.parent)
-                if (t == root) return true;
-            return false;
+            return stage != null && RopeAutoWiring.IsInside(t, stage.prefabContentsRoot.transform);
         }
     }
 }

@@ -195,7 +195,8 @@ namespace HookeRope
             return found != null && found.transform.parent == null ? found.transform : null;
         }
 
-        static bool IsInside(Transform t, Transform root)
+        /// <summary>True when <paramref name="t"/> is <paramref name="root"/> or in its hierarchy; false for a null <paramref name="t"/>.</summary>
+        internal static bool IsInside(Transform t, Transform root)
         {
             for (; t != null; t = t.parent)
                 if (t == root) return true;
