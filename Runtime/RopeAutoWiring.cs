@@ -96,6 +96,20 @@ namespace HookeRope
         }
 
         /// <summary>
+        /// The plan for a rope just dropped onto a rig (Awake in Play, the editor's drop hook in Edit mode): as
+        /// <see cref="For"/>, but null unless the rope sits under a Rigidbody and its End has no Body yet (an End.Body
+        /// the user set is kept).
+        /// </summary>
+        internal static RopeAutoWiring ForDrop(ElasticRope rope) =>
+            rope != null && rope.EndAttachment.Body == null && rope.GetComponentInParent<Rigidbody>() != null ? For(rope) : null;
+
+        /// <summary>
+        /// The console line logged when the rope is wired; compose it before <see cref="Apply"/> (afterwards a new
+        /// anchor reads as an existing one).
+        /// </summary>
+        internal string WiredLine() => "HookeRope wired onto the rig: " + Describe();
+
+        /// <summary>
         /// The beam above the D-ring: the nearest collider a ray from <paramref name="dRing"/> along the unit
         /// <paramref name="up"/> enters within <paramref name="reach"/> m (the rest length, so the rope is never
         /// pre-stretched at build), on Physics.DefaultRaycastLayers, triggers ignored, leaving out colliders in the
