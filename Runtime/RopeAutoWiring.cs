@@ -61,11 +61,15 @@ namespace HookeRope
             if (rope == null) return null;
             var body = rope.GetComponentInParent<Rigidbody>();
             if (body != null) return body;
-            var end = rope.EndAttachment;
-            if (end.Body == null && end.Point != null && (body = end.Point.GetComponentInParent<Rigidbody>()) != null) return body;
-            var start = rope.StartAttachment;
-            if (start.Body == null && start.Point != null && (body = start.Point.GetComponentInParent<Rigidbody>()) != null) return body;
-            return null;
+            return BodyAbovePoint(rope.EndAttachment) ?? BodyAbovePoint(rope.StartAttachment);
+        }
+
+        /// <summary>The Rigidbody above <paramref name="end"/>'s Point while that end has no Body (a Point dragged onto a rig); else null.</summary>
+        internal static Rigidbody BodyAbovePoint(RopeEnd end)
+        {
+            if (end.Body != null || end.Point == null) return null;
+            var body = end.Point.GetComponentInParent<Rigidbody>();
+            return body != null ? body : null;
         }
 
         /// <summary>What wiring <paramref name="rope"/> onto its rig would do, or null when it has no rig or is already wired.</summary>
