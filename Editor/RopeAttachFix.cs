@@ -51,7 +51,7 @@ namespace HookeRope.Editor
         internal static RopeAttachFix For(ElasticRope rope)
         {
             if (rope == null) return null;
-            if (!PointOnBodyWithoutBody(rope.StartAttachment) && !PointOnBodyWithoutBody(rope.EndAttachment)) return null;
+            if (RopeAutoWiring.BodyAbovePoint(rope.StartAttachment) == null && RopeAutoWiring.BodyAbovePoint(rope.EndAttachment) == null) return null;
             var wiring = RopeAutoWiring.For(rope);
             return wiring == null ? null : new RopeAttachFix(rope, wiring);
         }
@@ -69,8 +69,5 @@ namespace HookeRope.Editor
             var created = wiring.Apply();
             if (created != null) Undo.RegisterCreatedObjectUndo(created, undoName);
         }
-
-        static bool PointOnBodyWithoutBody(RopeEnd end) =>
-            end.Body == null && end.Point != null && end.Point.GetComponentInParent<Rigidbody>() != null;
     }
 }

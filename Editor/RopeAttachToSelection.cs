@@ -35,7 +35,7 @@ namespace HookeRope.Editor
         {
             for (var t = selection; t != null; t = t.parent)
             {
-                if (IsInside(t, rope.transform)) continue;
+                if (RopeAutoWiring.IsInside(t, rope.transform)) continue;
                 var body = t.GetComponent<Rigidbody>();
                 if (body != null) return body;
             }
@@ -50,13 +50,6 @@ namespace HookeRope.Editor
             var body = BodyOf(selection, rope);
             end.Body = body;
             end.Point = body != null && body.transform == selection ? null : selection;
-        }
-
-        static bool IsInside(Transform t, Transform root)
-        {
-            for (; t != null; t = t.parent)
-                if (t == root) return true;
-            return false;
         }
     }
 }

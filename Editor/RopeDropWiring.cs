@@ -67,12 +67,10 @@ namespace HookeRope.Editor
         /// </summary>
         internal static bool Wire(ElasticRope rope)
         {
-            if (rope == null || rope.EndAttachment.Body != null) return false;
-            if (rope.GetComponentInParent<Rigidbody>() == null) return false;
-            var wiring = RopeAutoWiring.For(rope);
+            var wiring = RopeAutoWiring.ForDrop(rope);
             if (wiring == null) return false;
             if (wiring.RewiresStart && InOpenPrefabStage(rope.transform)) return false;
-            string line = "HookeRope wired onto the rig: " + wiring.Describe(); // before Apply: afterwards the new anchor reads as an existing one
+            string line = wiring.WiredLine(); // before Apply: afterwards the new anchor reads as an existing one
             RopeAttachFix.Apply(rope, wiring, UndoName);
             Debug.Log(line, rope);
             return true;
@@ -81,11 +79,7 @@ namespace HookeRope.Editor
         static bool InOpenPrefabStage(Transform t)
         {
             var stage = PrefabStageUtility.GetCurrentPrefabStage();
-            if (stage == null) return false;
-            var root = stage.prefabContentsRoot.transform;
-            for (; t != null; t = t.parent)
-                if (t == root) return true;
-            return false;
+            return stage != null && RopeAutoWiring.IsInside(t, stage.prefabContentsRoot.transform);
         }
     }
 }

@@ -6,26 +6,19 @@ namespace HookeRope
     public sealed partial class ElasticRope
     {
         /// <summary>Add Component (and the inspector's Reset): a rope added inside a rig with a Rigidbody wires itself onto it.</summary>
-        void Reset()
-        {
-            WireOntoRig();
-        }
+        void Reset() => Wire(RopeAutoWiring.For(this));
 
         /// <summary>
         /// Play, from Awake before the build: the dropped-prefab case, a rope under a Rigidbody whose End has no Body,
         /// wires itself onto that body and logs one line naming what it wired.
         /// </summary>
-        void WireOnDrop()
-        {
-            if (m_End.Body == null && GetComponentInParent<Rigidbody>() != null) WireOntoRig();
-        }
+        void WireOnDrop() => Wire(RopeAutoWiring.ForDrop(this));
 
-        /// <summary>Wires this rope onto its rig when it has one and is not wired yet (<see cref="RopeAutoWiring"/>); logs what it did.</summary>
-        void WireOntoRig()
+        /// <summary>Carries out <paramref name="wiring"/> (<see cref="RopeAutoWiring"/>; null: nothing to wire) and logs what it did.</summary>
+        void Wire(RopeAutoWiring wiring)
         {
-            var wiring = RopeAutoWiring.For(this);
             if (wiring == null) return;
-            string line = "HookeRope wired onto the rig: " + wiring.Describe(); // before Apply: afterwards a new anchor reads as an existing one
+            string line = wiring.WiredLine(); // before Apply: afterwards a new anchor reads as an existing one
             wiring.Apply();
             Debug.Log(line, this);
         }

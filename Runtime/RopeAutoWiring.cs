@@ -61,11 +61,15 @@ namespace HookeRope
             if (rope == null) return null;
             var body = rope.GetComponentInParent<Rigidbody>();
             if (body != null) return body;
-            var end = rope.EndAttachment;
-            if (end.Body == null && end.Point != null && (body = end.Point.GetComponentInParent<Rigidbody>()) != null) return body;
-            var start = rope.StartAttachment;
-            if (start.Body == null && start.Point != null && (body = start.Point.GetComponentInParent<Rigidbody>()) != null) return body;
-            return null;
+            return BodyAbovePoint(rope.EndAttachment) ?? BodyAbovePoint(rope.StartAttachment);
+        }
+
+        /// <summary>The Rigidbody above <paramref name="end"/>'s Point while that end has no Body (a Point dragged onto a rig); else null.</summary>
+        internal static Rigidbody BodyAbovePoint(RopeEnd end)
+        {
+            if (end.Body != null || end.Point == null) return null;
+            var body = end.Point.GetComponentInParent<Rigidbody>();
+            return body != null ? body : null;
         }
 
         /// <summary>What wiring <paramref name="rope"/> onto its rig would do, or null when it has no rig or is already wired.</summary>
@@ -94,6 +98,20 @@ namespace HookeRope
             }
             return new RopeAutoWiring(rope, body, endPoint, rewiresStart, dRing + up * height, beam, height);
         }
+
+        /// <summary>
+        /// The plan for a rope just dropped onto a rig (Awake in Play, the editor's drop hook in Edit mode): as
+        /// <see cref="For"/>, but null unless the rope sits under a Rigidbody and its End has no Body yet (an End.Body
+        /// the user set is kept).
+        /// </summary>
+        internal static RopeAutoWiring ForDrop(ElasticRope rope) =>
+            rope != null && rope.EndAttachment.Body == null && rope.GetComponentInParent<Rigidbody>() != null ? For(rope) : null;
+
+        /// <summary>
+        /// The console line logged when the rope is wired; compose it before <see cref="Apply"/> (afterwards a new
+        /// anchor reads as an existing one).
+        /// </summary>
+        internal string WiredLine() => "HookeRope wired onto the rig: " + Describe();
 
         /// <summary>
         /// The beam above the D-ring: the nearest collider a ray from <paramref name="dRing"/> along the unit
@@ -195,7 +213,8 @@ namespace HookeRope
             return found != null && found.transform.parent == null ? found.transform : null;
         }
 
-        static bool IsInside(Transform t, Transform root)
+        /// <summary>True when <paramref name="t"/> is <paramref name="root"/> or in its hierarchy; false for a null <paramref name="t"/>.</summary>
+        internal static bool IsInside(Transform t, Transform root)
         {
             for (; t != null; t = t.parent)
                 if (t == root) return true;
