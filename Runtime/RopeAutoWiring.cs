@@ -213,12 +213,7 @@ namespace HookeRope
             return found != null && found.transform.parent == null ? found.transform : null;
         }
 
-        /// <summary>True when <paramref name="t"/> is <paramref name="root"/> or in its hierarchy; false for a null <paramref name="t"/>.</summary>
-        internal static bool IsInside(Transform t, Transform root)
-        {
-            for (; t != null; t = t.parent)
-                if (t == root) return true;
-            return false;
-        }
+        /// <summary>True when <paramref name="t"/> is <paramref name="root"/> or in its hierarchy (<see cref="Transform.IsChildOf"/>); false for a null <paramref name="t"/>.</summary>
+        internal static bool IsInside(Transform t, Transform root) => t != null && t.IsChildOf(root);
     }
 }

@@ -25,6 +25,24 @@ namespace HookeRope.StandIn.Facts
         }
 
         [Test]
+        public void IsChildOfIsTrueForTheTransformItselfAChildAndADeepChildOnly()
+        {
+            // Unity 2022.3 Transform.bindings.cs: IsChildOf is Internal_IsChildOrSameTransform, parent [NotNull]
+            var root = new GameObject("Root").transform;
+            var child = new GameObject("Child").transform;
+            var deep = new GameObject("Deep").transform;
+            var other = new GameObject("Other").transform;
+            child.SetParent(root, false);
+            deep.SetParent(child, false);
+            Assert.That(root.IsChildOf(root), Is.True);
+            Assert.That(child.IsChildOf(root), Is.True);
+            Assert.That(deep.IsChildOf(root), Is.True);
+            Assert.That(root.IsChildOf(child), Is.False);
+            Assert.That(other.IsChildOf(root), Is.False);
+            Assert.That(() => child.IsChildOf(null), Throws.TypeOf<System.ArgumentNullException>());
+        }
+
+        [Test]
         public void NonFinitePoseIsRefusedWithUnitysErrorAndTheOldValueKept()
         {
             var hand = new GameObject("Hand").transform;

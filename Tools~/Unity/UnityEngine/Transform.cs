@@ -127,6 +127,16 @@ namespace UnityEngine
             get { EnsureAlive(); return m_Children.Count; }
         }
 
+        /// <summary>Is this transform a child of parent? True for a child, a deep child, or the transform itself (Unity's Internal_IsChildOrSameTransform; parent must not be null).</summary>
+        public bool IsChildOf(Transform parent)
+        {
+            EnsureAlive();
+            if (parent is null) throw new ArgumentNullException(nameof(parent));
+            for (var t = this; t is object; t = t.m_Parent)
+                if (ReferenceEquals(t, parent)) return true;
+            return false;
+        }
+
         /// <summary>Returns a transform child by index.</summary>
         public Transform GetChild(int index)
         {
