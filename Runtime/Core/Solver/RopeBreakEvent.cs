@@ -13,26 +13,29 @@ namespace HookeRope.Solver
         public readonly int Segment;
         /// <summary>Tension of the segment in newtons just before it broke (≥ 0 = pulling).</summary>
         public readonly float Tension;
+        /// <summary>Elastic energy in joules the segment stored when it broke, ½·C²/α (0 for a slack or inextensible segment).</summary>
+        public readonly double StoredEnergy;
         /// <summary>
-        /// Elastic energy in joules the segment stored when it broke (½·C²/α), released into the recoil of its two ends
-        /// (see <see cref="Rope.BreakSegment"/>); 0 for a slack or inextensible segment.
+        /// Kinetic energy in joules the recoil gave the two ends (<see cref="Rope.BreakSegment"/>): <see cref="StoredEnergy"/>,
+        /// less what a substep too coarse for the recoil cannot carry (h &gt; L/c), 0 when both ends are kinematic.
         /// </summary>
-        public readonly double ReleasedEnergy;
+        public readonly double RecoilEnergy;
 
-        /// <summary>Creates an event (time s, position m, segment index, tension N); no released energy.</summary>
+        /// <summary>Creates an event (time s, position m, segment index, tension N); no stored or recoil energy.</summary>
         public RopeBreakEvent(double time, Float3 position, int segment, float tension)
-            : this(time, position, segment, tension, 0.0)
+            : this(time, position, segment, tension, 0.0, 0.0)
         {
         }
 
-        /// <summary>Creates an event (time s, position m, segment index, tension N, released elastic energy J).</summary>
-        public RopeBreakEvent(double time, Float3 position, int segment, float tension, double releasedEnergy)
+        /// <summary>Creates an event (time s, position m, segment index, tension N, stored and recoil energy J).</summary>
+        public RopeBreakEvent(double time, Float3 position, int segment, float tension, double storedEnergy, double recoilEnergy)
         {
             Time = time;
             Position = position;
             Segment = segment;
             Tension = tension;
-            ReleasedEnergy = releasedEnergy;
+            StoredEnergy = storedEnergy;
+            RecoilEnergy = recoilEnergy;
         }
     }
 }

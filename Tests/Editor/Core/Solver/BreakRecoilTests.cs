@@ -40,10 +40,11 @@ namespace HookeRope.Tests.Solver
             Float3 left = rope.GetVelocity(10), right = rope.GetVelocity(11);
             float m = rope.GetParticleMass(10);
             double expected = 100.0 * 0.2 / Math.Sqrt(2.0); // c·ε/√2 = 14.14 m/s
-            TestContext.WriteLine($"stored {stored:G6} J, released {seen.ReleasedEnergy:G6} J, kinetic {kinetic:G6} J; total {before:G7} → {after:G7} J; " +
+            TestContext.WriteLine($"stored {stored:G6} J, recoil {seen.RecoilEnergy:G6} J, kinetic {kinetic:G6} J; total {before:G7} → {after:G7} J; " +
                                   $"ends {left.X:G6} / {right.X:G6} m/s (c·ε/√2 = {expected:G6})");
             Assert.That(stored, Is.EqualTo(2.0).Within(0.01), "½·C²/α of the segment");
-            Assert.That(seen.ReleasedEnergy, Is.EqualTo(stored).Within(1e-4 * stored));
+            Assert.That(seen.StoredEnergy, Is.EqualTo(stored).Within(1e-4 * stored));
+            Assert.That(seen.RecoilEnergy, Is.EqualTo(stored).Within(1e-4 * stored), "no step yet: nothing caps the recoil");
             Assert.That(kinetic, Is.EqualTo(stored).Within(1e-4 * stored), "the recoil carries the stored energy");
             Assert.That(after, Is.EqualTo(before).Within(1e-5 * before), "no energy vanishes at the break");
             // equal and opposite impulses, apart from the cut, along the rope
@@ -87,7 +88,7 @@ namespace HookeRope.Tests.Solver
             RopeBreakEvent seen = default;
             rope.Broken += e => seen = e;
             rope.BreakSegment(2);
-            Assert.That(seen.ReleasedEnergy, Is.EqualTo(0.0));
+            Assert.That(seen.StoredEnergy, Is.EqualTo(0.0));
             Assert.That(rope.KineticEnergy(), Is.EqualTo(0.0));
         }
 
@@ -136,6 +137,29 @@ namespace HookeRope.Tests.Solver
             Assert.That(lowest, Is.GreaterThan(0.999 * total), "nothing but the integrator's dissipation is lost");
             Assert.That(worst, Is.LessThan(0.1), "the kinetic energy follows the unloading wave from 2 ms on");
             Assert.That(highest, Is.LessThanOrEqualTo(total * (1 + 1e-5)), "no energy gain");
+        }
+
+        [Test]
+        public void ACoarseStepCapsTheRecoilAndLosesOnlyWhatItCannotCarry()
+        {
+            // the same rope after one step of 1/90 s at 1 substep (h = 11 ms ≫ L/c = 1 ms): an end at 14 m/s would cross
+            // 16 cm in a substep, 8× the 2 cm stretch behind it; the impulse is capped at that stretch per substep
+            var rope = Stretched(TimeIntegrator.BackwardEuler, out double stored);
+            rope.Settings.Substeps = 1;
+            rope.Step(1f / 90f);
+            double before = rope.TotalEnergy(), kineticBefore = rope.KineticEnergy();
+            double stretch = rope.SegmentLengths[9] - rope.RestLengths[9];
+            RopeBreakEvent seen = default;
+            rope.Broken += e => seen = e;
+            rope.BreakSegment(10);
+            double after = rope.TotalEnergy();
+            float v = -rope.GetVelocity(10).X;
+            TestContext.WriteLine($"stored {seen.StoredEnergy:G5} J, recoil {seen.RecoilEnergy:G5} J; total {before:G7} → {after:G7} J; end {v:G5} m/s × 11.1 ms = {v / 90f * 1000:G4} mm vs stretch {stretch * 1000:G4} mm");
+            Assert.That(seen.StoredEnergy, Is.EqualTo(stored).Within(1e-3 * stored));
+            Assert.That(seen.RecoilEnergy, Is.LessThan(0.1 * seen.StoredEnergy));
+            Assert.That(v / 90.0, Is.EqualTo(stretch).Within(1e-3 * stretch), "the end closes the stretch behind it in one substep, no more");
+            Assert.That(after, Is.EqualTo(before - seen.StoredEnergy + seen.RecoilEnergy).Within(1e-5 * before), "only the uncarried part is lost");
+            Assert.That(rope.KineticEnergy() - kineticBefore, Is.EqualTo(seen.RecoilEnergy).Within(1e-4 * seen.RecoilEnergy + 1e-9));
         }
     }
 }
