@@ -161,5 +161,32 @@ namespace HookeRope.Tests.Solver
             Assert.That(after, Is.EqualTo(before - seen.StoredEnergy + seen.RecoilEnergy).Within(1e-5 * before), "only the uncarried part is lost");
             Assert.That(rope.KineticEnergy() - kineticBefore, Is.EqualTo(seen.RecoilEnergy).Within(1e-4 * seen.RecoilEnergy + 1e-9));
         }
+
+        [Test]
+        public void ABreakAllocatesNothing()
+        {
+            // the recoil and the event are computed in place: once breaks have warmed the code up, a break allocates 0 B
+            // (the fewest bytes over several breaks, as SteadyStateAllocation: a tiered re-compile may land in one)
+            const int ropes = 12;
+            var all = new Rope[ropes];
+            int seen = 0;
+            System.Action<RopeBreakEvent> count = e => seen++;
+            for (int i = 0; i < ropes; i++)
+            {
+                all[i] = Stretched(TimeIntegrator.Bdf2, out _);
+                all[i].Broken += count;
+                all[i].Step(RopeTestKit.HostStep);
+            }
+            long fewest = long.MaxValue;
+            for (int i = 0; i < ropes; i++)
+            {
+                long before = GC.GetAllocatedBytesForCurrentThread();
+                all[i].BreakSegment(10);
+                long bytes = GC.GetAllocatedBytesForCurrentThread() - before;
+                if (i >= 4) fewest = Math.Min(fewest, bytes);
+            }
+            Assert.That(seen, Is.EqualTo(ropes));
+            Assert.That(fewest, Is.EqualTo(0), "bytes allocated by BreakSegment");
+        }
     }
 }
