@@ -53,6 +53,7 @@ namespace HookeRope.Tests.Solver
         [TestCase(0.02f, TimeIntegrator.BackwardEuler)]
         [TestCase(1f / 90f, TimeIntegrator.BackwardEuler)]
         [TestCase(1f / 90f, TimeIntegrator.Bdf2)]
+        [TestCase(0.02f, TimeIntegrator.Bdf2)]
         public void BodyFollowsTheLoadParticleAndTheArrestMeetsTheEnergyBalance(float dt, TimeIntegrator integrator)
         {
             var rope = Lanyard(out int load, out var body, integrator);
