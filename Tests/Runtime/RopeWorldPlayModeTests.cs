@@ -75,9 +75,11 @@ namespace HookeRope.Tests
             var top = new Vector3(3f * index, 10f, 0f);
             var anchor = Track(new GameObject("Anchor " + index)).transform;
             anchor.position = top;
-            var go = Track(new GameObject("Rope " + index));
+            // rope 0 is drawn too: by the world's draw pass while it is in the world
+            var go = Track(index == 0 ? new GameObject("Rope 0", typeof(MeshFilter), typeof(MeshRenderer), typeof(ElasticRope), typeof(RopeMeshRenderer))
+                : new GameObject("Rope " + index));
             go.transform.position = top;
-            var rope = go.AddComponent<ElasticRope>();
+            var rope = index == 0 ? go.GetComponent<ElasticRope>() : go.AddComponent<ElasticRope>();
             rope.RestLength = spec.RestLength;
             rope.SegmentCount = spec.Segments;
             if (spec.GaussSeidel) rope.Solver = HookeRope.Solver.ConstraintSolverKind.GaussSeidel;
@@ -180,6 +182,10 @@ namespace HookeRope.Tests
                 Assert.That(ropes[i].IsSteppedInWorld, Is.True, "rope " + i);
                 Capture(ropes[i], together[i]);
             }
+            yield return null;
+            var drawn = ropes[0].GetComponent<RopeMeshRenderer>();
+            Assert.That(drawn.DrawnFrame, Is.GreaterThanOrEqualTo(Time.frameCount - 1), "drawn by the world's pass in the last LateUpdate");
+            Assert.That(drawn.Mesh.vertexCount, Is.GreaterThan(ropes[0].ParticleCount), "a tube around the rope");
             var world = RopeWorldScheduler.World;
             DestroyAll();
             yield return Settle();
