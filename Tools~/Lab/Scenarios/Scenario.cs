@@ -67,6 +67,12 @@ namespace HookeRope.Lab.Scenarios
         public double Damping = RopeParameters.Damping.Default;
         /// <summary>True: rope (pulls only); false: rod (bilateral).</summary>
         public bool TensionOnly = RopeParameters.TensionModel.Default == HookeRope.Solver.TensionModel.TensionOnly;
+        /// <summary>Time integrator of each substep (backward Euler or BDF2).</summary>
+        public HookeRope.Solver.TimeIntegrator Integrator = RopeParameters.Integrator.Default;
+
+        /// <summary>JSON name of an integrator: "backward-euler" or "bdf2".</summary>
+        public static string IntegratorJson(HookeRope.Solver.TimeIntegrator integrator) =>
+            integrator == HookeRope.Solver.TimeIntegrator.Bdf2 ? "bdf2" : "backward-euler";
     }
 
     /// <summary>rope {…} block. Defaults are the parameter table's (<see cref="RopeParameters"/>).</summary>

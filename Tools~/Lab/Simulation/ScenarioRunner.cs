@@ -47,6 +47,7 @@ namespace HookeRope.Lab.Simulation
             settings.Iterations = s.Solver.Iterations;
             settings.Solver = s.Solver.Method == SolverMethod.GaussSeidel ? ConstraintSolverKind.GaussSeidel : ConstraintSolverKind.ExactChain;
             settings.Tension = s.Solver.TensionOnly ? TensionModel.TensionOnly : TensionModel.Bilateral;
+            settings.Integrator = s.Solver.Integrator;
             return settings;
         }
 
