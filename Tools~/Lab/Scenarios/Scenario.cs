@@ -268,7 +268,7 @@ namespace HookeRope.Lab.Scenarios
     /// <summary>What the built-in scenario checks (read by tests and the summary). Optional in user files.</summary>
     public sealed class ExpectationSpec
     {
-        /// <summary>Analytic check: "none", "fall-arrest", "static-hang", "period", "catenary", "poisson", "neck", "fracture", "collision".</summary>
+        /// <summary>Analytic check: "none", "fall-arrest", "static-hang", "period", "catenary", "poisson", "neck", "fracture", "collision", "amplitude", "rebound", "snatch".</summary>
         public string Check = "none";
     }
 }

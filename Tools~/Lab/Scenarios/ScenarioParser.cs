@@ -96,7 +96,7 @@ namespace HookeRope.Lab.Scenarios
             if (expect != null)
             {
                 s.Expect.Check = expect.Choice("check", "none", "none", "fall-arrest", "static-hang", "period",
-                    "catenary", "poisson", "neck", "fracture", "collision");
+                    "catenary", "poisson", "neck", "fracture", "collision", "amplitude", "rebound", "snatch");
                 expect.RejectUnknown();
             }
             root.RejectUnknown();
