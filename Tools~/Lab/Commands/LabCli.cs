@@ -56,7 +56,7 @@ namespace HookeRope.Lab.Commands
 
             var reportOut = OutOption();
             var reportQuick = new Option<bool>("--quick") { Description = "Reduced grid and one repeat (a smoke run, not for numbers)." };
-            var repeats = new Option<int>("--repeats") { Description = "Timed repeats per configuration, 1–50 (median is reported).", DefaultValueFactory = _ => 5 };
+            var repeats = new Option<int>("--repeats") { Description = "Timed rounds over the whole grid, 1–50 (each cell reports its best round).", DefaultValueFactory = _ => 5 };
             repeats.Validators.Add(r =>
             {
                 if (r.Tokens.Count == 0 || !int.TryParse(r.Tokens[0].Value, out int n)) return;
