@@ -63,12 +63,17 @@ namespace HookeRope.Lab.Commands
                 if (n < 1 || n > 50) r.AddError($"--repeats: {n} is out of range [1, 50]");
             });
             var reportQuiet = QuietOption();
+            var headline = new Option<string[]>("--headline")
+            {
+                Description = "Also write the headline (table and recommendations) into this Markdown file between its \"lab report headline\" markers; repeatable (README.md, Documentation~/lab.md).",
+            };
             var report = new Command("report", "Error against run time for reference scenarios and solver configurations: Markdown + Pareto plot.")
             {
-                reportOut, reportQuick, repeats, reportQuiet,
+                reportOut, reportQuick, repeats, reportQuiet, headline,
             };
             report.SetAction(p => Guard(console, error, () =>
-                ReportCommand.Execute(console, p.GetValue(reportOut), p.GetValue(reportQuick), p.GetValue(repeats), p.GetValue(reportQuiet) ? null : error)));
+                ReportCommand.Execute(console, p.GetValue(reportOut), p.GetValue(reportQuick), p.GetValue(repeats), p.GetValue(reportQuiet) ? null : error,
+                    p.GetValue(headline))));
             root.Subcommands.Add(report);
 
             var stabilityOut = OutOption();

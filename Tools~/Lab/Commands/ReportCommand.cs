@@ -58,11 +58,16 @@ namespace HookeRope.Lab.Commands
 
         static string ColourKey(SolverConfig c) => c.Method + "/" + c.Iterations;
 
-        /// <summary>Runs the grid and writes report.md and report-pareto.png to <paramref name="outDir"/>; <paramref name="progress"/> gets periodic lines with an ETA when the console is not interactive.</summary>
-        public static int Execute(IAnsiConsole console, string outDir, bool quick, int repeats, TextWriter progress = null)
+        /// <summary>
+        /// Runs the grid and writes report.md and report-pareto.png to <paramref name="outDir"/>, and the headline into each
+        /// of <paramref name="headlines"/> (<see cref="HeadlineBlock"/>; their markers are checked before the grid runs);
+        /// <paramref name="progress"/> gets periodic lines with an ETA when the console is not interactive.
+        /// </summary>
+        public static int Execute(IAnsiConsole console, string outDir, bool quick, int repeats, TextWriter progress = null, IReadOnlyList<string> headlines = null)
         {
             if (repeats < 1 || repeats > 50) throw new UsageException($"--repeats: {repeats} is out of range [1, 50]");
             OutputFolder.Ensure(outDir);
+            if (headlines != null) foreach (var file in headlines) HeadlineBlock.Check(file);
             console.MarkupLine("[bold]HookeRope lab · report[/]  " + Markup.Escape(MachineInfo.Describe()));
             ReportResult result = null;
             int total = ErrorReport.Grid(quick).Count * ErrorReport.ReferenceScenarios.Length * (quick ? 1 : repeats);
@@ -106,6 +111,12 @@ namespace HookeRope.Lab.Commands
                 ? "recommended default: [green]" + Markup.Escape(result.Configs[recommended].Label) + "[/] (cheapest converged configuration within 1 % on every reference scenario, the dissipation scenarios included)"
                 : "[yellow]no configuration within 1 % on every reference scenario[/]");
             console.MarkupLine("[grey]load average (1, 5, 15 min):[/] " + Markup.Escape(result.LoadBefore) + " at the start, " + Markup.Escape(result.LoadAfter) + " at the end");
+            if (headlines != null)
+                foreach (var file in headlines)
+                {
+                    HeadlineBlock.Write(file, ErrorReport.Headline(result));
+                    console.MarkupLine("[grey]wrote the headline into[/] " + Markup.Escape(file));
+                }
             console.MarkupLine("[grey]wrote[/] " + Markup.Escape(md));
             console.MarkupLine("[grey]wrote[/] " + Markup.Escape(plot));
             return 0;

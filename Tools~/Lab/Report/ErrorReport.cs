@@ -60,7 +60,7 @@ namespace HookeRope.Lab.Report
         public List<ReportCell[]> Cells = new List<ReportCell[]>();
         /// <summary>Machine description.</summary>
         public string Machine;
-        /// <summary>Timed repeats per cell.</summary>
+        /// <summary>Timed rounds over the whole grid (a cell's cost is its best round).</summary>
         public int Repeats;
         /// <summary>Accuracy target for the recommendation (relative).</summary>
         public double Target = 0.01;
@@ -351,6 +351,24 @@ namespace HookeRope.Lab.Report
             sb.Append(gs >= 0
                 ? $"- Cheapest Gauss–Seidel configuration within {target}: {r.Configs[gs].Label} ({Ms(r.MeanCost(gs))} ms per simulated second).\n"
                 : $"- No Gauss–Seidel configuration of the grid reaches {target} on every scenario (the heavy mass ratio defeats it): use the exact chain solve.\n");
+            return sb.ToString();
+        }
+
+        /// <summary>
+        /// What <c>report --headline FILE</c> writes into README.md and the manual: where and how it was measured (machine,
+        /// load average, date, rounds), the headline table and the recommendations.
+        /// </summary>
+        public static string Headline(ReportResult r)
+        {
+            var sb = new StringBuilder();
+            sb.Append("Measured by `report` (best of ").Append(r.Repeats).Append(r.Repeats == 1 ? " round" : " rounds").Append(" over the grid) on ").Append(r.Machine)
+              .Append(", load average (1, 5, 15 min) ").Append(r.LoadBefore).Append(" at the start and ").Append(r.LoadAfter).Append(" at the end, ")
+              .Append(DateTime.UtcNow.ToString("yyyy-MM-dd", CultureInfo.InvariantCulture))
+              .Append(". The error columns are deterministic; the ms column, and with it which rows are Pareto-optimal and the recommendation where two costs are close, depends on the load.\n\n");
+            sb.Append(HeadlineTable(r));
+            foreach (var (group, filter) in r.Groups())
+                if (r.ParetoFront(filter).Count == 0) sb.Append("\n").Append(group).Append(": no configuration of the grid converged on every reference scenario.\n");
+            sb.Append('\n').Append(Recommendations(r));
             return sb.ToString();
         }
 
