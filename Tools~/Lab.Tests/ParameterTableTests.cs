@@ -62,6 +62,7 @@ namespace HookeRope.Lab.Tests
         {
             [RopeParameters.Solver.Name] = s => (int)(s.Solver.Method == SolverMethod.GaussSeidel ? HookeRope.Solver.ConstraintSolverKind.GaussSeidel : HookeRope.Solver.ConstraintSolverKind.ExactChain),
             [RopeParameters.TensionModel.Name] = s => (int)(s.Solver.TensionOnly ? HookeRope.Solver.TensionModel.TensionOnly : HookeRope.Solver.TensionModel.Bilateral),
+            [RopeParameters.Integrator.Name] = s => (int)s.Solver.Integrator,
             [RopeParameters.NeckMode.Name] = s => (int)(s.Rope.NeckMode == "paper" ? HookeRope.Radius.NeckMode.Paper : HookeRope.Radius.NeckMode.Zone),
             [RopeParameters.PoissonThinning.Name] = s => s.Rope.PoissonThinning ? 1 : 0,
             [RopeParameters.Necking.Name] = s => s.Rope.Necking ? 1 : 0,
