@@ -20,7 +20,7 @@ namespace HookeRope.Editor
 
         SerializedProperty m_StiffnessInput, m_YoungsModulus, m_AxialStiffness, m_Density, m_PoissonRatio, m_Damping;
         SerializedProperty m_RestLength, m_Radius, m_SegmentCount;
-        SerializedProperty m_Solver, m_Substeps, m_Iterations, m_TensionModel, m_Gravity;
+        SerializedProperty m_Solver, m_Substeps, m_Iterations, m_TensionModel, m_Integrator, m_Gravity;
         SerializedProperty m_Start, m_End, m_AttachmentCompliance, m_OnStepped;
         SerializedProperty m_CollisionMode, m_Colliders, m_CollisionLayers, m_Planes, m_Friction;
         SerializedProperty m_RadiusModel, m_Necking, m_NeckMode, m_NeckRadiusFraction, m_DefectPosition, m_Fracture, m_BreakStrain, m_BreakRadiusFraction, m_OnBreak;
@@ -41,6 +41,7 @@ namespace HookeRope.Editor
             m_Substeps = so.FindProperty(nameof(m_Substeps));
             m_Iterations = so.FindProperty(nameof(m_Iterations));
             m_TensionModel = so.FindProperty(nameof(m_TensionModel));
+            m_Integrator = so.FindProperty(nameof(m_Integrator));
             m_Gravity = so.FindProperty(nameof(m_Gravity));
             m_Start = so.FindProperty(nameof(m_Start));
             m_End = so.FindProperty(nameof(m_End));
@@ -91,6 +92,7 @@ namespace HookeRope.Editor
                 Field(m_Substeps);
                 Field(m_Iterations);
                 Field(m_TensionModel);
+                Field(m_Integrator);
                 Field(m_Gravity);
                 StretchWarning(rope);
             }

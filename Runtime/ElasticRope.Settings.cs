@@ -54,6 +54,9 @@ namespace HookeRope
         [SerializeField, Tooltip(RopeParameters.TensionModel.Tooltip)]
         TensionModel m_TensionModel = RopeParameters.TensionModel.Default;
 
+        [SerializeField, Tooltip(RopeParameters.Integrator.Tooltip)]
+        TimeIntegrator m_Integrator = RopeParameters.Integrator.Default;
+
         [SerializeField, Min(RopeParameters.Gravity.Min), Tooltip(RopeParameters.Gravity.Tooltip)]
         Vector3 m_Gravity = new Vector3(RopeParameters.Gravity.DefaultX, RopeParameters.Gravity.DefaultY, RopeParameters.Gravity.DefaultZ);
 
@@ -190,6 +193,13 @@ namespace HookeRope
         {
             get => m_TensionModel;
             set { m_TensionModel = value; ApplySettings(); }
+        }
+
+        /// <summary>Time integrator of each substep: backward Euler (most robust, dissipative) or BDF2 (second order, low dissipation).</summary>
+        public TimeIntegrator Integrator
+        {
+            get => m_Integrator;
+            set { m_Integrator = value; ApplySettings(); }
         }
 
         /// <summary>Gravity on the rope (m/s²).</summary>
@@ -356,6 +366,7 @@ namespace HookeRope
             settings.Iterations = m_Iterations;
             settings.Solver = m_Solver;
             settings.Tension = m_TensionModel;
+            settings.Integrator = m_Integrator;
         }
 
         /// <summary>True when any radius-model feature (thinning, necking, fracture) is on; all off costs nothing per step.</summary>

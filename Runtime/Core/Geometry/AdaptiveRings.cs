@@ -83,6 +83,18 @@ namespace HookeRope.Geometry
             }
         }
 
+        /// <summary>Most rings a layout of this placement puts in one segment (the cap, or more neck stations).</summary>
+        public int MostRingsInOneSegment
+        {
+            get
+            {
+                int most = MaxRingsPerSegment;
+                if (zone != null)
+                    for (int j = 0; j < n; j++) most = Math.Max(most, zone.RingsIn(j));
+                return most;
+            }
+        }
+
         /// <summary>Tolerance of the drawn surface as a fraction of the drawn radius (<see cref="RingNeed.Tolerance"/>).</summary>
         public float ToleranceFraction => tolerance;
 
@@ -321,8 +333,9 @@ namespace HookeRope.Geometry
             layout.Begin();
             for (int j = 0; j < n; j++)
             {
-                if (hasBroken && brokenSegments[j]) { layout.Add(j, 0f); continue; }
-                if (forced[j])
+                // a broken segment keeps the neck's stations (its dangling halves draw the half-necks), else one ring
+                if (hasBroken && brokenSegments[j] && !(zone != null && zone.RingsIn(j) > 1)) { layout.Add(j, 0f); continue; }
+                if (hasBroken && brokenSegments[j] || forced[j])
                 {
                     int first = zone.FirstRing(j);
                     for (int k = first; k < first + zone.RingsIn(j); k++) layout.Add(zoneSegments[k], zoneFractions[k]);

@@ -1,4 +1,5 @@
 using System;
+using HookeRope.Fracture;
 using HookeRope.Radius;
 using HookeRope.Solver;
 
@@ -16,6 +17,7 @@ namespace HookeRope.Geometry
     {
         private readonly RopeSimulation simulation;
         private TubeMeshBuilder builder;
+        private DanglingEnds dangling;
         private float[] ringRadii = Array.Empty<float>();
         private int ringCount;
         private int radiiLayoutVersion = -1;
@@ -81,6 +83,7 @@ namespace HookeRope.Geometry
                 b.PlanRings(x, y, z, rope.BrokenSegments, NeckActive(), simulation.RestRadius * radiusScale,
                     vertices?.Length ?? 0, indices?.Length ?? 0);
             ComputeRingRadii(b.Layout, radiusScale);
+            if (rope.BrokenSegmentCount > 0) ComputeDanglingEnds(rope, radiusScale);
             b.SetContactColliders(frame.HasValue ? rope : null, frame.GetValueOrDefault());
             TubeMeshUpdate update = b.BuildWithRingRadii(x, y, z, rope.RestLengths, RingRadii, rope.BrokenSegments, vertices, indices);
             // an adaptive budget that moved: the counts differ from the last fill's (re-query sizes, re-upload indices)
@@ -88,6 +91,23 @@ namespace HookeRope.Geometry
             filledVertices = update.VertexCount;
             filledIndices = update.IndexCount;
             return update;
+        }
+
+        /// <summary>Each broken segment's halves: relaxed, half its rest length each, ending on the cut's radius (caller units).</summary>
+        private void ComputeDanglingEnds(Rope rope, float radiusScale)
+        {
+            RadiusModel model = simulation.RadiusModel;
+            bool modelled = model != null && model.IsActive;
+            float r = simulation.RestRadius;
+            ReadOnlySpan<bool> broken = rope.BrokenSegments;
+            ReadOnlySpan<float> rest = rope.RestLengths;
+            for (int j = 0; j < broken.Length; j++)
+            {
+                if (!broken[j]) continue;
+                float lower = modelled ? model.BrokenEndRadius(j, false) : r;
+                float upper = modelled ? model.BrokenEndRadius(j, true) : r;
+                dangling.Set(j, DanglingEnds.Cut * rest[j] * radiusScale, lower * radiusScale, upper * radiusScale);
+            }
         }
 
         /// <summary>True while the Zone neck is present (its stations are then drawn by an adaptive layout).</summary>
@@ -164,6 +184,8 @@ namespace HookeRope.Geometry
                     : new RingLayout(rope.SegmentCount, s.RingsPerSegment);
                 builder = new TubeMeshBuilder(s, layout, restRadius);
             }
+            dangling = new DanglingEnds(rope.SegmentCount);
+            builder.SetDanglingEnds(dangling);
             ringRadii = new float[builder.MostRings];
             ringCount = 0;
             radiiLayoutVersion = -1;

@@ -4,6 +4,7 @@ using System.Globalization;
 using ConstraintSolverKind = HookeRope.Solver.ConstraintSolverKind;
 using NeckModeKind = HookeRope.Radius.NeckMode;
 using TensionModelKind = HookeRope.Solver.TensionModel;
+using TimeIntegratorKind = HookeRope.Solver.TimeIntegrator;
 
 namespace HookeRope
 {
@@ -343,6 +344,25 @@ namespace HookeRope
             public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Solver, ParameterKind.Enum, (int)TensionModelKind.TensionOnly, (int)TensionModelKind.Bilateral, (int)Default, Tooltip, Json, true);
         }
 
+        /// <summary>Time integrator of each substep: backward Euler (most robust, dissipative) or BDF2 (second order, low dissipation).</summary>
+        public static class Integrator
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(Integrator);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Integrator";
+            /// <summary>Unit (none).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name (in the solver object: backward-euler or bdf2).</summary>
+            public const string Json = "integrator";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Backward Euler: most robust, but damps oscillations (a bounce loses height, a snatch reads low). BDF2: second order, keeps the energy of slow motion, damps only the fastest chain modes.";
+            /// <summary>Default: the core's <see cref="HookeRope.Solver.RopeSettings.DefaultIntegrator"/>.</summary>
+            public const TimeIntegratorKind Default = HookeRope.Solver.RopeSettings.DefaultIntegrator;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Solver, ParameterKind.Enum, (int)TimeIntegratorKind.BackwardEuler, (int)TimeIntegratorKind.Bdf2, (int)Default, Tooltip, Json, true);
+        }
+
         /// <summary>Gravity acceleration acting on the rope in m/s²; each component finite.</summary>
         public static class Gravity
         {
@@ -512,15 +532,20 @@ namespace HookeRope
             /// <summary>Lab JSON name.</summary>
             public const string Json = "defectPosition";
             /// <summary>Inspector tooltip.</summary>
-            public const string Tooltip = "Where the material defect sits, as a fraction of the rest length from the start (0–1). The neck and the break form there.";
-            /// <summary>Lower bound.</summary>
+            public const string Tooltip = "Where the material defect sits, as a fraction of the rest length from the start, strictly between 0 and 1 (the ends are attachments, not material). The neck and the break form there.";
+            /// <summary>Lower bound (exclusive).</summary>
             public const float Min = 0f;
-            /// <summary>Upper bound.</summary>
+            /// <summary>The lower bound is excluded.</summary>
+            public const bool MinExclusive = true;
+            /// <summary>Upper bound (exclusive).</summary>
             public const float Max = 1f;
+            /// <summary>The upper bound is excluded.</summary>
+            public const bool MaxExclusive = true;
             /// <summary>Default (the middle).</summary>
             public const float Default = 0.5f;
             /// <summary>The table row.</summary>
-            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Radius, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Radius, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true,
+                minExclusive: MinExclusive, maxExclusive: MaxExclusive);
         }
 
         /// <summary>Zone mode: rest length of the neck zone in rope diameters 2R (dimensionless).</summary>
@@ -848,7 +873,7 @@ namespace HookeRope
         {
             StiffnessInput.Row, YoungsModulus.Row, AxialStiffness.Row, Density.Row, LinearDensity.Row, PoissonRatio.Row, Damping.Row,
             RestLength.Row, Radius.Row, SegmentCount.Row,
-            Solver.Row, Substeps.Row, Iterations.Row, TensionModel.Row, Gravity.Row,
+            Solver.Row, Substeps.Row, Iterations.Row, TensionModel.Row, Integrator.Row, Gravity.Row,
             AttachmentCompliance.Row,
             Friction.Row,
             PoissonThinning.Row, Necking.Row, NeckMode.Row, NeckRadiusFraction.Row, DefectPosition.Row, NeckZoneDiameters.Row, NeckGrowthStrain.Row, SlackKeepsRestRadius.Row,
@@ -871,7 +896,7 @@ namespace HookeRope
             if (row == null) throw new ArgumentNullException(nameof(row));
             if (double.IsNaN(value)) return false;
             if (double.IsPositiveInfinity(value)) return row.AllowsPositiveInfinity;
-            return (row.MinExclusive ? value > row.Min : value >= row.Min) && value <= row.Max;
+            return (row.MinExclusive ? value > row.Min : value >= row.Min) && (row.MaxExclusive ? value < row.Max : value <= row.Max);
         }
 
         /// <summary>
@@ -893,7 +918,7 @@ namespace HookeRope
 
         /// <summary>
         /// Clamps <paramref name="value"/> into the row's finite range for the inspector: above Max (or +∞) becomes Max,
-        /// below Min becomes Min, and NaN or a value at or below an exclusive Min becomes the row's Default. Returns the
+        /// below Min becomes Min, and NaN or a value at or beyond an exclusive bound becomes the row's Default. Returns the
         /// message to log when it had to change the value (naming the label, range and unit), else null.
         /// </summary>
         public static string Clamp(ref float value, ParameterInfo row)
@@ -901,7 +926,7 @@ namespace HookeRope
             if (row == null) throw new ArgumentNullException(nameof(row));
             float before = value;
             if (float.IsNaN(value)) value = (float)row.Default;
-            else if (value > row.Max) value = (float)row.Max;
+            else if (row.MaxExclusive ? value >= row.Max : value > row.Max) value = row.MaxExclusive ? (float)row.Default : (float)row.Max;
             else if (row.MinExclusive ? value <= row.Min : value < row.Min) value = row.MinExclusive ? (float)row.Default : (float)row.Min;
             if (before.Equals(value)) return null;
             return Message(row, Format(before), Format(value));
@@ -912,7 +937,7 @@ namespace HookeRope
         {
             if (row == null) throw new ArgumentNullException(nameof(row));
             int before = value;
-            if (value > row.Max) value = (int)row.Max;
+            if (row.MaxExclusive ? value >= row.Max : value > row.Max) value = row.MaxExclusive ? (int)row.Default : (int)row.Max;
             else if (row.MinExclusive ? value <= row.Min : value < row.Min) value = row.MinExclusive ? (int)row.Default : (int)row.Min;
             if (before == value) return null;
             return Message(row, before.ToString(CultureInfo.InvariantCulture), value.ToString(CultureInfo.InvariantCulture));
@@ -923,7 +948,7 @@ namespace HookeRope
             string min = row.Kind == ParameterKind.Int ? ((long)row.Min).ToString(CultureInfo.InvariantCulture) : Format((float)row.Min);
             string max = row.Kind == ParameterKind.Int ? ((long)row.Max).ToString(CultureInfo.InvariantCulture) : Format((float)row.Max);
             if (row.AllowsPositiveInfinity) max += " or +inf";
-            return (row.MinExclusive ? "(" : "[") + min + ", " + max + "]" + Suffix(row.Unit);
+            return (row.MinExclusive ? "(" : "[") + min + ", " + max + (row.MaxExclusive ? ")" : "]") + Suffix(row.Unit);
         }
 
         static ArgumentOutOfRangeException OutOfRange(ParameterInfo row, object value) =>

@@ -100,29 +100,40 @@ namespace HookeRope.Solver
         }
 
         /// <summary>
-        /// Phase 3: the constraint iterations. The exact solver first gives taut particles their transverse inertia; each
-        /// iteration folds in the compliant pins, solves the chain (exact, plus a Gauss–Seidel polish sweep where its
-        /// linearisation was poor; or Gauss–Seidel alone), releases the pins and runs a collision pass.
+        /// Most Newton iterations of the exact chain solve in a substep. Beyond <see cref="RopeSettings.Iterations"/>, the
+        /// solve adds one iteration at a time, up to this total, while the last one was not to be trusted: its geometric
+        /// stiffness used a tension far below the one it found (a rope snatched taut, the first substep of a loaded rope),
+        /// or it moved segments across themselves so far that the linearisation was off (a whipping end). A rope that
+        /// hangs, swings or stretches smoothly needs none.
+        /// </summary>
+        public const int MaxNewtonIterations = 4;
+
+        /// <summary>
+        /// Phase 3: the constraint iterations. Each folds in the compliant pins, solves the chain (one Newton iteration of
+        /// the exact solve, or a Gauss–Seidel sweep), releases the pins and runs a collision pass. The exact solve adds
+        /// iterations, up to <see cref="MaxNewtonIterations"/>, while its tension estimate proves too low.
         /// </summary>
         private void SolvePhase(float h, double hd, double hEff, float t, double beta, bool tensionOnly, bool exact, int iterations, bool hasCompliantPins, bool trackSolve)
         {
             // the solve runs with α̃ = α/h_eff² (the integrator's effective step) and keeps the dashpot γ = β/h
             double solveBeta = beta * (hEff / hd);
-            if (exact) chain.UpdateTransverseMass(hEff); else chain.AugmentedCount = 0;
-            for (int it = 0; it < iterations; it++)
+            int total = iterations;
+            for (int it = 0; it < total; it++)
             {
                 if (trackSolve) TrackSolveDisplacement(-1.0);
                 bool softPins = hasCompliantPins && ProjectCompliantPins(hEff, t);
-                // Gauss–Seidel is the solver itself, or a polish sweep after an exact solve whose
-                // linearisation was poor somewhere (a fold); on a taut chain the sweep would change nothing
-                bool sweep = !exact || ExactChainSolver.Iterate(chain, hEff, solveBeta, tensionOnly);
-                // after an exact solve the polish sweep is a nonlinear projection (a fold), which a second-order scheme
-                // takes as a correction (a velocity kick, as a collider push) rather than as a constraint force
-                if (trackSolve && exact) TrackSolveDisplacement(1.0);
-                if (sweep) GaussSeidelSolver.Iterate(chain, hEff, solveBeta, tensionOnly);
-                if (trackSolve && !exact) TrackSolveDisplacement(1.0);
+                if (exact)
+                {
+                    bool underestimated = ExactChainSolver.Iterate(chain, hEff, solveBeta, tensionOnly, it == 0);
+                    if (underestimated && it == total - 1 && total < MaxNewtonIterations) total++;
+                }
+                else
+                {
+                    GaussSeidelSolver.Iterate(chain, hEff, solveBeta, tensionOnly);
+                }
+                if (trackSolve) TrackSolveDisplacement(1.0);
                 if (softPins) ReleaseCompliantPins(hEff, t);
-                CollidePhase(h, it == iterations - 1 ? ContactPass.LastIteration : ContactPass.BetweenIterations);
+                CollidePhase(h, it == total - 1 ? ContactPass.LastIteration : ContactPass.BetweenIterations);
             }
         }
 

@@ -29,7 +29,7 @@ namespace HookeRope.Solver
         private TimeIntegrator integrator = DefaultIntegrator;
 
         /// <summary>Default of <see cref="Integrator"/>.</summary>
-        public const TimeIntegrator DefaultIntegrator = TimeIntegrator.BackwardEuler;
+        public const TimeIntegrator DefaultIntegrator = TimeIntegrator.Bdf2;
 
         /// <summary>Incremented by every successful setter; a rope re-reads its settings when it changes.</summary>
         public int Version { get; private set; }

@@ -34,6 +34,12 @@ namespace HookeRope.World
         /// <summary>Fills served so far (0 before the first pass).</summary>
         public int FillCount { get; private set; }
 
+        /// <summary>
+        /// Whether the world's mesh passes fill this slot (default true). A host that has nothing to draw for the rope
+        /// this frame (or whose caller arrays are stale) turns it off: the buffers keep the last fill.
+        /// </summary>
+        public bool Enabled { get; set; } = true;
+
         /// <summary>True when the positions come from <see cref="UseCallerPositions(float[], float[], float[], float)"/> rather than the rope.</summary>
         public bool UsesCallerPositions => callerX != null;
 

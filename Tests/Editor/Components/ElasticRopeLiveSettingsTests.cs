@@ -162,6 +162,7 @@ namespace HookeRope.Tests.Components
         [TestCase("m_Substeps", 6, true)]
         [TestCase("m_Iterations", 3, true)]
         [TestCase("m_TensionModel", 1, true)]
+        [TestCase("m_Integrator", 1 - (int)RopeParameters.Integrator.Default, true)]   // the other integrator
         [TestCase("m_Gravity", -5f, true)]
         [TestCase("m_NeckMode", 1, true)]
         [TestCase("m_NeckRadiusFraction", 0.6f, true)]

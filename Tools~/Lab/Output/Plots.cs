@@ -235,6 +235,10 @@ namespace HookeRope.Lab.Output
             public List<double> Error = new List<double>();
             /// <summary>True when the configuration failed (diverged, NaN or no result) on a reference scenario.</summary>
             public List<bool> Failed = new List<bool>();
+            /// <summary>Draw the joining line dashed (the report's backward-Euler families, solid for BDF2).</summary>
+            public bool Dashed;
+            /// <summary>Palette index of the colour, or −1 for the next one in order (the report gives both integrators of one iteration count one colour).</summary>
+            public int Colour = -1;
         }
 
         /// <summary>
@@ -273,13 +277,15 @@ namespace HookeRope.Lab.Output
                     x.Add(lx);
                     y.Add(Math.Log10(Math.Max(s.Error[i] * 100, 1e-7)));
                 }
-                var color = palette.GetColor(colour++);
+                var color = palette.GetColor(s.Colour >= 0 ? s.Colour : colour);
+                colour++;
                 if (x.Count > 0)
                 {
                     var joined = plot.Add.Scatter(x.ToArray(), y.ToArray(), color);
                     joined.LegendText = s.Label;
                     joined.MarkerSize = 8;
                     joined.LineWidth = 1.5f;
+                    if (s.Dashed) joined.LinePattern = LinePattern.Dashed;
                 }
                 if (fx.Count > 0)
                 {

@@ -67,6 +67,12 @@ namespace HookeRope.Lab.Scenarios
         public double Damping = RopeParameters.Damping.Default;
         /// <summary>True: rope (pulls only); false: rod (bilateral).</summary>
         public bool TensionOnly = RopeParameters.TensionModel.Default == HookeRope.Solver.TensionModel.TensionOnly;
+        /// <summary>Time integrator of each substep (backward Euler or BDF2).</summary>
+        public HookeRope.Solver.TimeIntegrator Integrator = RopeParameters.Integrator.Default;
+
+        /// <summary>JSON name of an integrator: "backward-euler" or "bdf2".</summary>
+        public static string IntegratorJson(HookeRope.Solver.TimeIntegrator integrator) =>
+            integrator == HookeRope.Solver.TimeIntegrator.Bdf2 ? "bdf2" : "backward-euler";
     }
 
     /// <summary>rope {…} block. Defaults are the parameter table's (<see cref="RopeParameters"/>).</summary>
@@ -262,7 +268,7 @@ namespace HookeRope.Lab.Scenarios
     /// <summary>What the built-in scenario checks (read by tests and the summary). Optional in user files.</summary>
     public sealed class ExpectationSpec
     {
-        /// <summary>Analytic check: "none", "fall-arrest", "static-hang", "period", "catenary", "poisson", "neck", "fracture", "collision".</summary>
+        /// <summary>Analytic check: "none", "fall-arrest", "static-hang", "period", "catenary", "poisson", "neck", "fracture", "collision", "amplitude", "rebound", "snatch".</summary>
         public string Check = "none";
     }
 }

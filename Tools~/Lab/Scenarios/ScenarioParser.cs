@@ -96,7 +96,7 @@ namespace HookeRope.Lab.Scenarios
             if (expect != null)
             {
                 s.Expect.Check = expect.Choice("check", "none", "none", "fall-arrest", "static-hang", "period",
-                    "catenary", "poisson", "neck", "fracture", "collision");
+                    "catenary", "poisson", "neck", "fracture", "collision", "amplitude", "rebound", "snatch");
                 expect.RejectUnknown();
             }
             root.RejectUnknown();
@@ -113,6 +113,8 @@ namespace HookeRope.Lab.Scenarios
             spec.Damping = f.Parameter(RopeParameters.Damping.Row, spec.Damping);
             spec.TensionOnly = f.Choice(RopeParameters.TensionModel.Json, spec.TensionOnly ? "tension-only" : "bilateral",
                 "tension-only", "bilateral") == "tension-only";
+            spec.Integrator = f.Choice(RopeParameters.Integrator.Json, SolverSpec.IntegratorJson(spec.Integrator),
+                "backward-euler", "bdf2") == "bdf2" ? HookeRope.Solver.TimeIntegrator.Bdf2 : HookeRope.Solver.TimeIntegrator.BackwardEuler;
             f.RejectUnknown();
         }
 

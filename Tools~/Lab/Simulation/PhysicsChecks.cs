@@ -172,6 +172,15 @@ namespace HookeRope.Lab.Simulation
                     });
                     break;
                 }
+                case "amplitude":
+                    AddAmplitudeChecks(r, list, load, mr, g, length, ea);
+                    break;
+                case "rebound":
+                    AddReboundChecks(r, list, load, g, ea / length);
+                    break;
+                case "snatch":
+                    AddSnatchChecks(r, list, load, g, ea / length);
+                    break;
                 case "catenary":
                 {
                     var start = ScenarioGeometry.StartPosition(s);
@@ -261,6 +270,109 @@ namespace HookeRope.Lab.Simulation
                 }
             }
             return list;
+        }
+
+        /// <summary>Periods between the first and the last whole period a run of <paramref name="duration"/> s holds (the analytic period), at least 1.</summary>
+        public static int AmplitudePeriods(double duration, double period) => Math.Max(1, (int)Math.Floor(duration / period + 1e-9) - 1);
+
+        /// <summary>
+        /// Undamped spring–mass released at rest unstretched: the amplitude of the last whole period against the first
+        /// (window fits over the measured period, <see cref="DissipationMeasures.WindowAmplitude"/>), the first against the
+        /// static elongation it swings about, and the largest substep anchor tension of the first period against 2·M·g.
+        /// </summary>
+        static void AddAmplitudeChecks(RunResult r, List<CheckResult> list, double load, double ropeMass, double g, double length, double ea)
+        {
+            double analytic = HeavyRopePeriod(load, ropeMass, length, ea);
+            int periods = AmplitudePeriods(r.Scenario.Duration, analytic);
+            double period = Period(r.LoadDrop, r.HostStep);
+            double first = DissipationMeasures.WindowAmplitude(r.LoadDrop, r.HostStep, 0, period);
+            double last = DissipationMeasures.WindowAmplitude(r.LoadDrop, r.HostStep, periods * period, period);
+            list.Add(new CheckResult
+            {
+                Quantity = $"amplitude after {periods} periods", Unit = "m", Tolerance = 0.005, Expected = first, Measured = last,
+                Formula = $"= the first period's (undamped; window fits over the measured period {period:G5} s)",
+            });
+            list.Add(new CheckResult
+            {
+                Quantity = "amplitude of the first period", Unit = "m", Tolerance = 0.01, Measured = first,
+                Expected = StaticElongation(load, ropeMass, g, length, ea), Formula = "released unstretched: (M + m/2)·g·L/(E·A)",
+            });
+            double peak = 0;
+            for (int k = 0; k < r.Steps && (k + 1) * r.HostStep <= analytic; k++) peak = Math.Max(peak, r.PeakTopTensionSeries[k]);
+            list.Add(new CheckResult
+            {
+                Quantity = "peak anchor force, first period (substep max)", Unit = "N", Tolerance = 0.005, Measured = r.Steps > 0 ? peak : double.NaN,
+                Expected = 2 * load * g, Formula = "2·M·g (rope mass neglected)",
+            });
+        }
+
+        /// <summary>
+        /// Load thrown down at v from the taut, unstretched position of a tension-only cord: the first three rebounds
+        /// against v²/2g above that position (the worst first) and the bounce periods (apex to apex; the first from the
+        /// virtual apex v/g before the start) against contact + flight.
+        /// </summary>
+        static void AddReboundChecks(RunResult r, List<CheckResult> list, double load, double g, double stiffness)
+        {
+            const int Bounces = 3;
+            var s = r.Scenario;
+            var down = ScenarioGeometry.DownDirection(s.Gravity);
+            double v = Float3.Dot(s.End.Velocity, down);
+            double height = v * v / (2 * g);
+            double period = DissipationMeasures.ContactTime(load, stiffness, g, v) + 2 * v / g;
+            var apexes = DissipationMeasures.Apexes(r.LoadDrop, r.HostStep, Bounces);
+            var heights = new List<CheckResult>();
+            var periods = new List<CheckResult>();
+            double previous = -v / g;
+            for (int b = 0; b < Bounces; b++)
+            {
+                bool found = b < apexes.Count;
+                heights.Add(new CheckResult
+                {
+                    Quantity = $"rebound height, bounce {b + 1}", Unit = "m", Tolerance = 0.02, Expected = height,
+                    // a bounce that never rises above the taut position within the run rebounded 0 m (100 % low)
+                    Measured = found ? apexes[b].Height : r.NonFinite || r.Steps == 0 ? double.NaN : 0.0, Formula = found ? "v²/2g" : "v²/2g (no rebound above the taut position in the run)",
+                });
+                periods.Add(new CheckResult
+                {
+                    Quantity = $"bounce period, bounce {b + 1}", Unit = "s", Tolerance = 0.01, Expected = period,
+                    Measured = found ? apexes[b].Time - previous : double.NaN,
+                    Formula = "(π + 2·asin(x_s/A))/ω + 2v/g, ω² = k/M, x_s = Mg/k, A² = x_s² + v²/ω²",
+                });
+                if (found) previous = apexes[b].Time;
+            }
+            var worst = heights[0];
+            foreach (var c in heights) if (!double.IsFinite(c.Measured) || (double.IsFinite(worst.Measured) && c.Error > worst.Error)) worst = c;
+            list.Add(new CheckResult
+            {
+                Quantity = $"rebound height, worst of bounces 1–{Bounces}", Unit = "m", Tolerance = 0.02, Expected = height,
+                Measured = worst.Measured, Formula = worst.Formula,
+            });
+            list.AddRange(heights);
+            list.AddRange(periods);
+        }
+
+        /// <summary>
+        /// A load hanging slack below a stiff rope snatches it: the largest substep anchor tension, and the largest at the
+        /// host-step ends, against the massless formula Mg + sqrt((Mg)² + 2Mgkh) (h: the initial slack, rest length minus
+        /// the distance between the ends), and, when the energy was tracked, its largest rise (none allowed beyond round-off).
+        /// </summary>
+        static void AddSnatchChecks(RunResult r, List<CheckResult> list, double load, double g, double stiffness)
+        {
+            var s = r.Scenario;
+            double slack = Math.Max(0, s.Rope.RestLength - (ScenarioGeometry.EndPosition(s) - ScenarioGeometry.StartPosition(s)).Length);
+            double expected = FallArrestForce(load, g, stiffness, slack);
+            double peak = r.Steps > 0 ? 0 : double.NaN;
+            for (int k = 0; k < r.Steps; k++) peak = Math.Max(peak, r.PeakTopTensionSeries[k]);
+            const string Formula = "Mg + sqrt((Mg)² + 2Mgkh), k = E·A/L, h = slack";
+            list.Add(new CheckResult { Quantity = "peak anchor force (substep max)", Unit = "N", Tolerance = 0.02, Expected = expected, Measured = peak, Formula = Formula });
+            list.Add(new CheckResult { Quantity = "peak anchor force (host-step ends)", Unit = "N", Tolerance = 0.02, Expected = expected, Measured = r.PeakTopForce, Formula = Formula });
+            if (r.EnergyTracked)
+                list.Add(new CheckResult
+                {
+                    Quantity = "largest rise of the total energy", Unit = "J", Absolute = true, Expected = 0,
+                    Tolerance = 1e-6 * Math.Abs(r.InitialEnergy), Measured = Math.Max(0, r.MaxEnergy - r.InitialEnergy),
+                    Formula = "energy never rises (1e-6 of |E₀|)",
+                });
         }
 
         /// <summary>Number of trailing samples spanning a whole number of periods, at most <paramref name="limit"/>.</summary>

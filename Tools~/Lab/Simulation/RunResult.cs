@@ -129,6 +129,10 @@ namespace HookeRope.Lab.Simulation
         public double[] LoadDrop;
         /// <summary>Tension of the first segment after each host step, N.</summary>
         public double[] TopTensionSeries;
+        /// <summary>Largest first-segment (anchor) tension over the substeps of each host step, N (<see cref="HookeRope.Solver.Rope.PeakTensions"/>; 0 once that segment broke).</summary>
+        public double[] PeakTopTensionSeries;
+        /// <summary>True when the run evaluated the energy every host step (<see cref="RunOptions.TrackEnergy"/>): <see cref="InitialEnergy"/> and <see cref="MaxEnergy"/> are measured.</summary>
+        public bool EnergyTracked;
         /// <summary>Solver residual (strain error, dimensionless) after each host step.</summary>
         public float[] ResidualSeries;
         /// <summary>Elongation after each host step, m.</summary>

@@ -47,6 +47,7 @@ namespace HookeRope.Lab.Simulation
             settings.Iterations = s.Solver.Iterations;
             settings.Solver = s.Solver.Method == SolverMethod.GaussSeidel ? ConstraintSolverKind.GaussSeidel : ConstraintSolverKind.ExactChain;
             settings.Tension = s.Solver.TensionOnly ? TensionModel.TensionOnly : TensionModel.Bilateral;
+            settings.Integrator = s.Solver.Integrator;
             return settings;
         }
 
@@ -156,6 +157,7 @@ namespace HookeRope.Lab.Simulation
                 result.BreakTension = constructionBreak.Value.Tension;
             }
             result.InitialEnergy = options.TrackEnergy ? rope.TotalEnergy() : 0;
+            result.EnergyTracked = options.TrackEnergy;
             result.MaxEnergy = result.InitialEnergy;
             double dt = s.HostStep;
             int steps = s.StepCount;
@@ -163,6 +165,7 @@ namespace HookeRope.Lab.Simulation
             result.LoadDrop = new double[steps];
             result.ElongationSeries = new double[steps];
             result.TopTensionSeries = new double[steps];
+            result.PeakTopTensionSeries = new double[steps];
             result.ResidualSeries = new float[steps];
             double sampleInterval = s.Outputs.SampleRate > 0 ? 1.0 / s.Outputs.SampleRate : 0;
             double nextSample = 0;
@@ -214,6 +217,7 @@ namespace HookeRope.Lab.Simulation
                 result.LoadDrop[k] = drop;
                 result.ElongationSeries[k] = elongation;
                 result.TopTensionSeries[k] = top;
+                result.PeakTopTensionSeries[k] = rope.BrokenSegments[0] ? 0.0 : rope.PeakTensions[0];
                 if (drop > lowest) lowest = drop;
                 if (double.IsNaN(tautDrop) && bottom > Math.Max(0.1 * weight, 1e-6) && k > 0)
                 {
@@ -271,6 +275,7 @@ namespace HookeRope.Lab.Simulation
                 Array.Resize(ref result.LoadDrop, result.Steps);
                 Array.Resize(ref result.ElongationSeries, result.Steps);
                 Array.Resize(ref result.TopTensionSeries, result.Steps);
+                Array.Resize(ref result.PeakTopTensionSeries, result.Steps);
                 Array.Resize(ref result.ResidualSeries, result.Steps);
             }
             result.TotalDrop = lowest;

@@ -128,6 +128,10 @@ namespace HookeRope.Tests.Lint
                 "InitializeOnLoadAttribute", "ObjectChangeEventStream", "ObjectChangeEvents",
                 "ObjectChangeEvents+ObjectChangeEventsHandler", "ObjectChangeKind");
             Add(EditorCoreModule, "UnityEditor.SceneManagement", "PrefabStage", "PrefabStageUtility");
+            // the shared multi-rope world (issue 18 item 4): "Implemented in: UnityEngine.CoreModule" (SystemInfo) and
+            // "UnityEditor.CoreModule" (AssemblyReloadEvents, UCR Editor/Mono/AssemblyReloadEvents.cs)
+            Add(CoreModule, "UnityEngine", "SystemInfo");
+            Add(EditorCoreModule, "UnityEditor", "AssemblyReloadEvents", "AssemblyReloadEvents+AssemblyReloadCallback");
             return t;
         }
     }
