@@ -83,6 +83,12 @@ namespace HookeRope.Geometry
             }
         }
 
+        /// <summary>The neck's stations (null = none): a broken segment keeps them (<see cref="KeepsNeckStations"/>).</summary>
+        public RingLayout NeckStations => zone;
+
+        /// <summary>True when broken segment <paramref name="segment"/> is drawn with the neck's stations (its dangling halves show the half-necks), else with one ring.</summary>
+        public bool KeepsNeckStations(int segment) => zone != null && zone.RingsIn(segment) > 1;
+
         /// <summary>Most rings a layout of this placement puts in one segment (the cap, or more neck stations).</summary>
         public int MostRingsInOneSegment
         {
@@ -334,7 +340,7 @@ namespace HookeRope.Geometry
             for (int j = 0; j < n; j++)
             {
                 // a broken segment keeps the neck's stations (its dangling halves draw the half-necks), else one ring
-                if (hasBroken && brokenSegments[j] && !(zone != null && zone.RingsIn(j) > 1)) { layout.Add(j, 0f); continue; }
+                if (hasBroken && brokenSegments[j] && !KeepsNeckStations(j)) { layout.Add(j, 0f); continue; }
                 if (hasBroken && brokenSegments[j] || forced[j])
                 {
                     int first = zone.FirstRing(j);

@@ -504,13 +504,21 @@ namespace HookeRope.Geometry
                     : layout.FirstRing(b) - layout.FirstRing(a) + 1;
                 vertexCount += rings * (radial + 1);
                 tubeIndexCount += (rings - 1) * radial * 6;
-                CountEnd(a > 0, a > 0 ? DanglingRingCount(a - 1, true) : 0, ref vertexCount, ref tubeIndexCount, ref burrIndexCount);
-                CountEnd(b < n, b < n ? DanglingRingCount(b, false) : 0, ref vertexCount, ref tubeIndexCount, ref burrIndexCount);
+                CountEnd(a > 0, a > 0 ? DanglingRingCount(a - 1, true, reported) : 0, ref vertexCount, ref tubeIndexCount, ref burrIndexCount);
+                CountEnd(b < n, b < n ? DanglingRingCount(b, false, reported) : 0, ref vertexCount, ref tubeIndexCount, ref burrIndexCount);
             }
         }
 
-        /// <summary>Rings the dangling half of broken segment j on the given side adds (0 without dangling ends).</summary>
-        private int DanglingRingCount(int segment, bool upper) => dangling == null ? 0 : DanglingEnds.RingCount(layout, segment, upper);
+        /// <summary>
+        /// Rings the dangling half of broken segment j on the given side adds (0 without dangling ends): of the layout, or,
+        /// reported by an adaptive builder, of what its next layout holds there (the neck's stations or one ring).
+        /// </summary>
+        private int DanglingRingCount(int segment, bool upper, bool reported)
+        {
+            if (dangling == null) return 0;
+            if (!reported || adaptive == null) return DanglingEnds.RingCount(layout, segment, upper);
+            return adaptive.KeepsNeckStations(segment) ? DanglingEnds.RingCount(adaptive.NeckStations, segment, upper) : 1;
+        }
 
         private void CountEnd(bool brokenEnd, int danglingRings, ref int vertexCount, ref int tubeIndexCount, ref int burrIndexCount)
         {

@@ -169,6 +169,30 @@ namespace HookeRope.Tests.Core.Geometry
         }
 
         [Test]
+        public void CountsQueriedBeforeEachFillHoldThroughABreak()
+        {
+            // a rope drawn every frame (buffers sized from the counts, as the renderer does) is pulled until its Zone defect
+            // breaks: the broken segment keeps the neck's stations for its dangling halves, and the counts say so in time
+            var settings = new RopeSettings { RestLength = 1f, SegmentCount = 20, Radius = R, Gravity = Float3.Zero };
+            settings.AxialStiffness = 500f;
+            var radius = new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f, DefectPosition = 0.33f, BreakStrain = 0.5f, BreakRadiusFraction = 0f };
+            var sim = new RopeSimulation(settings, Float3.Zero, new Float3(1f, 0f, 0f), radius, new TubeMeshSettings { RadialSegments = 16 });
+            sim.Rope.AddPin(0, Float3.Zero);
+            int end = sim.Rope.AddPin(20, new Float3(1f, 0f, 0f));
+            int afterBreak = 0;
+            for (int i = 1; i <= 300 && afterBreak < 5; i++)
+            {
+                sim.Rope.SetPinTarget(end, new Float3(1f + 0.005f * i, 0f, 0f));
+                sim.Step(1f / 90f);
+                int vertexCount = sim.GetVertexCount(), indexCount = sim.GetIndexCount();
+                var update = sim.FillMesh(new TubeVertex[vertexCount], new int[indexCount]);
+                Assert.That(update.VertexCount, Is.LessThanOrEqualTo(vertexCount), "frame " + i);
+                if (sim.IsBroken) afterBreak++;
+            }
+            Assert.That(sim.IsBroken, Is.True);
+        }
+
+        [Test]
         public void AdaptiveMeshesAreWatertightIntactAndBroken()
         {
             var shape = RopeShape.UTurn(30, 0.05f, 0.1f);
