@@ -732,6 +732,25 @@ namespace HookeRope
             public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Mesh, ParameterKind.Int, Min, Max, Default, Tooltip, Json, false);
         }
 
+        /// <summary>Rings placed by need instead of RingsPerSegment in every segment (core only).</summary>
+        public static class AdaptiveRings
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(AdaptiveRings);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Adaptive rings";
+            /// <summary>Unit (none).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name (none).</summary>
+            public const string Json = null;
+            /// <summary>Tooltip.</summary>
+            public const string Tooltip = "Place the tube's rings by need: one per segment where the rope is straight, more where it bends, the neck's stations while it necks, so the drawn surface stays within the polygon's own error of the smooth tube. Off: RingsPerSegment rings in every segment.";
+            /// <summary>Default.</summary>
+            public const bool Default = true;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Mesh, ParameterKind.Bool, 0, 1, 1, Tooltip, Json, false);
+        }
+
         /// <summary>Texture v per metre of rest arc length in 1/m (core only).</summary>
         public static class VPerMetre
         {
@@ -859,7 +878,7 @@ namespace HookeRope
             Friction.Row,
             PoissonThinning.Row, Necking.Row, NeckMode.Row, NeckRadiusFraction.Row, DefectPosition.Row, NeckZoneDiameters.Row, NeckGrowthStrain.Row, SlackKeepsRestRadius.Row,
             Fracture.Row, BreakStrain.Row, BreakRadiusFraction.Row,
-            RadialSegments.Row, RingsPerSegment.Row, VPerMetre.Row, CapEnds.Row, BurrSeed.Row, BurrTexture.Row, Color.Row,
+            RadialSegments.Row, RingsPerSegment.Row, AdaptiveRings.Row, VPerMetre.Row, CapEnds.Row, BurrSeed.Row, BurrTexture.Row, Color.Row,
         };
 
         /// <summary>The row named <paramref name="name"/> (ordinal), or null.</summary>

@@ -125,6 +125,12 @@ namespace HookeRope.Radius
         public bool IsActive => Settings.AnyEnabled;
 
         /// <summary>
+        /// Incremented by every <see cref="Update"/> or <see cref="MarkBroken"/> that changed what <see cref="RadiusAt"/>
+        /// returns (compared bitwise): the mesh skips its ring-radius work while it stays the same.
+        /// </summary>
+        internal int RadiiVersion { get; private set; }
+
+        /// <summary>
         /// Recomputes radii from the current segment lengths (m) and the broken flags (null/empty = none broken),
         /// then the break decision. Spans must hold <see cref="SegmentCount"/> values. Allocation-free; does
         /// nothing when every part is off. Non-finite lengths count as unstretched.
@@ -141,6 +147,9 @@ namespace HookeRope.Radius
             RadiusSettings s = Settings;
             double nu = s.PoissonRatio;
             bool slack = s.SlackKeepsRestRadius;
+            var before = new ProfileKey(this);
+            bool profileMoved = false;
+            bool paperProfile = s.Necking && s.NeckMode == NeckMode.Paper; // the only profile that reads the current arc
             double arc = 0.0;
             for (int j = 0; j < n; j++)
             {
@@ -151,14 +160,16 @@ namespace HookeRope.Radius
                 if (isBroken || !float.IsFinite(current)) current = rest;
                 segmentStretch[j] = current / rest;
                 arc += current;
+                profileMoved |= paperProfile && currentArc[j + 1] != (float)arc;
                 currentArc[j + 1] = (float)arc;
                 segmentRadii[j] = s.PoissonThinning && !isBroken
                     ? (float)(restRadius * PoissonRadius.Ratio(rest, current, nu, slack))
                     : restRadius;
             }
-            SmoothToParticles(hasBroken ? brokenSegments : default);
+            profileMoved |= SmoothToParticles(hasBroken ? brokenSegments : default);
             LocateDefect();
             UpdateNeck();
+            if (profileMoved || !before.Equals(new ProfileKey(this))) RadiiVersion++;
             float smallest = float.PositiveInfinity;
             for (int i = 0; i <= n; i++)
             {
@@ -239,16 +250,19 @@ namespace HookeRope.Radius
         /// </summary>
         public void MarkBroken()
         {
+            RadiiVersion++;
             broken = true;
             breakReason = BreakReason.None;
             paperNecking = false;
             if (Settings.NeckMode == NeckMode.Paper) neckDepth = 0f;
         }
 
-        private void SmoothToParticles(ReadOnlySpan<bool> brokenSegments)
+        /// <summary>Particle radii from the segment radii; returns true when one changed (bitwise).</summary>
+        private bool SmoothToParticles(ReadOnlySpan<bool> brokenSegments)
         {
             int n = segmentRadii.Length;
             bool any = brokenSegments.Length > 0;
+            bool moved = false;
             for (int i = 0; i <= n; i++)
             {
                 bool left = i > 0 && !(any && brokenSegments[i - 1]);
@@ -258,8 +272,42 @@ namespace HookeRope.Radius
                 else if (left) r = segmentRadii[i - 1];
                 else if (right) r = segmentRadii[i];
                 else r = restRadius;
+                moved |= BitConverter.SingleToInt32Bits(baseParticleRadii[i]) != BitConverter.SingleToInt32Bits(r);
                 baseParticleRadii[i] = r;
             }
+            return moved;
+        }
+
+        /// <summary>The scalars <see cref="RadiusAt"/> reads besides the particle radii and arcs.</summary>
+        private readonly struct ProfileKey : IEquatable<ProfileKey>
+        {
+            private readonly int defectSegment;
+            private readonly float defectArc, neckDepth, zoneWaistSquared, paperWaist, paperAxisSquared, paperCenter;
+            private readonly bool paperNecking;
+
+            public ProfileKey(RadiusModel model)
+            {
+                defectSegment = model.defectSegment;
+                defectArc = model.defectArc;
+                neckDepth = model.neckDepth;
+                zoneWaistSquared = model.zoneWaistSquared;
+                paperWaist = model.paperWaist;
+                paperAxisSquared = model.paperAxisSquared;
+                paperCenter = model.paperCenter;
+                paperNecking = model.paperNecking;
+            }
+
+            public bool Equals(ProfileKey o) =>
+                defectSegment == o.defectSegment && paperNecking == o.paperNecking && Bits(defectArc) == Bits(o.defectArc)
+                && Bits(neckDepth) == Bits(o.neckDepth) && Bits(zoneWaistSquared) == Bits(o.zoneWaistSquared)
+                && Bits(paperWaist) == Bits(o.paperWaist) && Bits(paperAxisSquared) == Bits(o.paperAxisSquared)
+                && Bits(paperCenter) == Bits(o.paperCenter);
+
+            public override bool Equals(object obj) => obj is ProfileKey other && Equals(other);
+
+            public override int GetHashCode() => defectSegment;
+
+            private static int Bits(float value) => BitConverter.SingleToInt32Bits(value);
         }
 
         private void LocateDefect()

@@ -246,7 +246,7 @@ namespace HookeRope.Tests.Core.Parameters
                 Assert.That(actual, IsDerived(row) ? Is.EqualTo(row.Default).Within(1e-3).Percent : Is.EqualTo(row.Default), settings.GetType().Name + "." + row.Name);
                 checkedRows++;
             }
-            Assert.That(checkedRows, Is.EqualTo(28), "RopeSettings 12 rows (gravity is a vector), RadiusSettings 12, TubeMeshSettings 4");
+            Assert.That(checkedRows, Is.EqualTo(29), "RopeSettings 12 rows (gravity is a vector), RadiusSettings 12, TubeMeshSettings 5");
         }
 
         static bool IsDerived(ParameterInfo row) => row == RopeParameters.AxialStiffness.Row || row == RopeParameters.LinearDensity.Row;
