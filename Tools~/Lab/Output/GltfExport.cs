@@ -14,8 +14,8 @@ namespace HookeRope.Lab.Output
     /// with repeat wrap and trilinear mipmap filtering (the viewer builds the mip chain, as glTF carries level 0 only),
     /// opaque (the texture's alpha triangles are not a cut-out, as in the package). Texture coordinates are flipped to
     /// glTF's convention (origin at the image's top-left: v_glTF = 1 − v), so the strands' base (v = 1) reads the
-    /// texture's top row, where the triangles are wide, and their tips (v = 0) the bottom; tangents keep their sign (the
-    /// bitangent, cross(normal, tangent), still points up the image, towards the core's +v).
+    /// texture's top row, where the triangles are wide, and their tips (v = 0) the bottom. Tangents are copied as the core
+    /// writes them (no normal map is exported; a viewer that normal-maps the mesh should regenerate them from these uvs).
     /// </summary>
     public static class GltfExport
     {
