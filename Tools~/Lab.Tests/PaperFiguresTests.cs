@@ -205,7 +205,8 @@ namespace HookeRope.Lab.Tests
                 // a rope pixel centre may lie half a pixel inside the disc's edge; beyond that the tube would enter the bar
                 double mainTolerance = 1.0 / figure.View.PixelsPerMetre, detailTolerance = 1.0 / inset.View.PixelsPerMetre;
                 Assert.That(mainDepth, Is.LessThan(mainTolerance), $"main view: deepest rope pixel {mainDepth * 1000:F2} mm inside the bar");
-                Assert.That(detailDepth, Is.LessThan(detailTolerance + 0.3 * ropeRadius), $"detail: deepest rope pixel {detailDepth * 1000:F2} mm inside the bar");
+                // issue 17 item 4: the drawn surface stays outside the collider within 2 % of the rope's radius
+                Assert.That(detailDepth, Is.LessThan(detailTolerance + 0.02 * ropeRadius), $"detail: deepest rope pixel {detailDepth * 1000:F2} mm inside the bar");
                 TestContext.WriteLine("Fig. 9a deepest rope pixel inside the bar: main {0:F2} mm ({1:F2} px), detail {2:F2} mm ({3:F2} px)",
                     mainDepth * 1000, mainDepth * figure.View.PixelsPerMetre, detailDepth * 1000, detailDepth * inset.View.PixelsPerMetre);
             }
