@@ -26,6 +26,13 @@ namespace HookeRope.Geometry
     {
         private const float MaxSlope = 10f;
 
+        /// <summary>
+        /// Least distance between consecutive ring centres, as a fraction of the ring radius: a ring closer to the one before
+        /// (coincident particles, a segment squeezed to a point) is pushed forward by it, so no triangle has zero area. Equal to
+        /// <see cref="FoldRadius"/>, so that a fold tip next to such rings still keeps its triangles ≥ 1e-6 r² at 64 sides.
+        /// </summary>
+        internal const float PushDistance = FoldRadius;
+
         /// <summary>What a build recomputed.</summary>
         internal enum BuildKind
         {
@@ -352,7 +359,8 @@ namespace HookeRope.Geometry
             }
 
             var bounds = new Bounds(true);
-            bool rewriteStrands = !radiiOnly || StrandEndsMove(radii, brokenSegments);
+            if (radiiOnly) UpdateAllRadii(radii, brokenSegments);
+            bool rewriteStrands = !radiiOnly || StrandEndsMoved(brokenSegments);
             if (rewriteStrands) strandBounds = new Bounds(true);
             int vertexBase = 0;
             int tubeCursor = 0;
@@ -433,7 +441,7 @@ namespace HookeRope.Geometry
 
         /// <summary>
         /// True when new <paramref name="radii"/> leave the ring centres as they are: the last full build pushed no ring
-        /// forward for being closer than 1e-3·r to the one before, and none would be with these radii.
+        /// forward for being closer than <see cref="PushDistance"/>·r to the one before, and none would be with these radii.
         /// </summary>
         private bool CentresKeep(ReadOnlySpan<float> radii, ReadOnlySpan<bool> brokenSegments)
         {
@@ -444,24 +452,32 @@ namespace HookeRope.Geometry
                 int first = layout.FirstRing(a), last = layout.FirstRing(b);
                 for (int k = first + 1; k <= last; k++)
                 {
-                    float minimum = 1e-3f * Clamped(radii[k]) + 1e-7f;
+                    float minimum = PushDistance * Clamped(radii[k]) + 1e-7f;
                     if (!(spacing2[k] >= minimum * minimum)) return false;
                 }
             }
             return true;
         }
 
-        /// <summary>True when a broken end's ring radius changes (its cap and strands move).</summary>
-        private bool StrandEndsMove(ReadOnlySpan<float> radii, ReadOnlySpan<bool> brokenSegments)
+        /// <summary>The radius work of a radius-only build, piece by piece (before anything is written, so the strands know whether their ends moved).</summary>
+        private void UpdateAllRadii(ReadOnlySpan<float> radii, ReadOnlySpan<bool> brokenSegments)
+        {
+            int n = layout.SegmentCount;
+            int segment = 0;
+            while (NextPiece(brokenSegments, n, ref segment, out int a, out int b))
+                UpdateRadii(layout.FirstRing(a), layout.FirstRing(b), radii);
+        }
+
+        /// <summary>After <see cref="UpdateAllRadii"/>: true when a broken end's ring was rewritten (its cap and strands move).</summary>
+        private bool StrandEndsMoved(ReadOnlySpan<bool> brokenSegments)
         {
             if (!burrEnabled || brokenSegments.Length == 0) return false;
             int n = layout.SegmentCount;
             int segment = 0;
             while (NextPiece(brokenSegments, n, ref segment, out int a, out int b))
             {
-                int first = layout.FirstRing(a), last = layout.FirstRing(b);
-                if (a > 0 && BitConverter.SingleToInt32Bits(Clamped(radii[first])) != BitConverter.SingleToInt32Bits(ringRadii[first])) return true;
-                if (b < n && BitConverter.SingleToInt32Bits(Clamped(radii[last])) != BitConverter.SingleToInt32Bits(ringRadii[last])) return true;
+                if (a > 0 && dirty[layout.FirstRing(a)]) return true;
+                if (b < n && dirty[layout.FirstRing(b)]) return true;
             }
             return false;
         }
@@ -536,17 +552,17 @@ namespace HookeRope.Geometry
             int first = layout.FirstRing(a);
             int last = layout.FirstRing(b);
             // which rings must be written: all of them after new positions, the changed ones after new radii only
-            if (radiiOnly)
-            {
-                UpdateRadii(first, last, radii);
-            }
-            else
+            if (!radiiOnly)
             {
                 for (int k = first; k <= last; k++) { ringRadii[k] = Clamped(radii[k]); dirty[k] = true; }
                 ComputeCenters(a, b, first, last, x, y, z);
                 if (contactRope != null && contactRope.ColliderCount > 0) PushCentersOutOfColliders(first, last);
                 ComputeFrames(a, b, first, last);
+                ComputeRingLimits(first, last);
+                LimitRadii(first, last, radii);
+                for (int k = first; k <= last; k++) ringRadii[k] = drawnRadii[k];
                 ComputeSlopes(first, last);
+                MarkStripNormals(first, last);
             }
 
             bool startBroken = a > 0, endBroken = b < n;
@@ -565,10 +581,14 @@ namespace HookeRope.Geometry
                 vertexBase += stride;
             }
 
+            // the dangling halves' first rings, for the normals of end rings drawn from their strips
+            Neighbour beforeFirst = DanglingNeighbour(startRings > 0 && stripNormals[first], a - 1, true, first);
+            Neighbour afterLast = DanglingNeighbour(endBroken && dangling != null && stripNormals[last], b, false, last);
             for (int k = first; k <= last; k++)
             {
                 int ringBase = vertexBase + (k - first) * stride;
-                if (dirty[k]) WriteRing(k, vertices.AsSpan(ringBase, stride));
+                if (dirty[k] && stripNormals[k]) WriteRingOnStrips(k, first, last, beforeFirst, afterLast, vertices.AsSpan(ringBase, stride));
+                else if (dirty[k]) WriteRing(k, vertices.AsSpan(ringBase, stride));
                 AddRingBounds(k, ref bounds);
                 if (k < last) WriteStrip(ringBase, ringBase + stride, indices, writeIndices, ref tubeCursor);
             }

@@ -91,6 +91,29 @@ namespace HookeRope.Tests.Core.Geometry
             }
         }
 
+        /// <summary>
+        /// Triangles of indices[start, start + count) wound against their own vertex normals (inverted: the winding normal
+        /// Cross(b − a, c − a) has a negative dot product with the sum of the three vertex normals; a GPU culls them where
+        /// they should show and lights them from behind), and their summed area (m²). Zero-area triangles are never inverted.
+        /// </summary>
+        public static int Inverted(TubeVertex[] vertices, int[] indices, int start, int count, out double area)
+        {
+            int inverted = 0;
+            area = 0.0;
+            for (int t = start; t < start + count; t += 3)
+            {
+                TubeVertex a = vertices[indices[t]], b = vertices[indices[t + 1]], c = vertices[indices[t + 2]];
+                double ux = b.PX - a.PX, uy = b.PY - a.PY, uz = b.PZ - a.PZ;
+                double wx = c.PX - a.PX, wy = c.PY - a.PY, wz = c.PZ - a.PZ;
+                double nx = uy * wz - uz * wy, ny = uz * wx - ux * wz, nz = ux * wy - uy * wx;
+                double along = nx * ((double)a.NX + b.NX + c.NX) + ny * ((double)a.NY + b.NY + c.NY) + nz * ((double)a.NZ + b.NZ + c.NZ);
+                if (!(along < 0.0)) continue;
+                inverted++;
+                area += 0.5 * Math.Sqrt(nx * nx + ny * ny + nz * nz);
+            }
+            return inverted;
+        }
+
         /// <summary>True when every float of the first <paramref name="count"/> vertices is finite and every normal and tangent is unit length within 1e-3.</summary>
         public static bool AllFiniteAndUnit(TubeVertex[] vertices, int count)
         {
