@@ -24,13 +24,13 @@ namespace HookeRope.Solver
         /// </summary>
         public const float ViolentStrain = 0.5f;
 
-        /// <summary>True when some intact segment's predicted length (the solve's linearisation point) exceeds (1 + <see cref="ViolentStrain"/>)·L.</summary>
+        /// <summary>True when some intact segment's predicted length (the solve's linearisation point) exceeds (1 + <see cref="ViolentStrain"/>)·L (L_p for a plastic segment: its permanent set is not a violent stretch).</summary>
         private bool Violent()
         {
             float[] length = chain.Length, rest = chain.RestLength;
             bool[] broken = chain.Broken;
             for (int j = 0; j < chain.SegmentCount; j++)
-                if (!broken[j] && length[j] > (1f + ViolentStrain) * rest[j]) return true;
+                if (!broken[j] && length[j] > (1f + ViolentStrain) * (chain.Plasticity != null ? (float)chain.Plasticity.Rest(j) : rest[j])) return true;
             return false;
         }
 
