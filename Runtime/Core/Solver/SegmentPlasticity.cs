@@ -36,6 +36,7 @@ namespace HookeRope.Solver
         /// <summary>Relative band around the yield force inside which the exact solve keeps a segment's branch (no switch on round-off).</summary>
         public const double BranchTolerance = 1e-9;
 
+
         private readonly double[] plasticRest;
         private readonly double[] reference;
         private readonly bool[] yielding;
@@ -191,7 +192,8 @@ namespace HookeRope.Solver
         /// <summary>
         /// Exact solve, after an iteration: a segment whose solved force (−λ/h², N) passed its yield force takes the yielding
         /// branch, a yielding one whose force fell below it (it unloads) the elastic one. Returns true when a branch changed
-        /// (the next Newton iteration solves with it).
+        /// (the next Newton iteration solves with it) or a yielding segment's force is off its direction by more than
+        /// <see cref="MisalignmentTolerance"/>.
         /// </summary>
         public bool UpdateBranches(ChainState c, double invH2)
         {
@@ -204,6 +206,7 @@ namespace HookeRope.Solver
                 double ty = YieldForce(j);
                 if (double.IsPositiveInfinity(ty)) { if (yielding[j]) { yielding[j] = false; changed = true; } continue; }
                 double t = -lambda[j] * invH2;
+                if (yielding[j] && Misaligned(c, j) > MisalignmentTolerance) changed = true;
                 if (!yielding[j])
                 {
                     if (t > ty * (1.0 + BranchTolerance) && t > 0.0) { yielding[j] = true; changed = true; }
@@ -218,6 +221,31 @@ namespace HookeRope.Solver
         }
 
         /// <summary>
+        /// Largest sine of the angle between a yielding segment's force and its direction after an exact-solve iteration
+        /// that needs no further iteration. A yielding segment's length no longer constrains its force (it carries T_y at
+        /// any length), so a single linearised iteration can leave its force pointing where the segment was: a sideways
+        /// force of T_y·sin θ that does work. Left unchecked on a rope whipping taut (a 100 kg fall with the rope starting
+        /// above its anchor), it grew a sideways mode that gained 2.9 kJ in the arrest with BDF2.
+        /// </summary>
+        public const double MisalignmentTolerance = 1e-3;
+
+        /// <summary>
+        /// Sine of the angle between yielding segment j's accumulated force vector Λ_j and its live direction (after the
+        /// iteration's motion): a plastic element carries T_y along itself whatever its length, so only the direction of its
+        /// force is left to converge.
+        /// </summary>
+        private static double Misaligned(ChainState c, int j)
+        {
+            double fx = c.ForceX[j], fy = c.ForceY[j], fz = c.ForceZ[j];
+            double dx = (double)c.PrevX[j + 1] + c.DX[j + 1] - c.PrevX[j] - c.DX[j];
+            double dy = (double)c.PrevY[j + 1] + c.DY[j + 1] - c.PrevY[j] - c.DY[j];
+            double dz = (double)c.PrevZ[j + 1] + c.DZ[j + 1] - c.PrevZ[j] - c.DZ[j];
+            double cx = fy * dz - fz * dy, cy = fz * dx - fx * dz, cz = fx * dy - fy * dx;
+            double norms = Math.Sqrt((fx * fx + fy * fy + fz * fz) * (dx * dx + dy * dy + dz * dz));
+            return norms > 0.0 ? Math.Sqrt(cx * cx + cy * cy + cz * cz) / norms : 0.0;
+        }
+
+        /// <summary>
         /// The return mapping at the end of a substep (positions committed; <paramref name="gamma"/> = β/h, the damping
         /// fold of the substep): every intact segment whose trial force passes its yield force flows by
         /// ΔL_p = ((l − L_p) + γ(l − l₀) − α·T_y)/(1 + γ + α·H_t/L), capped by the absorber's remaining deployment; the work
@@ -229,26 +257,29 @@ namespace HookeRope.Solver
             float[] x = c.X, y = c.Y, z = c.Z, px = c.PrevX, py = c.PrevY, pz = c.PrevZ;
             bool[] broken = c.Broken;
             for (int j = 0; j < plasticRest.Length; j++)
-            {
-                yielding[j] = false;
-                if (broken[j]) continue;
-                double ty = YieldForce(j);
-                if (double.IsPositiveInfinity(ty)) continue;
-                double alpha = c.Compliance[j];
-                double g = alpha > 0.0 ? gamma : 0.0;
-                double l = Distance(x, y, z, j), l0 = Distance(px, py, pz, j);
-                double lp = plasticRest[j], rest = reference[j];
-                double excess = (l - lp) + g * (l - l0) - alpha * ty;
-                // a rigid (α = 0) segment's length is its rest length up to round-off: it flows only where the solve pulled at the yield force
-                if (!(excess > 0.0) || (alpha == 0.0 && c.Tension[j] < ty)) continue;
-                double tangent = Tangent(j);
-                double flow = excess / (1.0 + g + alpha * tangent / rest);
-                if (j == absorberSegment) flow = Math.Min(flow, absorberDeployment - (lp - rest));
-                if (!(flow > 0.0)) continue;
-                plasticRest[j] = lp + flow;
-                PlasticWork += flow * (ty + 0.5 * tangent * flow / rest);
-                yielding[j] = !double.IsPositiveInfinity(YieldForce(j));
-            }
+                yielding[j] = Flow(c, j, gamma, x, y, z, px, py, pz, broken[j]) && !double.IsPositiveInfinity(YieldForce(j));
+        }
+
+        /// <summary>The return mapping of segment j; true when it flowed.</summary>
+        private bool Flow(ChainState c, int j, double gamma, float[] x, float[] y, float[] z, float[] px, float[] py, float[] pz, bool broken)
+        {
+            if (broken) return false;
+            double ty = YieldForce(j);
+            if (double.IsPositiveInfinity(ty)) return false;
+            double alpha = c.Compliance[j];
+            double g = alpha > 0.0 ? gamma : 0.0;
+            double l = Distance(x, y, z, j), l0 = Distance(px, py, pz, j);
+            double lp = plasticRest[j], rest = reference[j];
+            double excess = (l - lp) + g * (l - l0) - alpha * ty;
+            // a rigid (α = 0) segment's length is its rest length up to round-off: it flows only where the solve pulled at the yield force
+            if (!(excess > 0.0) || (alpha == 0.0 && c.Tension[j] < ty)) return false;
+            double tangent = Tangent(j);
+            double flow = excess / (1.0 + g + alpha * tangent / rest);
+            if (j == absorberSegment) flow = Math.Min(flow, absorberDeployment - (lp - rest));
+            if (!(flow > 0.0)) return false;
+            plasticRest[j] = lp + flow;
+            PlasticWork += flow * (ty + 0.5 * tangent * flow / rest);
+            return true;
         }
 
         /// <summary>Σ (L_p − L) over the intact segments (m): the permanent set, absorber deployment included.</summary>

@@ -2,7 +2,7 @@ using System;
 using HookeRope.Mathematics;
 using HookeRope.Solver;
 
-namespace HookeRope.Tests.Material
+namespace HookeRope.Tests.MaterialLaw
 {
     /// <summary>Builders of the material-law tests (issue 15).</summary>
     internal static class MaterialTestKit

@@ -2,7 +2,7 @@ using System;
 using HookeRope.Solver;
 using NUnit.Framework;
 
-namespace HookeRope.Tests.Material
+namespace HookeRope.Tests.MaterialLaw
 {
     /// <summary>Issue 15 item 5: the quasi-static force–elongation curve (the inspector preview's geometry, the lab plot's reference) against the law's formulas.</summary>
     public sealed class ForceElongationCurveTests

@@ -2,7 +2,7 @@ using System;
 using HookeRope.Solver;
 using NUnit.Framework;
 
-namespace HookeRope.Tests.Material
+namespace HookeRope.Tests.MaterialLaw
 {
     /// <summary>
     /// Issue 15, bad input: a yield strain above the break (ultimate) strain, a negative hardening, a plateau force ≤ 0 throw

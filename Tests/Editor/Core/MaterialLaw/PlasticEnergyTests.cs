@@ -3,7 +3,7 @@ using HookeRope.Mathematics;
 using HookeRope.Solver;
 using NUnit.Framework;
 
-namespace HookeRope.Tests.Material
+namespace HookeRope.Tests.MaterialLaw
 {
     /// <summary>
     /// Issue 15 item 3: plastic work is dissipated. Both ways: the mechanical energy plus the plastic work ∫T dL_p never
@@ -27,6 +27,31 @@ namespace HookeRope.Tests.Material
             Assert.That(gain, Is.LessThanOrEqualTo(1e-6 * Math.Abs(e0)), "E + W_p never rises");
             Assert.That(loss, Is.EqualTo(work).Within(0.5).Percent, "the loss is the plastic work within 0.5 %");
             Assert.That(work, Is.EqualTo(4000 * rope.AbsorberDeployment).Within(0.1).Percent, "the plateau's work F_p·x_d");
+        }
+
+        [TestCase(1f / 200f)]
+        [TestCase(1f / 90f)]
+        public void LanyardThatStartsAboveItsAnchorWhipsTautWithoutGainingEnergy(float hostStep)
+        {
+            // the worker stands 2 m above the anchor with the lanyard pointing up (as a scene sets it up) and falls 4 m: the
+            // rope (0.23 kg/m) folds over and whips taut while the absorber deploys. A yielding segment's force must follow
+            // its direction (SegmentPlasticity.MisalignmentTolerance): unchecked, BDF2 gained 2.9 kJ here and used the absorber up
+            var s = MaterialTestKit.LanyardSettings(absorber: true, segments: 16);
+            s.LinearDensity = 0.229f;
+            var rope = new Rope(s, Float3.Zero, new Float3(0.01f, 2f, 0f));
+            rope.AddPin(0, Float3.Zero);
+            int load = rope.AddLoad(rope.ParticleCount - 1, 100f);
+            double e0 = rope.TotalEnergy(), gain = double.NegativeInfinity, peak = 0.0;
+            for (int k = 0; k < (int)(3f / hostStep); k++)
+            {
+                rope.Step(hostStep);
+                peak = Math.Max(peak, rope.GetLoadPeakForce(load));
+                gain = Math.Max(gain, rope.TotalEnergy() + rope.PlasticWork - e0);
+            }
+            TestContext.WriteLine($"host step {hostStep:G3} s: peak {peak:F1} N, deployment {rope.AbsorberDeployment:F4} m, largest E + W_p − E₀ {gain:G3} J");
+            Assert.That(gain, Is.LessThanOrEqualTo(1e-6 * Math.Abs(e0)), "no energy gain");
+            Assert.That(peak, Is.EqualTo(4000).Within(2).Percent, "the plateau holds");
+            Assert.That(rope.AbsorberDeployment, Is.LessThan(1.3), "not used up (the energy balance needs 1.27 m)");
         }
 
         [Test]

@@ -2,7 +2,7 @@ using System;
 using HookeRope.Solver;
 using NUnit.Framework;
 
-namespace HookeRope.Tests.Material
+namespace HookeRope.Tests.MaterialLaw
 {
     /// <summary>
     /// Issue 15 item 1: the elastic–plastic law of a rope between two rigid pins, pulled slowly through yield, unloaded, slack,

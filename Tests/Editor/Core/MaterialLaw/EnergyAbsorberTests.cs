@@ -3,7 +3,7 @@ using HookeRope.Mathematics;
 using HookeRope.Solver;
 using NUnit.Framework;
 
-namespace HookeRope.Tests.Material
+namespace HookeRope.Tests.MaterialLaw
 {
     /// <summary>
     /// Issue 15 item 2: a 100 kg mass after a 4 m free fall on a 2 m stiff webbing lanyard (E·A 100 kN, k = E·A/L = 50 kN/m)

@@ -5,7 +5,7 @@ using HookeRope.Radius;
 using HookeRope.Solver;
 using NUnit.Framework;
 
-namespace HookeRope.Tests.Material
+namespace HookeRope.Tests.MaterialLaw
 {
     /// <summary>
     /// Issue 15 item 1, necking: a steel-like rope (1 m, 21 segments, E·A 10 MN, ε_y 0.002, H 100 kN, necking at 0.15,
