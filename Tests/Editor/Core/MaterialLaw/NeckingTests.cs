@@ -76,6 +76,19 @@ namespace HookeRope.Tests.MaterialLaw
         }
 
         [Test]
+        public void BreakReleasesTheElasticEnergyNotThePermanentSet()
+        {
+            // the break's recoil (Rope.BreakSegment) hands the segment's stored energy ½·(l − L_p)²/α to its ends: measured from
+            // the plastic rest length, the neck's permanent set (ε_p ≈ 0.33 of 47.6 mm) is not released as ½·(0.016 m)²/α ≈ 26 kJ
+            var pull = Run(new RadiusSettings { PoissonRatio = 0.45f });
+            var broken = pull.Simulation.Readouts.FirstBreak.Value;
+            double alpha = (1.0 / 21) / EA, elastic = 0.5 * broken.Tension * broken.Tension * alpha;
+            TestContext.WriteLine($"stored {broken.StoredEnergy:G4} J (½·T²·α = {elastic:G4} J at T = {broken.Tension:F1} N), recoil {broken.RecoilEnergy:G4} J");
+            Assert.That(broken.StoredEnergy, Is.LessThan(0.1), "joules, not kilojoules");
+            Assert.That(broken.StoredEnergy, Is.EqualTo(elastic).Within(1).Percent, "the elastic stretch at the break's tension (measured 0.006038 J both)");
+        }
+
+        [Test]
         public void PlasticStrainLocalisesInTheNeckSegment()
         {
             var pull = Run(new RadiusSettings { PoissonRatio = 0.45f, Fracture = false }, 3.2);
