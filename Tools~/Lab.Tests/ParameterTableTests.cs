@@ -55,6 +55,12 @@ namespace HookeRope.Lab.Tests
             [RopeParameters.BreakRadiusFraction.Name] = Rope(RopeParameters.BreakRadiusFraction.Json, s => s.Rope.BreakRadiusFraction),
             [RopeParameters.RadialSegments.Name] = Rope(RopeParameters.RadialSegments.Json, s => s.Rope.RadialSegments),
             [RopeParameters.BurrSeed.Name] = Rope(RopeParameters.BurrSeed.Json, s => s.Rope.Seed),
+            [RopeParameters.YieldStrain.Name] = Rope(RopeParameters.YieldStrain.Json, s => s.Rope.YieldStrain),
+            [RopeParameters.HardeningModulus.Name] = Rope(RopeParameters.HardeningModulus.Json, s => s.Rope.HardeningModulus),
+            [RopeParameters.NeckingStrain.Name] = Rope(RopeParameters.NeckingStrain.Json, s => s.Rope.NeckingStrain),
+            [RopeParameters.UltimateStrain.Name] = Rope(RopeParameters.UltimateStrain.Json, s => s.Rope.UltimateStrain),
+            [RopeParameters.AbsorberForce.Name] = Rope(RopeParameters.AbsorberForce.Json, s => s.Rope.AbsorberForce),
+            [RopeParameters.AbsorberDeployment.Name] = Rope(RopeParameters.AbsorberDeployment.Json, s => s.Rope.AbsorberDeployment),
         };
 
         /// <summary>Rows that are not a single number, with the default the spec reads as the row's number (enum value, bool 0/1).</summary>
@@ -69,6 +75,8 @@ namespace HookeRope.Lab.Tests
             [RopeParameters.Fracture.Name] = s => s.Rope.Fracture ? 1 : 0,
             [RopeParameters.SlackKeepsRestRadius.Name] = s => s.Rope.SlackKeepsRestRadius ? 1 : 0,
             [RopeParameters.Gravity.Name] = s => double.NaN,
+            [RopeParameters.MaterialModel.Name] = s => (int)(s.Rope.IsPlastic ? HookeRope.Solver.MaterialModel.ElasticPlastic : HookeRope.Solver.MaterialModel.Elastic),
+            [RopeParameters.EnergyAbsorber.Name] = s => s.Rope.EnergyAbsorber ? 1 : 0,
         };
 
         static Field Rope(string json, Func<Scenario, double> read) =>

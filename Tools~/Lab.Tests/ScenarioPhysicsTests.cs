@@ -90,7 +90,8 @@ namespace HookeRope.Lab.Tests
         {
             var covered = new[] { "fall-arrest", "static-hang", "spring-oscillator", "heavy-mass-ratio", "steel-cable",
                 "poisson-sweep", "necking", "fracture", "collision-bend", "catenary",
-                "spring-amplitude", "slack-bounce", "steel-snatch" };   // the last three: DissipationScenarioTests
+                "spring-amplitude", "slack-bounce", "steel-snatch",   // these three: DissipationScenarioTests
+                "plastic-necking", "absorber-arrest" };               // these two: MaterialLawScenarioTests
             Assert.That(BuiltInScenarios.Names, Is.EquivalentTo(covered));
         }
     }

@@ -240,6 +240,7 @@ namespace HookeRope.Solver
                 appliedRadius = settings.Radius;
                 for (int i = 0; i <= s; i++) chain.Radius[i] = appliedRadius;
             }
+            ApplyPlasticity();
             appliedVersion = settings.Version;
             RefreshLengths();
         }
@@ -272,7 +273,7 @@ namespace HookeRope.Solver
             return e;
         }
 
-        /// <summary>Elastic energy Σ½C²/α in joules over the loaded segments (stretched ones for a tension-only rope) and compliant pins.</summary>
+        /// <summary>Elastic energy Σ½C²/α in joules (C = l − L_p: measured from the plastic rest length) over the loaded segments (stretched ones for a tension-only rope) and compliant pins.</summary>
         public double ElasticEnergy()
         {
             double e = 0.0;
@@ -281,7 +282,7 @@ namespace HookeRope.Solver
             {
                 if (chain.Broken[j] || chain.Compliance[j] == 0f) continue;
                 double dx = (double)chain.X[j + 1] - chain.X[j], dy = (double)chain.Y[j + 1] - chain.Y[j], dz = (double)chain.Z[j + 1] - chain.Z[j];
-                double c = Math.Sqrt(dx * dx + dy * dy + dz * dz) - chain.RestLength[j];
+                double c = Math.Sqrt(dx * dx + dy * dy + dz * dz) - chain.CurrentRest(j);
                 if (tensionOnly && c < 0.0) continue;
                 e += 0.5 * c * c / chain.Compliance[j];
             }

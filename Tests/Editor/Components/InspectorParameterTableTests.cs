@@ -204,7 +204,7 @@ namespace HookeRope.Tests.Components
                     Assert.That(Convert.ToDouble(range.ConstructorArguments[1].Value), Is.EqualTo((double)(float)row.Max), where + " maximum");
                 checkedFields++;
             }
-            Assert.That(checkedFields, Is.EqualTo(18), "numeric serialized fields of ElasticRope (17) and RopeMeshRenderer (1)");
+            Assert.That(checkedFields, Is.EqualTo(24), "numeric serialized fields of ElasticRope (23: 6 of the material law, issue 15) and RopeMeshRenderer (1)");
         }
 
         static IEnumerable<string> InspectorRowNames() => InspectorRows.Select(r => r.Name);
