@@ -123,14 +123,14 @@ namespace HookeRope.Lab.Tests
                 if (!Numeric.TryGetValue(row.Name, out var field)) continue;
                 bool integer = row.Kind == ParameterKind.Int;
                 double low = row.MinExclusive ? (integer ? row.Min + 1 : NextUp(row.Min)) : row.Min;
-                double high = row.Max;
+                double high = row.MaxExclusive ? (integer ? row.Max - 1 : NextDown(row.Max)) : row.Max;
                 foreach (double value in new[] { low, high })
                 {
                     var s = ScenarioParser.Parse(field.Prefix + Text(value) + field.Suffix);
                     Assert.That(field.Read(s), Is.EqualTo(value), row.Name + " = " + Text(value));
                 }
                 double below = row.MinExclusive ? row.Min : integer ? row.Min - 1 : row.Min - Math.Max(Math.Abs(row.Min) * 1e-3, 1e-6);
-                double above = integer ? row.Max + 1 : row.Max + Math.Max(Math.Abs(row.Max) * 1e-3, 1e-6);
+                double above = row.MaxExclusive ? row.Max : integer ? row.Max + 1 : row.Max + Math.Max(Math.Abs(row.Max) * 1e-3, 1e-6);
                 foreach (double value in new[] { below, above })
                 {
                     var e = Assert.Throws<ScenarioException>(() => ScenarioParser.Parse(field.Prefix + Text(value) + field.Suffix), row.Name + " = " + Text(value));
@@ -159,5 +159,6 @@ namespace HookeRope.Lab.Tests
         }
 
         static double NextUp(double value) => value == 0 ? 1e-9 : value + Math.Abs(value) * 1e-9;
+        static double NextDown(double value) => value == 0 ? -1e-9 : value - Math.Abs(value) * 1e-9;
     }
 }

@@ -1,4 +1,5 @@
 using System;
+using HookeRope.Fracture;
 using HookeRope.Radius;
 using HookeRope.Solver;
 
@@ -13,6 +14,7 @@ namespace HookeRope.Geometry
     {
         private readonly RopeSimulation simulation;
         private TubeMeshBuilder builder;
+        private DanglingEnds dangling;
         private float[] ringRadii = Array.Empty<float>();
         private int rings;
         private bool caps;
@@ -62,8 +64,26 @@ namespace HookeRope.Geometry
             TubeMeshBuilder b = Ensure();
             ComputeRingRadii(b.Layout, radiusScale);
             Rope rope = simulation.Rope;
+            if (rope.BrokenSegmentCount > 0) ComputeDanglingEnds(rope, radiusScale);
             b.SetContactColliders(frame.HasValue ? rope : null, frame.GetValueOrDefault());
             return b.BuildWithRingRadii(x, y, z, rope.RestLengths, ringRadii, rope.BrokenSegments, vertices, indices);
+        }
+
+        /// <summary>Each broken segment's halves: relaxed, half its rest length each, ending on the cut's radius (caller units).</summary>
+        private void ComputeDanglingEnds(Rope rope, float radiusScale)
+        {
+            RadiusModel model = simulation.RadiusModel;
+            bool modelled = model != null && model.IsActive;
+            float r = simulation.RestRadius;
+            ReadOnlySpan<bool> broken = rope.BrokenSegments;
+            ReadOnlySpan<float> rest = rope.RestLengths;
+            for (int j = 0; j < broken.Length; j++)
+            {
+                if (!broken[j]) continue;
+                float lower = modelled ? model.BrokenEndRadius(j, false) : r;
+                float upper = modelled ? model.BrokenEndRadius(j, true) : r;
+                dangling.Set(j, DanglingEnds.Cut * rest[j] * radiusScale, lower * radiusScale, upper * radiusScale);
+            }
         }
 
         private void ComputeRingRadii(RingLayout layout, float radiusScale)
@@ -109,6 +129,8 @@ namespace HookeRope.Geometry
                 ? RingLayout.Adapted(rope.RestLengths, s.RingsPerSegment, model.DefectRestArc, model.NeckZoneRestLength, simulation.RestRadius, s.RadialSegments)
                 : new RingLayout(rope.SegmentCount, s.RingsPerSegment);
             builder = new TubeMeshBuilder(s, layout, restRadius);
+            dangling = new DanglingEnds(rope.SegmentCount);
+            builder.SetDanglingEnds(dangling);
             ringRadii = new float[layout.RingCount];
             TopologyVersion++;
             return builder;

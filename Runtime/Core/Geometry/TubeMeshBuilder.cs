@@ -33,6 +33,9 @@ namespace HookeRope.Geometry
         private readonly double[] restArc;
         private readonly float[] particleRadii;
         private readonly bool[] lastBroken;
+        private readonly int spareFirst;
+        private readonly int[] stations;
+        private DanglingEnds dangling;
         private int[] lastIndices;
         private Float3 frameOrigin;
         private HookeRope.Solver.Rope contactRope;
@@ -76,12 +79,16 @@ namespace HookeRope.Geometry
                 w2[k] = 0.5f * (t + 4f * t2 - 3f * t3);
                 w3[k] = 0.5f * (-t2 + t3);
             }
-            centers = new Float3[rings];
-            tangents = new Float3[rings];
-            normals = new Float3[rings];
-            ringRadii = new float[rings];
-            ringV = new float[rings];
-            slopes = new float[rings];
+            // the rings of a broken end's dangling half go to spare slots after the layout's (one half at a time)
+            int spare = DanglingEnds.MaxRingCount(layout);
+            spareFirst = rings;
+            stations = new int[spare];
+            centers = new Float3[rings + spare];
+            tangents = new Float3[rings + spare];
+            normals = new Float3[rings + spare];
+            ringRadii = new float[rings + spare];
+            ringV = new float[rings + spare];
+            slopes = new float[rings + spare];
             int n = layout.SegmentCount;
             restArc = new double[n + 1];
             particleRadii = new float[n + 1];
@@ -111,6 +118,20 @@ namespace HookeRope.Geometry
         {
             contactRope = rope;
             contactFrame = frame;
+        }
+
+        /// <summary>
+        /// Draw each broken segment's two halves (null = none: the pieces end at the particles): every piece with a broken
+        /// end continues straight along its end tangent by the half's drawn length to the cut, with the half's rings, and
+        /// the cap and burr sit on the cut. Changes the vertex and index counts.
+        /// </summary>
+        internal void SetDanglingEnds(DanglingEnds ends)
+        {
+            if (ends != null && ends.SegmentCount != layout.SegmentCount)
+                throw new ArgumentException("ends must hold SegmentCount = " + layout.SegmentCount + " segments.", nameof(ends));
+            if (ReferenceEquals(ends, dangling)) return;
+            dangling = ends;
+            topologyValid = false;
         }
 
         /// <summary>Vertices the mesh needs for these broken-segment flags (empty = intact rope).</summary>
@@ -152,12 +173,12 @@ namespace HookeRope.Geometry
             }
             ReadOnlySpan<int> segments = layout.RingSegments;
             ReadOnlySpan<float> fractions = layout.RingFractions;
-            for (int k = 0; k < ringRadii.Length; k++)
+            for (int k = 0; k < layout.RingCount; k++)
             {
                 int j = segments[k];
                 ringRadii[k] = particleRadii[j] + (particleRadii[j + 1] - particleRadii[j]) * fractions[k];
             }
-            return BuildWithRingRadii(x, y, z, restLengths, ringRadii, brokenSegments, vertices, indices);
+            return BuildWithRingRadii(x, y, z, restLengths, ringRadii.AsSpan(0, layout.RingCount), brokenSegments, vertices, indices);
         }
 
         /// <summary>
@@ -201,7 +222,7 @@ namespace HookeRope.Geometry
             float vScale = settings.VPerMetre;
             ReadOnlySpan<int> ringSegments = layout.RingSegments;
             ReadOnlySpan<float> ringFractions = layout.RingFractions;
-            for (int k = 0; k < ringV.Length; k++)
+            for (int k = 0; k < layout.RingCount; k++)
             {
                 int j = ringSegments[k];
                 double s = restArc[j] + (restArc[j + 1] - restArc[j]) * ringFractions[k];
@@ -260,13 +281,18 @@ namespace HookeRope.Geometry
                 int rings = layout.FirstRing(b) - layout.FirstRing(a) + 1;
                 vertexCount += rings * (radial + 1);
                 tubeIndexCount += (rings - 1) * radial * 6;
-                CountEnd(a > 0, ref vertexCount, ref tubeIndexCount, ref burrIndexCount);
-                CountEnd(b < n, ref vertexCount, ref tubeIndexCount, ref burrIndexCount);
+                CountEnd(a > 0, a > 0 ? DanglingRingCount(a - 1, true) : 0, ref vertexCount, ref tubeIndexCount, ref burrIndexCount);
+                CountEnd(b < n, b < n ? DanglingRingCount(b, false) : 0, ref vertexCount, ref tubeIndexCount, ref burrIndexCount);
             }
         }
 
-        private void CountEnd(bool brokenEnd, ref int vertexCount, ref int tubeIndexCount, ref int burrIndexCount)
+        /// <summary>Rings the dangling half of broken segment j on the given side adds (0 without dangling ends).</summary>
+        private int DanglingRingCount(int segment, bool upper) => dangling == null ? 0 : DanglingEnds.RingCount(layout, segment, upper);
+
+        private void CountEnd(bool brokenEnd, int danglingRings, ref int vertexCount, ref int tubeIndexCount, ref int burrIndexCount)
         {
+            vertexCount += danglingRings * (radial + 1);
+            tubeIndexCount += danglingRings * radial * 6;
             if (brokenEnd || capEnds) { vertexCount += radial + 1; tubeIndexCount += radial * 3; }
             if (brokenEnd && burrEnabled) { vertexCount += fibreCount * 9; burrIndexCount += fibreCount * 9; }
         }
@@ -284,32 +310,90 @@ namespace HookeRope.Geometry
             ComputeSlopes(first, last);
 
             bool startBroken = a > 0, endBroken = b < n;
-            if (startBroken || capEnds) WriteCap(first, false, vertices, indices, writeIndices, ref vertexBase, ref tubeCursor, ref bounds);
-            if (startBroken && burrEnabled) WriteStrands(first, false, 2 * (a - 1) + 1, vertices, indices, writeIndices, ref vertexBase, ref burrCursor, ref bounds);
-
             int stride = radial + 1;
+            // a broken start: the dangling upper half of segment a − 1 (spare slots, tip last), drawn from its tip inward
+            int startRings = startBroken && dangling != null ? PlaceDanglingHalf(a - 1, true, first) : 0;
+            int startTip = startRings > 0 ? spareFirst + startRings - 1 : first;
+            if (startBroken || capEnds) WriteCap(startTip, false, vertices, indices, writeIndices, ref vertexBase, ref tubeCursor, ref bounds);
+            if (startBroken && burrEnabled) WriteStrands(startTip, false, 2 * (a - 1) + 1, vertices, indices, writeIndices, ref vertexBase, ref burrCursor, ref bounds);
+            for (int q = startRings - 1; q >= 0; q--)
+            {
+                WriteRing(spareFirst + q, vertices, vertexBase, ref bounds);
+                WriteStrip(vertexBase, vertexBase + stride, indices, writeIndices, ref tubeCursor);
+                vertexBase += stride;
+            }
+
             for (int k = first; k <= last; k++)
             {
                 int ringBase = vertexBase + (k - first) * stride;
                 WriteRing(k, vertices, ringBase, ref bounds);
-                if (writeIndices && k < last)
-                {
-                    for (int i = 0; i < radial; i++)
-                    {
-                        int a0 = ringBase + i, a1 = a0 + 1, b0 = a0 + stride, b1 = b0 + 1;
-                        indices[tubeCursor++] = a0; indices[tubeCursor++] = a1; indices[tubeCursor++] = b0;
-                        indices[tubeCursor++] = a1; indices[tubeCursor++] = b1; indices[tubeCursor++] = b0;
-                    }
-                }
-                else if (k < last)
-                {
-                    tubeCursor += radial * 6;
-                }
+                if (k < last) WriteStrip(ringBase, ringBase + stride, indices, writeIndices, ref tubeCursor);
             }
             vertexBase += (last - first + 1) * stride;
 
-            if (endBroken || capEnds) WriteCap(last, true, vertices, indices, writeIndices, ref vertexBase, ref tubeCursor, ref bounds);
-            if (endBroken && burrEnabled) WriteStrands(last, true, 2 * b, vertices, indices, writeIndices, ref vertexBase, ref burrCursor, ref bounds);
+            // a broken end: the dangling lower half of segment b, from the last ring out to its tip
+            int endRings = endBroken && dangling != null ? PlaceDanglingHalf(b, false, last) : 0;
+            for (int q = 0; q < endRings; q++)
+            {
+                WriteStrip(vertexBase - stride, vertexBase, indices, writeIndices, ref tubeCursor);
+                WriteRing(spareFirst + q, vertices, vertexBase, ref bounds);
+                vertexBase += stride;
+            }
+            int endTip = endRings > 0 ? spareFirst + endRings - 1 : last;
+            if (endBroken || capEnds) WriteCap(endTip, true, vertices, indices, writeIndices, ref vertexBase, ref tubeCursor, ref bounds);
+            if (endBroken && burrEnabled) WriteStrands(endTip, true, 2 * b, vertices, indices, writeIndices, ref vertexBase, ref burrCursor, ref bounds);
+        }
+
+        /// <summary>Two triangles per radial step between the rings whose first vertices are baseA and baseB (B further along v).</summary>
+        private void WriteStrip(int baseA, int baseB, int[] indices, bool writeIndices, ref int tubeCursor)
+        {
+            if (!writeIndices) { tubeCursor += radial * 6; return; }
+            for (int i = 0; i < radial; i++)
+            {
+                int a0 = baseA + i, a1 = a0 + 1, b0 = baseB + i, b1 = b0 + 1;
+                indices[tubeCursor++] = a0; indices[tubeCursor++] = a1; indices[tubeCursor++] = b0;
+                indices[tubeCursor++] = a1; indices[tubeCursor++] = b1; indices[tubeCursor++] = b0;
+            }
+        }
+
+        /// <summary>
+        /// Places the rings of a dangling half of broken segment <paramref name="segment"/> (upper: the half on particle
+        /// segment + 1, joined to the piece's first ring; else on particle segment, joined to its last ring) in the spare
+        /// slots, from the joint ring <paramref name="joint"/> out to the cut: straight along the joint's tangent (outward),
+        /// with its frame, by each station's share of the half's drawn length; radii from the layout rings and the cut
+        /// radius; v on the rest arc. Returns the number of rings (the last is the cut).
+        /// </summary>
+        private int PlaceDanglingHalf(int segment, bool upper, int joint)
+        {
+            int count = DanglingEnds.Stations(layout, segment, upper, stations);
+            Float3 c = centers[joint], t = tangents[joint];
+            Float3 outward = upper ? -t : t;
+            float half = dangling.HalfLength(segment);
+            float cutV = (float)((restArc[segment] + (restArc[segment + 1] - restArc[segment]) * DanglingEnds.Cut) * settings.VPerMetre);
+            ReadOnlySpan<float> fractions = layout.RingFractions;
+            for (int q = 0; q < count; q++)
+            {
+                int k = stations[q], slot = spareFirst + q;
+                float fraction = k >= 0 ? fractions[k] : DanglingEnds.Cut;
+                float r = k >= 0 ? ringRadii[k] : dangling.CutRadius(segment, upper);
+                centers[slot] = c + outward * (half * DanglingEnds.ShareOfHalf(fraction, upper));
+                tangents[slot] = t;
+                normals[slot] = normals[joint];
+                ringRadii[slot] = float.IsFinite(r) && r > 1e-6f ? r : 1e-6f;
+                ringV[slot] = k >= 0 ? ringV[k] : cutV;
+            }
+            if (contactRope != null && contactRope.ColliderCount > 0) PushCentersOutOfColliders(spareFirst, spareFirst + count - 1);
+            // dr/ds along the straight half (the joint ring keeps the slope its piece gave it)
+            for (int q = 0; q < count; q++)
+            {
+                int slot = spareFirst + q;
+                int behind = q > 0 ? slot - 1 : joint, ahead = q < count - 1 ? slot + 1 : slot;
+                float distance = (centers[ahead] - centers[behind]).Length;
+                float slope = distance > 1e-12f ? (ringRadii[ahead] - ringRadii[behind]) / distance : 0f;
+                if (upper) slope = -slope;
+                slopes[slot] = slope < -MaxSlope ? -MaxSlope : (slope > MaxSlope ? MaxSlope : slope);
+            }
+            return count;
         }
 
         private void ComputeCenters(int a, int b, int first, int last, ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z, Float3 origin)

@@ -532,15 +532,20 @@ namespace HookeRope
             /// <summary>Lab JSON name.</summary>
             public const string Json = "defectPosition";
             /// <summary>Inspector tooltip.</summary>
-            public const string Tooltip = "Where the material defect sits, as a fraction of the rest length from the start (0–1). The neck and the break form there.";
-            /// <summary>Lower bound.</summary>
+            public const string Tooltip = "Where the material defect sits, as a fraction of the rest length from the start, strictly between 0 and 1 (the ends are attachments, not material). The neck and the break form there.";
+            /// <summary>Lower bound (exclusive).</summary>
             public const float Min = 0f;
-            /// <summary>Upper bound.</summary>
+            /// <summary>The lower bound is excluded.</summary>
+            public const bool MinExclusive = true;
+            /// <summary>Upper bound (exclusive).</summary>
             public const float Max = 1f;
+            /// <summary>The upper bound is excluded.</summary>
+            public const bool MaxExclusive = true;
             /// <summary>Default (the middle).</summary>
             public const float Default = 0.5f;
             /// <summary>The table row.</summary>
-            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Radius, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Radius, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true,
+                minExclusive: MinExclusive, maxExclusive: MaxExclusive);
         }
 
         /// <summary>Zone mode: rest length of the neck zone in rope diameters 2R (dimensionless).</summary>
@@ -872,7 +877,7 @@ namespace HookeRope
             if (row == null) throw new ArgumentNullException(nameof(row));
             if (double.IsNaN(value)) return false;
             if (double.IsPositiveInfinity(value)) return row.AllowsPositiveInfinity;
-            return (row.MinExclusive ? value > row.Min : value >= row.Min) && value <= row.Max;
+            return (row.MinExclusive ? value > row.Min : value >= row.Min) && (row.MaxExclusive ? value < row.Max : value <= row.Max);
         }
 
         /// <summary>
@@ -894,7 +899,7 @@ namespace HookeRope
 
         /// <summary>
         /// Clamps <paramref name="value"/> into the row's finite range for the inspector: above Max (or +∞) becomes Max,
-        /// below Min becomes Min, and NaN or a value at or below an exclusive Min becomes the row's Default. Returns the
+        /// below Min becomes Min, and NaN or a value at or beyond an exclusive bound becomes the row's Default. Returns the
         /// message to log when it had to change the value (naming the label, range and unit), else null.
         /// </summary>
         public static string Clamp(ref float value, ParameterInfo row)
@@ -902,7 +907,7 @@ namespace HookeRope
             if (row == null) throw new ArgumentNullException(nameof(row));
             float before = value;
             if (float.IsNaN(value)) value = (float)row.Default;
-            else if (value > row.Max) value = (float)row.Max;
+            else if (row.MaxExclusive ? value >= row.Max : value > row.Max) value = row.MaxExclusive ? (float)row.Default : (float)row.Max;
             else if (row.MinExclusive ? value <= row.Min : value < row.Min) value = row.MinExclusive ? (float)row.Default : (float)row.Min;
             if (before.Equals(value)) return null;
             return Message(row, Format(before), Format(value));
@@ -913,7 +918,7 @@ namespace HookeRope
         {
             if (row == null) throw new ArgumentNullException(nameof(row));
             int before = value;
-            if (value > row.Max) value = (int)row.Max;
+            if (row.MaxExclusive ? value >= row.Max : value > row.Max) value = row.MaxExclusive ? (int)row.Default : (int)row.Max;
             else if (row.MinExclusive ? value <= row.Min : value < row.Min) value = row.MinExclusive ? (int)row.Default : (int)row.Min;
             if (before == value) return null;
             return Message(row, before.ToString(CultureInfo.InvariantCulture), value.ToString(CultureInfo.InvariantCulture));
@@ -924,7 +929,7 @@ namespace HookeRope
             string min = row.Kind == ParameterKind.Int ? ((long)row.Min).ToString(CultureInfo.InvariantCulture) : Format((float)row.Min);
             string max = row.Kind == ParameterKind.Int ? ((long)row.Max).ToString(CultureInfo.InvariantCulture) : Format((float)row.Max);
             if (row.AllowsPositiveInfinity) max += " or +inf";
-            return (row.MinExclusive ? "(" : "[") + min + ", " + max + "]" + Suffix(row.Unit);
+            return (row.MinExclusive ? "(" : "[") + min + ", " + max + (row.MaxExclusive ? ")" : "]") + Suffix(row.Unit);
         }
 
         static ArgumentOutOfRangeException OutOfRange(ParameterInfo row, object value) =>

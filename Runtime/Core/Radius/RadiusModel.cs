@@ -15,6 +15,7 @@ namespace HookeRope.Radius
         private readonly float[] restArc;
         private readonly float[] currentArc;
         private readonly float[] segmentStretch;
+        private readonly bool[] segmentBroken;
         private readonly float restRadius;
         private int defectSegment;
         private float defectT;
@@ -45,6 +46,7 @@ namespace HookeRope.Radius
             this.restRadius = restRadius;
             segmentRadii = new float[n];
             segmentStretch = new float[n];
+            segmentBroken = new bool[n];
             baseParticleRadii = new float[n + 1];
             particleRadii = new float[n + 1];
             restArc = new float[n + 1];
@@ -145,6 +147,7 @@ namespace HookeRope.Radius
                 float rest = restArc[j + 1] - restArc[j];
                 float current = currentLengths[j];
                 bool isBroken = hasBroken && brokenSegments[j];
+                segmentBroken[j] = isBroken;
                 if (isBroken || !float.IsFinite(current)) current = rest;
                 segmentStretch[j] = current / rest;
                 arc += current;
@@ -171,14 +174,39 @@ namespace HookeRope.Radius
 
         /// <summary>
         /// Radius in metres at fraction <paramref name="t"/> ∈ [0, 1] (clamped) of segment <paramref name="segment"/>
-        /// (0 … SegmentCount − 1): the particle radii interpolated linearly, times the neck profile where it applies.
+        /// (0 … SegmentCount − 1): the particle radii interpolated linearly, times the neck profile where it applies. A
+        /// broken segment parted at its middle: t ≤ ½ takes the radius of particle <paramref name="segment"/>, t &gt; ½ that
+        /// of particle segment + 1 (each dangling half keeps the radius of the end it hangs from).
         /// </summary>
         public float RadiusAt(int segment, float t)
         {
             if ((uint)segment >= (uint)segmentRadii.Length)
                 throw new ArgumentOutOfRangeException(nameof(segment), segment, "segment must be in [0, SegmentCount - 1].");
             if (t < 0f) t = 0f; else if (t > 1f) t = 1f;
-            float baseRadius = baseParticleRadii[segment] + (baseParticleRadii[segment + 1] - baseParticleRadii[segment]) * t;
+            // a broken segment parted at its middle: each half keeps the radius of the end it hangs from
+            float baseRadius = segmentBroken[segment]
+                ? baseParticleRadii[t <= 0.5f ? segment : segment + 1]
+                : baseParticleRadii[segment] + (baseParticleRadii[segment + 1] - baseParticleRadii[segment]) * t;
+            return WithNeck(segment, t, baseRadius);
+        }
+
+        /// <summary>
+        /// Radius in metres of the cut end of broken segment <paramref name="segment"/> on the side of particle
+        /// <paramref name="segment"/> (<paramref name="upperSide"/> false) or particle segment + 1 (true): that end's own
+        /// radius times the frozen neck at the middle of the segment, where the rope parted. Both ends share the neck, so
+        /// they differ only by the Poisson radius of the pieces they end. For an intact segment: the radius at its middle.
+        /// </summary>
+        public float BrokenEndRadius(int segment, bool upperSide)
+        {
+            if ((uint)segment >= (uint)segmentRadii.Length)
+                throw new ArgumentOutOfRangeException(nameof(segment), segment, "segment must be in [0, SegmentCount - 1].");
+            if (!segmentBroken[segment]) return RadiusAt(segment, 0.5f);
+            return WithNeck(segment, 0.5f, baseParticleRadii[upperSide ? segment + 1 : segment]);
+        }
+
+        /// <summary>The radius (m) at fraction t of a segment whose Poisson radius there is <paramref name="baseRadius"/> (m), neck applied.</summary>
+        private float WithNeck(int segment, float t, float baseRadius)
+        {
             if (neckDepth <= 0f) return baseRadius;
             if (Settings.NeckMode == NeckMode.Zone)
             {

@@ -185,12 +185,21 @@ namespace HookeRope.Solver
             return chain.Broken[segment];
         }
 
-        /// <summary>Breaks a segment now (no-op if already broken) and raises <see cref="Broken"/>.</summary>
+        /// <summary>
+        /// Breaks a segment now (no-op if already broken) and raises <see cref="Broken"/>. The rope parts at the segment's
+        /// middle: each side keeps half of its rest length and of its mass (the lumped μ·L/2 its particle already carries),
+        /// so no rest length and no mass vanish (the mesh draws each half as a relaxed dangling end). The elastic energy the
+        /// segment stored, ½·C²/α (J), is released into the recoil: the two end particles are pushed apart along the
+        /// segment with equal and opposite impulses whose kinetic energy is exactly that energy (a kinematic end counts as
+        /// infinitely heavy; both kinematic: the anchors take it), capped where the last step's substep is too coarse to
+        /// carry it without folding the slack end (see <see cref="RopeBreakEvent.RecoilEnergy"/>). Allocation-free.
+        /// </summary>
         public void BreakSegment(int segment)
         {
             CheckSegment(segment);
             if (chain.Broken[segment]) return;
             float tension = chain.Tension[segment];
+            double recoil = ReleaseRecoil(segment, out double stored);
             chain.Broken[segment] = true;
             chain.BrokenCount++;
             chain.Lambda[segment] = 0.0;
@@ -199,7 +208,7 @@ namespace HookeRope.Solver
                 0.5f * (chain.X[segment] + chain.X[segment + 1]),
                 0.5f * (chain.Y[segment] + chain.Y[segment + 1]),
                 0.5f * (chain.Z[segment] + chain.Z[segment + 1]));
-            Broken?.Invoke(new RopeBreakEvent(time, Origin + midpoint, segment, tension));
+            Broken?.Invoke(new RopeBreakEvent(time, Origin + midpoint, segment, tension, stored, recoil));
         }
 
         /// <summary>Raised when a segment breaks (<see cref="BreakSegment"/>: a cut, or the fracture decision of <see cref="RopeSimulation"/>): time s, position m, segment, tension N just before.</summary>
