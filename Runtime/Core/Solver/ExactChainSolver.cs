@@ -80,9 +80,8 @@ namespace HookeRope.Solver
             for (int j = 0; j < s; j++)
             {
                 if (broken[j]) { active[j] = false; continue; }
-                float len = c.Direction(j, out float fnx, out float fny, out float fnz, out float ddx, out float ddy, out float ddz);
-                length[j] = len;
-                double nx = fnx, ny = fny, nz = fnz;
+                double len = c.Direction(j, out double nx, out double ny, out double nz, out float ddx, out float ddy, out float ddz);
+                length[j] = (float)len;
                 double alpha = compliance[j];
                 double mobility = (double)w[j] + w[j + 1];
                 if (mobility == 0.0 && alpha == 0.0) { active[j] = false; continue; }

@@ -31,7 +31,8 @@ namespace HookeRope.Solver
                 double alpha = compliance[j];
                 double wSum = (double)wa + wb;
                 if (wSum == 0.0 && alpha == 0.0) { wa = wb; continue; }
-                float len = c.Direction(j, out float nx, out float ny, out float nz, out float ddx, out float ddy, out float ddz);
+                double len = c.Direction(j, out double ex, out double ey, out double ez, out float ddx, out float ddy, out float ddz);
+                float nx = (float)ex, ny = (float)ey, nz = (float)ez;
                 double alphaTilde = alpha * invH2;
                 double g = alpha > 0.0 ? gamma : 0.0;
                 double rel = g > 0.0 ? nx * ddx + ny * ddy + nz * ddz : 0.0;

@@ -26,7 +26,7 @@ namespace HookeRope.Solver
             int a = segment, b = segment + 1;
             double compliance = chain.Compliance[segment];
             if (!(compliance > 0.0)) return 0.0;
-            double dx = (double)chain.X[b] - chain.X[a], dy = (double)chain.Y[b] - chain.Y[a], dz = (double)chain.Z[b] - chain.Z[a];
+            chain.Span(segment, out double dx, out double dy, out double dz);
             double length = Math.Sqrt(dx * dx + dy * dy + dz * dz);
             double c = length - chain.CurrentRest(segment);   // a plastic segment stores only what lies beyond its permanent set
             if (settings.Tension == TensionModel.TensionOnly && c < 0.0) return 0.0;
@@ -72,7 +72,7 @@ namespace HookeRope.Solver
         {
             int j = side < 0 ? particle - 1 : particle;
             if (j < 0 || j >= chain.SegmentCount || chain.Broken[j]) return double.PositiveInfinity;
-            double dx = (double)chain.X[j + 1] - chain.X[j], dy = (double)chain.Y[j + 1] - chain.Y[j], dz = (double)chain.Z[j + 1] - chain.Z[j];
+            chain.Span(j, out double dx, out double dy, out double dz);
             return Math.Sqrt(dx * dx + dy * dy + dz * dz) - chain.CurrentRest(j);
         }
 

@@ -171,9 +171,9 @@ namespace HookeRope.Solver
                 if (pinBroken[p] || pinCompliance[p] != 0f) continue;
                 int i = pinParticle[p];
                 Float3 target = PinTarget(p, t);
-                chain.DX[i] = target.X - chain.PrevX[i];
-                chain.DY[i] = target.Y - chain.PrevY[i];
-                chain.DZ[i] = target.Z - chain.PrevZ[i];
+                chain.DX[i] = (float)((double)target.X - chain.PrevX[i] - chain.LowX[i]);
+                chain.DY[i] = (float)((double)target.Y - chain.PrevY[i] - chain.LowY[i]);
+                chain.DZ[i] = (float)((double)target.Z - chain.PrevZ[i] - chain.LowZ[i]);
             }
         }
 
@@ -239,12 +239,12 @@ namespace HookeRope.Solver
         /// <summary>Target (rope-local m) of pin p at substep fraction t of the host step.</summary>
         private Float3 PinTarget(int p, float t) => Float3.Lerp(pinStart[p], pinEnd[p], t);
 
-        /// <summary>Pin constraint C = x_i − target (m, double) from particle i's live position Prev + D.</summary>
+        /// <summary>Pin constraint C = x_i − target (m, double) from particle i's live position Prev + Low + D.</summary>
         private void PinOffset(int i, Float3 target, out double cx, out double cy, out double cz)
         {
-            cx = (double)chain.PrevX[i] - target.X + chain.DX[i];
-            cy = (double)chain.PrevY[i] - target.Y + chain.DY[i];
-            cz = (double)chain.PrevZ[i] - target.Z + chain.DZ[i];
+            cx = (double)chain.PrevX[i] - target.X + chain.LowX[i] + chain.DX[i];
+            cy = (double)chain.PrevY[i] - target.Y + chain.LowY[i] + chain.DY[i];
+            cz = (double)chain.PrevZ[i] - target.Z + chain.LowZ[i] + chain.DZ[i];
         }
 
         private void UpdateVelocities(float h)
@@ -256,18 +256,21 @@ namespace HookeRope.Solver
         }
 
         /// <summary>
-        /// Ends particle i's substep at x = x_prev + d with velocity (ux, uy, uz) m/s. Never lets a non-finite value into the
-        /// state: then the particle falls back to its last good position, at rest, with no displacement.
+        /// Ends particle i's substep at x = x_prev + Low + d with velocity (ux, uy, uz) m/s. The sum is formed in double and
+        /// split into the float position and its new remainder Low, so no part of d is rounded away. Never lets a non-finite value into
+        /// the state: then the particle falls back to its last good position, at rest, with no displacement.
         /// </summary>
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         private void CommitParticle(int i, float ux, float uy, float uz)
         {
             float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
-            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
-            float nx = px[i] + dx[i], ny = py[i] + dy[i], nz = pz[i] + dz[i];
+            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ, lx = chain.LowX, ly = chain.LowY, lz = chain.LowZ;
+            double ex = (double)px[i] + lx[i] + dx[i], ey = (double)py[i] + ly[i] + dy[i], ez = (double)pz[i] + lz[i] + dz[i];
+            float nx = (float)ex, ny = (float)ey, nz = (float)ez;
             if (float.IsFinite(ux + uy + uz) && float.IsFinite(nx + ny + nz))
             {
                 x[i] = nx; y[i] = ny; z[i] = nz;
+                lx[i] = (float)(ex - nx); ly[i] = (float)(ey - ny); lz[i] = (float)(ez - nz);
                 chain.VelX[i] = ux; chain.VelY[i] = uy; chain.VelZ[i] = uz;
             }
             else
