@@ -237,9 +237,10 @@ namespace HookeRope.Solver
         private static double Misaligned(ChainState c, int j)
         {
             double fx = c.ForceX[j], fy = c.ForceY[j], fz = c.ForceZ[j];
-            double dx = (double)c.PrevX[j + 1] + c.DX[j + 1] - c.PrevX[j] - c.DX[j];
-            double dy = (double)c.PrevY[j + 1] + c.DY[j + 1] - c.PrevY[j] - c.DY[j];
-            double dz = (double)c.PrevZ[j + 1] + c.DZ[j + 1] - c.PrevZ[j] - c.DZ[j];
+            // the live segment vector Prev + Low + D, exact as ChainState.Direction forms it
+            double dx = ((double)c.PrevX[j + 1] - c.PrevX[j]) + (((double)c.LowX[j + 1] - c.LowX[j]) + (c.DX[j + 1] - c.DX[j]));
+            double dy = ((double)c.PrevY[j + 1] - c.PrevY[j]) + (((double)c.LowY[j + 1] - c.LowY[j]) + (c.DY[j + 1] - c.DY[j]));
+            double dz = ((double)c.PrevZ[j + 1] - c.PrevZ[j]) + (((double)c.LowZ[j + 1] - c.LowZ[j]) + (c.DZ[j + 1] - c.DZ[j]));
             double cx = fy * dz - fz * dy, cy = fz * dx - fx * dz, cz = fx * dy - fy * dx;
             double norms = Math.Sqrt((fx * fx + fy * fy + fz * fz) * (dx * dx + dy * dy + dz * dz));
             return norms > 0.0 ? Math.Sqrt(cx * cx + cy * cy + cz * cz) / norms : 0.0;
@@ -254,21 +255,24 @@ namespace HookeRope.Solver
         /// </summary>
         public void ReturnMap(ChainState c, double gamma)
         {
-            float[] x = c.X, y = c.Y, z = c.Z, px = c.PrevX, py = c.PrevY, pz = c.PrevZ;
             bool[] broken = c.Broken;
             for (int j = 0; j < plasticRest.Length; j++)
-                yielding[j] = Flow(c, j, gamma, x, y, z, px, py, pz, broken[j]) && !double.IsPositiveInfinity(YieldForce(j));
+                yielding[j] = Flow(c, j, gamma, broken[j]) && !double.IsPositiveInfinity(YieldForce(j));
         }
 
         /// <summary>The return mapping of segment j; true when it flowed.</summary>
-        private bool Flow(ChainState c, int j, double gamma, float[] x, float[] y, float[] z, float[] px, float[] py, float[] pz, bool broken)
+        private bool Flow(ChainState c, int j, double gamma, bool broken)
         {
             if (broken) return false;
             double ty = YieldForce(j);
             if (double.IsPositiveInfinity(ty)) return false;
             double alpha = c.Compliance[j];
             double g = alpha > 0.0 ? gamma : 0.0;
-            double l = Distance(x, y, z, j), l0 = Distance(px, py, pz, j);
+            // exact committed length, and the length at the start of the substep (the committed vector less the substep's D)
+            c.Span(j, out double ex, out double ey, out double ez);
+            double l = Math.Sqrt(ex * ex + ey * ey + ez * ez);
+            ex -= c.DX[j + 1] - c.DX[j]; ey -= c.DY[j + 1] - c.DY[j]; ez -= c.DZ[j + 1] - c.DZ[j];
+            double l0 = Math.Sqrt(ex * ex + ey * ey + ez * ez);
             double lp = plasticRest[j], rest = reference[j];
             double excess = (l - lp) + g * (l - l0) - alpha * ty;
             // a rigid (α = 0) segment's length is its rest length up to round-off: it flows only where the solve pulled at the yield force
@@ -292,11 +296,5 @@ namespace HookeRope.Solver
 
         /// <summary>Deployment L_p − L of the absorber (m; 0 without one).</summary>
         public double Deployment => absorberSegment >= 0 ? plasticRest[absorberSegment] - reference[absorberSegment] : 0.0;
-
-        private static double Distance(float[] x, float[] y, float[] z, int j)
-        {
-            double dx = (double)x[j + 1] - x[j], dy = (double)y[j + 1] - y[j], dz = (double)z[j + 1] - z[j];
-            return Math.Sqrt(dx * dx + dy * dy + dz * dz);
-        }
     }
 }
