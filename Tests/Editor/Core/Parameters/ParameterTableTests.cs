@@ -217,7 +217,7 @@ namespace HookeRope.Tests.Core.Parameters
                     checkedRows++;
                 }
             }
-            Assert.That(checkedRows, Is.EqualTo(18), "RopeSettings: L, n, R, E, ρ, β, substeps, iterations; RadiusSettings: ν, r_min, defect, zone, growth, break strain, break radius; TubeMeshSettings: radial, rings, v per metre");
+            Assert.That(checkedRows, Is.EqualTo(22), "RopeSettings: L, n, R, E, ρ, β, substeps, iterations, c, C_d, C_f, ρ_air; RadiusSettings: ν, r_min, defect, zone, growth, break strain, break radius; TubeMeshSettings: radial, rings, v per metre");
         }
 
         [Test]
@@ -233,7 +233,7 @@ namespace HookeRope.Tests.Core.Parameters
                 Assert.That(actual, IsDerived(row) ? Is.EqualTo(row.Default).Within(1e-3).Percent : Is.EqualTo(row.Default), settings.GetType().Name + "." + row.Name);
                 checkedRows++;
             }
-            Assert.That(checkedRows, Is.EqualTo(28), "RopeSettings 12 rows (gravity is a vector), RadiusSettings 12, TubeMeshSettings 4");
+            Assert.That(checkedRows, Is.EqualTo(32), "RopeSettings 16 rows (gravity and wind are vectors), RadiusSettings 12, TubeMeshSettings 4");
         }
 
         static bool IsDerived(ParameterInfo row) => row == RopeParameters.AxialStiffness.Row || row == RopeParameters.LinearDensity.Row;
