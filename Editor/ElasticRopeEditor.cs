@@ -7,7 +7,7 @@ using UnityEngine;
 namespace HookeRope.Editor
 {
     /// <summary>
-    /// Inspector of <see cref="ElasticRope"/>, grouped Material / Geometry / Solver / Attachments / Collisions /
+    /// Inspector of <see cref="ElasticRope"/>, grouped Material / Geometry / Solver / Attachments / Collisions / Drag /
     /// Fracture / Read-outs. Warns when the settings predict a large stretch error and previews the static
     /// sag in edit mode. Read-outs repaint live in Play; with several ropes selected they show a table with one
     /// column per rope (<see cref="RopeReadoutTable"/>). Attachments has "Attach Start/End to selection"
@@ -16,13 +16,14 @@ namespace HookeRope.Editor
     [CustomEditor(typeof(ElasticRope)), CanEditMultipleObjects]
     sealed class ElasticRopeEditor : UnityEditor.Editor
     {
-        static bool s_Material = true, s_Geometry = true, s_Solver = true, s_Attachments = true, s_Collisions, s_Fracture, s_Readouts = true;
+        static bool s_Material = true, s_Geometry = true, s_Solver = true, s_Attachments = true, s_Collisions, s_Drag, s_Fracture, s_Readouts = true;
 
         SerializedProperty m_StiffnessInput, m_YoungsModulus, m_AxialStiffness, m_Density, m_PoissonRatio, m_Damping;
         SerializedProperty m_RestLength, m_Radius, m_SegmentCount;
         SerializedProperty m_Solver, m_Substeps, m_Iterations, m_TensionModel, m_Integrator, m_Gravity;
         SerializedProperty m_Start, m_End, m_AttachmentCompliance, m_OnStepped;
         SerializedProperty m_CollisionMode, m_Colliders, m_CollisionLayers, m_Planes, m_Friction;
+        SerializedProperty m_ViscousDrag, m_DragCoefficient, m_SkinFriction, m_AirDensity, m_Wind;
         SerializedProperty m_RadiusModel, m_Necking, m_NeckMode, m_NeckRadiusFraction, m_DefectPosition, m_Fracture, m_BreakStrain, m_BreakRadiusFraction, m_OnBreak;
 
         void OnEnable()
@@ -52,6 +53,11 @@ namespace HookeRope.Editor
             m_CollisionLayers = so.FindProperty(nameof(m_CollisionLayers));
             m_Planes = so.FindProperty(nameof(m_Planes));
             m_Friction = so.FindProperty(nameof(m_Friction));
+            m_ViscousDrag = so.FindProperty(nameof(m_ViscousDrag));
+            m_DragCoefficient = so.FindProperty(nameof(m_DragCoefficient));
+            m_SkinFriction = so.FindProperty(nameof(m_SkinFriction));
+            m_AirDensity = so.FindProperty(nameof(m_AirDensity));
+            m_Wind = so.FindProperty(nameof(m_Wind));
             m_RadiusModel = so.FindProperty(nameof(m_RadiusModel));
             m_Necking = so.FindProperty(nameof(m_Necking));
             m_NeckMode = so.FindProperty(nameof(m_NeckMode));
@@ -119,6 +125,15 @@ namespace HookeRope.Editor
                     Field(m_Friction);
                 }
             }
+            if (Section(ref s_Drag, "Drag"))
+            {
+                Field(m_ViscousDrag);
+                Field(m_DragCoefficient);
+                Field(m_SkinFriction);
+                Field(m_AirDensity);
+                Field(m_Wind);
+                DragPreview(rope);
+            }
             if (Section(ref s_Fracture, "Fracture (thinning, necking, break)"))
             {
                 Field(m_RadiusModel);
@@ -160,6 +175,16 @@ namespace HookeRope.Editor
                 EditorGUILayout.HelpBox(string.Format(CultureInfo.InvariantCulture,
                     "These settings predict the rope to stretch about {0:P0} more than the material allows (Gauss-Seidel, {1} substeps × {2} iterations for {3} segments). Use the Exact Chain solver, or raise substeps.",
                     error, rope.Substeps, rope.Iterations, rope.SegmentCount), MessageType.Warning);
+        }
+
+        /// <summary>What the drag settings mean for this rope (uniform, <see cref="DragLaw"/>): how fast a swing decays, how fast it falls broadside.</summary>
+        static void DragPreview(ElasticRope rope)
+        {
+            double mu = rope.LinearDensity;
+            double rate = DragLaw.SwingDecayRate(rope.ViscousDrag, mu);
+            EditorGUILayout.LabelField("Swing amplitude 1/e after", rate > 0.0 ? Format((float)(1.0 / rate), "s") : "never (no viscous drag)");
+            double terminal = DragLaw.BroadsideTerminalVelocity(rope.ViscousDrag, rope.DragCoefficient, rope.AirDensity, rope.Radius, mu, rope.Gravity.magnitude);
+            EditorGUILayout.LabelField("Falls broadside at most", double.IsInfinity(terminal) ? "no limit (no drag)" : Format((float)terminal, "m/s"));
         }
 
         void AttachFixBox(ElasticRope rope)
