@@ -49,6 +49,24 @@ namespace HookeRope.Tests.Solver
             Assert.That(zero.DragWork, Is.EqualTo(0.0));
         }
 
+        [TestCase(TimeIntegrator.Bdf2)]
+        [TestCase(TimeIntegrator.BackwardEuler)]
+        public void StepWithDragAllocatesNothingAfterWarmUp(TimeIntegrator integrator)
+        {
+            var rope = Swinging(new RopeSettings { Integrator = integrator, ViscousDrag = 0.5f, DragCoefficient = 1.2f, SkinFriction = 0.01f, Wind = new Float3(2f, 0f, 1f) });
+            rope.AddPin(rope.ParticleCount - 1, rope.GetPosition(rope.ParticleCount - 1), 1e-4f);   // a compliant pin folds onto the drag's mass
+            for (int k = 0; k < 20; k++) rope.Step(1f / 90f);
+            // three windows: a real per-step allocation shows in every one, a one-off runtime allocation in one at most
+            long fewest = long.MaxValue;
+            for (int window = 0; window < 3; window++)
+            {
+                long before = GC.GetAllocatedBytesForCurrentThread();
+                for (int k = 0; k < 100; k++) rope.Step(1f / 90f);
+                fewest = Math.Min(fewest, GC.GetAllocatedBytesForCurrentThread() - before);
+            }
+            Assert.That(fewest, Is.EqualTo(0));
+        }
+
         /// <summary>Angles (rad) of the segments of a 4-segment rope released at 30° after 1 s (45 host steps) at <paramref name="substeps"/> substeps.</summary>
         private static double[] AnglesAfterOneSecond(RopeSettings settings, int substeps)
         {
