@@ -363,6 +363,7 @@ namespace HookeRope
             Report(RopeParameters.Clamp(ref m_DefectPosition, RopeParameters.DefectPosition.Row));
             Report(RopeParameters.Clamp(ref m_BreakStrain, RopeParameters.BreakStrain.Row));
             Report(RopeParameters.Clamp(ref m_BreakRadiusFraction, RopeParameters.BreakRadiusFraction.Row));
+            ClampMaterialFields();   // the material law (ElasticRope.Material.cs)
             if (!RopeParameters.Contains(RopeParameters.NeckMode.Row, (int)m_NeckMode))
             {
                 m_NeckMode = RopeParameters.NeckMode.Default;
@@ -429,6 +430,7 @@ namespace HookeRope
             settings.SkinFriction = m_SkinFriction;
             settings.AirDensity = m_AirDensity;
             settings.Wind = m_Wind.ToFloat3();   // world = rope frame up to a shift: a velocity is the same in both
+            WriteMaterialSettings(settings);   // the material law (ElasticRope.Material.cs)
         }
 
         /// <summary>True when any radius-model feature (thinning, necking, fracture) is on; all off costs nothing per step.</summary>
@@ -455,7 +457,7 @@ namespace HookeRope
         }
 
 
-        /// <summary>How far the Layer Mask collider query reaches: the rest length stretched to the break strain (or doubled), plus R.</summary>
-        ColliderReach Reach => new ColliderReach(m_RestLength * (1f + (m_Fracture ? m_BreakStrain : 1f)), m_Radius);
+        /// <summary>How far the Layer Mask collider query reaches: the rest length stretched to the break strain (or doubled) and the material's reach (ultimate strain, absorber), plus R.</summary>
+        ColliderReach Reach => new ColliderReach(m_RestLength * (1f + (m_Fracture ? m_BreakStrain : 1f)) + MaterialReach, m_Radius);
     }
 }

@@ -100,6 +100,7 @@ namespace HookeRope.Lab.Tests
             var covered = new[] { "fall-arrest", "static-hang", "spring-oscillator", "heavy-mass-ratio", "steel-cable",
                 "poisson-sweep", "necking", "fracture", "collision-bend", "catenary",
                 "spring-amplitude", "slack-bounce", "steel-snatch",   // these three: DissipationScenarioTests
+                "plastic-necking", "absorber-arrest",               // these two: MaterialLawScenarioTests
                 "swing-settle" };
             Assert.That(BuiltInScenarios.Names, Is.EquivalentTo(covered));
         }

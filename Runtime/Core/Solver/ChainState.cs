@@ -64,6 +64,9 @@ namespace HookeRope.Solver
         public int[] ContactList;                       // particles with ContactCollider ≥ 0, first ContactCount entries
         public int ContactCount;
 
+        // plastic state of the segments (issue 15; null for an elastic rope without an energy absorber: no work, no memory)
+        public SegmentPlasticity Plasticity;
+
         public ChainState(int segmentCount)
         {
             SegmentCount = segmentCount;
@@ -90,6 +93,10 @@ namespace HookeRope.Solver
             PrevVelX = new float[n]; PrevVelY = new float[n]; PrevVelZ = new float[n];
             PredictedDX = new float[n]; PredictedDY = new float[n]; PredictedDZ = new float[n];
         }
+
+        /// <summary>The rest length the segment's force is measured from (m): its plastic rest length L_p, or L for an elastic rope.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public double CurrentRest(int j) => Plasticity != null ? Plasticity.Rest(j) : RestLength[j];
 
         /// <summary>Allocates the contact arrays once (when the first collider is added; never in a step).</summary>
         public void EnsureContacts()

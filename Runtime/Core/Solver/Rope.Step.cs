@@ -143,11 +143,13 @@ namespace HookeRope.Solver
             }
         }
 
-        /// <summary>Phase 4 (after the velocities): time, tensions T = −λ/h_eff², pin forces (and pin breaks). The segment lengths are refreshed once, after the last substep.</summary>
+        /// <summary>Phase 4 (after the velocities): time, tensions T = −λ/h_eff², the plastic return mapping, pin forces (and pin breaks). The segment lengths are refreshed once, after the last substep.</summary>
         private void FinishPhase(double hd, double hEff, Float3 g, bool firstSubstep)
         {
             time += hd;
             UpdateTensions(hEff, firstSubstep);
+            // the return mapping of the plastic segments on the committed positions (γ = β/h: the solve's damping fold)
+            if (chain.Plasticity != null) chain.Plasticity.ReturnMap(chain, settings.Damping / hd);
             if (pinCount > 0) UpdatePinForces(hEff, g);
         }
 
@@ -365,7 +367,7 @@ namespace HookeRope.Solver
             {
                 if (chain.Broken[j]) continue;
                 double rest = chain.RestLength[j];
-                double c = chain.Length[j] - rest;
+                double c = chain.Length[j] - chain.CurrentRest(j);
                 double tension = chain.Tension[j];
                 if (tensionOnly && tension <= 0.0 && c <= 0.0) continue; // slack: no constraint to meet
                 double error = Math.Abs(c - chain.Compliance[j] * tension) / rest;

@@ -189,12 +189,21 @@ namespace HookeRope.Solver
             return chain.Broken[segment];
         }
 
-        /// <summary>Breaks a segment now (no-op if already broken) and raises <see cref="Broken"/>.</summary>
+        /// <summary>
+        /// Breaks a segment now (no-op if already broken) and raises <see cref="Broken"/>. The rope parts at the segment's
+        /// middle: each side keeps half of its rest length and of its mass (the lumped μ·L/2 its particle already carries),
+        /// so no rest length and no mass vanish (the mesh draws each half as a relaxed dangling end). The elastic energy the
+        /// segment stored, ½·C²/α (J), is released into the recoil: the two end particles are pushed apart along the
+        /// segment with equal and opposite impulses whose kinetic energy is exactly that energy (a kinematic end counts as
+        /// infinitely heavy; both kinematic: the anchors take it), capped where the last step's substep is too coarse to
+        /// carry it without folding the slack end (see <see cref="RopeBreakEvent.RecoilEnergy"/>). Allocation-free.
+        /// </summary>
         public void BreakSegment(int segment)
         {
             CheckSegment(segment);
             if (chain.Broken[segment]) return;
             float tension = chain.Tension[segment];
+            double recoil = ReleaseRecoil(segment, out double stored);
             chain.Broken[segment] = true;
             chain.BrokenCount++;
             chain.Lambda[segment] = 0.0;
@@ -203,7 +212,7 @@ namespace HookeRope.Solver
                 0.5f * (chain.X[segment] + chain.X[segment + 1]),
                 0.5f * (chain.Y[segment] + chain.Y[segment + 1]),
                 0.5f * (chain.Z[segment] + chain.Z[segment + 1]));
-            Broken?.Invoke(new RopeBreakEvent(time, Origin + midpoint, segment, tension));
+            Broken?.Invoke(new RopeBreakEvent(time, Origin + midpoint, segment, tension, stored, recoil));
         }
 
         /// <summary>Raised when a segment breaks (<see cref="BreakSegment"/>: a cut, or the fracture decision of <see cref="RopeSimulation"/>): time s, position m, segment, tension N just before.</summary>
@@ -231,6 +240,7 @@ namespace HookeRope.Solver
                 appliedRadius = settings.Radius;
                 for (int i = 0; i <= s; i++) chain.Radius[i] = appliedRadius;
             }
+            ApplyPlasticity();
             appliedVersion = settings.Version;
             RefreshLengths();
         }
@@ -263,7 +273,7 @@ namespace HookeRope.Solver
             return e;
         }
 
-        /// <summary>Elastic energy Σ½C²/α in joules over the loaded segments (stretched ones for a tension-only rope) and compliant pins.</summary>
+        /// <summary>Elastic energy Σ½C²/α in joules (C = l − L_p: measured from the plastic rest length) over the loaded segments (stretched ones for a tension-only rope) and compliant pins.</summary>
         public double ElasticEnergy()
         {
             double e = 0.0;
@@ -272,7 +282,7 @@ namespace HookeRope.Solver
             {
                 if (chain.Broken[j] || chain.Compliance[j] == 0f) continue;
                 double dx = (double)chain.X[j + 1] - chain.X[j], dy = (double)chain.Y[j + 1] - chain.Y[j], dz = (double)chain.Z[j + 1] - chain.Z[j];
-                double c = Math.Sqrt(dx * dx + dy * dy + dz * dz) - chain.RestLength[j];
+                double c = Math.Sqrt(dx * dx + dy * dy + dz * dz) - chain.CurrentRest(j);
                 if (tensionOnly && c < 0.0) continue;
                 e += 0.5 * c * c / chain.Compliance[j];
             }

@@ -235,6 +235,12 @@ namespace HookeRope.Lab.Simulation
                     });
                     break;
                 }
+                case "absorber":
+                    AddAbsorberChecks(r, list, load, g, ea / length);
+                    break;
+                case "plastic":
+                    AddPlasticChecks(r, list);
+                    break;
                 case "fracture":
                     list.Add(new CheckResult
                     {
@@ -444,6 +450,87 @@ namespace HookeRope.Lab.Simulation
                     Tolerance = 1e-6 * Math.Abs(r.InitialEnergy), Measured = Math.Max(0, r.MaxEnergy - r.InitialEnergy),
                     Formula = "energy never rises (1e-6 of |E₀|)",
                 });
+        }
+
+        /// <summary>
+        /// Deployment x_d (m) of an energy absorber of plateau <paramref name="plateau"/> (N) in series with a massless lanyard of
+        /// stiffness <paramref name="stiffness"/> (N/m) arresting <paramref name="mass"/> (kg) after a free fall of
+        /// <paramref name="fallHeight"/> (m): M·g·(h + x_e + x_d) = F_p·x_d + F_p²/(2k), x_e = F_p/k.
+        /// </summary>
+        public static double AbsorberDeployment(double mass, double g, double stiffness, double fallHeight, double plateau)
+        {
+            double w = mass * g;
+            return (w * (fallHeight + plateau / stiffness) - plateau * plateau / (2 * stiffness)) / (plateau - w);
+        }
+
+        /// <summary>
+        /// A fall arrested by an energy absorber (issue 15): the largest substep force on the load against the plateau, the
+        /// deployment against the energy balance (while it fits in the absorber's length), the plastic work against F_p·x_d,
+        /// and the EN 355 verdict (≤ 6 kN).
+        /// </summary>
+        static void AddAbsorberChecks(RunResult r, List<CheckResult> list, double load, double g, double stiffness)
+        {
+            var rope = r.Scenario.Rope;
+            double h = r.Scenario.Initial.FallHeight ?? rope.RestLength;
+            double deployment = AbsorberDeployment(load, g, stiffness, h, rope.AbsorberForce);
+            list.Add(new CheckResult
+            {
+                Quantity = "peak force on the load (substep max)", Unit = "N", Tolerance = 0.02, Measured = r.PeakLoadForce,
+                Expected = rope.AbsorberForce, Formula = "the absorber's plateau F_p",
+            });
+            list.Add(new CheckResult
+            {
+                Quantity = "absorber deployment", Unit = "m", Tolerance = 0.02, Measured = r.AbsorberDeployment,
+                Expected = Math.Min(deployment, rope.AbsorberDeployment),
+                Formula = deployment <= rope.AbsorberDeployment ? "M·g·(h + x_e + x_d) = F_p·x_d + F_p²/(2k), x_e = F_p/k" : "used up: its deployment length",
+            });
+            list.Add(new CheckResult
+            {
+                Quantity = "plastic work", Unit = "J", Tolerance = 0.005, Measured = r.PlasticWork,
+                Expected = rope.AbsorberForce * r.AbsorberDeployment, Formula = "F_p·x_d (the plateau's work)",
+            });
+            list.Add(new CheckResult
+            {
+                Quantity = "peak force over EN 355's 6 kN", Unit = "N", Absolute = true, Tolerance = 0, Expected = 0,
+                Measured = Math.Max(0, r.PeakLoadForce - HookeRope.FallArrestLimits.En355), Formula = "EN 355: at most 6 kN with 100 kg",
+            });
+        }
+
+        /// <summary>
+        /// A plastic rope pulled slowly to its break (issue 15): the peak force against the neck onset F_n of the quasi-static
+        /// curve and the elongation there, the largest departure of the sampled force from that curve up to the peak, and the
+        /// force left when it broke (the neck softens the rope's force away before the break).
+        /// </summary>
+        static void AddPlasticChecks(RunResult r, List<CheckResult> list)
+        {
+            var curve = HookeRope.Solver.ForceElongationCurve.Of(ScenarioRunner.Settings(r.Scenario), 1.0);
+            int peak = 0;
+            for (int i = 1; i < r.Samples.Count; i++) if (r.Samples[i].TopTension > r.Samples[peak].TopTension) peak = i;
+            double onsetForce = curve.PeakForce, onsetElongation = double.NaN, worst = 0;
+            for (int i = 0; i < curve.Count; i++) if (curve.Force[i] == onsetForce) { onsetElongation = curve.Elongation[i]; break; }
+            for (int i = 0; i <= peak && i < r.Samples.Count; i++)
+                worst = Math.Max(worst, Math.Abs(r.Samples[i].TopTension - curve.ForceAt(r.Samples[i].Elongation)));
+            bool any = r.Samples.Count > 0;
+            list.Add(new CheckResult
+            {
+                Quantity = "peak force (neck onset)", Unit = "N", Tolerance = 0.01, Measured = any ? r.Samples[peak].TopTension : double.NaN,
+                Expected = onsetForce, Formula = "F_n = E·A·ε_y + H·ε_pn, ε_pn = (ε_n − ε_y)/(1 + H/(E·A))",
+            });
+            list.Add(new CheckResult
+            {
+                Quantity = "elongation at the peak", Unit = "m", Tolerance = 0.02, Measured = any ? r.Samples[peak].Elongation : double.NaN,
+                Expected = onsetElongation, Formula = "ε_n·L (the necking strain)",
+            });
+            list.Add(new CheckResult
+            {
+                Quantity = "largest force off the quasi-static curve before the peak", Unit = "N", Absolute = true, Tolerance = 0.01 * onsetForce,
+                Expected = 0, Measured = any ? worst : double.NaN, Formula = "elastic, then hardening at H (1 % of F_n)",
+            });
+            list.Add(new CheckResult
+            {
+                Quantity = "tension when it broke", Unit = "N", Absolute = true, Tolerance = 0.1 * onsetForce, Expected = 0,
+                Measured = double.IsNaN(r.BreakTime) ? double.NaN : r.BreakTension, Formula = "the neck softened the force (< 10 % of F_n)",
+            });
         }
 
         /// <summary>Number of trailing samples spanning a whole number of periods, at most <paramref name="limit"/>.</summary>

@@ -48,6 +48,14 @@ namespace HookeRope.Lab.Simulation
             settings.Solver = s.Solver.Method == SolverMethod.GaussSeidel ? ConstraintSolverKind.GaussSeidel : ConstraintSolverKind.ExactChain;
             settings.Tension = s.Solver.TensionOnly ? TensionModel.TensionOnly : TensionModel.Bilateral;
             settings.Integrator = s.Solver.Integrator;
+            settings.YieldStrain = (float)r.YieldStrain;
+            settings.HardeningModulus = (float)r.HardeningModulus;
+            settings.NeckingStrain = (float)r.NeckingStrain;
+            settings.UltimateStrain = (float)r.UltimateStrain;
+            if (r.IsPlastic) settings.SetPlasticity((float)r.YieldStrain, (float)r.HardeningModulus, (float)r.NeckingStrain, (float)r.UltimateStrain);
+            settings.AbsorberForce = (float)r.AbsorberForce;
+            settings.AbsorberDeployment = (float)r.AbsorberDeployment;
+            settings.EnergyAbsorber = r.EnergyAbsorber;
             settings.ViscousDrag = (float)s.Drag.ViscousDrag;
             settings.DragCoefficient = (float)s.Drag.DragCoefficient;
             settings.SkinFriction = (float)s.Drag.SkinFriction;
@@ -227,6 +235,9 @@ namespace HookeRope.Lab.Simulation
                 }
                 double elongation = readouts.Elongation;
                 if (elongation > result.MaxElongation) result.MaxElongation = elongation;
+                result.AbsorberDeployment = readouts.AbsorberDeployment;
+                result.PlasticElongation = readouts.PlasticElongation;
+                result.PlasticWork = readouts.PlasticWork;
                 double drop = Float3.Dot(load - releasePosition, down);
                 result.LoadDrop[k] = drop;
                 result.ElongationSeries[k] = elongation;
