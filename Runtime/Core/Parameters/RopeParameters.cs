@@ -627,6 +627,127 @@ namespace HookeRope
             public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Collisions, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
         }
 
+        // ---- Drag -------------------------------------------------------------------------------------------
+
+        /// <summary>Viscous drag coefficient c in N·s/m²: a force −c·(v − wind) per metre of rope.</summary>
+        public static class ViscousDrag
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(ViscousDrag);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Viscous drag";
+            /// <summary>Unit.</summary>
+            public const string Unit = "N·s/m²";
+            /// <summary>Lab JSON name (in the drag object).</summary>
+            public const string Json = "viscousDrag";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Viscous drag per metre of rope (N·s/m²): a force −c·v per metre on the rope's velocity relative to the air. A swing decays as exp(−c·t/(2μ)), μ = mass per metre; a rope falls at most at μ·g/c. 0 = off (costs nothing).";
+            /// <summary>Lower bound in N·s/m².</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound in N·s/m².</summary>
+            public const float Max = 1e4f;
+            /// <summary>Default in N·s/m² (off).</summary>
+            public const float Default = 0f;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Drag, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
+        }
+
+        /// <summary>Drag coefficient C_d of the quadratic air drag across the rope (dimensionless).</summary>
+        public static class DragCoefficient
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(DragCoefficient);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Drag coefficient";
+            /// <summary>Unit (dimensionless).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name (in the drag object).</summary>
+            public const string Json = "dragCoefficient";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Drag coefficient C_d of the air drag across the rope (dimensionless): ½·ρ·C_d·2R·|v⊥|·v⊥ per metre on the velocity across the rope relative to the air. About 1.0–1.2 for a rope in air. 0 = off.";
+            /// <summary>Lower bound.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound.</summary>
+            public const float Max = 10f;
+            /// <summary>Default (off).</summary>
+            public const float Default = 0f;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Drag, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
+        }
+
+        /// <summary>Skin-friction coefficient C_f of the axial air drag along the rope (dimensionless).</summary>
+        public static class SkinFriction
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(SkinFriction);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Skin friction coefficient";
+            /// <summary>Unit (dimensionless).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name (in the drag object).</summary>
+            public const string Json = "skinFriction";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Skin-friction coefficient C_f of the air drag along the rope (dimensionless): ½·ρ·C_f·2πR·|v∥|·v∥ per metre on the velocity along the rope relative to the air. About 0.01; small beside the drag across. 0 = off.";
+            /// <summary>Lower bound.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound.</summary>
+            public const float Max = 1f;
+            /// <summary>Default (off).</summary>
+            public const float Default = 0f;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Drag, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
+        }
+
+        /// <summary>Density ρ of the air (or fluid) the rope moves through, in kg/m³.</summary>
+        public static class AirDensity
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(AirDensity);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Air density";
+            /// <summary>Unit.</summary>
+            public const string Unit = "kg/m³";
+            /// <summary>Lab JSON name (in the drag object).</summary>
+            public const string Json = "airDensity";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Density ρ of the air the rope moves through (kg/m³): 1.2 at sea level, 1000 for water. Scales the drag across the rope (C_d) and the skin friction (C_f).";
+            /// <summary>Lower bound in kg/m³.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound in kg/m³.</summary>
+            public const float Max = 1e4f;
+            /// <summary>Default in kg/m³ (air at sea level, 20 °C).</summary>
+            public const float Default = 1.2f;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Drag, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
+        }
+
+        /// <summary>Velocity of the air (wind) in m/s, world coordinates; each component finite.</summary>
+        public static class Wind
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(Wind);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Wind";
+            /// <summary>Unit.</summary>
+            public const string Unit = "m/s";
+            /// <summary>Lab JSON name (in the drag object).</summary>
+            public const string Json = "wind";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Velocity of the air in world coordinates (m/s). The drag acts on the rope's velocity relative to it; no drag coefficient, no effect.";
+            /// <summary>Lower bound of each component in m/s.</summary>
+            public const float Min = -1000f;
+            /// <summary>Upper bound of each component in m/s.</summary>
+            public const float Max = 1000f;
+            /// <summary>Default x component in m/s.</summary>
+            public const float DefaultX = 0f;
+            /// <summary>Default y component in m/s.</summary>
+            public const float DefaultY = 0f;
+            /// <summary>Default z component in m/s.</summary>
+            public const float DefaultZ = 0f;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Drag, ParameterKind.Vector, Min, Max, double.NaN, Tooltip, Json, true, defaultComponents: new[] { DefaultX, DefaultY, DefaultZ });
+        }
+
         // ---- Radius -----------------------------------------------------------------------------------------
 
         /// <summary>Poisson thinning on: the radius follows the strain (eq. 16).</summary>
@@ -1066,6 +1187,7 @@ namespace HookeRope
             Solver.Row, Substeps.Row, Iterations.Row, TensionModel.Row, Integrator.Row, Gravity.Row,
             AttachmentCompliance.Row,
             Friction.Row,
+            ViscousDrag.Row, DragCoefficient.Row, SkinFriction.Row, AirDensity.Row, Wind.Row,
             PoissonThinning.Row, Necking.Row, NeckMode.Row, NeckRadiusFraction.Row, DefectPosition.Row, NeckZoneDiameters.Row, NeckGrowthStrain.Row, SlackKeepsRestRadius.Row,
             Fracture.Row, BreakStrain.Row, BreakRadiusFraction.Row,
             RadialSegments.Row, RingsPerSegment.Row, AdaptiveRings.Row, VPerMetre.Row, CapEnds.Row, BurrSeed.Row, BurrTexture.Row, Color.Row,

@@ -10,7 +10,7 @@ namespace HookeRope.Solver
 
         /// <summary>
         /// Advances the rope by one host step (s, in (0, 1]): <see cref="RopeSettings.Substeps"/> substeps of
-        /// h = Δt/substeps, each in four phases: predict (gravity, rigid pins), collide (push out, detect contacts),
+        /// h = Δt/substeps, each in four phases: predict (gravity, drag, rigid pins), collide (push out, detect contacts),
         /// solve (<see cref="RopeSettings.Iterations"/> constraint iterations: chain, compliant pins, colliders) and
         /// finish (velocities, tensions, pin forces and pin breaks). The positions at the start of the step are kept for
         /// <see cref="Interpolate"/>. Allocation-free.
@@ -47,17 +47,23 @@ namespace HookeRope.Solver
 
             TimeIntegrator integrator = settings.Integrator;
             bool secondOrder = integrator != TimeIntegrator.BackwardEuler;
+            bool drag = settings.HasDrag, viscousDrag = drag && settings.ViscousDrag > 0f;
+            if (drag) PrepareDrag();
             for (int k = 0; k < substeps; k++)
             {
                 float t = (float)(k + 1) / substeps;
                 TimeIntegrator scheme = SubstepScheme(integrator, hd);
                 double hEff = EffectiveStep(scheme, hd);
                 PredictPhase(t, hostDeltaTime, secondOrder, scheme, h, hd, g);
+                if (drag) PredictDrag(secondOrder, scheme == TimeIntegrator.Bdf2, h, hd, hEff, g);
                 // push the prediction out of the colliders and find the contacts the chain solve folds in
                 CollidePhase(h, ContactPass.StartOfSubstep);
+                if (viscousDrag) FoldViscousDrag(hEff);
                 SolvePhase(h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder);
+                if (viscousDrag) UnfoldViscousDrag();
                 if (secondOrder) UpdateVelocitiesSecondOrder(scheme, hd, Violent());
                 else UpdateVelocities(h);
+                if (drag) AccumulateDragWork();
                 FinishPhase(hd, hEff, g, k == 0);
                 if (loadCount > 0) TrackLoadPeaks(1f / h, g);
             }
@@ -224,7 +230,7 @@ namespace HookeRope.Solver
                 if (pinBroken[p] || pinCompliance[p] == 0f) continue;
                 int i = pinParticle[p];
                 if (chain.Kinematic[i]) continue;
-                chain.InverseMass[i] = 1f / chain.Mass[i];
+                chain.InverseMass[i] = SolveInverseMass(i);
                 double alphaTilde = pinCompliance[p] * invH2;
                 Float3 target = PinTarget(p, t);
                 int b = 3 * p;

@@ -27,6 +27,11 @@ namespace HookeRope.Solver
         private ConstraintSolverKind solver = RopeParameters.Solver.Default;
         private TensionModel tension = RopeParameters.TensionModel.Default;
         private TimeIntegrator integrator = DefaultIntegrator;
+        private float viscousDrag = RopeParameters.ViscousDrag.Default;
+        private float dragCoefficient = RopeParameters.DragCoefficient.Default;
+        private float skinFriction = RopeParameters.SkinFriction.Default;
+        private float airDensity = RopeParameters.AirDensity.Default;
+        private Float3 wind = new Float3(RopeParameters.Wind.DefaultX, RopeParameters.Wind.DefaultY, RopeParameters.Wind.DefaultZ);
 
         /// <summary>Default of <see cref="Integrator"/>.</summary>
         public const TimeIntegrator DefaultIntegrator = TimeIntegrator.Bdf2;
@@ -108,6 +113,49 @@ namespace HookeRope.Solver
             get => integrator;
             set { CheckChoice((int)value, (int)TimeIntegrator.BackwardEuler, (int)TimeIntegrator.Bdf2, nameof(Integrator)); integrator = value; Version++; }
         }
+
+        /// <summary>
+        /// Viscous drag coefficient c in N·s/m², in [0, 1e4] (<see cref="RopeParameters.ViscousDrag"/>): a force −c·(v − <see cref="Wind"/>)
+        /// per metre of rope, applied implicitly (it never adds energy). A uniform rope's swing decays as exp(−c·t/(2μ)) and it
+        /// falls at most at μ·g/c (μ = <see cref="LinearDensity"/>). Default 0 (off).
+        /// </summary>
+        public float ViscousDrag { get => viscousDrag; set => Set(ref viscousDrag, value, RopeParameters.ViscousDrag.Row); }
+
+        /// <summary>
+        /// Drag coefficient C_d (dimensionless), in [0, 10] (<see cref="RopeParameters.DragCoefficient"/>) of the quadratic air drag
+        /// across the rope: ½·ρ·C_d·2R·|v⊥|·v⊥ per metre, v⊥ the velocity across the rope relative to the air (ρ =
+        /// <see cref="AirDensity"/>, R = <see cref="Radius"/>). About 1.0–1.2 for a rope in air. Default 0 (off).
+        /// </summary>
+        public float DragCoefficient { get => dragCoefficient; set => Set(ref dragCoefficient, value, RopeParameters.DragCoefficient.Row); }
+
+        /// <summary>
+        /// Skin-friction coefficient C_f (dimensionless), in [0, 1] (<see cref="RopeParameters.SkinFriction"/>) of the axial air drag
+        /// along the rope: ½·ρ·C_f·2πR·|v∥|·v∥ per metre, v∥ the velocity along the rope relative to the air. About 0.01. Default 0 (off).
+        /// </summary>
+        public float SkinFriction { get => skinFriction; set => Set(ref skinFriction, value, RopeParameters.SkinFriction.Row); }
+
+        /// <summary>Density ρ of the air (or fluid) in kg/m³, in [0, 1e4] (<see cref="RopeParameters.AirDensity"/>). Scales C_d and C_f. Default 1.2 kg/m³.</summary>
+        public float AirDensity { get => airDensity; set => Set(ref airDensity, value, RopeParameters.AirDensity.Row); }
+
+        /// <summary>
+        /// Velocity of the air in m/s (world axes; the rope-local frame is the world frame shifted, so a velocity is the same in
+        /// both), each component in [−1000, 1000] (<see cref="RopeParameters.Wind"/>); a non-finite component throws. The drag acts
+        /// on the rope's velocity relative to it; without drag it has no effect. Default (0, 0, 0).
+        /// </summary>
+        public Float3 Wind
+        {
+            get => wind;
+            set
+            {
+                ParameterInfo row = RopeParameters.Wind.Row;
+                RopeParameters.Check(value.X, row); RopeParameters.Check(value.Y, row); RopeParameters.Check(value.Z, row);
+                wind = value;
+                Version++;
+            }
+        }
+
+        /// <summary>True when some drag acts (c &gt; 0, or ρ &gt; 0 with C_d or C_f &gt; 0). False costs nothing per step.</summary>
+        public bool HasDrag => viscousDrag > 0f || (airDensity > 0f && (dragCoefficient > 0f || skinFriction > 0f));
 
         /// <summary>A copy with the same values (version 0).</summary>
         public RopeSettings Clone()

@@ -79,6 +79,8 @@ namespace HookeRope.Lab.Scenarios
             if (solver != null) ReadSolver(solver, s.Solver);
             var rope = root.Object("rope");
             if (rope != null) ReadRope(rope, s.Rope);
+            var drag = root.Object("drag");
+            if (drag != null) ReadDrag(drag, s.Drag);
             s.Start = ReadAttachment(root.Object("start"), s.Start);
             s.End = ReadAttachment(root.Object("end"), s.End);
             var initial = root.Object("initial");
@@ -96,7 +98,7 @@ namespace HookeRope.Lab.Scenarios
             if (expect != null)
             {
                 s.Expect.Check = expect.Choice("check", "none", "none", "fall-arrest", "static-hang", "period",
-                    "catenary", "poisson", "neck", "fracture", "collision", "amplitude", "rebound", "snatch", "absorber", "plastic");
+                    "catenary", "poisson", "neck", "fracture", "collision", "amplitude", "rebound", "snatch", "absorber", "plastic", "settle");
                 expect.RejectUnknown();
             }
             root.RejectUnknown();
@@ -167,6 +169,16 @@ namespace HookeRope.Lab.Scenarios
             if (!(r.NeckingStrain >= r.YieldStrain && r.NeckingStrain < r.UltimateStrain))
                 throw new ScenarioException(f.Child(RopeParameters.NeckingStrain.Json),
                     $"must be in [yieldStrain, ultimateStrain) = [{JsonFields.Format(r.YieldStrain)}, {JsonFields.Format(r.UltimateStrain)})");
+        }
+
+        static void ReadDrag(JsonFields f, DragSpec d)
+        {
+            d.ViscousDrag = f.Parameter(RopeParameters.ViscousDrag.Row, d.ViscousDrag);
+            d.DragCoefficient = f.Parameter(RopeParameters.DragCoefficient.Row, d.DragCoefficient);
+            d.SkinFriction = f.Parameter(RopeParameters.SkinFriction.Row, d.SkinFriction);
+            d.AirDensity = f.Parameter(RopeParameters.AirDensity.Row, d.AirDensity);
+            d.Wind = f.Vector(RopeParameters.Wind.Json, d.Wind, RopeParameters.Wind.Max);
+            f.RejectUnknown();
         }
 
         static AttachmentSpec ReadAttachment(JsonFields f, AttachmentSpec fallback)

@@ -181,6 +181,9 @@ namespace HookeRope.Lab.Simulation
                 case "snatch":
                     AddSnatchChecks(r, list, load, g, ea / length);
                     break;
+                case "settle":
+                    AddSettleChecks(r, list);
+                    break;
                 case "catenary":
                 {
                     var start = ScenarioGeometry.StartPosition(s);
@@ -276,6 +279,74 @@ namespace HookeRope.Lab.Simulation
                 }
             }
             return list;
+        }
+
+        /// <summary>
+        /// A uniform rope released from a fixed start and swinging under viscous drag c (N·s/m²): every mode decays as
+        /// exp(−c·t/(2μ)) (the drag per unit mass c/μ is the same everywhere). The decay rate of the centre of mass's swing (the
+        /// least-squares slope of ln|peak| over its peaks) against c/(2μ) (2 %), and the time after which no particle is 1 cm
+        /// or more from the vertical through the start against (2μ/c)·ln(A₀/1 cm), A₀ the farthest particle at release (5 %).
+        /// </summary>
+        static void AddSettleChecks(RunResult r, List<CheckResult> list)
+        {
+            var s = r.Scenario;
+            double mu = s.Rope.ResolvedLinearDensity, c = s.Drag.ViscousDrag, rate = c / (2 * mu);
+            list.Add(new CheckResult
+            {
+                Quantity = "swing decay rate", Unit = "1/s", Tolerance = 0.02, Expected = rate,
+                Measured = r.SwingSeries == null ? double.NaN : DecayRate(r.SwingSeries, r.HostStep), Formula = "c/(2μ): amplitude ∝ exp(−c·t/(2μ))",
+            });
+            double a0 = ReleaseReach(s), settled = double.NaN;
+            if (r.OffVerticalSeries != null && r.OffVerticalSeries.Length > 0 && r.OffVerticalSeries[r.OffVerticalSeries.Length - 1] < SettleDistance)
+            {
+                settled = 0;
+                for (int k = 0; k < r.OffVerticalSeries.Length; k++)
+                    if (r.OffVerticalSeries[k] >= SettleDistance) settled = (k + 1) * r.HostStep;
+            }
+            list.Add(new CheckResult
+            {
+                Quantity = "settled within 1 cm of the vertical at", Unit = "s", Tolerance = 0.05, Measured = settled,
+                Expected = Math.Log(a0 / SettleDistance) / rate, Formula = "(2μ/c)·ln(A₀/1 cm), A₀ = " + JsonFields.Format(a0) + " m at release",
+            });
+        }
+
+        /// <summary>How close to the vertical (m) a settled swing stays.</summary>
+        public const double SettleDistance = 0.01;
+
+        /// <summary>The farthest horizontal distance (m) of a particle from the vertical through the start in the scenario's initial shape.</summary>
+        static double ReleaseReach(Scenario s)
+        {
+            var down = ScenarioGeometry.DownDirection(s.Gravity);
+            var start = ScenarioGeometry.StartPosition(s);
+            var positions = new Float3[s.Rope.Segments + 1];
+            ScenarioGeometry.InitialPositions(s, positions);
+            double farthest = 0;
+            foreach (var p in positions)
+            {
+                var d = p - start;
+                farthest = Math.Max(farthest, (d - down * Float3.Dot(d, down)).Length);
+            }
+            return farthest;
+        }
+
+        /// <summary>
+        /// −(least-squares slope of ln|x| over the local maxima of |x|) in 1/s, samples <paramref name="dt"/> s apart (index k at
+        /// (k + 1)·dt), over the maxima above 1e-4 of the largest (below, float32 positions round the swing); NaN with fewer than 3.
+        /// </summary>
+        public static double DecayRate(double[] x, double dt)
+        {
+            double st = 0, sy = 0, stt = 0, sty = 0, largest = 0;
+            foreach (double v in x) largest = Math.Max(largest, Math.Abs(v));
+            int peaks = 0;
+            for (int k = 1; k + 1 < x.Length; k++)
+            {
+                double a = Math.Abs(x[k]);
+                if (!(a > Math.Abs(x[k - 1]) && a >= Math.Abs(x[k + 1]) && a > 1e-4 * largest)) continue;
+                double t = (k + 1) * dt, y = Math.Log(a);
+                st += t; sy += y; stt += t * t; sty += t * y;
+                peaks++;
+            }
+            return peaks < 3 ? double.NaN : -(peaks * sty - st * sy) / (peaks * stt - st * st);
         }
 
         /// <summary>Periods between the first and the last whole period a run of <paramref name="duration"/> s holds (the analytic period), at least 1.</summary>

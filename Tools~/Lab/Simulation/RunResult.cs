@@ -143,6 +143,11 @@ namespace HookeRope.Lab.Simulation
         public float[] ResidualSeries;
         /// <summary>Elongation after each host step, m.</summary>
         public double[] ElongationSeries;
+        /// <summary>
+        /// "settle" runs only (else null): after each host step, the horizontal offset (m) of the rope's centre of mass from the
+        /// vertical through the start, signed along its initial direction, and the largest horizontal distance of a particle from it.
+        /// </summary>
+        public double[] SwingSeries, OffVerticalSeries;
         /// <summary>Host step in s (series index k is time (k + 1)·HostStep).</summary>
         public double HostStep;
         /// <summary>Final force of the rope on the start and end loads in N (zero without a load).</summary>
