@@ -125,19 +125,35 @@ namespace HookeRope.Solver
         }
 
         /// <summary>
-        /// False only when no particle in <paramref name="box"/> can be within reach — its radius·(1 + contact margin) plus the
-        /// rounding allowance — of collider k's surface, or inside it, anywhere on its path over the host step
-        /// (<paramref name="sweep"/>) or in the current substep: the plane's smallest signed distance over the box's corners, or
-        /// the overlap of the grown boxes.
+        /// False only when no particle in <paramref name="box"/> can be within reach of collider k's surface, or inside it,
+        /// anywhere on its path over the host step (<paramref name="sweep"/>) or in the current substep (see <see cref="Within"/>).
         /// </summary>
-        public bool Near(int k, in ParticleBox box, bool sweep)
+        public bool Near(int k, in ParticleBox box, bool sweep) => Within(k, in box, Reach(k, in box, sweep), sweep);
+
+        /// <summary>
+        /// How far (m) a particle of <paramref name="box"/> can be from collider k's bound and still be pushed, held, detected or
+        /// rubbed: the box's largest radius·(1 + contact margin) plus the rounding allowance for the box's and the collider's
+        /// magnitudes. It also holds for any smaller box inside this one (a particle of it).
+        /// </summary>
+        public double Reach(int k, in ParticleBox box, bool sweep)
+        {
+            double scale = Math.Max(Math.Abs(box.LowX), Math.Abs(box.HighX)) + Math.Max(Math.Abs(box.LowY), Math.Abs(box.HighY))
+                         + Math.Max(Math.Abs(box.LowZ), Math.Abs(box.HighZ));
+            double r = box.Radius;
+            return r * (1.0 + CollisionSet.ContactMarginFraction) + RelativeTolerance * (scale + bounds[Slot(k, sweep) + 6] + r);
+        }
+
+        /// <summary>
+        /// False only when no point of <paramref name="box"/> comes within <paramref name="reach"/> (m) of collider k's bound
+        /// (over the host step when <paramref name="sweep"/>, else in the current substep): the plane's smallest signed distance
+        /// over the box's corners, or the overlap of the boxes. NaN anywhere gives true.
+        /// </summary>
+        public bool Within(int k, in ParticleBox box, double reach, bool sweep)
         {
             if (sweep && unbounded[k]) return true;
-            int o = (sweep ? k * 2 : k * 2 + 1) * Values;
+            int o = Slot(k, sweep);
             double[] b = bounds;
-            double lx = box.LowX, ly = box.LowY, lz = box.LowZ, hx = box.HighX, hy = box.HighY, hz = box.HighZ, r = box.Radius;
-            double scale = Math.Max(Math.Abs(lx), Math.Abs(hx)) + Math.Max(Math.Abs(ly), Math.Abs(hy)) + Math.Max(Math.Abs(lz), Math.Abs(hz));
-            double reach = r * (1.0 + CollisionSet.ContactMarginFraction) + RelativeTolerance * (scale + b[o + 6] + r);
+            double lx = box.LowX, ly = box.LowY, lz = box.LowZ, hx = box.HighX, hy = box.HighY, hz = box.HighZ;
             if (kinds[k] == ColliderKind.Plane)
             {
                 double nx = b[o], ny = b[o + 1], nz = b[o + 2];
@@ -148,5 +164,7 @@ namespace HookeRope.Solver
                   || ly > b[o + 4] + reach || hy < b[o + 1] - reach
                   || lz > b[o + 5] + reach || hz < b[o + 2] - reach);
         }
+
+        private static int Slot(int k, bool sweep) => (sweep ? k * 2 : k * 2 + 1) * Values;
     }
 }

@@ -21,6 +21,7 @@ namespace HookeRope.Solver
         private readonly CollisionBroadPhase broad = new CollisionBroadPhase();
         private readonly ParticleBlocks blocks = new ParticleBlocks();
         private bool[] nearRope = new bool[0], candidate = new bool[0];
+        private double[] candidateReach = new double[0]; // the block's reach of each candidate collider (see CollisionBroadPhase.Reach)
         private int[] boundSubstep = new int[0]; // the substep whose bound the broad phase holds for each collider
         private int substep;                     // serial number of the current substep
         private bool swept;                      // the broad phase holds every collider's bound over this host step
@@ -45,6 +46,7 @@ namespace HookeRope.Solver
                 poses.Resize(size);
                 Array.Resize(ref nearRope, size);
                 Array.Resize(ref candidate, size);
+                Array.Resize(ref candidateReach, size);
                 Array.Resize(ref boundSubstep, size);
             }
             int i = Count++;
@@ -141,7 +143,10 @@ namespace HookeRope.Solver
                 bool blockNear = false;
                 for (int k = 0; k < Count; k++)
                 {
-                    candidate[k] = nearRope[k] && broad.Near(k, box, false);
+                    candidate[k] = false;
+                    if (!nearRope[k]) continue;
+                    candidateReach[k] = broad.Reach(k, box, false);
+                    candidate[k] = broad.Within(k, box, candidateReach[k], false);
                     blockNear |= candidate[k];
                 }
                 if (blockNear) ProjectBlock(c, b, h, detect, friction, load);
@@ -178,7 +183,7 @@ namespace HookeRope.Solver
             return any;
         }
 
-        /// <summary>The narrow phase for the dynamic particles of block b against the colliders within reach of it (<see cref="candidate"/>).</summary>
+        /// <summary>The narrow phase for the dynamic particles of block b within reach of a collider within reach of the block (<see cref="candidate"/>).</summary>
         private void ProjectBlock(ChainState c, int b, float h, bool detect, bool friction, float[] load)
         {
             int end = Math.Min(c.ParticleCount, (b + 1) * ParticleBlocks.BlockSize);
@@ -205,8 +210,9 @@ namespace HookeRope.Solver
                         }
                         if (!broad.Near(k, ParticleBox.Point(c.PrevX[i] + c.DX[i], c.PrevY[i] + c.DY[i], c.PrevZ[i] + c.DZ[i], r), false)) continue;
                     }
-                    else if (!candidate[k])
+                    else if (!candidate[k] || !broad.Within(k, ParticleBox.Point(c.PrevX[i] + c.DX[i], c.PrevY[i] + c.DY[i], c.PrevZ[i] + c.DZ[i], r), candidateReach[k], false))
                     {
+                        // the block's reach holds for each of its particles
                         continue;
                     }
                     moved |= Resolve(c, i, k, r, h, detect, friction, load, ref best);

@@ -6,14 +6,15 @@ using System.Runtime.InteropServices;
 namespace HookeRope.Solver
 {
     /// <summary>
-    /// Axis-aligned bounds of the live positions (Prev + D, rope-local m) of every block of <see cref="BlockSize"/>
-    /// consecutive particles and of the whole rope, with the largest particle radius of each: what the collision broad
-    /// phase compares with the colliders, recomputed by <see cref="Scan"/> before every collision pass.
-    /// <para>Where <see cref="Vector.IsHardwareAccelerated"/> the scan runs on <see cref="Vector{T}"/> lanes and a block's
-    /// lanes are reduced to its box only when asked for (when some collider is within reach of the whole rope); elsewhere
-    /// (Mono and IL2CPP may not accelerate <see cref="Vector{T}"/>) a scalar loop does the same.</para>
-    /// <para>A NaN coordinate is left out of the box: the narrow phase's distance to such a particle is NaN, which neither
-    /// pushes, nor detects, nor rubs it, so skipping it changes nothing. ±∞ is kept, and every broad-phase test on an
+    /// Axis-aligned bounds of the live positions (Prev + D, rope-local m) of the whole rope and of every block of
+    /// <see cref="BlockSize"/> consecutive particles, with the largest particle radius of each: what the collision broad
+    /// phase compares with the colliders before every collision pass. <see cref="Scan"/> bounds the rope alone (one
+    /// streaming pass); the blocks are bounded only when first asked for (<see cref="Block"/>: some collider is within reach
+    /// of the rope), so a rope with every collider out of reach pays one pass over its positions and nothing more.
+    /// <para>Where <see cref="Vector.IsHardwareAccelerated"/> the passes run on <see cref="Vector{T}"/> lanes; elsewhere
+    /// (Mono and IL2CPP may not accelerate <see cref="Vector{T}"/>) scalar loops give the same boxes.</para>
+    /// <para>A NaN coordinate is left out of a box: the narrow phase's distance to such a particle is NaN, which neither
+    /// pushes, nor detects, nor rubs it, so leaving it out changes nothing. ±∞ is kept, and every broad-phase test on an
     /// infinite box comes out "near". Allocation-free after <see cref="Reserve"/>.</para>
     /// </summary>
     internal sealed class ParticleBlocks
@@ -23,7 +24,9 @@ namespace HookeRope.Solver
 
         private const int LaneValues = 6; // per block on vector lanes: lo x y z, hi x y z
 
+        private ChainState chain;
         private int particleCount, blockCount;
+        private bool blocksScanned;
         private ParticleBox[] boxes = new ParticleBox[0];
         private bool[] reduced = new bool[0];
         private Vector<float>[] lanes = new Vector<float>[0];
@@ -32,7 +35,7 @@ namespace HookeRope.Solver
         private bool radiiStale = true;
         private ParticleBox rope;
 
-        /// <summary>Scan on vector lanes where the hardware accelerates them (tests switch it off to check the scalar scan).</summary>
+        /// <summary>Scan on vector lanes where the hardware accelerates them (tests switch it off to check the scalar scans).</summary>
         public bool UseVectors { get; set; } = Vector.IsHardwareAccelerated && BlockSize % Vector<float>.Count == 0;
 
         /// <summary>Blocks of the last scan.</summary>
@@ -48,7 +51,7 @@ namespace HookeRope.Solver
             if (blocks <= boxes.Length) return;
             boxes = new ParticleBox[blocks];
             reduced = new bool[blocks];
-            lanes = new Vector<float>[(blocks + 1) * LaneValues];
+            lanes = new Vector<float>[blocks * LaneValues];
             radii = new float[blocks];
             radiiStale = true;
         }
@@ -59,9 +62,26 @@ namespace HookeRope.Solver
         /// </summary>
         public void RadiiChanged() => radiiStale = true;
 
-        /// <summary>Box of block b (particles b·<see cref="BlockSize"/> onwards) of the last scan.</summary>
+        /// <summary>Bounds the whole rope of <paramref name="c"/> at its current live positions (the blocks follow on demand).</summary>
+        public void Scan(ChainState c)
+        {
+            Reserve(c.ParticleCount);
+            chain = c;
+            particleCount = c.ParticleCount;
+            blockCount = (particleCount + BlockSize - 1) / BlockSize;
+            blocksScanned = false;
+            if (radiiStale) ScanRadii(c.Radius);
+            if (!(Vectors && ScanRopeVectors(c))) ScanRopeScalar(c);
+        }
+
+        /// <summary>Box of block b (particles b·<see cref="BlockSize"/> onwards) at the positions of the last <see cref="Scan"/>.</summary>
         public ParticleBox Block(int b)
         {
+            if (!blocksScanned)
+            {
+                if (!(Vectors && ScanBlockVectors(chain))) ScanBlocksScalar(chain);
+                blocksScanned = true;
+            }
             if (!reduced[b])
             {
                 int o = b * LaneValues;
@@ -71,16 +91,7 @@ namespace HookeRope.Solver
             return boxes[b];
         }
 
-        /// <summary>Bounds every block of <paramref name="c"/> and the whole rope at the current live positions.</summary>
-        public void Scan(ChainState c)
-        {
-            Reserve(c.ParticleCount);
-            particleCount = c.ParticleCount;
-            blockCount = (particleCount + BlockSize - 1) / BlockSize;
-            if (radiiStale) ScanRadii(c.Radius);
-            if (UseVectors && particleCount >= Vector<float>.Count) ScanVectors(c);
-            else ScanScalar(c);
-        }
+        private bool Vectors => UseVectors && particleCount >= Vector<float>.Count;
 
         private void ScanRadii(float[] radius)
         {
@@ -96,68 +107,105 @@ namespace HookeRope.Solver
             radiiStale = false;
         }
 
-        private void ScanScalar(ChainState c)
+        private void ScanRopeScalar(ChainState c) => rope = Bound(c, 0, particleCount, ropeRadius);
+
+        private void ScanBlocksScalar(ChainState c)
         {
-            float[] px = c.PrevX, py = c.PrevY, pz = c.PrevZ, dx = c.DX, dy = c.DY, dz = c.DZ;
             for (int b = 0; b < blockCount; b++)
             {
-                int end = Math.Min((b + 1) * BlockSize, particleCount);
-                float lx = float.PositiveInfinity, ly = lx, lz = lx, hx = float.NegativeInfinity, hy = hx, hz = hx;
-                for (int i = b * BlockSize; i < end; i++)
-                {
-                    float x = px[i] + dx[i], y = py[i] + dy[i], z = pz[i] + dz[i];
-                    if (x < lx) lx = x;
-                    if (x > hx) hx = x;
-                    if (y < ly) ly = y;
-                    if (y > hy) hy = y;
-                    if (z < lz) lz = z;
-                    if (z > hz) hz = z;
-                }
-                boxes[b] = new ParticleBox(lx, ly, lz, hx, hy, hz, radii[b]);
+                boxes[b] = Bound(c, b * BlockSize, Math.Min((b + 1) * BlockSize, particleCount), radii[b]);
                 reduced[b] = true;
-                rope = b == 0 ? boxes[0] : ParticleBox.Union(rope, boxes[b]);
             }
         }
 
-        private void ScanVectors(ChainState c)
+        /// <summary>The box of particles start … end − 1 with radius r (a scalar loop; it calls nothing).</summary>
+        private static ParticleBox Bound(ChainState c, int start, int end, float r)
+        {
+            float[] px = c.PrevX, py = c.PrevY, pz = c.PrevZ, dx = c.DX, dy = c.DY, dz = c.DZ;
+            float lx = float.PositiveInfinity, ly = lx, lz = lx, hx = float.NegativeInfinity, hy = hx, hz = hx;
+            for (int i = start; i < end; i++)
+            {
+                float x = px[i] + dx[i], y = py[i] + dy[i], z = pz[i] + dz[i];
+                if (x < lx) lx = x;
+                if (x > hx) hx = x;
+                if (y < ly) ly = y;
+                if (y > hy) hy = y;
+                if (z < lz) lz = z;
+                if (z > hz) hz = z;
+            }
+            return new ParticleBox(lx, ly, lz, hx, hy, hz, r);
+        }
+
+        /// <summary>The rope's box on vector lanes (the particles after the last whole vector by a scalar loop); false if the chain's arrays were not all one length.</summary>
+        private bool ScanRopeVectors(ChainState c)
+        {
+            int full = particleCount / Vector<float>.Count * Vector<float>.Count;
+            if (!StreamRange(Lanes(c.PrevX), Lanes(c.PrevY), Lanes(c.PrevZ), Lanes(c.DX), Lanes(c.DY), Lanes(c.DZ), out LaneBox all)) return false;
+            rope = Reduce(all.LowX, all.LowY, all.LowZ, all.HighX, all.HighY, all.HighZ, ropeRadius);
+            if (full < particleCount) rope = ParticleBox.Union(rope, Bound(c, full, particleCount, ropeRadius));
+            return true;
+        }
+
+        /// <summary>Lane-wise lowest and highest coordinates.</summary>
+        private struct LaneBox
+        {
+            public Vector<float> LowX, LowY, LowZ, HighX, HighY, HighZ;
+        }
+
+        /// <summary>
+        /// Lane-wise range of prev + d over every vector of the spans. Stores nothing in the loop and calls nothing, so the
+        /// compiler drops its bounds checks and compiles it fully optimised everywhere. False unless every span holds as many
+        /// vectors as <paramref name="px"/>.
+        /// </summary>
+        private static bool StreamRange(ReadOnlySpan<Vector<float>> px, ReadOnlySpan<Vector<float>> py, ReadOnlySpan<Vector<float>> pz,
+            ReadOnlySpan<Vector<float>> dx, ReadOnlySpan<Vector<float>> dy, ReadOnlySpan<Vector<float>> dz, out LaneBox range)
+        {
+            range = default;
+            int n = px.Length;
+            if (py.Length < n || pz.Length < n || dx.Length < n || dy.Length < n || dz.Length < n) return false;
+            var inf = new Vector<float>(float.PositiveInfinity);
+            var negInf = new Vector<float>(float.NegativeInfinity);
+            Vector<float> lx = inf, ly = inf, lz = inf, hx = negInf, hy = negInf, hz = negInf;
+            for (int v = 0; v < n; v++) Grow(ref lx, ref ly, ref lz, ref hx, ref hy, ref hz, px[v] + dx[v], py[v] + dy[v], pz[v] + dz[v]);
+            range.LowX = lx; range.LowY = ly; range.LowZ = lz; range.HighX = hx; range.HighY = hy; range.HighZ = hz;
+            return true;
+        }
+
+        /// <summary>The blocks' lane-wise ranges on vector lanes; false if the chain's arrays were not all one length.</summary>
+        private bool ScanBlockVectors(ChainState c)
         {
             int n = particleCount, width = Vector<float>.Count;
             bool tail = n % width != 0;
             int at = n - width;
             // the last, short chunk is read from n − width: it overlaps the chunk before it (a larger box, never a smaller one)
-            ScanChunks(Lanes(c.PrevX), Lanes(c.PrevY), Lanes(c.PrevZ), Lanes(c.DX), Lanes(c.DY), Lanes(c.DZ),
-                tail ? Chunk(c.PrevX, c.DX, at) : default, tail ? Chunk(c.PrevY, c.DY, at) : default, tail ? Chunk(c.PrevZ, c.DZ, at) : default, tail);
+            if (!BlockRanges(Lanes(c.PrevX), Lanes(c.PrevY), Lanes(c.PrevZ), Lanes(c.DX), Lanes(c.DY), Lanes(c.DZ),
+                    tail ? Chunk(c.PrevX, c.DX, at) : default, tail ? Chunk(c.PrevY, c.DY, at) : default, tail ? Chunk(c.PrevZ, c.DZ, at) : default, tail))
+                return false;
             Array.Clear(reduced, 0, blockCount);
-            int all = blockCount * LaneValues;
-            Vector<float>[] v = lanes;
-            rope = Reduce(v[all], v[all + 1], v[all + 2], v[all + 3], v[all + 4], v[all + 5], ropeRadius);
+            return true;
         }
 
         /// <summary>
-        /// The vector scan proper: prev + d over every whole vector of particles and then the tail chunk (tx, ty, tz), each
-        /// block's lane-wise lowest and highest coordinates kept in <see cref="lanes"/>, the rope's after the last block. Calls
-        /// nothing, so that it is compiled fully optimised everywhere.
+        /// Each block's lane-wise range of prev + d over its whole vectors and, for the last block, the tail chunk (tx, ty, tz),
+        /// kept in <see cref="lanes"/>. Calls nothing. False, having done nothing, unless every span holds as many vectors as
+        /// <paramref name="px"/>.
         /// </summary>
-        private void ScanChunks(ReadOnlySpan<Vector<float>> px, ReadOnlySpan<Vector<float>> py, ReadOnlySpan<Vector<float>> pz,
+        private bool BlockRanges(ReadOnlySpan<Vector<float>> px, ReadOnlySpan<Vector<float>> py, ReadOnlySpan<Vector<float>> pz,
             ReadOnlySpan<Vector<float>> dx, ReadOnlySpan<Vector<float>> dy, ReadOnlySpan<Vector<float>> dz,
             Vector<float> tx, Vector<float> ty, Vector<float> tz, bool hasTail)
         {
             int n = px.Length;
-            // every span has n vectors: saying so lets the compiler drop the bounds checks in the loop
-            if (py.Length < n || pz.Length < n || dx.Length < n || dy.Length < n || dz.Length < n) return;
+            if (py.Length < n || pz.Length < n || dx.Length < n || dy.Length < n || dz.Length < n) return false;
             int last = BlockSize / Vector<float>.Count - 1; // a power of two less one
             Vector<float>[] store = lanes;
             var inf = new Vector<float>(float.PositiveInfinity);
             var negInf = new Vector<float>(float.NegativeInfinity);
-            int all = blockCount * LaneValues;
-            store[all] = store[all + 1] = store[all + 2] = inf;
-            store[all + 3] = store[all + 4] = store[all + 5] = negInf;
             Vector<float> lx = inf, ly = inf, lz = inf, hx = negInf, hy = negInf, hz = negInf;
             for (int v = 0; v < n; v++)
             {
                 Grow(ref lx, ref ly, ref lz, ref hx, ref hy, ref hz, px[v] + dx[v], py[v] + dy[v], pz[v] + dz[v]);
                 if ((v & last) != last) continue;
-                Keep(store, v / (last + 1) * LaneValues, all, lx, ly, lz, hx, hy, hz);
+                Keep(store, v / (last + 1) * LaneValues, lx, ly, lz, hx, hy, hz);
                 lx = ly = lz = inf;
                 hx = hy = hz = negInf;
             }
@@ -167,7 +215,8 @@ namespace HookeRope.Solver
                 Grow(ref lx, ref ly, ref lz, ref hx, ref hy, ref hz, tx, ty, tz);
                 open = true;
             }
-            if (open) Keep(store, n / (last + 1) * LaneValues, all, lx, ly, lz, hx, hy, hz);
+            if (open) Keep(store, n / (last + 1) * LaneValues, lx, ly, lz, hx, hy, hz);
+            return true;
         }
 
         /// <summary>Grows the lane-wise range (lx … hz) over the chunk (x, y, z); a NaN lane is left out.</summary>
@@ -183,18 +232,11 @@ namespace HookeRope.Solver
             hz = Vector.ConditionalSelect(Vector.GreaterThan(z, hz), z, hz);
         }
 
-        /// <summary>Stores a block's lane-wise range at slot o and grows the rope's, at slot <paramref name="all"/>, over it.</summary>
+        /// <summary>Stores a block's lane-wise range at slot o.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static void Keep(Vector<float>[] store, int o, int all, Vector<float> lx, Vector<float> ly, Vector<float> lz,
-            Vector<float> hx, Vector<float> hy, Vector<float> hz)
+        private static void Keep(Vector<float>[] store, int o, Vector<float> lx, Vector<float> ly, Vector<float> lz, Vector<float> hx, Vector<float> hy, Vector<float> hz)
         {
             store[o] = lx; store[o + 1] = ly; store[o + 2] = lz; store[o + 3] = hx; store[o + 4] = hy; store[o + 5] = hz;
-            store[all] = Vector.ConditionalSelect(Vector.LessThan(lx, store[all]), lx, store[all]);
-            store[all + 1] = Vector.ConditionalSelect(Vector.LessThan(ly, store[all + 1]), ly, store[all + 1]);
-            store[all + 2] = Vector.ConditionalSelect(Vector.LessThan(lz, store[all + 2]), lz, store[all + 2]);
-            store[all + 3] = Vector.ConditionalSelect(Vector.GreaterThan(hx, store[all + 3]), hx, store[all + 3]);
-            store[all + 4] = Vector.ConditionalSelect(Vector.GreaterThan(hy, store[all + 4]), hy, store[all + 4]);
-            store[all + 5] = Vector.ConditionalSelect(Vector.GreaterThan(hz, store[all + 5]), hz, store[all + 5]);
         }
 
         /// <summary>The whole vectors of <paramref name="values"/> (a short remainder is left out).</summary>
