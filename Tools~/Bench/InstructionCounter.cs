@@ -8,7 +8,7 @@ namespace HookeRope.Bench
     /// <summary>
     /// Instructions per unit from callgrind, stable on a loaded machine where wall-clock is not: runs this tool's
     /// <c>frames</c> mode under <c>valgrind --tool=callgrind</c> (tiered compilation off, so every method is compiled
-    /// once, fully optimised) for a short and a long run and divides the difference of the collected instruction counts
+    /// once; under valgrind the methods left with a call are compiled at MinOpts, see solver.md) for a short and a long run and divides the difference of the collected instruction counts
     /// (all threads) by the difference in work units, so start-up, JIT and scene building cancel out.
     /// </summary>
     internal static class InstructionCounter
@@ -23,7 +23,12 @@ namespace HookeRope.Bench
             return (b - a) / units;
         }
 
-        private static long Collected(int ropes, int segments, int workers, int frames, Action<string> log)
+        private static long Collected(int ropes, int segments, int workers, int frames, Action<string> log) =>
+            Collected(log, "frames", ropes.ToString(CultureInfo.InvariantCulture), segments.ToString(CultureInfo.InvariantCulture),
+                workers.ToString(CultureInfo.InvariantCulture), frames.ToString(CultureInfo.InvariantCulture));
+
+        /// <summary>Instructions callgrind collected (all threads) running this tool with <paramref name="toolArgs"/> (tiered compilation off), or −1 when it could not run.</summary>
+        public static long Collected(Action<string> log, params string[] toolArgs)
         {
             string dll = typeof(Program).Assembly.Location;
             var info = new ProcessStartInfo("valgrind")
@@ -32,10 +37,9 @@ namespace HookeRope.Bench
                 RedirectStandardOutput = true,
                 UseShellExecute = false,
             };
-            foreach (string arg in new[] { "--tool=callgrind", "--callgrind-out-file=/dev/null", "dotnet", dll, "frames",
-                         ropes.ToString(CultureInfo.InvariantCulture), segments.ToString(CultureInfo.InvariantCulture),
-                         workers.ToString(CultureInfo.InvariantCulture), frames.ToString(CultureInfo.InvariantCulture) })
+            foreach (string arg in new[] { "--tool=callgrind", "--callgrind-out-file=/dev/null", "dotnet", dll })
                 info.ArgumentList.Add(arg);
+            foreach (string arg in toolArgs) info.ArgumentList.Add(arg);
             info.Environment["DOTNET_TieredCompilation"] = "0";
             try
             {
@@ -46,7 +50,7 @@ namespace HookeRope.Bench
                     process.WaitForExit();
                     Match m = Regex.Match(errors, @"Collected\s*:\s*(\d+)");
                     long collected = m.Success ? long.Parse(m.Groups[1].Value, CultureInfo.InvariantCulture) : -1;
-                    log?.Invoke($"callgrind {ropes}x{segments} w{workers} {frames} frames: {collected} instructions");
+                    log?.Invoke($"callgrind {string.Join(" ", toolArgs)}: {collected} instructions");
                     return collected;
                 }
             }
