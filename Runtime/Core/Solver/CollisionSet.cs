@@ -171,17 +171,24 @@ namespace HookeRope.Solver
             {
                 nearRope[k] = broad.Near(k, rope, true);
                 if (!nearRope[k]) continue;
-                poses.Ensure(k);
-                if (boundSubstep[k] != substep)
-                {
-                    broad.SetPose(k, shapes[k], poses.Position(k), poses.Rotation(k));
-                    boundSubstep[k] = substep;
-                }
+                BoundSubstep(k);
                 nearRope[k] = broad.Near(k, rope, false);
                 any |= nearRope[k];
             }
             return any;
         }
+
+        /// <summary>Works out collider k's pose in this substep and gives the broad phase its bound, once per substep.</summary>
+        private void BoundSubstep(int k)
+        {
+            poses.Ensure(k);
+            if (boundSubstep[k] == substep) return;
+            broad.SetPose(k, shapes[k], poses.Position(k), poses.Rotation(k));
+            boundSubstep[k] = substep;
+        }
+
+        /// <summary>The box of particle i's live position and radius r (m).</summary>
+        private static ParticleBox Here(ChainState c, int i, float r) => ParticleBox.Point(c.PrevX[i] + c.DX[i], c.PrevY[i] + c.DY[i], c.PrevZ[i] + c.DZ[i], r);
 
         /// <summary>The narrow phase for the dynamic particles of block b within reach of a collider within reach of the block (<see cref="candidate"/>).</summary>
         private void ProjectBlock(ChainState c, int b, float h, bool detect, bool friction, float[] load)
@@ -198,19 +205,11 @@ namespace HookeRope.Solver
                     if (moved)
                     {
                         // a particle this pass has moved (push, friction) may have come within reach of any later collider
-                        if (!broad.Near(k, ParticleBox.Point(c.PrevX[i] + c.DX[i], c.PrevY[i] + c.DY[i], c.PrevZ[i] + c.DZ[i], r), true)) continue;
-                        if (!nearRope[k])
-                        {
-                            poses.Ensure(k);
-                            if (boundSubstep[k] != substep)
-                            {
-                                broad.SetPose(k, shapes[k], poses.Position(k), poses.Rotation(k));
-                                boundSubstep[k] = substep;
-                            }
-                        }
-                        if (!broad.Near(k, ParticleBox.Point(c.PrevX[i] + c.DX[i], c.PrevY[i] + c.DY[i], c.PrevZ[i] + c.DZ[i], r), false)) continue;
+                        if (!broad.Near(k, Here(c, i, r), true)) continue;
+                        BoundSubstep(k);
+                        if (!broad.Near(k, Here(c, i, r), false)) continue;
                     }
-                    else if (!candidate[k] || !broad.Within(k, ParticleBox.Point(c.PrevX[i] + c.DX[i], c.PrevY[i] + c.DY[i], c.PrevZ[i] + c.DZ[i], r), candidateReach[k], false))
+                    else if (!candidate[k] || !broad.Within(k, Here(c, i, r), candidateReach[k], false))
                     {
                         // the block's reach holds for each of its particles
                         continue;
