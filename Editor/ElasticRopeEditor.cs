@@ -7,8 +7,8 @@ using UnityEngine;
 namespace HookeRope.Editor
 {
     /// <summary>
-    /// Inspector of <see cref="ElasticRope"/>, grouped Material / Geometry / Solver / Attachments / Collisions /
-    /// Fracture / Read-outs. Warns when the settings predict a large stretch error and previews the static
+    /// Inspector of <see cref="ElasticRope"/>, grouped Material / Material law / Geometry / Solver / Attachments / Collisions /
+    /// Fracture / Read-outs (the material law with its force–elongation preview: <see cref="MaterialLawInspector"/>). Warns when the settings predict a large stretch error and previews the static
     /// sag in edit mode. Read-outs repaint live in Play; with several ropes selected they show a table with one
     /// column per rope (<see cref="RopeReadoutTable"/>). Attachments has "Attach Start/End to selection"
     /// (<see cref="RopeAttachToSelection"/>); the Scene view shows a position handle per attached end (<see cref="RopeEndHandles"/>).
@@ -17,10 +17,12 @@ namespace HookeRope.Editor
     sealed class ElasticRopeEditor : UnityEditor.Editor
     {
         static bool s_Material = true, s_Geometry = true, s_Solver = true, s_Attachments = true, s_Collisions, s_Fracture, s_Readouts = true;
+        static bool s_MaterialLaw = true;
+        MaterialLawInspector m_MaterialLaw;
 
         SerializedProperty m_StiffnessInput, m_YoungsModulus, m_AxialStiffness, m_Density, m_PoissonRatio, m_Damping;
         SerializedProperty m_RestLength, m_Radius, m_SegmentCount;
-        SerializedProperty m_Solver, m_Substeps, m_Iterations, m_TensionModel, m_Gravity;
+        SerializedProperty m_Solver, m_Substeps, m_Iterations, m_TensionModel, m_Integrator, m_Gravity;
         SerializedProperty m_Start, m_End, m_AttachmentCompliance, m_OnStepped;
         SerializedProperty m_CollisionMode, m_Colliders, m_CollisionLayers, m_Planes, m_Friction;
         SerializedProperty m_RadiusModel, m_Necking, m_NeckMode, m_NeckRadiusFraction, m_DefectPosition, m_Fracture, m_BreakStrain, m_BreakRadiusFraction, m_OnBreak;
@@ -41,6 +43,7 @@ namespace HookeRope.Editor
             m_Substeps = so.FindProperty(nameof(m_Substeps));
             m_Iterations = so.FindProperty(nameof(m_Iterations));
             m_TensionModel = so.FindProperty(nameof(m_TensionModel));
+            m_Integrator = so.FindProperty(nameof(m_Integrator));
             m_Gravity = so.FindProperty(nameof(m_Gravity));
             m_Start = so.FindProperty(nameof(m_Start));
             m_End = so.FindProperty(nameof(m_End));
@@ -60,6 +63,7 @@ namespace HookeRope.Editor
             m_BreakStrain = so.FindProperty(nameof(m_BreakStrain));
             m_BreakRadiusFraction = so.FindProperty(nameof(m_BreakRadiusFraction));
             m_OnBreak = so.FindProperty(nameof(m_OnBreak));
+            m_MaterialLaw = new MaterialLawInspector(so);
         }
 
         public override bool RequiresConstantRepaint() => EditorApplication.isPlaying;
@@ -79,6 +83,8 @@ namespace HookeRope.Editor
                 EditorGUILayout.LabelField("Axial stiffness E·A", Format(rope.AxialStiffness, "N"));
                 EditorGUILayout.LabelField("Mass per metre", Format(rope.LinearDensity, "kg/m"));
             }
+            if (Section(ref s_MaterialLaw, "Material law (yield, necking, energy absorber)"))
+                m_MaterialLaw.Draw(rope, !serializedObject.isEditingMultipleObjects);
             if (Section(ref s_Geometry, "Geometry"))
             {
                 Field(m_RestLength);
@@ -91,6 +97,7 @@ namespace HookeRope.Editor
                 Field(m_Substeps);
                 Field(m_Iterations);
                 Field(m_TensionModel);
+                Field(m_Integrator);
                 Field(m_Gravity);
                 StretchWarning(rope);
             }

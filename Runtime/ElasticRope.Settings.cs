@@ -54,6 +54,9 @@ namespace HookeRope
         [SerializeField, Tooltip(RopeParameters.TensionModel.Tooltip)]
         TensionModel m_TensionModel = RopeParameters.TensionModel.Default;
 
+        [SerializeField, Tooltip(RopeParameters.Integrator.Tooltip)]
+        TimeIntegrator m_Integrator = RopeParameters.Integrator.Default;
+
         [SerializeField, Min(RopeParameters.Gravity.Min), Tooltip(RopeParameters.Gravity.Tooltip)]
         Vector3 m_Gravity = new Vector3(RopeParameters.Gravity.DefaultX, RopeParameters.Gravity.DefaultY, RopeParameters.Gravity.DefaultZ);
 
@@ -192,6 +195,13 @@ namespace HookeRope
             set { m_TensionModel = value; ApplySettings(); }
         }
 
+        /// <summary>Time integrator of each substep: backward Euler (most robust, dissipative) or BDF2 (second order, low dissipation).</summary>
+        public TimeIntegrator Integrator
+        {
+            get => m_Integrator;
+            set { m_Integrator = value; ApplySettings(); }
+        }
+
         /// <summary>Gravity on the rope (m/s²).</summary>
         public Vector3 Gravity
         {
@@ -304,6 +314,7 @@ namespace HookeRope
             Report(RopeParameters.Clamp(ref m_DefectPosition, RopeParameters.DefectPosition.Row));
             Report(RopeParameters.Clamp(ref m_BreakStrain, RopeParameters.BreakStrain.Row));
             Report(RopeParameters.Clamp(ref m_BreakRadiusFraction, RopeParameters.BreakRadiusFraction.Row));
+            ClampMaterialFields();   // the material law (ElasticRope.Material.cs)
             if (!RopeParameters.Contains(RopeParameters.NeckMode.Row, (int)m_NeckMode))
             {
                 m_NeckMode = RopeParameters.NeckMode.Default;
@@ -356,6 +367,8 @@ namespace HookeRope
             settings.Iterations = m_Iterations;
             settings.Solver = m_Solver;
             settings.Tension = m_TensionModel;
+            settings.Integrator = m_Integrator;
+            WriteMaterialSettings(settings);   // the material law (ElasticRope.Material.cs)
         }
 
         /// <summary>True when any radius-model feature (thinning, necking, fracture) is on; all off costs nothing per step.</summary>
@@ -382,7 +395,7 @@ namespace HookeRope
         }
 
 
-        /// <summary>How far the Layer Mask collider query reaches: the rest length stretched to the break strain (or doubled), plus R.</summary>
-        ColliderReach Reach => new ColliderReach(m_RestLength * (1f + (m_Fracture ? m_BreakStrain : 1f)), m_Radius);
+        /// <summary>How far the Layer Mask collider query reaches: the rest length stretched to the break strain (or doubled) and the material's reach (ultimate strain, absorber), plus R.</summary>
+        ColliderReach Reach => new ColliderReach(m_RestLength * (1f + (m_Fracture ? m_BreakStrain : 1f)) + MaterialReach, m_Radius);
     }
 }

@@ -88,10 +88,10 @@ namespace HookeRope
         public float PeakArrestForce => Readouts?.PeakArrestForce ?? 0f;
 
         /// <summary>True while <see cref="PeakArrestForce"/> is within EN 355's 6 kN.</summary>
-        public bool MeetsEn355 => FallArrestLimits.MeetsEn355(PeakArrestForce);
+        public bool MeetsEn355 => Readouts?.MeetsEn355 ?? true;
 
         /// <summary>True while <see cref="PeakArrestForce"/> is within ANSI Z359.13's 8 kN.</summary>
-        public bool MeetsAnsiZ359_13 => FallArrestLimits.MeetsAnsiZ359_13(PeakArrestForce);
+        public bool MeetsAnsiZ359_13 => Readouts?.MeetsAnsiZ359_13 ?? true;
 
         /// <summary>Constraint residual of the last step: largest strain error against the compliance-consistent target (dimensionless).</summary>
         public float Residual => Readouts?.Residual ?? 0f;
@@ -112,14 +112,16 @@ namespace HookeRope
             Rebuild();
         }
 
+        // With two or more ropes enabled in Play, the first rope to run in a physics step steps all of them on the
+        // shared world (RopeWorldScheduler); one rope alone steps inline, here. The key names the physics step.
         void FixedUpdate()
         {
-            if (Physics.simulationMode == SimulationMode.FixedUpdate) Simulate(Time.fixedDeltaTime);
+            if (Physics.simulationMode == SimulationMode.FixedUpdate) RopeWorldScheduler.OnPhysicsStep(this, Time.fixedDeltaTime, Time.fixedTimeAsDouble);
         }
 
         void Update()
         {
-            if (Physics.simulationMode == SimulationMode.Update && Time.deltaTime > 0f) Simulate(Time.deltaTime);
+            if (Physics.simulationMode == SimulationMode.Update && Time.deltaTime > 0f) RopeWorldScheduler.OnPhysicsStep(this, Time.deltaTime, -1.0 - Time.frameCount);
         }
 
         // ---- Public API -----------------------------------------------------------------------------------
@@ -141,27 +143,44 @@ namespace HookeRope
             RecordBuiltTopology();
             Guard.RecordAttachments(m_Start, m_End);
             _breakRaised = false;
+            RopeWorldScheduler.Built(this);
         }
 
         /// <summary>
         /// Advances the rope by <paramref name="deltaTime"/> seconds: copies attachment and collider poses in,
         /// steps the core simulation (substeps inside; it updates the read-outs), applies the rope's forces to attached
         /// Rigidbodies, records where rigs without a Rigidbody must move, raises <see cref="OnBreak"/> on the first break
-        /// and <see cref="OnStepped"/> after every step. FixedUpdate calls it with Time.fixedDeltaTime when Physics.simulationMode is FixedUpdate, Update with Time.deltaTime in Update mode; in Script mode and edit-mode code call it yourself.
+        /// and <see cref="OnStepped"/> after every step. FixedUpdate calls it with Time.fixedDeltaTime when Physics.simulationMode
+        /// is FixedUpdate, Update with Time.deltaTime in Update mode (with two or more ropes enabled, the shared world does
+        /// the same for all of them at once: <see cref="ElasticRopeWorld"/>); in Script mode and edit-mode code call it yourself.
         /// </summary>
         public void Simulate(float deltaTime)
         {
             if (!(deltaTime > 0f) || float.IsInfinity(deltaTime))
                 throw new ArgumentOutOfRangeException(nameof(deltaTime), deltaTime, "deltaTime must be in (0, +inf) seconds");
-            if (_rope == null || TopologyChanged()) Rebuild();
-
-            if (_attachments.CopyIn(_rope, _origin, deltaTime)) _simulation.Readouts.ArrestLoad = _attachments.EndLoad;
-            _colliderBinding.BeforeStep(_rope, _origin, Reach);
-
+            BeginStep(deltaTime);
             _stopwatch.Restart();
             _simulation.Step(deltaTime);
             _stopwatch.Stop();
-            StepMilliseconds = (float)_stopwatch.Elapsed.TotalMilliseconds;
+            EndStep(deltaTime, _stopwatch.Elapsed.TotalMilliseconds);
+        }
+
+        /// <summary>The main-thread half before the core step (copy-in): rebuild if needed, attachment and collider poses.</summary>
+        internal void BeginStep(float deltaTime)
+        {
+            if (_rope == null || TopologyChanged()) Rebuild();
+            if (_attachments.CopyIn(_rope, _origin, deltaTime)) _simulation.Readouts.ArrestLoad = _attachments.EndLoad;
+            _colliderBinding.BeforeStep(_rope, _origin, Reach);
+        }
+
+        /// <summary>
+        /// The main-thread half after the core step of <paramref name="deltaTime"/> s that took
+        /// <paramref name="stepMilliseconds"/> ms (copy-out): forces to the bodies, rig displacements, the break and
+        /// stepped events.
+        /// </summary>
+        internal void EndStep(float deltaTime, double stepMilliseconds)
+        {
+            StepMilliseconds = (float)stepMilliseconds;
             Guard.WatchStepCost(StepMilliseconds, deltaTime, m_SegmentCount, m_Substeps, m_Iterations);
 
             _attachments.ApplyForces(_rope);

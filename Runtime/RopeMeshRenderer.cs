@@ -1,6 +1,7 @@
 using System;
 using HookeRope.Geometry;
 using HookeRope.Solver;
+using HookeRope.World;
 using UnityEngine;
 using UnityEngine.Rendering;
 
@@ -19,7 +20,7 @@ namespace HookeRope
     /// told where that space sits relative to the rope's colliders, so the tube is drawn outside a collider it wraps)
     /// and only uploads it. The mesh is dynamic (MarkDynamic), its vertex layout is set once per topology, vertices
     /// are uploaded with SetVertexBufferData from a preallocated array (no GC per frame), indices only when the
-    /// topology changes (new segment count, a break), and the bounds are set explicitly before each vertex upload.
+    /// topology changes (new segment count, a break, a new ring budget of the adaptive rings), and the bounds are set explicitly before each vertex upload.
     /// One mesh per frame serves both eyes in single-pass instanced stereo. Keep this GameObject's scale uniform.
     /// <para>
     /// Edit mode ([ExecuteAlways]): without entering Play, every editor update draws the rope without simulating it,
@@ -109,10 +110,20 @@ namespace HookeRope
                 return;
             }
             float alpha = Time.fixedDeltaTime > 0f ? (Time.time - Time.fixedTime) / Time.fixedDeltaTime : 1f;
-            Render(alpha);
+            // with two or more ropes in the shared world, the first renderer of the frame draws all of them (ElasticRopeWorld)
+            if (!RopeWorldScheduler.OnLateUpdate(this, _rope, alpha, Time.frameCount)) Render(alpha);
         }
 
-        void OnDisable() => ReleaseGenerated();
+        void OnEnable()
+        {
+            if (_rope != null || TryGetComponent(out _rope)) _rope.Drawer = this;
+        }
+
+        void OnDisable()
+        {
+            if (_rope is object && ReferenceEquals(_rope.Drawer, this)) _rope.Drawer = null;
+            ReleaseGenerated();
+        }
 
         void OnDestroy() => ReleaseGenerated();
 
@@ -155,9 +166,44 @@ namespace HookeRope
         /// </summary>
         public bool Render(float alpha)
         {
+            if (!Prepare(alpha, out var simulation, out var origin)) return false;
+            int vertexCount = simulation.GetVertexCount(), indexCount = simulation.GetIndexCount();
+            // room to spare: the core's adaptive ring budget grows in steps as the rope bends more (each growth here allocates)
+            if (_vertices.Length < vertexCount) _vertices = new TubeVertex[Math.Max(vertexCount, 2 * _vertices.Length)];
+            if (_indices.Length < indexCount) _indices = new int[Math.Max(indexCount, 2 * _indices.Length)];
+            var update = simulation.FillMesh(_x, _y, _z, _vertices, _indices, RadiusScale(), LocalFrameInRope(origin));
+            Upload(simulation, update, _vertices, _indices);
+            return true;
+        }
+
+        /// <summary>The frame this renderer was last drawn in by the shared world's pass (−1: never).</summary>
+        internal int DrawnFrame { get; set; } = -1;
+
+        /// <summary>
+        /// The main-thread half of a world draw: what <see cref="Render"/> does before the fill, then names this
+        /// renderer's position arrays and frame to <paramref name="slot"/> (turned off when there is nothing to draw).
+        /// </summary>
+        internal bool PrepareWorldFill(float alpha, RopeMeshSlot slot)
+        {
+            bool ready = Prepare(alpha, out _, out var origin);
+            if (ready) slot.UseCallerPositions(_x, _y, _z, RadiusScale(), LocalFrameInRope(origin));
+            slot.Enabled = ready;
+            return ready;
+        }
+
+        /// <summary>Uploads what the world filled into <paramref name="slot"/> after <see cref="PrepareWorldFill"/>.</summary>
+        internal void UploadWorldFill(RopeMeshSlot slot) => Upload(_rope.Simulation, slot.Update, slot.Vertices, slot.Indices);
+
+        /// <summary>
+        /// Everything <see cref="Render"/> does before the fill: picks the simulation (the rope's, or the edit-mode
+        /// shape), checks the drawing frame, makes the mesh and interpolates the positions into this GameObject's local
+        /// space; false when there is nothing to draw (see <see cref="Render"/>).
+        /// </summary>
+        bool Prepare(float alpha, out RopeSimulation simulation, out Vector3 origin)
+        {
+            simulation = null;
+            origin = default;
             if (_rope == null && !TryGetComponent(out _rope)) return false;
-            RopeSimulation simulation;
-            Vector3 origin;
             bool alignEnds = true;
             if (_rope.IsBuilt)
             {
@@ -178,12 +224,16 @@ namespace HookeRope
 
             if (simulation.MeshSettings.RadialSegments != m_RadialSegments) simulation.MeshSettings.RadialSegments = m_RadialSegments;
             InterpolateIntoLocalSpace(simulation.Rope, alpha, origin, alignEnds);
-            if (!_guard.AcceptMeshPositions(_x, _y, _z, simulation.Rope.ParticleCount)) return false;
-            int vertexCount = simulation.GetVertexCount(), indexCount = simulation.GetIndexCount();
-            if (_vertices.Length < vertexCount) _vertices = new TubeVertex[vertexCount];
-            if (_indices.Length < indexCount) _indices = new int[indexCount];
-            var update = simulation.FillMesh(_x, _y, _z, _vertices, _indices, RadiusScale(), LocalFrameInRope(origin));
+            return _guard.AcceptMeshPositions(_x, _y, _z, simulation.Rope.ParticleCount);
+        }
 
+        /// <summary>
+        /// Uploads a filled tube (<paramref name="update"/> over <paramref name="vertices"/> and
+        /// <paramref name="indices"/>, from this renderer's buffers or its world mesh slot): index buffer and sub-meshes
+        /// only when the topology or the source changed, then the bounds, then the vertices.
+        /// </summary>
+        void Upload(RopeSimulation simulation, TubeMeshUpdate update, TubeVertex[] vertices, int[] indices)
+        {
             if (update.TopologyChanged || !ReferenceEquals(_uploaded, simulation) || _uploadedTopology != simulation.MeshTopologyVersion ||
                 _vertexCount != update.VertexCount || _indexCount != update.IndexCount)
             {
@@ -193,7 +243,7 @@ namespace HookeRope
                 _indexCount = update.IndexCount;
                 _mesh.SetVertexBufferParams(update.VertexCount, s_Layout);
                 _mesh.SetIndexBufferParams(update.IndexCount, IndexFormat.UInt32);
-                _mesh.SetIndexBufferData(_indices, 0, 0, update.IndexCount, FrameFlags);
+                _mesh.SetIndexBufferData(indices, 0, 0, update.IndexCount, FrameFlags);
                 _mesh.subMeshCount = 2;
                 _mesh.SetSubMesh(0, new SubMeshDescriptor(0, update.TubeIndexCount, MeshTopology.Triangles), FrameFlags);
                 _mesh.SetSubMesh(1, new SubMeshDescriptor(update.TubeIndexCount, update.IndexCount - update.TubeIndexCount, MeshTopology.Triangles), FrameFlags);
@@ -201,8 +251,7 @@ namespace HookeRope
             // Bounds first, so the renderer notification of the vertex upload already sees this frame's bounds.
             Vector3 min = update.BoundsMin.ToVector3(), max = update.BoundsMax.ToVector3();
             _mesh.bounds = new Bounds((min + max) * 0.5f, max - min);
-            _mesh.SetVertexBufferData(_vertices, 0, 0, update.VertexCount, 0, FrameFlags);
-            return true;
+            _mesh.SetVertexBufferData(vertices, 0, 0, update.VertexCount, 0, FrameFlags);
         }
 
         /// <summary>The rope's interpolated particle positions in this GameObject's local space (m), into the one position buffer.</summary>

@@ -80,8 +80,8 @@ namespace HookeRope.Bench
         {
             var c = CultureInfo.InvariantCulture;
             string path = brute ? "brute" : "broad";
-            long a = InstructionCounter.Collected(m => Console.Error.WriteLine(m), "collide", name, ShortSteps.ToString(c), "0", path);
-            long b = InstructionCounter.Collected(m => Console.Error.WriteLine(m), "collide", name, LongSteps.ToString(c), "0", path);
+            long a = InstructionCounter.Collected(new[] { "collide", name, ShortSteps.ToString(c), "0", path }, m => Console.Error.WriteLine(m));
+            long b = InstructionCounter.Collected(new[] { "collide", name, LongSteps.ToString(c), "0", path }, m => Console.Error.WriteLine(m));
             return a > 0 && b > a ? (b - a) / (double)(LongSteps - ShortSteps) : 0;
         }
 

@@ -8,7 +8,7 @@ namespace HookeRope.Bench
     /// <summary>
     /// Instructions per unit from callgrind, stable on a loaded machine where wall-clock is not: runs this tool's
     /// <c>frames</c> mode under <c>valgrind --tool=callgrind</c> (tiered compilation off, so every method is compiled
-    /// once; under valgrind the methods left with a call are compiled at MinOpts, see solver.md) for a short and a long run and divides the difference of the collected instruction counts
+    /// once, fully optimised) for a short and a long run and divides the difference of the collected instruction counts
     /// (all threads) by the difference in work units, so start-up, JIT and scene building cancel out.
     /// </summary>
     internal static class InstructionCounter
@@ -24,11 +24,14 @@ namespace HookeRope.Bench
         }
 
         private static long Collected(int ropes, int segments, int workers, int frames, Action<string> log) =>
-            Collected(log, "frames", ropes.ToString(CultureInfo.InvariantCulture), segments.ToString(CultureInfo.InvariantCulture),
-                workers.ToString(CultureInfo.InvariantCulture), frames.ToString(CultureInfo.InvariantCulture));
+            Collected(new[] { "frames", ropes.ToString(CultureInfo.InvariantCulture), segments.ToString(CultureInfo.InvariantCulture),
+                workers.ToString(CultureInfo.InvariantCulture), frames.ToString(CultureInfo.InvariantCulture) }, log);
 
-        /// <summary>Instructions callgrind collected (all threads) running this tool with <paramref name="toolArgs"/> (tiered compilation off), or −1 when it could not run.</summary>
-        public static long Collected(Action<string> log, params string[] toolArgs)
+        /// <summary>
+        /// Instructions callgrind collected (all threads) while this tool ran with <paramref name="toolArguments"/>
+        /// (tiered compilation off), or −1 when valgrind is missing or fails.
+        /// </summary>
+        public static long Collected(string[] toolArguments, Action<string> log)
         {
             string dll = typeof(Program).Assembly.Location;
             var info = new ProcessStartInfo("valgrind")
@@ -39,7 +42,7 @@ namespace HookeRope.Bench
             };
             foreach (string arg in new[] { "--tool=callgrind", "--callgrind-out-file=/dev/null", "dotnet", dll })
                 info.ArgumentList.Add(arg);
-            foreach (string arg in toolArgs) info.ArgumentList.Add(arg);
+            foreach (string arg in toolArguments) info.ArgumentList.Add(arg);
             info.Environment["DOTNET_TieredCompilation"] = "0";
             try
             {
@@ -50,7 +53,7 @@ namespace HookeRope.Bench
                     process.WaitForExit();
                     Match m = Regex.Match(errors, @"Collected\s*:\s*(\d+)");
                     long collected = m.Success ? long.Parse(m.Groups[1].Value, CultureInfo.InvariantCulture) : -1;
-                    log?.Invoke($"callgrind {string.Join(" ", toolArgs)}: {collected} instructions");
+                    log?.Invoke("callgrind " + string.Join(" ", toolArguments) + ": " + collected + " instructions");
                     return collected;
                 }
             }

@@ -55,6 +55,12 @@ namespace HookeRope.Lab.Tests
             [RopeParameters.BreakRadiusFraction.Name] = Rope(RopeParameters.BreakRadiusFraction.Json, s => s.Rope.BreakRadiusFraction),
             [RopeParameters.RadialSegments.Name] = Rope(RopeParameters.RadialSegments.Json, s => s.Rope.RadialSegments),
             [RopeParameters.BurrSeed.Name] = Rope(RopeParameters.BurrSeed.Json, s => s.Rope.Seed),
+            [RopeParameters.YieldStrain.Name] = Rope(RopeParameters.YieldStrain.Json, s => s.Rope.YieldStrain),
+            [RopeParameters.HardeningModulus.Name] = Rope(RopeParameters.HardeningModulus.Json, s => s.Rope.HardeningModulus),
+            [RopeParameters.NeckingStrain.Name] = Rope(RopeParameters.NeckingStrain.Json, s => s.Rope.NeckingStrain),
+            [RopeParameters.UltimateStrain.Name] = Rope(RopeParameters.UltimateStrain.Json, s => s.Rope.UltimateStrain),
+            [RopeParameters.AbsorberForce.Name] = Rope(RopeParameters.AbsorberForce.Json, s => s.Rope.AbsorberForce),
+            [RopeParameters.AbsorberDeployment.Name] = Rope(RopeParameters.AbsorberDeployment.Json, s => s.Rope.AbsorberDeployment),
         };
 
         /// <summary>Rows that are not a single number, with the default the spec reads as the row's number (enum value, bool 0/1).</summary>
@@ -62,12 +68,15 @@ namespace HookeRope.Lab.Tests
         {
             [RopeParameters.Solver.Name] = s => (int)(s.Solver.Method == SolverMethod.GaussSeidel ? HookeRope.Solver.ConstraintSolverKind.GaussSeidel : HookeRope.Solver.ConstraintSolverKind.ExactChain),
             [RopeParameters.TensionModel.Name] = s => (int)(s.Solver.TensionOnly ? HookeRope.Solver.TensionModel.TensionOnly : HookeRope.Solver.TensionModel.Bilateral),
+            [RopeParameters.Integrator.Name] = s => (int)s.Solver.Integrator,
             [RopeParameters.NeckMode.Name] = s => (int)(s.Rope.NeckMode == "paper" ? HookeRope.Radius.NeckMode.Paper : HookeRope.Radius.NeckMode.Zone),
             [RopeParameters.PoissonThinning.Name] = s => s.Rope.PoissonThinning ? 1 : 0,
             [RopeParameters.Necking.Name] = s => s.Rope.Necking ? 1 : 0,
             [RopeParameters.Fracture.Name] = s => s.Rope.Fracture ? 1 : 0,
             [RopeParameters.SlackKeepsRestRadius.Name] = s => s.Rope.SlackKeepsRestRadius ? 1 : 0,
             [RopeParameters.Gravity.Name] = s => double.NaN,
+            [RopeParameters.MaterialModel.Name] = s => (int)(s.Rope.IsPlastic ? HookeRope.Solver.MaterialModel.ElasticPlastic : HookeRope.Solver.MaterialModel.Elastic),
+            [RopeParameters.EnergyAbsorber.Name] = s => s.Rope.EnergyAbsorber ? 1 : 0,
         };
 
         static Field Rope(string json, Func<Scenario, double> read) =>
@@ -122,14 +131,14 @@ namespace HookeRope.Lab.Tests
                 if (!Numeric.TryGetValue(row.Name, out var field)) continue;
                 bool integer = row.Kind == ParameterKind.Int;
                 double low = row.MinExclusive ? (integer ? row.Min + 1 : NextUp(row.Min)) : row.Min;
-                double high = row.Max;
+                double high = row.MaxExclusive ? (integer ? row.Max - 1 : NextDown(row.Max)) : row.Max;
                 foreach (double value in new[] { low, high })
                 {
                     var s = ScenarioParser.Parse(field.Prefix + Text(value) + field.Suffix);
                     Assert.That(field.Read(s), Is.EqualTo(value), row.Name + " = " + Text(value));
                 }
                 double below = row.MinExclusive ? row.Min : integer ? row.Min - 1 : row.Min - Math.Max(Math.Abs(row.Min) * 1e-3, 1e-6);
-                double above = integer ? row.Max + 1 : row.Max + Math.Max(Math.Abs(row.Max) * 1e-3, 1e-6);
+                double above = row.MaxExclusive ? row.Max : integer ? row.Max + 1 : row.Max + Math.Max(Math.Abs(row.Max) * 1e-3, 1e-6);
                 foreach (double value in new[] { below, above })
                 {
                     var e = Assert.Throws<ScenarioException>(() => ScenarioParser.Parse(field.Prefix + Text(value) + field.Suffix), row.Name + " = " + Text(value));
@@ -158,5 +167,6 @@ namespace HookeRope.Lab.Tests
         }
 
         static double NextUp(double value) => value == 0 ? 1e-9 : value + Math.Abs(value) * 1e-9;
+        static double NextDown(double value) => value == 0 ? -1e-9 : value - Math.Abs(value) * 1e-9;
     }
 }

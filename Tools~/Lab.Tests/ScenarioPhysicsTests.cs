@@ -89,7 +89,9 @@ namespace HookeRope.Lab.Tests
         public void EveryBuiltInScenarioHasAPhysicsTest()
         {
             var covered = new[] { "fall-arrest", "static-hang", "spring-oscillator", "heavy-mass-ratio", "steel-cable",
-                "poisson-sweep", "necking", "fracture", "collision-bend", "catenary" };
+                "poisson-sweep", "necking", "fracture", "collision-bend", "catenary",
+                "spring-amplitude", "slack-bounce", "steel-snatch",   // these three: DissipationScenarioTests
+                "plastic-necking", "absorber-arrest" };               // these two: MaterialLawScenarioTests
             Assert.That(BuiltInScenarios.Names, Is.EquivalentTo(covered));
         }
     }

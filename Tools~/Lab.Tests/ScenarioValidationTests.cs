@@ -53,6 +53,7 @@ namespace HookeRope.Lab.Tests
         [TestCase("{\"solver\":{\"iterations\":5000}}", "$.solver.iterations")]
         [TestCase("{\"solver\":{\"damping\":-0.1}}", "$.solver.damping")]
         [TestCase("{\"solver\":{\"method\":\"jacobi\"}}", "$.solver.method")]
+        [TestCase("{\"solver\":{\"integrator\":\"rk4\"}}", "$.solver.integrator")]
         [TestCase("{\"end\":{\"type\":\"body\",\"mass\":0}}", "$.end.mass")]
         [TestCase("{\"end\":{\"type\":\"body\"}}", "$.end.mass")]
         [TestCase("{\"colliders\":[{\"type\":\"sphere\",\"radius\":-2}]}", "$.colliders[0].radius")]

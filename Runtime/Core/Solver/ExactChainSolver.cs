@@ -1,15 +1,20 @@
 using System;
-using System.Runtime.CompilerServices;
 
 namespace HookeRope.Solver
 {
     /// <summary>
-    /// One exact iteration of the whole chain: solves (J W Jᵀ + α̃) Δλ = −C − α̃ λ (with XPBD damping,
-    /// Macklin 2016 eq. 26) for every segment at once. For a chain the matrix is tridiagonal, so the
-    /// Thomas algorithm solves it in O(n) in double precision. Tension-only segments are handled by
-    /// active-set passes on the same linearisation: solve with every segment active, release the
-    /// segments whose accumulated λ would end on the pushing side, re-admit released segments that the
-    /// new solution stretches, and repeat until nothing changes (at most <see cref="MaxPasses"/>).
+    /// One Newton iteration of the implicit step of the whole chain, exact in the segment forces. The unknowns are the
+    /// segment force vectors Λ_j = h²·F_j (N·s²): particle i moves by W_i (Λ_i − Λ_{i−1}) (W the inverse mass, projected
+    /// onto the tangent plane of a held contact), and each segment's force must match its stretch, d_j = (L_j + α̃_j|Λ_j|)·ê_j.
+    /// Linearised, that is the block-tridiagonal system (D W Dᵀ + Q̃_j⁻¹) δΛ = R with the segment compliance
+    /// Q̃_j⁻¹ = α̃_j n nᵀ + (l_j/(T_j h²))(I − n nᵀ): the material compliance along the segment and the geometric
+    /// (rotational) compliance across it, so the chain's transverse response under tension is implicit too — exactly, not
+    /// lumped — and a taut chain neither zig-zags nor loses its slow swing (<see cref="SegmentForceSystem"/> solves it in
+    /// O(n) with 3×3 blocks). The transverse compliance needs the tension, which the first iteration of a substep takes
+    /// from the substep before; <see cref="Iterate"/> says when that estimate was too low for the result to be trusted.
+    /// Tension-only segments and contacts are complementarity conditions, handled by active-set passes on the same
+    /// linearisation (release a segment whose force would push, re-admit one the new solution stretches; release a
+    /// contact the chain lifts off, hold one it drives into the surface).
     /// </summary>
     internal static class ExactChainSolver
     {
@@ -17,442 +22,267 @@ namespace HookeRope.Solver
         public const int MaxPasses = 8;
 
         /// <summary>
-        /// Runs one iteration. Returns true when the linearisation was poor somewhere (a fold: neighbouring
-        /// segments at more than 90°, a slack (compressed) segment, or a changed active set), so that a nonlinear
-        /// Gauss–Seidel sweep should follow.
+        /// Largest transverse compliance of a segment as a multiple of its ends' mobility w_j + w_{j+1}: a slack or
+        /// barely loaded segment has (almost) no geometric stiffness, and its force stays along it to 1e-6.
         /// </summary>
-        public static bool Iterate(ChainState c, double h, double beta, bool tensionOnly)
+        public const double MaxTransverseComplianceRatio = 1e6;
+
+        /// <summary>
+        /// Largest second-order length error of an iteration, as a fraction of the rest length, that needs no further
+        /// iteration: a segment whose ends moved by Δ across it in this iteration is longer than the linearisation assumed
+        /// by about |Δ_⊥|²/(2l).
+        /// </summary>
+        public const double NonlinearTolerance = 1e-3;
+
+        /// <summary>
+        /// Runs one iteration (h: the integrator's effective substep, s; beta: damping β, s; first: the substep's first
+        /// iteration, whose accumulated forces start at zero). Returns true when another iteration should follow: the
+        /// tension the geometric stiffness was estimated with was less than half the tension found on some segment whose
+        /// transverse response it governs (4·T·h²·w/l &gt; 1), or the iteration moved some segment's ends across it by so
+        /// much that its linearisation is off by more than <see cref="NonlinearTolerance"/> of the rest length.
+        /// </summary>
+        public static bool Iterate(ChainState c, double h, double beta, bool tensionOnly, bool first)
         {
             double invH2 = 1.0 / (h * h);
-            double gammaAll = beta / h; // γ = α̃·β̃/h with β̃ = h²·β·k, k = 1/α
+            if (first) ClearForces(c);
+            Assemble(c, invH2, beta / h, first);
             bool contacts = c.ContactCount > 0;
-            bool augmented = c.AugmentedCount > 0;
-            bool poor = Assemble(c, invH2, gammaAll);
-            if (contacts) AssembleContacts(c, invH2, gammaAll);
-            int passes = SolveActiveSet(c, tensionOnly, contacts, invH2, gammaAll, out bool activeSetChanged);
-            Apply(c, tensionOnly, contacts, augmented);
-            // a changed contact set alone does not call for the sweep (it would use the plain masses)
-            return poor || (contacts || augmented ? activeSetChanged : passes > 1);
+            if (contacts) DropContactsWithoutMobility(c);
+            SolveActiveSet(c, tensionOnly, contacts);
+            double nonlinear = Apply(c, contacts);
+            bool branches = c.Plasticity != null && c.Plasticity.UpdateBranches(c, invH2);
+            return EstimateTooLow(c, invH2) || nonlinear > NonlinearTolerance || branches;
+        }
+
+        private static void ClearForces(ChainState c)
+        {
+            int s = c.SegmentCount;
+            Array.Clear(c.ForceX, 0, s);
+            Array.Clear(c.ForceY, 0, s);
+            Array.Clear(c.ForceZ, 0, s);
+            for (int j = 0; j < s; j++) c.Active[j] = true;
         }
 
         /// <summary>
-        /// Linearises every segment along its current direction and writes the tridiagonal system (Full*) with the plain
-        /// or the transversely stabilised masses, without contacts. Returns true when the linearisation is poor somewhere
-        /// (a slack segment, or neighbouring segments at more than 90°).
+        /// Per segment: direction n and length l of the live positions, the compliances (damping folded in as XPBD's
+        /// eq. 26: α̃' = α̃/(1 + γ), rest length shifted by the substep's stretch rate), the tension estimate of the
+        /// geometric stiffness and the residual R = d − (L' + α̃'|Λ|)·ê of the accumulated force Λ (ê its direction, signed
+        /// along n; n while Λ = 0). A segment with no mobility and no compliance is not in the system.
         /// </summary>
-        private static bool Assemble(ChainState c, double invH2, double gammaAll)
+        private static void Assemble(ChainState c, double invH2, double gammaAll, bool first)
         {
             int s = c.SegmentCount;
             float[] w = c.InverseMass, rest = c.RestLength, compliance = c.Compliance, length = c.Length;
-            double[] fd = c.FullDiagonal, fl = c.FullLower, fu = c.FullUpper, fr = c.FullRhs;
-            double[] lambda = c.Lambda;
-            bool[] active = c.Active, broken = c.Broken;
-            bool augmented = c.AugmentedCount > 0;
-            bool poor = false;
-            float pnx = 0f, pny = 0f, pnz = 0f;
-            double previousScale = 0.0;
-            // transverse stabilisation (no contact): particle j's mobility w_t, w − w_t, tangent t, and t·n_{j−1}
-            var left = augmented ? TransverseMobility.Of(c, 0) : default;
-            double leftAlongPrevious = 0.0;
-
+            double[] fx = c.ForceX, fy = c.ForceY, fz = c.ForceZ, rx = c.ResidualX, ry = c.ResidualY, rz = c.ResidualZ;
+            double[] axial = c.AxialCompliance, transverse = c.TransverseCompliance, estimate = c.EstimatedTension;
+            bool[] broken = c.Broken, active = c.Active;
+            SegmentPlasticity plastic = c.Plasticity;
             for (int j = 0; j < s; j++)
             {
-                if (broken[j])
-                {
-                    fd[j] = 0.0; fr[j] = 0.0; fl[j] = 0.0; fu[j] = 0.0; active[j] = false;
-                    if (j > 0) fu[j - 1] = 0.0;
-                    if (augmented) left = TransverseMobility.Of(c, j + 1); // the chain restarts at particle j + 1
-                    continue;
-                }
-                float len = c.Direction(j, out float nx, out float ny, out float nz, out float ddx, out float ddy, out float ddz);
-                length[j] = len;
+                if (broken[j]) { active[j] = false; continue; }
+                double len = c.Direction(j, out double nx, out double ny, out double nz, out float ddx, out float ddy, out float ddz);
+                length[j] = (float)len;
                 double alpha = compliance[j];
-                double alphaTilde = alpha * invH2;
+                double mobility = (double)w[j] + w[j + 1];
+                if (mobility == 0.0 && alpha == 0.0) { active[j] = false; continue; }
                 double g = alpha > 0.0 ? gammaAll : 0.0;
-                double rel = g > 0.0 ? nx * ddx + ny * ddy + nz * ddz : 0.0;
-                double constraint = (double)len - rest[j];
-                float wa = w[j], wb = w[j + 1];
-                double diagonal;
-                TransverseMobility right = default;
-                double leftAlong = 0.0, rightAlong = 0.0; // t_j·n_j, t_{j+1}·n_j
-                if (augmented)
+                double restJ = plastic == null ? rest[j] : plastic.Rest(j); // a plastic segment's force is measured from L_p
+                double restEffective = restJ, alphaTilde = alpha * invH2;
+                if (g > 0.0)
                 {
-                    // n_jᵀ W_i n_j = w_t (n_j·n_j) + (w − w_t)(t_i·n_j)² for particles i = j, j + 1
-                    right = TransverseMobility.Of(c, j + 1);
-                    leftAlong = left.Along(nx, ny, nz);
-                    rightAlong = right.Along(nx, ny, nz);
-                    double nn = (double)nx * nx + (double)ny * ny + (double)nz * nz;
-                    diagonal = (1.0 + g) * (left.Quadratic(leftAlong, leftAlong, nn) + right.Quadratic(rightAlong, rightAlong, nn)) + alphaTilde;
+                    double rate = nx * ddx + ny * ddy + nz * ddz; // the substep's stretch along n, m
+                    restEffective = (restJ + g * (len - rate)) / (1.0 + g);
+                    alphaTilde /= 1.0 + g;
                 }
-                else
+                if (plastic != null && plastic.IsYielding(j)) plastic.FlowRow(j, invH2, ref restEffective, ref alphaTilde);
+                double magnitude = Math.Sqrt(fx[j] * fx[j] + fy[j] * fy[j] + fz[j] * fz[j]);
+                double ex = nx, ey = ny, ez = nz, signed = 0.0;
+                if (magnitude > 0.0)
                 {
-                    diagonal = (1.0 + g) * ((double)wa + wb) + alphaTilde;
+                    // a pushing (bilateral) force points against n; its direction ê keeps the segment's sense
+                    double sense = fx[j] * nx + fy[j] * ny + fz[j] * nz >= 0.0 ? 1.0 : -1.0;
+                    signed = sense * magnitude;
+                    double inverse = sense / magnitude;
+                    ex = fx[j] * inverse; ey = fy[j] * inverse; ez = fz[j] * inverse;
                 }
-                fr[j] = -constraint - alphaTilde * lambda[j] - g * rel;
-                fd[j] = diagonal;
-                bool valid = diagonal > 0.0;
-                active[j] = valid;
-                if (len < rest[j]) poor = true;
-                double scale = 1.0 + g;
-                if (valid && j > 0 && active[j - 1])
-                {
-                    double cos = (double)pnx * nx + (double)pny * ny + (double)pnz * nz;
-                    if (cos < 0.0) poor = true;
-                    if (augmented)
-                    {
-                        // n_{j−1}ᵀ W_j n_j = w_t (n_{j−1}·n_j) + (w − w_t)(t·n_{j−1})(t·n_j)
-                        double coupling = left.Quadratic(leftAlongPrevious, leftAlong, cos);
-                        fl[j] = -scale * coupling;
-                        fu[j - 1] = -previousScale * coupling;
-                    }
-                    else
-                    {
-                        fl[j] = -scale * wa * cos;
-                        fu[j - 1] = -previousScale * wa * cos;
-                    }
-                }
-                else
-                {
-                    fl[j] = 0.0;
-                    if (j > 0) fu[j - 1] = 0.0;
-                }
-                fu[j] = 0.0;
-                pnx = nx; pny = ny; pnz = nz;
-                previousScale = scale;
-                if (augmented)
-                {
-                    left = right;
-                    leftAlongPrevious = rightAlong;
-                }
-            }
-            return poor;
-        }
-
-        /// <summary>Held contacts: the general constrained mobility on the rows around each contact particle.</summary>
-        private static void AssembleContacts(ChainState c, double invH2, double gammaAll)
-        {
-            for (int k = 0; k < c.ContactCount; k++)
-            {
-                int i = c.ContactList[k];
-                if (c.ContactActive[i]) RebuildAround(c, i, invH2, gammaAll);
+                // the geometric stiffness T/l: with the last substep's tension on the first iteration, the accumulated one after;
+                // a pushing (bilateral) segment's is −|T|/l, which would let it buckle explicitly, so it takes |T| and the
+                // buckling is damped instead
+                double tension = first ? Math.Abs(c.Tension[j]) : Math.Abs(signed * invH2);
+                estimate[j] = tension;
+                double target = restEffective + alphaTilde * signed; // the length the accumulated force implies
+                double geometric = Math.Max(target, 1e-6 * rest[j]) * invH2;
+                double cap = MaxTransverseComplianceRatio * mobility;
+                transverse[j] = geometric < cap * tension ? geometric / tension : cap;
+                axial[j] = alphaTilde;
+                rx[j] = len * nx - target * ex; ry[j] = len * ny - target * ey; rz[j] = len * nz - target * ez;
             }
         }
 
         /// <summary>
-        /// Solves the assembled system into Delta, then repeats on the same linearisation while the active set changes
-        /// (tension-only segments released or re-admitted, contacts released or held), at most <see cref="MaxPasses"/>
-        /// times. Returns the number of passes; activeSetChanged: some segment changed sides.
+        /// A held contact that would leave one of its segments with no mobility along it (the other end pinned, the normal
+        /// along the segment, and no compliance) is dropped: the row would be singular.
         /// </summary>
-        private static int SolveActiveSet(ChainState c, bool tensionOnly, bool contacts, double invH2, double gammaAll, out bool activeSetChanged)
-        {
-            int s = c.SegmentCount;
-            double[] fd = c.FullDiagonal, fl = c.FullLower, fu = c.FullUpper, fr = c.FullRhs;
-            double[] lambda = c.Lambda, delta = c.Delta;
-            bool[] active = c.Active;
-            int passes = 0;
-            activeSetChanged = false;
-            while (true)
-            {
-                passes++;
-                Solve(c, tensionOnly);
-                if ((!tensionOnly && !contacts) || passes >= MaxPasses) break;
-                bool changed = contacts && UpdateContacts(c, tensionOnly, invH2, gammaAll);
-                if (!tensionOnly)
-                {
-                    if (!changed) break;
-                    continue;
-                }
-                for (int j = 0; j < s; j++)
-                {
-                    if (fd[j] <= 0.0) continue;
-                    if (active[j])
-                    {
-                        if (lambda[j] + delta[j] > 0.0) { active[j] = false; changed = true; activeSetChanged = true; }
-                    }
-                    else
-                    {
-                        double residual = fr[j] - fd[j] * delta[j]
-                            - (j > 0 ? fl[j] * delta[j - 1] : 0.0)
-                            - (j + 1 < s ? fu[j] * delta[j + 1] : 0.0);
-                        if (residual < 0.0) { active[j] = true; changed = true; activeSetChanged = true; }
-                    }
-                }
-                if (!changed) break;
-            }
-            return passes;
-        }
-
-        /// <summary>Applies the solved multiplier changes to the multipliers and the particle displacements.</summary>
-        private static void Apply(ChainState c, bool tensionOnly, bool contacts, bool augmented)
-        {
-            if (augmented) ApplyTransverse(c, tensionOnly, contacts);
-            else ApplyIsotropic(c, tensionOnly, keepDelta: contacts);
-            if (contacts) ApplyContactMobility(c);
-        }
-
-        /// <summary>
-        /// Applies the multiplier changes in Delta (tension-only: clamped so λ ≤ 0) with isotropic masses: particle j moves
-        /// by −w_j n_j Δλ_j, particle j + 1 by +w_{j+1} n_j Δλ_j (m). keepDelta: Delta keeps the applied changes.
-        /// </summary>
-        private static void ApplyIsotropic(ChainState c, bool tensionOnly, bool keepDelta)
-        {
-            int s = c.SegmentCount;
-            float[] w = c.InverseMass, dx = c.DX, dy = c.DY, dz = c.DZ, nxs = c.DirX, nys = c.DirY, nzs = c.DirZ;
-            double[] delta = c.Delta, lambda = c.Lambda;
-            float wLeft = w[0];
-            for (int j = 0; j < s; j++)
-            {
-                float wRight = w[j + 1];
-                double d = delta[j];
-                d = ChainState.LimitToPulling(lambda[j], d, tensionOnly);
-                if (d != 0.0)
-                {
-                    lambda[j] += d;
-                    float nx = nxs[j], ny = nys[j], nz = nzs[j];
-                    float a = (float)(wLeft * d), b = (float)(wRight * d);
-                    dx[j] -= nx * a; dy[j] -= ny * a; dz[j] -= nz * a;
-                    dx[j + 1] += nx * b; dy[j + 1] += ny * b; dz[j + 1] += nz * b;
-                }
-                if (keepDelta) delta[j] = d;
-                wLeft = wRight;
-            }
-        }
-
-        /// <summary>
-        /// Applies the multiplier changes in Delta (clamped as in <see cref="ApplyIsotropic"/>) with the transverse
-        /// stabilisation, one particle at a time: particle i feels the chain pull f = n_{i−1}Δλ_{i−1} − n_iΔλ_i (N·s²)
-        /// and moves by W_i f = w_t f + (w − w_t)(t·f) t (m). A particle with a held contact moves by w f here;
-        /// <see cref="ApplyContactMobility"/> corrects it afterwards. Delta keeps the applied changes.
-        /// </summary>
-        private static void ApplyTransverse(ChainState c, bool tensionOnly, bool contacts)
-        {
-            int s = c.SegmentCount;
-            float[] nxs = c.DirX, nys = c.DirY, nzs = c.DirZ;
-            double[] delta = c.Delta, lambda = c.Lambda;
-            double px = 0.0, py = 0.0, pz = 0.0; // n_{j−1}Δλ_{j−1}: the pull of the segment before particle j
-            for (int j = 0; j < s; j++)
-            {
-                double d = delta[j];
-                d = ChainState.LimitToPulling(lambda[j], d, tensionOnly);
-                lambda[j] += d;
-                delta[j] = d;
-                double qx = nxs[j] * d, qy = nys[j] * d, qz = nzs[j] * d;
-                MoveParticle(c, j, px - qx, py - qy, pz - qz, contacts);
-                px = qx; py = qy; pz = qz;
-            }
-            MoveParticle(c, s, px, py, pz, contacts);
-        }
-
-        /// <summary>Moves particle i by W_i f (m) for the chain pull f (N·s²), without its contact (see <see cref="ApplyTransverse"/>).</summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static void MoveParticle(ChainState c, int i, double fx, double fy, double fz, bool contacts)
-        {
-            double rx, ry, rz;
-            if (contacts && c.ContactActive[i])
-            {
-                double w = c.InverseMass[i];
-                rx = w * fx; ry = w * fy; rz = w * fz;
-            }
-            else
-            {
-                TransverseMobility.Of(c, i).Apply(fx, fy, fz, out rx, out ry, out rz);
-            }
-            c.DX[i] += (float)rx; c.DY[i] += (float)ry; c.DZ[i] += (float)rz;
-        }
-
-        /// <summary>Solves the system of the current active set into Delta (Thomas algorithm; released rows are Δλ = −λ).</summary>
-        private static void Solve(ChainState c, bool tensionOnly)
-        {
-            int s = c.SegmentCount;
-            double[] cp = c.Upper, dp = c.Rhs, x = c.Delta, lambda = c.Lambda;
-            double[] fd = c.FullDiagonal, fl = c.FullLower, fu = c.FullUpper, fr = c.FullRhs;
-            bool[] active = c.Active;
-            // forward sweep: cp = c', dp = d'
-            double previousC = 0.0, previousD = 0.0;
-            for (int j = 0; j < s; j++)
-            {
-                double lo, di, up, rhs;
-                if (active[j])
-                {
-                    lo = fl[j]; di = fd[j]; up = fu[j]; rhs = fr[j];
-                }
-                else
-                {
-                    // released (or broken) row: its λ returns to zero this iteration, Δλ = −λ
-                    lo = 0.0; di = 1.0; up = 0.0;
-                    rhs = fd[j] > 0.0 && tensionOnly ? -lambda[j] : 0.0;
-                }
-                double m = di - lo * previousC;
-                previousC = up / m;
-                previousD = (rhs - lo * previousD) / m;
-                cp[j] = previousC;
-                dp[j] = previousD;
-            }
-            double next = dp[s - 1];
-            x[s - 1] = next;
-            for (int j = s - 2; j >= 0; j--)
-            {
-                next = dp[j] - cp[j] * next;
-                x[j] = next;
-            }
-        }
-
-        /// <summary>
-        /// r = W_i v: the particle's mobility (inverse mass, 1/kg) applied to v. W = w I, or w t tᵀ + w_t (I − t tᵀ) with the
-        /// transverse stabilisation (<see cref="ChainState.UpdateTransverseMass"/>); with an active contact (normal c) and
-        /// withContact, the constrained mobility W − (W c)(W c)ᵀ/(cᵀ W c), which is w(I − c cᵀ) for an isotropic particle.
-        /// </summary>
-        private static void Mobility(ChainState c, int i, double vx, double vy, double vz, bool withContact, out double rx, out double ry, out double rz)
-        {
-            var free = TransverseMobility.Of(c, i);
-            free.Apply(vx, vy, vz, out rx, out ry, out rz);
-            if (!withContact || c.ContactCollider == null || !c.ContactActive[i]) return;
-            double cx = c.ContactNX[i], cy = c.ContactNY[i], cz = c.ContactNZ[i];
-            free.Apply(cx, cy, cz, out double ux, out double uy, out double uz);
-            double cwc = cx * ux + cy * uy + cz * uz;
-            if (!(cwc > 0.0)) return;
-            double k = (ux * vx + uy * vy + uz * vz) / cwc;
-            rx -= ux * k; ry -= uy * k; rz -= uz * k;
-        }
-
-        /// <summary>n_aᵀ W_i n_b for unit directions a, b (1/kg).</summary>
-        private static double Quadratic(ChainState c, int i, float ax, float ay, float az, float bx, float by, float bz)
-        {
-            Mobility(c, i, bx, by, bz, withContact: true, out double rx, out double ry, out double rz);
-            return ax * rx + ay * ry + az * rz;
-        }
-
-        /// <summary>
-        /// Rewrites the matrix entries that depend on particle i's inverse mass: the diagonals of segments i − 1 and i
-        /// and their coupling through i, n_{i−1}ᵀ W_i n_i. A contact that would leave a segment with no mobility is dropped.
-        /// </summary>
-        private static void RebuildAround(ChainState c, int i, double invH2, double gammaAll)
-        {
-            int s = c.SegmentCount;
-            double[] fd = c.FullDiagonal, fl = c.FullLower, fu = c.FullUpper;
-            double left = 0.0, right = 0.0;
-            for (int attempt = 0; attempt < 2; attempt++)
-            {
-                left = Diagonal(c, i - 1, invH2, gammaAll);
-                right = Diagonal(c, i, invH2, gammaAll);
-                if ((left < 0.0 || right < 0.0) && c.ContactCollider != null && c.ContactActive[i])
-                {
-                    c.ContactActive[i] = false; // the contact would leave a segment with no mobility
-                    continue;
-                }
-                break;
-            }
-            if (left > 0.0) fd[i - 1] = left;
-            if (right > 0.0) fd[i] = right;
-            if (i <= 0 || i >= s || c.Broken[i - 1] || c.Broken[i] || !(fd[i - 1] > 0.0) || !(fd[i] > 0.0)) return;
-            double coupling = Quadratic(c, i, c.DirX[i - 1], c.DirY[i - 1], c.DirZ[i - 1], c.DirX[i], c.DirY[i], c.DirZ[i]);
-            double gLower = c.Compliance[i] > 0f ? gammaAll : 0.0, gUpper = c.Compliance[i - 1] > 0f ? gammaAll : 0.0;
-            fl[i] = -(1.0 + gLower) * coupling;
-            fu[i - 1] = -(1.0 + gUpper) * coupling;
-        }
-
-        /// <summary>
-        /// Diagonal (1 + γ)(n_jᵀW_j n_j + n_jᵀW_{j+1}n_j) + α̃_j of segment j with the current contacts; 0 when the row is not
-        /// in the system (out of range, broken, or invalid from the start), −1 when the contacts leave it no mobility.
-        /// </summary>
-        private static double Diagonal(ChainState c, int j, double invH2, double gammaAll)
-        {
-            if (j < 0 || j >= c.SegmentCount || c.Broken[j] || !(c.FullDiagonal[j] > 0.0)) return 0.0;
-            double alpha = c.Compliance[j];
-            double g = alpha > 0.0 ? gammaAll : 0.0;
-            float nx = c.DirX[j], ny = c.DirY[j], nz = c.DirZ[j];
-            double masses = Quadratic(c, j, nx, ny, nz, nx, ny, nz) + Quadratic(c, j + 1, nx, ny, nz, nx, ny, nz);
-            double diagonal = (1.0 + g) * masses + alpha * invH2;
-            double full = (1.0 + g) * ((double)c.InverseMass[j] + c.InverseMass[j + 1]) + alpha * invH2;
-            return diagonal > 1e-9 * full ? diagonal : -1.0;
-        }
-
-        /// <summary>
-        /// The chain's pull f = n_{i−1}Δλ_{i−1} − n_iΔλ_i on particle i (N·s²) for the multiplier changes in Delta; the
-        /// particle moves by W_i f. clamp: tension-only changes as the position update will apply them.
-        /// </summary>
-        private static void ChainPull(ChainState c, int i, bool tensionOnly, bool clamp, out double fx, out double fy, out double fz)
-        {
-            int s = c.SegmentCount;
-            double[] delta = c.Delta, lambda = c.Lambda;
-            fx = 0.0; fy = 0.0; fz = 0.0;
-            if (i > 0 && !c.Broken[i - 1])
-            {
-                double d = delta[i - 1];
-                d = ChainState.LimitToPulling(lambda[i - 1], d, clamp && tensionOnly);
-                fx += d * c.DirX[i - 1]; fy += d * c.DirY[i - 1]; fz += d * c.DirZ[i - 1];
-            }
-            if (i < s && !c.Broken[i])
-            {
-                double d = delta[i];
-                d = ChainState.LimitToPulling(lambda[i], d, clamp && tensionOnly);
-                fx -= d * c.DirX[i]; fy -= d * c.DirY[i]; fz -= d * c.DirZ[i];
-            }
-        }
-
-        /// <summary>Normal motion (m, &gt; 0 outward) contact particle i would make without its contact, for the current Delta.</summary>
-        private static double FreeNormalMotion(ChainState c, int i, bool tensionOnly, bool clamp)
-        {
-            ChainPull(c, i, tensionOnly, clamp, out double fx, out double fy, out double fz);
-            Mobility(c, i, fx, fy, fz, withContact: false, out double rx, out double ry, out double rz);
-            return c.ContactNX[i] * rx + c.ContactNY[i] * ry + c.ContactNZ[i] * rz;
-        }
-
-        /// <summary>
-        /// Contact complementarity on the current solution: a held contact whose chain pull would lift the particle off the
-        /// surface is released; a released one that the chain would drive deeper than its gap is held again.
-        /// Rebuilds the affected matrix rows; returns true when the contact set changed.
-        /// </summary>
-        private static bool UpdateContacts(ChainState c, bool tensionOnly, double invH2, double gammaAll)
-        {
-            bool changed = false;
-            for (int k = 0; k < c.ContactCount; k++)
-            {
-                int i = c.ContactList[k];
-                double outward = FreeNormalMotion(c, i, tensionOnly, clamp: true);
-                if (c.ContactActive[i])
-                {
-                    if (outward > 0.0)
-                    {
-                        c.ContactActive[i] = false;
-                        RebuildAround(c, i, invH2, gammaAll);
-                        changed = true;
-                    }
-                }
-                else if (-outward > c.ContactGap[i])
-                {
-                    c.ContactActive[i] = true;
-                    RebuildAround(c, i, invH2, gammaAll);
-                    changed |= c.ContactActive[i];
-                }
-            }
-            return changed;
-        }
-
-        /// <summary>
-        /// Replaces the plain update w·f of the particles with a held contact by W_i f (the constrained mobility, with the
-        /// transverse stabilisation where the particle has it). A held contact may still close its gap; the normal motion
-        /// it withheld is recorded as its normal load (friction limit). Delta holds the applied multiplier changes.
-        /// </summary>
-        private static void ApplyContactMobility(ChainState c)
+        private static void DropContactsWithoutMobility(ChainState c)
         {
             for (int k = 0; k < c.ContactCount; k++)
             {
                 int i = c.ContactList[k];
                 if (!c.ContactActive[i]) continue;
-                ChainPull(c, i, tensionOnly: false, clamp: false, out double fx, out double fy, out double fz);
-                Mobility(c, i, fx, fy, fz, withContact: true, out double rx, out double ry, out double rz);
-                Mobility(c, i, fx, fy, fz, withContact: false, out double ux, out double uy, out double uz);
-                double inward = -(c.ContactNX[i] * ux + c.ContactNY[i] * uy + c.ContactNZ[i] * uz);
-                if (inward > 0.0)
-                {
-                    double allowed = Math.Min(inward, c.ContactGap[i]);
-                    rx -= c.ContactNX[i] * allowed; ry -= c.ContactNY[i] * allowed; rz -= c.ContactNZ[i] * allowed;
-                    c.ContactLoad[i] += (float)(inward - allowed);
-                }
-                double w = c.InverseMass[i];
-                c.DX[i] += (float)(rx - w * fx); c.DY[i] += (float)(ry - w * fy); c.DZ[i] += (float)(rz - w * fz);
+                if ((i > 0 && !AxialMobilityLeft(c, i - 1)) || (i < c.SegmentCount && !AxialMobilityLeft(c, i)))
+                    c.ContactActive[i] = false;
             }
+        }
+
+        /// <summary>True when segment j keeps mobility (or compliance) along its direction with its ends' contacts held.</summary>
+        private static bool AxialMobilityLeft(ChainState c, int j)
+        {
+            if (c.Broken[j] || c.Compliance[j] > 0f) return true;
+            double nx = c.DirX[j], ny = c.DirY[j], nz = c.DirZ[j];
+            double along = SegmentForceSystem.AlongMobility(c, j, nx, ny, nz) + SegmentForceSystem.AlongMobility(c, j + 1, nx, ny, nz);
+            return along > 1e-9 * ((double)c.InverseMass[j] + c.InverseMass[j + 1]);
+        }
+
+        /// <summary>
+        /// Solves for δΛ, then repeats on the same linearisation while the active set changes (at most
+        /// <see cref="MaxPasses"/> solves): a tension-only segment whose total force would push is released (its force
+        /// returns to zero), a released one the solution stretches is re-admitted; a held contact the chain pulls off the
+        /// surface is released, a released one it drives deeper than its gap is held.
+        /// </summary>
+        private static void SolveActiveSet(ChainState c, bool tensionOnly, bool contacts)
+        {
+            for (int pass = 1; ; pass++)
+            {
+                SegmentForceSystem.Solve(c);
+                if ((!tensionOnly && !contacts) || pass >= MaxPasses) return;
+                bool changed = tensionOnly && UpdateTensionOnlySet(c);
+                if (contacts) changed |= UpdateContacts(c);
+                if (!changed) return;
+            }
+        }
+
+        private static bool UpdateTensionOnlySet(ChainState c)
+        {
+            int s = c.SegmentCount;
+            double[] fx = c.ForceX, fy = c.ForceY, fz = c.ForceZ, dx = c.StepX, dy = c.StepY, dz = c.StepZ;
+            bool[] active = c.Active, broken = c.Broken;
+            bool changed = false;
+            for (int j = 0; j < s; j++)
+            {
+                if (broken[j]) continue;
+                double nx = c.DirX[j], ny = c.DirY[j], nz = c.DirZ[j];
+                if (active[j])
+                {
+                    double along = (fx[j] + dx[j]) * nx + (fy[j] + dy[j]) * ny + (fz[j] + dz[j]) * nz;
+                    if (along < 0.0) { active[j] = false; changed = true; }
+                }
+                else if (IsRestorable(c, j) && StretchAfter(c, j, nx, ny, nz) > 0.0)
+                {
+                    active[j] = true;
+                    changed = true;
+                }
+            }
+            return changed;
+        }
+
+        /// <summary>A released segment that may rejoin the system (it has mobility or compliance, unlike an invalid row).</summary>
+        private static bool IsRestorable(ChainState c, int j) => (double)c.InverseMass[j] + c.InverseMass[j + 1] > 0.0 || c.Compliance[j] > 0f;
+
+        /// <summary>Stretch (m) segment j would have after this solution: n·(R + its ends' relative motion).</summary>
+        private static double StretchAfter(ChainState c, int j, double nx, double ny, double nz)
+        {
+            SegmentForceSystem.Motion(c, j, out double ax, out double ay, out double az);
+            SegmentForceSystem.Motion(c, j + 1, out double bx, out double by, out double bz);
+            return nx * (c.ResidualX[j] + bx - ax) + ny * (c.ResidualY[j] + by - ay) + nz * (c.ResidualZ[j] + bz - az);
+        }
+
+        private static bool UpdateContacts(ChainState c)
+        {
+            bool changed = false;
+            for (int k = 0; k < c.ContactCount; k++)
+            {
+                int i = c.ContactList[k];
+                double outward = FreeNormalMotion(c, i);
+                if (c.ContactActive[i])
+                {
+                    if (outward > 0.0) { c.ContactActive[i] = false; changed = true; }
+                }
+                else if (-outward > c.ContactGap[i])
+                {
+                    c.ContactActive[i] = true;
+                    changed = true;
+                }
+            }
+            if (changed) DropContactsWithoutMobility(c);
+            return changed;
+        }
+
+        /// <summary>Normal motion (m, &gt; 0 outward) contact particle i would make without its contact under this solution's pull.</summary>
+        private static double FreeNormalMotion(ChainState c, int i)
+        {
+            SegmentForceSystem.Pull(c, i, out double px, out double py, out double pz);
+            double w = c.InverseMass[i];
+            return w * (c.ContactNX[i] * px + c.ContactNY[i] * py + c.ContactNZ[i] * pz);
+        }
+
+        /// <summary>
+        /// Moves every particle by its mobility times this iteration's pull, accumulates the forces and writes the scalar
+        /// multipliers λ_j = −Λ_j·n_j the tension read-outs use. A held contact may still close its gap; the normal motion
+        /// it withheld is recorded as its normal load (the friction limit). Returns the largest second-order length error
+        /// |Δ_⊥|²/(2l) of a segment over its rest length (see <see cref="NonlinearTolerance"/>).
+        /// </summary>
+        private static double Apply(ChainState c, bool contacts)
+        {
+            int s = c.SegmentCount;
+            float[] w = c.InverseMass;
+            double worst = 0.0, qx = 0, qy = 0, qz = 0;
+            for (int i = 0; i <= s; i++)
+            {
+                SegmentForceSystem.Pull(c, i, out double px, out double py, out double pz);
+                double wi = w[i];
+                double mx = wi * px, my = wi * py, mz = wi * pz;
+                if (contacts && c.ContactActive[i])
+                {
+                    double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
+                    double normal = nx * mx + ny * my + nz * mz;
+                    double allowed = normal < 0.0 ? Math.Max(normal, -c.ContactGap[i]) : 0.0;
+                    double withheld = normal - allowed;
+                    mx -= nx * withheld; my -= ny * withheld; mz -= nz * withheld;
+                    if (normal < 0.0) c.ContactLoad[i] += (float)(-withheld);
+                }
+                c.DX[i] += (float)mx; c.DY[i] += (float)my; c.DZ[i] += (float)mz;
+                if (i > 0 && c.Active[i - 1])
+                {
+                    double ux = mx - qx, uy = my - qy, uz = mz - qz;
+                    double along = ux * c.DirX[i - 1] + uy * c.DirY[i - 1] + uz * c.DirZ[i - 1];
+                    double perp = ux * ux + uy * uy + uz * uz - along * along;
+                    double e = perp / (2.0 * Math.Max(c.Length[i - 1], 1e-6 * c.RestLength[i - 1]) * c.RestLength[i - 1]);
+                    if (e > worst) worst = e;
+                }
+                qx = mx; qy = my; qz = mz;
+            }
+            double[] fx = c.ForceX, fy = c.ForceY, fz = c.ForceZ, dx = c.StepX, dy = c.StepY, dz = c.StepZ;
+            for (int j = 0; j < s; j++)
+            {
+                fx[j] += dx[j]; fy[j] += dy[j]; fz[j] += dz[j];
+                c.Lambda[j] = c.Active[j] ? -(fx[j] * c.DirX[j] + fy[j] * c.DirY[j] + fz[j] * c.DirZ[j]) : 0.0;
+            }
+            return worst;
+        }
+
+        /// <summary>See <see cref="Iterate"/>: the estimated tension was below half the result where 4·T·h²·max(w)/l &gt; 1.</summary>
+        private static bool EstimateTooLow(ChainState c, double invH2)
+        {
+            int s = c.SegmentCount;
+            for (int j = 0; j < s; j++)
+            {
+                if (!c.Active[j]) continue;
+                double found = -c.Lambda[j] * invH2;
+                if (!(found > 2.0 * c.EstimatedTension[j])) continue;
+                double w = Math.Max(c.InverseMass[j], c.InverseMass[j + 1]);
+                if (4.0 * found * w > invH2 * Math.Max(c.Length[j], 1e-6 * c.RestLength[j])) return true;
+            }
+            return false;
         }
     }
 }

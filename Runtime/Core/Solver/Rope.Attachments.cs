@@ -69,9 +69,7 @@ namespace HookeRope.Solver
             pinBroken[p] = false;
             if (compliance == 0f)
             {
-                chain.X[particle] = chain.PrevX[particle] = chain.StepStartX[particle] = local.X;
-                chain.Y[particle] = chain.PrevY[particle] = chain.StepStartY[particle] = local.Y;
-                chain.Z[particle] = chain.PrevZ[particle] = chain.StepStartZ[particle] = local.Z;
+                chain.Place(particle, local.X, local.Y, local.Z);
                 chain.VelX[particle] = chain.VelY[particle] = chain.VelZ[particle] = 0f;
                 RefreshKinematic();
                 RefreshLengths();
@@ -339,7 +337,8 @@ namespace HookeRope.Solver
             {
                 if (pinBroken[p] || pinCompliance[p] == 0f) continue;
                 int i = pinParticle[p];
-                double dx = chain.X[i] - pinEnd[p].X, dy = chain.Y[i] - pinEnd[p].Y, dz = chain.Z[i] - pinEnd[p].Z;
+                double dx = (double)chain.X[i] - pinEnd[p].X + chain.LowX[i], dy = (double)chain.Y[i] - pinEnd[p].Y + chain.LowY[i];
+                double dz = (double)chain.Z[i] - pinEnd[p].Z + chain.LowZ[i];
                 e += 0.5 * (dx * dx + dy * dy + dz * dz) / pinCompliance[p];
             }
             return e;

@@ -100,37 +100,50 @@ namespace HookeRope.Solver
         }
 
         /// <summary>
-        /// Phase 3: the constraint iterations. The exact solver first gives taut particles their transverse inertia; each
-        /// iteration folds in the compliant pins, solves the chain (exact, plus a Gauss–Seidel polish sweep where its
-        /// linearisation was poor; or Gauss–Seidel alone), releases the pins and runs a collision pass.
+        /// Most Newton iterations of the exact chain solve in a substep. Beyond <see cref="RopeSettings.Iterations"/>, the
+        /// solve adds one iteration at a time, up to this total, while the last one was not to be trusted: its geometric
+        /// stiffness used a tension far below the one it found (a rope snatched taut, the first substep of a loaded rope),
+        /// or it moved segments across themselves so far that the linearisation was off (a whipping end). A rope that
+        /// hangs, swings or stretches smoothly needs none.
+        /// </summary>
+        public const int MaxNewtonIterations = 4;
+
+        /// <summary>
+        /// Phase 3: the constraint iterations. Each folds in the compliant pins, solves the chain (one Newton iteration of
+        /// the exact solve, or a Gauss–Seidel sweep), releases the pins and runs a collision pass. The exact solve adds
+        /// iterations, up to <see cref="MaxNewtonIterations"/>, while its tension estimate proves too low.
         /// </summary>
         private void SolvePhase(float h, double hd, double hEff, float t, double beta, bool tensionOnly, bool exact, int iterations, bool hasCompliantPins, bool trackSolve)
         {
             // the solve runs with α̃ = α/h_eff² (the integrator's effective step) and keeps the dashpot γ = β/h
             double solveBeta = beta * (hEff / hd);
-            if (exact) chain.UpdateTransverseMass(hEff); else chain.AugmentedCount = 0;
-            for (int it = 0; it < iterations; it++)
+            int total = iterations;
+            for (int it = 0; it < total; it++)
             {
                 if (trackSolve) TrackSolveDisplacement(-1.0);
                 bool softPins = hasCompliantPins && ProjectCompliantPins(hEff, t);
-                // Gauss–Seidel is the solver itself, or a polish sweep after an exact solve whose
-                // linearisation was poor somewhere (a fold); on a taut chain the sweep would change nothing
-                bool sweep = !exact || ExactChainSolver.Iterate(chain, hEff, solveBeta, tensionOnly);
-                // after an exact solve the polish sweep is a nonlinear projection (a fold), which a second-order scheme
-                // takes as a correction (a velocity kick, as a collider push) rather than as a constraint force
-                if (trackSolve && exact) TrackSolveDisplacement(1.0);
-                if (sweep) GaussSeidelSolver.Iterate(chain, hEff, solveBeta, tensionOnly);
-                if (trackSolve && !exact) TrackSolveDisplacement(1.0);
+                if (exact)
+                {
+                    bool underestimated = ExactChainSolver.Iterate(chain, hEff, solveBeta, tensionOnly, it == 0);
+                    if (underestimated && it == total - 1 && total < MaxNewtonIterations) total++;
+                }
+                else
+                {
+                    GaussSeidelSolver.Iterate(chain, hEff, solveBeta, tensionOnly);
+                }
+                if (trackSolve) TrackSolveDisplacement(1.0);
                 if (softPins) ReleaseCompliantPins(hEff, t);
-                CollidePhase(h, it == iterations - 1 ? ContactPass.LastIteration : ContactPass.BetweenIterations);
+                CollidePhase(h, it == total - 1 ? ContactPass.LastIteration : ContactPass.BetweenIterations);
             }
         }
 
-        /// <summary>Phase 4 (after the velocities): time, tensions T = −λ/h_eff², pin forces (and pin breaks). The segment lengths are refreshed once, after the last substep.</summary>
+        /// <summary>Phase 4 (after the velocities): time, tensions T = −λ/h_eff², the plastic return mapping, pin forces (and pin breaks). The segment lengths are refreshed once, after the last substep.</summary>
         private void FinishPhase(double hd, double hEff, Float3 g, bool firstSubstep)
         {
             time += hd;
             UpdateTensions(hEff, firstSubstep);
+            // the return mapping of the plastic segments on the committed positions (γ = β/h: the solve's damping fold)
+            if (chain.Plasticity != null) chain.Plasticity.ReturnMap(chain, settings.Damping / hd);
             if (pinCount > 0) UpdatePinForces(hEff, g);
         }
 
@@ -158,9 +171,9 @@ namespace HookeRope.Solver
                 if (pinBroken[p] || pinCompliance[p] != 0f) continue;
                 int i = pinParticle[p];
                 Float3 target = PinTarget(p, t);
-                chain.DX[i] = target.X - chain.PrevX[i];
-                chain.DY[i] = target.Y - chain.PrevY[i];
-                chain.DZ[i] = target.Z - chain.PrevZ[i];
+                chain.DX[i] = (float)((double)target.X - chain.PrevX[i] - chain.LowX[i]);
+                chain.DY[i] = (float)((double)target.Y - chain.PrevY[i] - chain.LowY[i]);
+                chain.DZ[i] = (float)((double)target.Z - chain.PrevZ[i] - chain.LowZ[i]);
             }
         }
 
@@ -226,12 +239,12 @@ namespace HookeRope.Solver
         /// <summary>Target (rope-local m) of pin p at substep fraction t of the host step.</summary>
         private Float3 PinTarget(int p, float t) => Float3.Lerp(pinStart[p], pinEnd[p], t);
 
-        /// <summary>Pin constraint C = x_i − target (m, double) from particle i's live position Prev + D.</summary>
+        /// <summary>Pin constraint C = x_i − target (m, double) from particle i's live position Prev + Low + D.</summary>
         private void PinOffset(int i, Float3 target, out double cx, out double cy, out double cz)
         {
-            cx = (double)chain.PrevX[i] - target.X + chain.DX[i];
-            cy = (double)chain.PrevY[i] - target.Y + chain.DY[i];
-            cz = (double)chain.PrevZ[i] - target.Z + chain.DZ[i];
+            cx = (double)chain.PrevX[i] - target.X + chain.LowX[i] + chain.DX[i];
+            cy = (double)chain.PrevY[i] - target.Y + chain.LowY[i] + chain.DY[i];
+            cz = (double)chain.PrevZ[i] - target.Z + chain.LowZ[i] + chain.DZ[i];
         }
 
         private void UpdateVelocities(float h)
@@ -243,18 +256,21 @@ namespace HookeRope.Solver
         }
 
         /// <summary>
-        /// Ends particle i's substep at x = x_prev + d with velocity (ux, uy, uz) m/s. Never lets a non-finite value into the
-        /// state: then the particle falls back to its last good position, at rest, with no displacement.
+        /// Ends particle i's substep at x = x_prev + Low + d with velocity (ux, uy, uz) m/s. The sum is formed in double and
+        /// split into the float position and its new remainder Low, so no part of d is rounded away. Never lets a non-finite value into
+        /// the state: then the particle falls back to its last good position, at rest, with no displacement.
         /// </summary>
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         private void CommitParticle(int i, float ux, float uy, float uz)
         {
             float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
-            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
-            float nx = px[i] + dx[i], ny = py[i] + dy[i], nz = pz[i] + dz[i];
+            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ, lx = chain.LowX, ly = chain.LowY, lz = chain.LowZ;
+            double ex = (double)px[i] + lx[i] + dx[i], ey = (double)py[i] + ly[i] + dy[i], ez = (double)pz[i] + lz[i] + dz[i];
+            float nx = (float)ex, ny = (float)ey, nz = (float)ez;
             if (float.IsFinite(ux + uy + uz) && float.IsFinite(nx + ny + nz))
             {
                 x[i] = nx; y[i] = ny; z[i] = nz;
+                lx[i] = (float)(ex - nx); ly[i] = (float)(ey - ny); lz[i] = (float)(ez - nz);
                 chain.VelX[i] = ux; chain.VelY[i] = uy; chain.VelZ[i] = uz;
             }
             else
@@ -348,7 +364,7 @@ namespace HookeRope.Solver
             {
                 if (chain.Broken[j]) continue;
                 double rest = chain.RestLength[j];
-                double c = chain.Length[j] - rest;
+                double c = chain.Length[j] - chain.CurrentRest(j);
                 double tension = chain.Tension[j];
                 if (tensionOnly && tension <= 0.0 && c <= 0.0) continue; // slack: no constraint to meet
                 double error = Math.Abs(c - chain.Compliance[j] * tension) / rest;

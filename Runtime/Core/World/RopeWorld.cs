@@ -1,4 +1,5 @@
 using System;
+using System.Diagnostics;
 using System.Threading;
 using HookeRope.Solver;
 
@@ -27,6 +28,8 @@ namespace HookeRope.World
         private RopeMeshSlot[] slots = new RopeMeshSlot[4];
         private StepReport[] reports = new StepReport[4];
         private double[] costs = new double[4];
+        private long[] stepTicks = new long[4];
+        private bool[] failedInPass = new bool[4];
         private int count;
         private int phase;
         private float deltaTime;
@@ -78,6 +81,26 @@ namespace HookeRope.World
             return reports[index];
         }
 
+        /// <summary>
+        /// Wall-clock time (ms) the rope's last step in this world took on the thread that stepped it (0 before its
+        /// first step): for a host that warns about slow ropes. Two timestamp reads per rope and pass.
+        /// </summary>
+        public double GetLastStepMilliseconds(int index)
+        {
+            CheckIndex(index);
+            return stepTicks[index] * 1000.0 / Stopwatch.Frequency;
+        }
+
+        /// <summary>
+        /// True when the rope's step or mesh fill threw in the last pass (that pass's exception names only the lowest
+        /// failing index; this flags every failing rope, so a host can leave their results alone).
+        /// </summary>
+        public bool LastPassFailed(int index)
+        {
+            CheckIndex(index);
+            return failedInPass[index];
+        }
+
         /// <summary>The rope's mesh slot, or null when its mesh is not filled by the world (<see cref="EnableMesh"/>).</summary>
         public RopeMeshSlot GetMeshSlot(int index)
         {
@@ -101,11 +124,35 @@ namespace HookeRope.World
                 Array.Resize(ref slots, capacity);
                 Array.Resize(ref reports, capacity);
                 Array.Resize(ref costs, capacity);
+                Array.Resize(ref stepTicks, capacity);
+                Array.Resize(ref failedInPass, capacity);
             }
             ropes[count] = simulation;
             slots[count] = null;
             reports[count] = default;
+            stepTicks[count] = 0;
+            failedInPass[count] = false;
             return count++;
+        }
+
+        /// <summary>
+        /// Puts <paramref name="simulation"/> at <paramref name="index"/> in place of the rope there (a host that rebuilt
+        /// its rope): same position in the order, same mesh slot (give the slot new caller arrays if the particle count
+        /// changed), report and step time cleared. Not during a pass; a rope can be in one world once (replacing a
+        /// rope by itself does nothing). Allocation-free.
+        /// </summary>
+        public void Replace(int index, RopeSimulation simulation)
+        {
+            if (simulation == null) throw new ArgumentNullException(nameof(simulation));
+            CheckIndex(index);
+            CheckIdle();
+            int existing = IndexOf(simulation);
+            if (existing == index) return;
+            if (existing >= 0) throw new ArgumentException("The rope is already in this world (at index " + existing + ").", nameof(simulation));
+            ropes[index] = simulation;
+            reports[index] = default;
+            stepTicks[index] = 0;
+            failedInPass[index] = false;
         }
 
         /// <summary>Removes <paramref name="simulation"/> (the ropes after it move down one index); false when it is not in the world. Not during a pass.</summary>
@@ -118,10 +165,14 @@ namespace HookeRope.World
             Array.Copy(ropes, index + 1, ropes, index, tail);
             Array.Copy(slots, index + 1, slots, index, tail);
             Array.Copy(reports, index + 1, reports, index, tail);
+            Array.Copy(stepTicks, index + 1, stepTicks, index, tail);
+            Array.Copy(failedInPass, index + 1, failedInPass, index, tail);
             count--;
             ropes[count] = null;
             slots[count] = null;
             reports[count] = default;
+            stepTicks[count] = 0;
+            failedInPass[count] = false;
             return true;
         }
 
@@ -152,7 +203,7 @@ namespace HookeRope.World
         /// <summary>Steps every rope by <paramref name="hostDeltaTime"/> seconds ((0, 1] s) in parallel (<see cref="RopeSimulation.Step"/>).</summary>
         public void Step(float hostDeltaTime) => RunPass(PhaseStep, hostDeltaTime);
 
-        /// <summary>Fills the mesh slot of every rope that has one (<see cref="EnableMesh"/>) in parallel, from the positions the slot names.</summary>
+        /// <summary>Fills the mesh slot of every rope that has an enabled one (<see cref="EnableMesh"/>, <see cref="RopeMeshSlot.Enabled"/>) in parallel, from the positions the slot names.</summary>
         public void FillMeshes() => RunPass(PhaseMesh, 0f);
 
         /// <summary>
@@ -200,7 +251,7 @@ namespace HookeRope.World
             }
             bool step = (passPhase & PhaseStep) != 0;
             for (int i = 0; i < count; i++)
-                costs[i] = WorkPartition.Cost(ropes[i], step, (passPhase & PhaseMesh) != 0 ? slots[i] : null);
+                costs[i] = WorkPartition.Cost(ropes[i], step, (passPhase & PhaseMesh) != 0 && slots[i] != null && slots[i].Enabled ? slots[i] : null);
             WorkPartition.Split(costs, count, bounds);
         }
 
@@ -211,13 +262,21 @@ namespace HookeRope.World
             int end = bounds[worker + 1];
             for (int i = bounds[worker]; i < end; i++)
             {
+                failedInPass[i] = false;
                 try
                 {
-                    if (step) reports[i] = ropes[i].Step(dt);
-                    if (mesh && slots[i] != null) slots[i].Fill(ropes[i]);
+                    if (step)
+                    {
+                        long started = Stopwatch.GetTimestamp();
+                        reports[i] = ropes[i].Step(dt);
+                        stepTicks[i] = Stopwatch.GetTimestamp() - started;
+                    }
+                    RopeMeshSlot slot = slots[i];
+                    if (mesh && slot != null && slot.Enabled) slot.Fill(ropes[i]);
                 }
                 catch (Exception e)
                 {
+                    failedInPass[i] = true;
                     if (failure[worker] != null) continue;
                     failure[worker] = e;
                     failureIndex[worker] = i;

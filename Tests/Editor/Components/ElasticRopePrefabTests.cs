@@ -48,6 +48,7 @@ namespace HookeRope.Tests.Components
             Assert.That(rope.Solver, Is.EqualTo(ConstraintSolverKind.ExactChain));
             Assert.That(rope.Substeps, Is.EqualTo(8));
             Assert.That(rope.Iterations, Is.EqualTo(1));
+            Assert.That(rope.Integrator, Is.EqualTo(RopeParameters.Integrator.Default), "the prefab's m_Integrator is the table's default (change both together)");
             Assert.That(rope.Gravity.y, Is.EqualTo(-9.81f).Within(1e-6f));
             Assert.That(rope.AttachmentCompliance, Is.EqualTo(0f));
             Assert.That(rope.CollisionMode, Is.EqualTo(RopeCollisionMode.Off));

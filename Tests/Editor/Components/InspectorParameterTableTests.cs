@@ -141,7 +141,9 @@ namespace HookeRope.Tests.Components
             if (row.Kind == ParameterKind.Int) property.intValue = (int)Math.Min(10.0 * row.Max, int.MaxValue);
             else property.floatValue = 10f * (float)row.Max;
             so.ApplyModifiedPropertiesWithoutUndo();
-            Assert.That(Number(field.GetValue(component)), Is.EqualTo(row.Kind == ParameterKind.Int ? row.Max : (float)row.Max), name + ": 10·Max → Max");
+            // an exclusive maximum (the defect position's open (0, 1)) resets to the default, like an exclusive minimum
+            double clamped = row.MaxExclusive ? row.Default : row.Max;
+            Assert.That(Number(field.GetValue(component)), Is.EqualTo(row.Kind == ParameterKind.Int ? clamped : (float)clamped), name + ": 10·Max → Max (exclusive: Default)");
 
             if (row.Kind != ParameterKind.Float) return;
             so.Update();
@@ -202,7 +204,7 @@ namespace HookeRope.Tests.Components
                     Assert.That(Convert.ToDouble(range.ConstructorArguments[1].Value), Is.EqualTo((double)(float)row.Max), where + " maximum");
                 checkedFields++;
             }
-            Assert.That(checkedFields, Is.EqualTo(18), "numeric serialized fields of ElasticRope (17) and RopeMeshRenderer (1)");
+            Assert.That(checkedFields, Is.EqualTo(24), "numeric serialized fields of ElasticRope (23: 6 of the material law, issue 15) and RopeMeshRenderer (1)");
         }
 
         static IEnumerable<string> InspectorRowNames() => InspectorRows.Select(r => r.Name);

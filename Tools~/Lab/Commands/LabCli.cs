@@ -56,19 +56,24 @@ namespace HookeRope.Lab.Commands
 
             var reportOut = OutOption();
             var reportQuick = new Option<bool>("--quick") { Description = "Reduced grid and one repeat (a smoke run, not for numbers)." };
-            var repeats = new Option<int>("--repeats") { Description = "Timed repeats per configuration, 1–50 (median is reported).", DefaultValueFactory = _ => 5 };
+            var repeats = new Option<int>("--repeats") { Description = "Timed rounds over the whole grid, 1–50 (each cell reports its best round).", DefaultValueFactory = _ => 5 };
             repeats.Validators.Add(r =>
             {
                 if (r.Tokens.Count == 0 || !int.TryParse(r.Tokens[0].Value, out int n)) return;
                 if (n < 1 || n > 50) r.AddError($"--repeats: {n} is out of range [1, 50]");
             });
             var reportQuiet = QuietOption();
+            var headline = new Option<string[]>("--headline")
+            {
+                Description = "Also write the headline (table and recommendations) into this Markdown file between its \"lab report headline\" markers; repeatable (README.md, Documentation~/lab.md).",
+            };
             var report = new Command("report", "Error against run time for reference scenarios and solver configurations: Markdown + Pareto plot.")
             {
-                reportOut, reportQuick, repeats, reportQuiet,
+                reportOut, reportQuick, repeats, reportQuiet, headline,
             };
             report.SetAction(p => Guard(console, error, () =>
-                ReportCommand.Execute(console, p.GetValue(reportOut), p.GetValue(reportQuick), p.GetValue(repeats), p.GetValue(reportQuiet) ? null : error)));
+                ReportCommand.Execute(console, p.GetValue(reportOut), p.GetValue(reportQuick), p.GetValue(repeats), p.GetValue(reportQuiet) ? null : error,
+                    p.GetValue(headline))));
             root.Subcommands.Add(report);
 
             var stabilityOut = OutOption();
@@ -97,11 +102,11 @@ namespace HookeRope.Lab.Commands
             var figuresOut = OutOption();
             var figureSet = new Argument<string>("set")
             {
-                Description = "harness: the manual's harness-rig figures; paper: the seed paper's Figs. 5–9a with captions and the burr texture; all: both.",
+                Description = "harness: the manual's harness-rig figures; paper: the seed paper's Figs. 5–9a with captions and the burr texture; folds: the slack folds after a break (a known mesh problem); all: every set.",
                 Arity = ArgumentArity.ZeroOrOne,
                 DefaultValueFactory = _ => FiguresCommand.Harness,
             };
-            figureSet.AcceptOnlyFromAmong(FiguresCommand.Harness, FiguresCommand.Paper, FiguresCommand.All);
+            figureSet.AcceptOnlyFromAmong(FiguresCommand.Harness, FiguresCommand.Paper, FiguresCommand.Folds, FiguresCommand.All);
             var figures = new Command("figures", "Render figures from the core's mesh of real simulations as PNG (harness rig, or the paper's Figs. 5–9a); the committed copies: --out \"Documentation~/images\".")
             {
                 figureSet, figuresOut,

@@ -30,6 +30,7 @@ namespace HookeRope.Lab.Output
             w.WriteStartObject();
             w.WriteString("scenario", s.Name);
             w.WriteString("solver", s.Solver.Method == Scenarios.SolverMethod.ExactChain ? "exact-chain" : "gauss-seidel");
+            w.WriteString("integrator", Scenarios.SolverSpec.IntegratorJson(s.Solver.Integrator));
             w.WriteNumber("substeps", s.Solver.Substeps);
             w.WriteNumber("iterations", s.Solver.Iterations);
             Number(w, "hostStep_s", s.HostStep);

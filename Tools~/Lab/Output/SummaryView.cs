@@ -19,10 +19,11 @@ namespace HookeRope.Lab.Output
             console.Write(new Rule($"[bold]HookeRope lab · {Markup.Escape(s.Name)}[/]").LeftJustified());
             if (s.Description.Length > 0) console.MarkupLine("[grey]" + Markup.Escape(s.Description) + "[/]");
             console.MarkupLine(Markup.Escape(string.Format(Invariant,
-                "{0} · {1} segments · E·A {2} · μ {3} kg/m · {4} substep{8} × {5} iteration{9} · host step {6:G4} ms · {7:G4} s simulated",
+                "{0} · {10} · {1} segments · E·A {2} · μ {3} kg/m · {4} substep{8} × {5} iteration{9} · host step {6:G4} ms · {7:G4} s simulated",
                 s.Solver.Method == SolverMethod.ExactChain ? "exact chain" : "Gauss–Seidel", s.Rope.Segments,
                 Force(s.Rope.ResolvedAxialStiffness), Num(s.Rope.ResolvedLinearDensity), s.Solver.Substeps, s.Solver.Iterations,
-                s.HostStep * 1000, s.Duration, s.Solver.Substeps == 1 ? "" : "s", s.Solver.Iterations == 1 ? "" : "s")));
+                s.HostStep * 1000, s.Duration, s.Solver.Substeps == 1 ? "" : "s", s.Solver.Iterations == 1 ? "" : "s",
+                s.Solver.Integrator == HookeRope.Solver.TimeIntegrator.Bdf2 ? "BDF2" : "backward Euler")));
 
             console.MarkupLine(VerdictLine(verdict));
             bool limits = verdict.Converged && s.IsFallArrest;

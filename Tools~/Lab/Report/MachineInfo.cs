@@ -19,6 +19,26 @@ namespace HookeRope.Lab.Report
 #endif
         }
 
+        /// <summary>The load average over 1, 5 and 15 minutes ("1.23, 0.75, 0.38", from /proc/loadavg), or "n/a": how busy the shared machine was while timing.</summary>
+        public static string LoadAverage()
+        {
+            try
+            {
+                if (File.Exists("/proc/loadavg"))
+                {
+                    var parts = File.ReadAllText("/proc/loadavg").Split(' ');
+                    if (parts.Length >= 3) return parts[0] + ", " + parts[1] + ", " + parts[2];
+                }
+            }
+            catch (IOException)
+            {
+            }
+            catch (UnauthorizedAccessException)
+            {
+            }
+            return "n/a";
+        }
+
         static string Cpu()
         {
             try

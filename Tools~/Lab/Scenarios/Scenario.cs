@@ -67,6 +67,12 @@ namespace HookeRope.Lab.Scenarios
         public double Damping = RopeParameters.Damping.Default;
         /// <summary>True: rope (pulls only); false: rod (bilateral).</summary>
         public bool TensionOnly = RopeParameters.TensionModel.Default == HookeRope.Solver.TensionModel.TensionOnly;
+        /// <summary>Time integrator of each substep (backward Euler or BDF2).</summary>
+        public HookeRope.Solver.TimeIntegrator Integrator = RopeParameters.Integrator.Default;
+
+        /// <summary>JSON name of an integrator: "backward-euler" or "bdf2".</summary>
+        public static string IntegratorJson(HookeRope.Solver.TimeIntegrator integrator) =>
+            integrator == HookeRope.Solver.TimeIntegrator.Bdf2 ? "bdf2" : "backward-euler";
     }
 
     /// <summary>rope {…} block. Defaults are the parameter table's (<see cref="RopeParameters"/>).</summary>
@@ -119,6 +125,25 @@ namespace HookeRope.Lab.Scenarios
         public int RadialSegments = RopeParameters.RadialSegments.Default;
         /// <summary>Seed of the random parts (burr strands of broken ends).</summary>
         public int Seed = RopeParameters.BurrSeed.Default;
+        /// <summary>Material law (issue 15): "elastic" or "elastic-plastic".</summary>
+        public string MaterialModel = RopeParameters.MaterialModel.Default == HookeRope.Solver.MaterialModel.ElasticPlastic ? "elastic-plastic" : "elastic";
+        /// <summary>Elastic–plastic: yield strain ε_y (the yield force is E·A·ε_y).</summary>
+        public double YieldStrain = RopeParameters.YieldStrain.Default;
+        /// <summary>Elastic–plastic: hardening modulus H in N (0 = a plateau).</summary>
+        public double HardeningModulus = RopeParameters.HardeningModulus.Default;
+        /// <summary>Elastic–plastic: strain at which the neck forms at the defect.</summary>
+        public double NeckingStrain = RopeParameters.NeckingStrain.Default;
+        /// <summary>Elastic–plastic: strain of the neck at which its force is zero and the rope breaks.</summary>
+        public double UltimateStrain = RopeParameters.UltimateStrain.Default;
+        /// <summary>An energy absorber in series with the last segment (the end).</summary>
+        public bool EnergyAbsorber = RopeParameters.EnergyAbsorber.Default;
+        /// <summary>Energy absorber: plateau force F_p in N.</summary>
+        public double AbsorberForce = RopeParameters.AbsorberForce.Default;
+        /// <summary>Energy absorber: largest deployment in m.</summary>
+        public double AbsorberDeployment = RopeParameters.AbsorberDeployment.Default;
+
+        /// <summary>True with the elastic–plastic material.</summary>
+        public bool IsPlastic => MaterialModel == "elastic-plastic";
 
         /// <summary>Cross-section area πR² in m².</summary>
         public double Area => System.Math.PI * Radius * Radius;
@@ -262,7 +287,7 @@ namespace HookeRope.Lab.Scenarios
     /// <summary>What the built-in scenario checks (read by tests and the summary). Optional in user files.</summary>
     public sealed class ExpectationSpec
     {
-        /// <summary>Analytic check: "none", "fall-arrest", "static-hang", "period", "catenary", "poisson", "neck", "fracture", "collision".</summary>
+        /// <summary>Analytic check: "none", "fall-arrest", "static-hang", "period", "catenary", "poisson", "neck", "fracture", "collision", "amplitude", "rebound", "snatch", "absorber", "plastic".</summary>
         public string Check = "none";
     }
 }

@@ -96,7 +96,7 @@ namespace HookeRope.Lab.Scenarios
             if (expect != null)
             {
                 s.Expect.Check = expect.Choice("check", "none", "none", "fall-arrest", "static-hang", "period",
-                    "catenary", "poisson", "neck", "fracture", "collision");
+                    "catenary", "poisson", "neck", "fracture", "collision", "amplitude", "rebound", "snatch", "absorber", "plastic");
                 expect.RejectUnknown();
             }
             root.RejectUnknown();
@@ -113,6 +113,8 @@ namespace HookeRope.Lab.Scenarios
             spec.Damping = f.Parameter(RopeParameters.Damping.Row, spec.Damping);
             spec.TensionOnly = f.Choice(RopeParameters.TensionModel.Json, spec.TensionOnly ? "tension-only" : "bilateral",
                 "tension-only", "bilateral") == "tension-only";
+            spec.Integrator = f.Choice(RopeParameters.Integrator.Json, SolverSpec.IntegratorJson(spec.Integrator),
+                "backward-euler", "bdf2") == "bdf2" ? HookeRope.Solver.TimeIntegrator.Bdf2 : HookeRope.Solver.TimeIntegrator.BackwardEuler;
             f.RejectUnknown();
         }
 
@@ -143,7 +145,28 @@ namespace HookeRope.Lab.Scenarios
             r.SlackKeepsRestRadius = f.Parameter(RopeParameters.SlackKeepsRestRadius.Row, r.SlackKeepsRestRadius);
             r.RadialSegments = f.Parameter(RopeParameters.RadialSegments.Row, r.RadialSegments);
             r.Seed = f.Parameter(RopeParameters.BurrSeed.Row, r.Seed);
+            ReadMaterialLaw(f, r);
             f.RejectUnknown();
+        }
+
+        /// <summary>The material law (issue 15): model, plastic law, energy absorber; with the plastic material the strains in order.</summary>
+        static void ReadMaterialLaw(JsonFields f, RopeSpec r)
+        {
+            r.MaterialModel = f.Choice(RopeParameters.MaterialModel.Json, r.MaterialModel, "elastic", "elastic-plastic");
+            r.YieldStrain = f.Parameter(RopeParameters.YieldStrain.Row, r.YieldStrain);
+            r.HardeningModulus = f.Parameter(RopeParameters.HardeningModulus.Row, r.HardeningModulus);
+            r.NeckingStrain = f.Parameter(RopeParameters.NeckingStrain.Row, r.NeckingStrain);
+            r.UltimateStrain = f.Parameter(RopeParameters.UltimateStrain.Row, r.UltimateStrain);
+            r.EnergyAbsorber = f.Parameter(RopeParameters.EnergyAbsorber.Row, r.EnergyAbsorber);
+            r.AbsorberForce = f.Parameter(RopeParameters.AbsorberForce.Row, r.AbsorberForce);
+            r.AbsorberDeployment = f.Parameter(RopeParameters.AbsorberDeployment.Row, r.AbsorberDeployment);
+            if (!r.IsPlastic) return;
+            if (!(r.YieldStrain < r.UltimateStrain))
+                throw new ScenarioException(f.Child(RopeParameters.YieldStrain.Json),
+                    $"must be below ultimateStrain ({JsonFields.Format(r.UltimateStrain)}): the rope yields before its break strain");
+            if (!(r.NeckingStrain >= r.YieldStrain && r.NeckingStrain < r.UltimateStrain))
+                throw new ScenarioException(f.Child(RopeParameters.NeckingStrain.Json),
+                    $"must be in [yieldStrain, ultimateStrain) = [{JsonFields.Format(r.YieldStrain)}, {JsonFields.Format(r.UltimateStrain)})");
         }
 
         static AttachmentSpec ReadAttachment(JsonFields f, AttachmentSpec fallback)

@@ -172,6 +172,15 @@ namespace HookeRope.Lab.Simulation
                     });
                     break;
                 }
+                case "amplitude":
+                    AddAmplitudeChecks(r, list, load, mr, g, length, ea);
+                    break;
+                case "rebound":
+                    AddReboundChecks(r, list, load, g, ea / length);
+                    break;
+                case "snatch":
+                    AddSnatchChecks(r, list, load, g, ea / length);
+                    break;
                 case "catenary":
                 {
                     var start = ScenarioGeometry.StartPosition(s);
@@ -223,6 +232,12 @@ namespace HookeRope.Lab.Simulation
                     });
                     break;
                 }
+                case "absorber":
+                    AddAbsorberChecks(r, list, load, g, ea / length);
+                    break;
+                case "plastic":
+                    AddPlasticChecks(r, list);
+                    break;
                 case "fracture":
                     list.Add(new CheckResult
                     {
@@ -261,6 +276,190 @@ namespace HookeRope.Lab.Simulation
                 }
             }
             return list;
+        }
+
+        /// <summary>Periods between the first and the last whole period a run of <paramref name="duration"/> s holds (the analytic period), at least 1.</summary>
+        public static int AmplitudePeriods(double duration, double period) => Math.Max(1, (int)Math.Floor(duration / period + 1e-9) - 1);
+
+        /// <summary>
+        /// Undamped spring–mass released at rest unstretched: the amplitude of the last whole period against the first
+        /// (window fits over the measured period, <see cref="DissipationMeasures.WindowAmplitude"/>), the first against the
+        /// static elongation it swings about, and the largest substep anchor tension of the first period against 2·M·g.
+        /// </summary>
+        static void AddAmplitudeChecks(RunResult r, List<CheckResult> list, double load, double ropeMass, double g, double length, double ea)
+        {
+            double analytic = HeavyRopePeriod(load, ropeMass, length, ea);
+            int periods = AmplitudePeriods(r.Scenario.Duration, analytic);
+            double period = Period(r.LoadDrop, r.HostStep);
+            double first = DissipationMeasures.WindowAmplitude(r.LoadDrop, r.HostStep, 0, period);
+            double last = DissipationMeasures.WindowAmplitude(r.LoadDrop, r.HostStep, periods * period, period);
+            list.Add(new CheckResult
+            {
+                Quantity = $"amplitude after {periods} periods", Unit = "m", Tolerance = 0.005, Expected = first, Measured = last,
+                Formula = $"= the first period's (undamped; window fits over the measured period {period:G5} s)",
+            });
+            list.Add(new CheckResult
+            {
+                Quantity = "amplitude of the first period", Unit = "m", Tolerance = 0.01, Measured = first,
+                Expected = StaticElongation(load, ropeMass, g, length, ea), Formula = "released unstretched: (M + m/2)·g·L/(E·A)",
+            });
+            double peak = 0;
+            for (int k = 0; k < r.Steps && (k + 1) * r.HostStep <= analytic; k++) peak = Math.Max(peak, r.PeakTopTensionSeries[k]);
+            list.Add(new CheckResult
+            {
+                Quantity = "peak anchor force, first period (substep max)", Unit = "N", Tolerance = 0.005, Measured = r.Steps > 0 ? peak : double.NaN,
+                Expected = 2 * load * g, Formula = "2·M·g (rope mass neglected)",
+            });
+        }
+
+        /// <summary>
+        /// Load thrown down at v from the taut, unstretched position of a tension-only cord: the first three rebounds
+        /// against v²/2g above that position (the worst first) and the bounce periods (apex to apex; the first from the
+        /// virtual apex v/g before the start) against contact + flight.
+        /// </summary>
+        static void AddReboundChecks(RunResult r, List<CheckResult> list, double load, double g, double stiffness)
+        {
+            const int Bounces = 3;
+            var s = r.Scenario;
+            var down = ScenarioGeometry.DownDirection(s.Gravity);
+            double v = Float3.Dot(s.End.Velocity, down);
+            double height = v * v / (2 * g);
+            double period = DissipationMeasures.ContactTime(load, stiffness, g, v) + 2 * v / g;
+            var apexes = DissipationMeasures.Apexes(r.LoadDrop, r.HostStep, Bounces);
+            var heights = new List<CheckResult>();
+            var periods = new List<CheckResult>();
+            double previous = -v / g;
+            for (int b = 0; b < Bounces; b++)
+            {
+                bool found = b < apexes.Count;
+                heights.Add(new CheckResult
+                {
+                    Quantity = $"rebound height, bounce {b + 1}", Unit = "m", Tolerance = 0.02, Expected = height,
+                    // a bounce that never rises above the taut position within the run rebounded 0 m (100 % low)
+                    Measured = found ? apexes[b].Height : r.NonFinite || r.Steps == 0 ? double.NaN : 0.0, Formula = found ? "v²/2g" : "v²/2g (no rebound above the taut position in the run)",
+                });
+                periods.Add(new CheckResult
+                {
+                    Quantity = $"bounce period, bounce {b + 1}", Unit = "s", Tolerance = 0.01, Expected = period,
+                    Measured = found ? apexes[b].Time - previous : double.NaN,
+                    Formula = "(π + 2·asin(x_s/A))/ω + 2v/g, ω² = k/M, x_s = Mg/k, A² = x_s² + v²/ω²",
+                });
+                if (found) previous = apexes[b].Time;
+            }
+            var worst = heights[0];
+            foreach (var c in heights) if (!double.IsFinite(c.Measured) || (double.IsFinite(worst.Measured) && c.Error > worst.Error)) worst = c;
+            list.Add(new CheckResult
+            {
+                Quantity = $"rebound height, worst of bounces 1–{Bounces}", Unit = "m", Tolerance = 0.02, Expected = height,
+                Measured = worst.Measured, Formula = worst.Formula,
+            });
+            list.AddRange(heights);
+            list.AddRange(periods);
+        }
+
+        /// <summary>
+        /// A load hanging slack below a stiff rope snatches it: the largest substep anchor tension, and the largest at the
+        /// host-step ends, against the massless formula Mg + sqrt((Mg)² + 2Mgkh) (h: the initial slack, rest length minus
+        /// the distance between the ends), and, when the energy was tracked, its largest rise (none allowed beyond round-off).
+        /// </summary>
+        static void AddSnatchChecks(RunResult r, List<CheckResult> list, double load, double g, double stiffness)
+        {
+            var s = r.Scenario;
+            double slack = Math.Max(0, s.Rope.RestLength - (ScenarioGeometry.EndPosition(s) - ScenarioGeometry.StartPosition(s)).Length);
+            double expected = FallArrestForce(load, g, stiffness, slack);
+            double peak = r.Steps > 0 ? 0 : double.NaN;
+            for (int k = 0; k < r.Steps; k++) peak = Math.Max(peak, r.PeakTopTensionSeries[k]);
+            const string Formula = "Mg + sqrt((Mg)² + 2Mgkh), k = E·A/L, h = slack";
+            list.Add(new CheckResult { Quantity = "peak anchor force (substep max)", Unit = "N", Tolerance = 0.02, Expected = expected, Measured = peak, Formula = Formula });
+            list.Add(new CheckResult { Quantity = "peak anchor force (host-step ends)", Unit = "N", Tolerance = 0.02, Expected = expected, Measured = r.PeakTopForce, Formula = Formula });
+            if (r.EnergyTracked)
+                list.Add(new CheckResult
+                {
+                    Quantity = "largest rise of the total energy", Unit = "J", Absolute = true, Expected = 0,
+                    Tolerance = 1e-6 * Math.Abs(r.InitialEnergy), Measured = Math.Max(0, r.MaxEnergy - r.InitialEnergy),
+                    Formula = "energy never rises (1e-6 of |E₀|)",
+                });
+        }
+
+        /// <summary>
+        /// Deployment x_d (m) of an energy absorber of plateau <paramref name="plateau"/> (N) in series with a massless lanyard of
+        /// stiffness <paramref name="stiffness"/> (N/m) arresting <paramref name="mass"/> (kg) after a free fall of
+        /// <paramref name="fallHeight"/> (m): M·g·(h + x_e + x_d) = F_p·x_d + F_p²/(2k), x_e = F_p/k.
+        /// </summary>
+        public static double AbsorberDeployment(double mass, double g, double stiffness, double fallHeight, double plateau)
+        {
+            double w = mass * g;
+            return (w * (fallHeight + plateau / stiffness) - plateau * plateau / (2 * stiffness)) / (plateau - w);
+        }
+
+        /// <summary>
+        /// A fall arrested by an energy absorber (issue 15): the largest substep force on the load against the plateau, the
+        /// deployment against the energy balance (while it fits in the absorber's length), the plastic work against F_p·x_d,
+        /// and the EN 355 verdict (≤ 6 kN).
+        /// </summary>
+        static void AddAbsorberChecks(RunResult r, List<CheckResult> list, double load, double g, double stiffness)
+        {
+            var rope = r.Scenario.Rope;
+            double h = r.Scenario.Initial.FallHeight ?? rope.RestLength;
+            double deployment = AbsorberDeployment(load, g, stiffness, h, rope.AbsorberForce);
+            list.Add(new CheckResult
+            {
+                Quantity = "peak force on the load (substep max)", Unit = "N", Tolerance = 0.02, Measured = r.PeakLoadForce,
+                Expected = rope.AbsorberForce, Formula = "the absorber's plateau F_p",
+            });
+            list.Add(new CheckResult
+            {
+                Quantity = "absorber deployment", Unit = "m", Tolerance = 0.02, Measured = r.AbsorberDeployment,
+                Expected = Math.Min(deployment, rope.AbsorberDeployment),
+                Formula = deployment <= rope.AbsorberDeployment ? "M·g·(h + x_e + x_d) = F_p·x_d + F_p²/(2k), x_e = F_p/k" : "used up: its deployment length",
+            });
+            list.Add(new CheckResult
+            {
+                Quantity = "plastic work", Unit = "J", Tolerance = 0.005, Measured = r.PlasticWork,
+                Expected = rope.AbsorberForce * r.AbsorberDeployment, Formula = "F_p·x_d (the plateau's work)",
+            });
+            list.Add(new CheckResult
+            {
+                Quantity = "peak force over EN 355's 6 kN", Unit = "N", Absolute = true, Tolerance = 0, Expected = 0,
+                Measured = Math.Max(0, r.PeakLoadForce - HookeRope.FallArrestLimits.En355), Formula = "EN 355: at most 6 kN with 100 kg",
+            });
+        }
+
+        /// <summary>
+        /// A plastic rope pulled slowly to its break (issue 15): the peak force against the neck onset F_n of the quasi-static
+        /// curve and the elongation there, the largest departure of the sampled force from that curve up to the peak, and the
+        /// force left when it broke (the neck softens the rope's force away before the break).
+        /// </summary>
+        static void AddPlasticChecks(RunResult r, List<CheckResult> list)
+        {
+            var curve = HookeRope.Solver.ForceElongationCurve.Of(ScenarioRunner.Settings(r.Scenario), 1.0);
+            int peak = 0;
+            for (int i = 1; i < r.Samples.Count; i++) if (r.Samples[i].TopTension > r.Samples[peak].TopTension) peak = i;
+            double onsetForce = curve.PeakForce, onsetElongation = double.NaN, worst = 0;
+            for (int i = 0; i < curve.Count; i++) if (curve.Force[i] == onsetForce) { onsetElongation = curve.Elongation[i]; break; }
+            for (int i = 0; i <= peak && i < r.Samples.Count; i++)
+                worst = Math.Max(worst, Math.Abs(r.Samples[i].TopTension - curve.ForceAt(r.Samples[i].Elongation)));
+            bool any = r.Samples.Count > 0;
+            list.Add(new CheckResult
+            {
+                Quantity = "peak force (neck onset)", Unit = "N", Tolerance = 0.01, Measured = any ? r.Samples[peak].TopTension : double.NaN,
+                Expected = onsetForce, Formula = "F_n = E·A·ε_y + H·ε_pn, ε_pn = (ε_n − ε_y)/(1 + H/(E·A))",
+            });
+            list.Add(new CheckResult
+            {
+                Quantity = "elongation at the peak", Unit = "m", Tolerance = 0.02, Measured = any ? r.Samples[peak].Elongation : double.NaN,
+                Expected = onsetElongation, Formula = "ε_n·L (the necking strain)",
+            });
+            list.Add(new CheckResult
+            {
+                Quantity = "largest force off the quasi-static curve before the peak", Unit = "N", Absolute = true, Tolerance = 0.01 * onsetForce,
+                Expected = 0, Measured = any ? worst : double.NaN, Formula = "elastic, then hardening at H (1 % of F_n)",
+            });
+            list.Add(new CheckResult
+            {
+                Quantity = "tension when it broke", Unit = "N", Absolute = true, Tolerance = 0.1 * onsetForce, Expected = 0,
+                Measured = double.IsNaN(r.BreakTime) ? double.NaN : r.BreakTension, Formula = "the neck softened the force (< 10 % of F_n)",
+            });
         }
 
         /// <summary>Number of trailing samples spanning a whole number of periods, at most <paramref name="limit"/>.</summary>

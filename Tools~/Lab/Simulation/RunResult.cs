@@ -129,6 +129,16 @@ namespace HookeRope.Lab.Simulation
         public double[] LoadDrop;
         /// <summary>Tension of the first segment after each host step, N.</summary>
         public double[] TopTensionSeries;
+        /// <summary>Largest first-segment (anchor) tension over the substeps of each host step, N (<see cref="HookeRope.Solver.Rope.PeakTensions"/>; 0 once that segment broke).</summary>
+        public double[] PeakTopTensionSeries;
+        /// <summary>True when the run evaluated the energy every host step (<see cref="RunOptions.TrackEnergy"/>): <see cref="InitialEnergy"/> and <see cref="MaxEnergy"/> are measured.</summary>
+        public bool EnergyTracked;
+        /// <summary>Energy absorber deployment at the end of the run (m; 0 without one).</summary>
+        public double AbsorberDeployment;
+        /// <summary>Permanent set at the end of the run (m): Σ (L_p − L) over the intact segments, absorber included.</summary>
+        public double PlasticElongation;
+        /// <summary>Plastic work at the end of the run (J).</summary>
+        public double PlasticWork;
         /// <summary>Solver residual (strain error, dimensionless) after each host step.</summary>
         public float[] ResidualSeries;
         /// <summary>Elongation after each host step, m.</summary>

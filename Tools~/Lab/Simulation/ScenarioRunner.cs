@@ -47,6 +47,15 @@ namespace HookeRope.Lab.Simulation
             settings.Iterations = s.Solver.Iterations;
             settings.Solver = s.Solver.Method == SolverMethod.GaussSeidel ? ConstraintSolverKind.GaussSeidel : ConstraintSolverKind.ExactChain;
             settings.Tension = s.Solver.TensionOnly ? TensionModel.TensionOnly : TensionModel.Bilateral;
+            settings.Integrator = s.Solver.Integrator;
+            settings.YieldStrain = (float)r.YieldStrain;
+            settings.HardeningModulus = (float)r.HardeningModulus;
+            settings.NeckingStrain = (float)r.NeckingStrain;
+            settings.UltimateStrain = (float)r.UltimateStrain;
+            if (r.IsPlastic) settings.SetPlasticity((float)r.YieldStrain, (float)r.HardeningModulus, (float)r.NeckingStrain, (float)r.UltimateStrain);
+            settings.AbsorberForce = (float)r.AbsorberForce;
+            settings.AbsorberDeployment = (float)r.AbsorberDeployment;
+            settings.EnergyAbsorber = r.EnergyAbsorber;
             return settings;
         }
 
@@ -156,6 +165,7 @@ namespace HookeRope.Lab.Simulation
                 result.BreakTension = constructionBreak.Value.Tension;
             }
             result.InitialEnergy = options.TrackEnergy ? rope.TotalEnergy() : 0;
+            result.EnergyTracked = options.TrackEnergy;
             result.MaxEnergy = result.InitialEnergy;
             double dt = s.HostStep;
             int steps = s.StepCount;
@@ -163,6 +173,7 @@ namespace HookeRope.Lab.Simulation
             result.LoadDrop = new double[steps];
             result.ElongationSeries = new double[steps];
             result.TopTensionSeries = new double[steps];
+            result.PeakTopTensionSeries = new double[steps];
             result.ResidualSeries = new float[steps];
             double sampleInterval = s.Outputs.SampleRate > 0 ? 1.0 / s.Outputs.SampleRate : 0;
             double nextSample = 0;
@@ -210,10 +221,14 @@ namespace HookeRope.Lab.Simulation
                 }
                 double elongation = readouts.Elongation;
                 if (elongation > result.MaxElongation) result.MaxElongation = elongation;
+                result.AbsorberDeployment = readouts.AbsorberDeployment;
+                result.PlasticElongation = readouts.PlasticElongation;
+                result.PlasticWork = readouts.PlasticWork;
                 double drop = Float3.Dot(load - releasePosition, down);
                 result.LoadDrop[k] = drop;
                 result.ElongationSeries[k] = elongation;
                 result.TopTensionSeries[k] = top;
+                result.PeakTopTensionSeries[k] = rope.BrokenSegments[0] ? 0.0 : rope.PeakTensions[0];
                 if (drop > lowest) lowest = drop;
                 if (double.IsNaN(tautDrop) && bottom > Math.Max(0.1 * weight, 1e-6) && k > 0)
                 {
@@ -271,6 +286,7 @@ namespace HookeRope.Lab.Simulation
                 Array.Resize(ref result.LoadDrop, result.Steps);
                 Array.Resize(ref result.ElongationSeries, result.Steps);
                 Array.Resize(ref result.TopTensionSeries, result.Steps);
+                Array.Resize(ref result.PeakTopTensionSeries, result.Steps);
                 Array.Resize(ref result.ResidualSeries, result.Steps);
             }
             result.TotalDrop = lowest;

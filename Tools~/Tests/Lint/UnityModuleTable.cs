@@ -90,7 +90,7 @@ namespace HookeRope.Tests.Lint
                 "HeaderAttribute", "HelpURLAttribute", "HideFlags", "LayerMask", "LogType", "Material", "Mesh",
                 "MeshFilter", "MeshRenderer", "MeshTopology", "MinAttribute", "MissingReferenceException",
                 "MonoBehaviour", "Object", "PrimitiveType", "PropertyAttribute", "QualitySettings", "Quaternion",
-                "RangeAttribute", "Renderer", "RequireComponent", "ScriptableObject", "SerializeField", "Shader",
+                "RangeAttribute", "Rect", "Renderer", "RequireComponent", "ScriptableObject", "SerializeField", "Shader",
                 "Texture", "Texture2D", "TextureFormat", "TextureWrapMode", "Time", "TooltipAttribute", "Transform",
                 "UnityException", "Vector3", "WaitForFixedUpdate", "YieldInstruction");
             Add(CoreModule, "UnityEngine.Events",
@@ -114,7 +114,7 @@ namespace HookeRope.Tests.Lint
             Add(AudioModule, "UnityEngine", "AudioListener", "AudioSource");
 
             // UnityEngine.IMGUIModule (com.unity.modules.imgui).
-            Add(ImguiModule, "UnityEngine", "GUI", "GUIContent", "GUILayout", "GUILayoutOption", "GUIStyle");
+            Add(ImguiModule, "UnityEngine", "GUI", "GUIContent", "GUILayout", "GUILayoutOption", "GUILayoutUtility", "GUIStyle");
 
             // UnityEditor.CoreModule: "Implemented in: UnityEditor.CoreModule".
             Add(EditorCoreModule, "UnityEditor",
@@ -128,6 +128,10 @@ namespace HookeRope.Tests.Lint
                 "InitializeOnLoadAttribute", "ObjectChangeEventStream", "ObjectChangeEvents",
                 "ObjectChangeEvents+ObjectChangeEventsHandler", "ObjectChangeKind");
             Add(EditorCoreModule, "UnityEditor.SceneManagement", "PrefabStage", "PrefabStageUtility");
+            // the shared multi-rope world (issue 18 item 4): "Implemented in: UnityEngine.CoreModule" (SystemInfo) and
+            // "UnityEditor.CoreModule" (AssemblyReloadEvents, UCR Editor/Mono/AssemblyReloadEvents.cs)
+            Add(CoreModule, "UnityEngine", "SystemInfo");
+            Add(EditorCoreModule, "UnityEditor", "AssemblyReloadEvents", "AssemblyReloadEvents+AssemblyReloadCallback");
             return t;
         }
     }

@@ -52,7 +52,7 @@ namespace HookeRope.StandIn.Facts
                 "SpeedInAwake", "OnValidateCalls",
             }));
             Assert.That(SerializedLayout.Of(typeof(ProbeEnd)).Members.Select(m => m.Name), Is.EqualTo(new[] { "point", "m_Weight" }));
-            Assert.That(SerializedLayout.Of(typeof(ElasticRope)).Members.Count, Is.EqualTo(32));
+            Assert.That(SerializedLayout.Of(typeof(ElasticRope)).Members.Count, Is.EqualTo(41), "33 + the 8 fields of the material law (issue 15)");
         }
 
         // ---- Object.Instantiate ---------------------------------------------------------------------------------

@@ -23,6 +23,15 @@ namespace UnityEngine
             remove => s_LogCallbackHandler -= value;
         }
 
+        /// <summary>
+        /// Unity raises this event when the Player application is quitting, and when the Editor exits Play mode (the
+        /// stand-in: when a test exits Play mode, <see cref="HookeRope.StandIn.World.ExitPlayMode"/>).
+        /// </summary>
+        public static event System.Action quitting;
+
+        /// <summary>Stand-in: raises <see cref="quitting"/> (UCR Internal_ApplicationQuit).</summary>
+        internal static void CallQuitting() => quitting?.Invoke();
+
         /// <summary>Stand-in: the console forwards every entry here.</summary>
         internal static void CallLogCallback(string condition, LogType type) => s_LogCallbackHandler?.Invoke(condition, string.Empty, type);
     }

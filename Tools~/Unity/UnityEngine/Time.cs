@@ -25,6 +25,9 @@ namespace UnityEngine
         /// <summary>The time the latest MonoBehaviour.FixedUpdate has started (Read Only), in seconds since the start of the game.</summary>
         public static float fixedTime => (float)s_FixedTime;
 
+        /// <summary>The double precision time the latest MonoBehaviour.FixedUpdate has started (Read Only), in seconds since the start of the game.</summary>
+        public static double fixedTimeAsDouble => s_FixedTime;
+
         /// <summary>The interval in seconds of in-game time at which physics and other fixed frame rate updates are performed.</summary>
         public static float fixedDeltaTime
         {

@@ -50,10 +50,13 @@ namespace HookeRope.Tests.Solver
             return mg + Math.Sqrt(mg * mg + 2.0 * mg * k * FreeFall);
         }
 
-        [TestCase(0.02f, TimeIntegrator.BackwardEuler)]
-        [TestCase(1f / 90f, TimeIntegrator.BackwardEuler)]
-        [TestCase(1f / 90f, TimeIntegrator.Bdf2)]
-        public void BodyFollowsTheLoadParticleAndTheArrestMeetsTheEnergyBalance(float dt, TimeIntegrator integrator)
+        // Backward Euler's numerical damping reads the 50 Hz arrest 3.0 % low (h = 2.5 ms); the solver before the vector
+        // chain solve read −1.1 % only because the folding lanyard gained 292 J in its fold, which made up for the damping.
+        [TestCase(0.02f, TimeIntegrator.BackwardEuler, 3.5)]
+        [TestCase(1f / 90f, TimeIntegrator.BackwardEuler, 2.0)]
+        [TestCase(1f / 90f, TimeIntegrator.Bdf2, 2.0)]
+        [TestCase(0.02f, TimeIntegrator.Bdf2, 2.0)]
+        public void BodyFollowsTheLoadParticleAndTheArrestMeetsTheEnergyBalance(float dt, TimeIntegrator integrator, double tolerancePercent)
         {
             var rope = Lanyard(out int load, out var body, integrator);
             var gravity = rope.Settings.Gravity;
@@ -76,7 +79,7 @@ namespace HookeRope.Tests.Solver
             }
             double expected = Expected();
             TestContext.WriteLine($"{integrator}, dt {dt}: peak {peak:F0} N vs {expected:F0} N ({(peak / expected - 1) * 100:F2} %), gap {worstGap:G3} m, impulse error {worstImpulse:G3} N·s");
-            Assert.That(peak, Is.EqualTo(expected).Within(2).Percent);
+            Assert.That(peak, Is.EqualTo(expected).Within(tolerancePercent).Percent);
             Assert.That(worstGap, Is.LessThan(1e-4), "the body ends each step where the load particle ended");
             Assert.That(worstImpulse, Is.LessThan(1e-3 * Mass), "no impulse lost or made");
         }

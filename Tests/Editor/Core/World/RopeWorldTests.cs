@@ -175,9 +175,12 @@ namespace HookeRope.Tests.Core.World
                 Assert.That(error.InnerException, Is.InstanceOf<ArgumentException>());
                 Assert.That(scene[5].Rope.PositionY[5], Is.LessThan(before), "rope 5 (after the failing one) still stepped: it fell (m)");
                 Assert.That(world.GetLastReport(0).Residual, Is.LessThan(1e-3f), "rope 0 still stepped");
+                Assert.That(world.LastPassFailed(4), Is.True, "the failing rope is flagged");
+                Assert.That(world.LastPassFailed(3) || world.LastPassFailed(5), Is.False, "its neighbours are not");
 
                 world.DisableMesh(4);
                 world.StepAndFillMeshes(Frame);
+                Assert.That(world.LastPassFailed(4), Is.False, "the flag is per pass");
                 Assert.That(world.Count, Is.EqualTo(6), "the world is still usable after the failure");
             }
         }
@@ -262,6 +265,57 @@ namespace HookeRope.Tests.Core.World
                 Assert.Throws<ArgumentOutOfRangeException>(() => world.Step(0f));
                 Assert.Throws<ArgumentOutOfRangeException>(() => world.GetRope(3));
                 Assert.Throws<ArgumentOutOfRangeException>(() => new RopeWorld(0));
+            }
+        }
+
+        [Test]
+        public void ReplaceKeepsThePlaceAndTheSlotAndRejectsARopeAlreadyInTheWorld()
+        {
+            var scene = Scene(3);
+            var rebuilt = Scene(4)[3];
+            using (var world = new RopeWorld(2))
+            {
+                foreach (var sim in scene) world.Add(sim);
+                RopeMeshSlot slot = world.EnableMesh(1);
+                world.StepAndFillMeshes(Frame);
+                Assert.That(world.GetLastStepMilliseconds(1), Is.GreaterThan(0.0), "the step of rope 1 was timed (ms)");
+
+                world.Replace(1, rebuilt);
+                Assert.That(world.GetRope(1), Is.SameAs(rebuilt));
+                Assert.That(world.GetMeshSlot(1), Is.SameAs(slot), "the host's slot stays with the place");
+                Assert.That(world.GetLastReport(1).Substeps, Is.EqualTo(0), "the new rope has not stepped here yet");
+                Assert.That(world.GetLastStepMilliseconds(1), Is.EqualTo(0.0));
+                world.Replace(1, rebuilt);
+                Assert.Throws<ArgumentException>(() => world.Replace(0, rebuilt), "a rope can be in one world once");
+                Assert.Throws<ArgumentNullException>(() => world.Replace(0, null));
+                Assert.Throws<ArgumentOutOfRangeException>(() => world.Replace(3, Scene(1)[0]));
+
+                world.StepAndFillMeshes(Frame);
+                Assert.That(world.GetLastReport(1).Substeps, Is.EqualTo(rebuilt.Rope.Settings.Substeps), "the replacing rope steps in its place");
+                Assert.That(slot.Update.VertexCount, Is.EqualTo(rebuilt.GetVertexCount()), "and its mesh fills the kept slot");
+            }
+        }
+
+        [Test]
+        public void ADisabledSlotKeepsItsLastFill()
+        {
+            var scene = Scene(2);
+            using (var world = new RopeWorld(2))
+            {
+                foreach (var sim in scene) world.Add(sim);
+                RopeMeshSlot kept = world.EnableMesh(0), filled = world.EnableMesh(1);
+                world.StepAndFillMeshes(Frame);
+                int middle = kept.Update.VertexCount / 2;
+                TubeVertex before = kept.Vertices[middle];
+                kept.Enabled = false;
+                for (int f = 0; f < 5; f++) world.StepAndFillMeshes(Frame);
+                Assert.That(kept.FillCount, Is.EqualTo(1), "no fill while disabled");
+                Assert.That(kept.Vertices[middle].PY, Is.EqualTo(before.PY), "the last fill stays (m)");
+                Assert.That(filled.FillCount, Is.EqualTo(6));
+                kept.Enabled = true;
+                world.FillMeshes();
+                Assert.That(kept.FillCount, Is.EqualTo(2));
+                Assert.That(kept.Vertices[middle].PY, Is.LessThan(before.PY), "filled again from the rope that kept sagging (m)");
             }
         }
 

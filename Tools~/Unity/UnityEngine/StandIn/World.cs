@@ -66,8 +66,32 @@ namespace HookeRope.StandIn
             }
         }
 
+        /// <summary>
+        /// The Editor leaving Play mode: Application.quitting is raised ("invoked when exiting Play mode", Scripting
+        /// Reference "Application.quitting"), then every scene object is destroyed (OnDisable, OnDestroy) and Play mode
+        /// ends. The order of the event against the destruction is the stand-in's (approx.: native in Unity).
+        /// </summary>
+        internal static void ExitPlayMode()
+        {
+            if (!IsPlaying) throw new InvalidOperationException("The stand-in is not in Play mode.");
+            Application.CallQuitting();
+            DestroyScene();
+            s_PendingDestroy.Clear();
+            IsPlaying = false;
+        }
+
         /// <summary>Destroys every scene object and clears all stand-in state (time, physics, logs…).</summary>
         internal static void Reset()
+        {
+            DestroyScene();
+            s_Objects.Clear();
+            s_PendingDestroy.Clear();
+            PlayerLoop.Reset();
+            Time.Reset();
+            WorldReset?.Invoke();
+        }
+
+        static void DestroyScene()
         {
             for (int i = s_Objects.Count - 1; i >= 0; i--)
             {
@@ -75,11 +99,6 @@ namespace HookeRope.StandIn
                 var go = s_Objects[i];
                 if (go.IsAlive && go.transform.parent == null) go.DestroyNow();
             }
-            s_Objects.Clear();
-            s_PendingDestroy.Clear();
-            PlayerLoop.Reset();
-            Time.Reset();
-            WorldReset?.Invoke();
         }
     }
 }

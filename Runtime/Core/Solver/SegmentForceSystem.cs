@@ -1,0 +1,191 @@
+using System;
+using System.Runtime.CompilerServices;
+
+namespace HookeRope.Solver
+{
+    /// <summary>
+    /// The block-tridiagonal system of <see cref="ExactChainSolver"/> in the segment force changes δΛ_j (3-vectors,
+    /// N·s²): row j reads −W_j δΛ_{j−1} + (W_j + W_{j+1} + α̃_j n nᵀ + τ_j (I − n nᵀ)) δΛ_j − W_{j+1} δΛ_{j+1} = R_j, with
+    /// W_i = w_i I, or w_i (I − c cᵀ) for a particle held on a surface of normal c. A released or invalid row is
+    /// δΛ_j = −Λ_j (its force returns to zero). Solved by block Thomas elimination in double precision: the 3×3 pivots
+    /// are symmetric positive definite (each is a compliance plus a mobility), so no pivoting is needed; where the
+    /// couplings are isotropic (no contact) the elimination costs one 3×3 inverse and a few scaled adds per segment.
+    /// </summary>
+    internal static class SegmentForceSystem
+    {
+        /// <summary>Solves the system of the current active set and contact set into Step (δΛ).</summary>
+        public static void Solve(ChainState c)
+        {
+            int s = c.SegmentCount;
+            float[] w = c.InverseMass;
+            double[] gi = c.PivotInverse, yx = c.ReducedX, yy = c.ReducedY, yz = c.ReducedZ;
+            double[] rx = c.ResidualX, ry = c.ResidualY, rz = c.ResidualZ;
+            bool[] active = c.Active;
+            bool contacts = c.ContactCount > 0;
+            // forward sweep: S_j = A_j − L_j S_{j−1}⁻¹ U_{j−1}, y_j = R_j − L_j S_{j−1}⁻¹ y_{j−1}
+            double gxx = 1, gxy = 0, gxz = 0, gyy = 1, gyz = 0, gzz = 1, px = 0, py = 0, pz = 0;
+            bool previousActive = false;
+            for (int j = 0; j < s; j++)
+            {
+                double sxx, sxy, sxz, syy, syz, szz, bx, by, bz;
+                if (!active[j])
+                {
+                    sxx = 1; sxy = 0; sxz = 0; syy = 1; syz = 0; szz = 1;
+                    bx = -c.ForceX[j]; by = -c.ForceY[j]; bz = -c.ForceZ[j];
+                }
+                else
+                {
+                    Diagonal(c, j, out sxx, out sxy, out sxz, out syy, out syz, out szz);
+                    bx = rx[j]; by = ry[j]; bz = rz[j];
+                    if (j > 0)
+                    {
+                        if (contacts && c.ContactActive[j])
+                            EliminateHeld(c, j, previousActive, gxx, gxy, gxz, gyy, gyz, gzz, px, py, pz,
+                                ref sxx, ref sxy, ref sxz, ref syy, ref syz, ref szz, ref bx, ref by, ref bz);
+                        else
+                        {
+                            double wj = w[j];
+                            if (previousActive)
+                            {
+                                double k = wj * wj;
+                                sxx -= k * gxx; sxy -= k * gxy; sxz -= k * gxz; syy -= k * gyy; syz -= k * gyz; szz -= k * gzz;
+                            }
+                            bx += wj * (gxx * px + gxy * py + gxz * pz);
+                            by += wj * (gxy * px + gyy * py + gyz * pz);
+                            bz += wj * (gxz * px + gyz * py + gzz * pz);
+                        }
+                    }
+                }
+                Invert(sxx, sxy, sxz, syy, syz, szz, out gxx, out gxy, out gxz, out gyy, out gyz, out gzz);
+                int b = 6 * j;
+                gi[b] = gxx; gi[b + 1] = gxy; gi[b + 2] = gxz; gi[b + 3] = gyy; gi[b + 4] = gyz; gi[b + 5] = gzz;
+                yx[j] = bx; yy[j] = by; yz[j] = bz;
+                px = bx; py = by; pz = bz;
+                previousActive = active[j];
+            }
+            // back substitution: δ_j = S_j⁻¹ (y_j − U_j δ_{j+1}), U_j = −W_{j+1} on an active row
+            double[] dx = c.StepX, dy = c.StepY, dz = c.StepZ;
+            double nx = 0, ny = 0, nz = 0;
+            for (int j = s - 1; j >= 0; j--)
+            {
+                double vx = yx[j], vy = yy[j], vz = yz[j];
+                if (active[j] && j + 1 < s)
+                {
+                    Mobility(c, j + 1, nx, ny, nz, out double mx, out double my, out double mz);
+                    vx += mx; vy += my; vz += mz;
+                }
+                int b = 6 * j;
+                double ox = gi[b] * vx + gi[b + 1] * vy + gi[b + 2] * vz;
+                double oy = gi[b + 1] * vx + gi[b + 3] * vy + gi[b + 4] * vz;
+                double oz = gi[b + 2] * vx + gi[b + 4] * vy + gi[b + 5] * vz;
+                dx[j] = ox; dy[j] = oy; dz[j] = oz;
+                nx = ox; ny = oy; nz = oz;
+            }
+        }
+
+        /// <summary>A_j = W_j + W_{j+1} + α̃ n nᵀ + τ (I − n nᵀ) (n normalised in double: τ may be 10⁶ times the rest).</summary>
+        private static void Diagonal(ChainState c, int j, out double xx, out double xy, out double xz, out double yy, out double yz, out double zz)
+        {
+            double nx = c.DirX[j], ny = c.DirY[j], nz = c.DirZ[j];
+            double unit = 1.0 / Math.Sqrt(nx * nx + ny * ny + nz * nz);
+            nx *= unit; ny *= unit; nz *= unit;
+            double tau = c.TransverseCompliance[j], d = c.AxialCompliance[j] - tau;
+            double m = (double)c.InverseMass[j] + c.InverseMass[j + 1] + tau;
+            xx = m + d * nx * nx; yy = m + d * ny * ny; zz = m + d * nz * nz;
+            xy = d * nx * ny; xz = d * nx * nz; yz = d * ny * nz;
+            if (c.ContactCount > 0)
+            {
+                SubtractHeldNormal(c, j, ref xx, ref xy, ref xz, ref yy, ref yz, ref zz);
+                SubtractHeldNormal(c, j + 1, ref xx, ref xy, ref xz, ref yy, ref yz, ref zz);
+            }
+        }
+
+        /// <summary>W_i = w (I − c cᵀ) for a held contact: subtracts w c cᵀ from a diagonal block.</summary>
+        private static void SubtractHeldNormal(ChainState c, int i, ref double xx, ref double xy, ref double xz, ref double yy, ref double yz, ref double zz)
+        {
+            if (!c.ContactActive[i]) return;
+            double w = c.InverseMass[i], nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
+            xx -= w * nx * nx; xy -= w * nx * ny; xz -= w * nx * nz; yy -= w * ny * ny; yz -= w * ny * nz; zz -= w * nz * nz;
+        }
+
+        /// <summary>The elimination step through a held contact particle j: S −= W G W (when the row before is active), y += W G y_{j−1}.</summary>
+        private static void EliminateHeld(ChainState c, int j, bool previousActive,
+            double gxx, double gxy, double gxz, double gyy, double gyz, double gzz, double px, double py, double pz,
+            ref double sxx, ref double sxy, ref double sxz, ref double syy, ref double syz, ref double szz,
+            ref double bx, ref double by, ref double bz)
+        {
+            // G y_{j−1}, then W of it
+            double tx = gxx * px + gxy * py + gxz * pz, ty = gxy * px + gyy * py + gyz * pz, tz = gxz * px + gyz * py + gzz * pz;
+            Mobility(c, j, tx, ty, tz, out double mx, out double my, out double mz);
+            bx += mx; by += my; bz += mz;
+            if (!previousActive) return;
+            // W G W column by column (W and G symmetric, so the product is too)
+            Mobility(c, j, 1, 0, 0, out double w0x, out double w0y, out double w0z);
+            Mobility(c, j, 0, 1, 0, out double w1x, out double w1y, out double w1z);
+            Mobility(c, j, 0, 0, 1, out double w2x, out double w2y, out double w2z);
+            GW(gxx, gxy, gxz, gyy, gyz, gzz, w0x, w0y, w0z, out double a0x, out double a0y, out double a0z);
+            GW(gxx, gxy, gxz, gyy, gyz, gzz, w1x, w1y, w1z, out double a1x, out double a1y, out double a1z);
+            GW(gxx, gxy, gxz, gyy, gyz, gzz, w2x, w2y, w2z, out double a2x, out double a2y, out double a2z);
+            Mobility(c, j, a0x, a0y, a0z, out double c0x, out double c0y, out double c0z);
+            Mobility(c, j, a1x, a1y, a1z, out _, out double c1y, out double c1z);
+            Mobility(c, j, a2x, a2y, a2z, out _, out _, out double c2z);
+            sxx -= c0x; sxy -= c0y; sxz -= c0z; syy -= c1y; syz -= c1z; szz -= c2z;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void GW(double gxx, double gxy, double gxz, double gyy, double gyz, double gzz, double vx, double vy, double vz, out double rx, out double ry, out double rz)
+        {
+            rx = gxx * vx + gxy * vy + gxz * vz;
+            ry = gxy * vx + gyy * vy + gyz * vz;
+            rz = gxz * vx + gyz * vy + gzz * vz;
+        }
+
+        /// <summary>r = W_i v (1/kg · N·s² = m): w v, or w (v − c (c·v)) with a held contact.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static void Mobility(ChainState c, int i, double vx, double vy, double vz, out double rx, out double ry, out double rz)
+        {
+            double w = c.InverseMass[i];
+            if (c.ContactCount > 0 && c.ContactActive[i])
+            {
+                double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
+                double along = nx * vx + ny * vy + nz * vz;
+                vx -= nx * along; vy -= ny * along; vz -= nz * along;
+            }
+            rx = w * vx; ry = w * vy; rz = w * vz;
+        }
+
+        /// <summary>nᵀ W_i n for a unit n (1/kg).</summary>
+        public static double AlongMobility(ChainState c, int i, double nx, double ny, double nz)
+        {
+            Mobility(c, i, nx, ny, nz, out double rx, out double ry, out double rz);
+            return nx * rx + ny * ry + nz * rz;
+        }
+
+        /// <summary>The pull δΛ_i − δΛ_{i−1} (N·s²) of this solution on particle i (a broken segment carries none).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static void Pull(ChainState c, int i, out double px, out double py, out double pz)
+        {
+            px = 0; py = 0; pz = 0;
+            if (i < c.SegmentCount && !c.Broken[i]) { px = c.StepX[i]; py = c.StepY[i]; pz = c.StepZ[i]; }
+            if (i > 0 && !c.Broken[i - 1]) { px -= c.StepX[i - 1]; py -= c.StepY[i - 1]; pz -= c.StepZ[i - 1]; }
+        }
+
+        /// <summary>Particle i's motion W_i (pull) under this solution (m), without a held contact's gap allowance.</summary>
+        public static void Motion(ChainState c, int i, out double mx, out double my, out double mz)
+        {
+            Pull(c, i, out double px, out double py, out double pz);
+            Mobility(c, i, px, py, pz, out mx, out my, out mz);
+        }
+
+        /// <summary>Inverse of a symmetric 3×3 matrix (by cofactors, in double).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static void Invert(double xx, double xy, double xz, double yy, double yz, double zz,
+            out double ixx, out double ixy, out double ixz, out double iyy, out double iyz, out double izz)
+        {
+            double cxx = yy * zz - yz * yz, cxy = xz * yz - xy * zz, cxz = xy * yz - xz * yy;
+            double inverse = 1.0 / (xx * cxx + xy * cxy + xz * cxz);
+            ixx = cxx * inverse; ixy = cxy * inverse; ixz = cxz * inverse;
+            iyy = (xx * zz - xz * xz) * inverse; iyz = (xy * xz - xx * yz) * inverse; izz = (xx * yy - xy * xy) * inverse;
+        }
+    }
+}
