@@ -31,6 +31,9 @@ namespace HookeRope.Solver
         /// <summary>Number of colliders added so far.</summary>
         public int ColliderCount => colliders.Count;
 
+        /// <summary>The colliders (tests and the bench compare the broad phase with the brute-force pass through it).</summary>
+        internal CollisionSet Collisions => colliders;
+
         /// <summary>
         /// Pins a particle to a kinematic target (world m) that the host moves with <see cref="SetPinTarget"/>
         /// (an XR hand, an anchor). compliance (m/N, finite, ≥ 0): 0 = rigid — the particle becomes kinematic
@@ -278,7 +281,9 @@ namespace HookeRope.Solver
         {
             if (shape.Rotation.LengthSquared == 0f) throw new ArgumentException("shape must be built with ColliderShape.Plane/Sphere/Capsule/Box", nameof(shape));
             chain.EnsureContacts();
-            return colliders.Add(shape, shape.Position - Origin);
+            int index = colliders.Add(shape, shape.Position - Origin);
+            colliders.Reserve(chain.ParticleCount);
+            return index;
         }
 
         /// <summary>
