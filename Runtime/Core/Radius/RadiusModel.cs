@@ -30,6 +30,9 @@ namespace HookeRope.Radius
         private float minRadius;
         private BreakReason breakReason;
         private bool broken;
+        private bool materialNeck;
+        private float materialSoftening = -1f;
+        private float materialUltimateStrain = float.PositiveInfinity;
 
         /// <summary>
         /// Creates the model for a rope with rest radius <paramref name="restRadius"/> (m, finite, &gt; 0) and the
@@ -244,6 +247,26 @@ namespace HookeRope.Radius
             for (int k = 0; k < ringSegments.Length; k++) radii[k] = RadiusAt(ringSegments[k], ringFractions[k]);
         }
 
+        /// <summary>True when the neck follows the rope's elastic–plastic material (<see cref="FollowMaterial"/>) instead of the radius threshold.</summary>
+        public bool FollowsMaterial => materialNeck;
+
+        /// <summary>
+        /// The elastic–plastic material drives the neck (issue 15; call before <see cref="Update"/>): with
+        /// <paramref name="plastic"/> the neck forms when the material's plastic strain localises at the defect, i.e. when
+        /// <paramref name="softening"/> (the neck segment's softening progress, 0 at onset … 1 at the ultimate strain; &lt; 0
+        /// before onset) reaches 0, instead of at <see cref="RadiusSettings.NeckRadiusFraction"/>. In Zone mode the waist's
+        /// area follows the force the neck still carries: ρ² = 1 − s (the neck's true stress stays at its onset value while the
+        /// engineering stress falls). The break is at <paramref name="ultimateStrain"/> (the defect segment's strain) instead of
+        /// <see cref="RadiusSettings.BreakStrain"/>, or earlier when the waist falls below
+        /// <see cref="RadiusSettings.BreakRadiusFraction"/>·R. <paramref name="plastic"/> false restores the elastic-rope rules.
+        /// </summary>
+        public void FollowMaterial(bool plastic, float softening, float ultimateStrain)
+        {
+            materialNeck = plastic;
+            materialSoftening = plastic ? softening : -1f;
+            materialUltimateStrain = plastic ? ultimateStrain : float.PositiveInfinity;
+        }
+
         /// <summary>
         /// Tells the model that the host broke the rope: the neck is frozen at its present depth (Zone) or
         /// dropped (Paper), the break decision resets to None and no further break is asked for.
@@ -339,6 +362,19 @@ namespace HookeRope.Radius
             double strain = segmentStretch[defectSegment] - 1.0;
             double onset = PoissonRadius.StrainAtRatio(s.NeckRadiusFraction, s.PoissonRatio);
             float rMin = s.NeckRadiusFraction * restRadius;
+            if (materialNeck)
+            {
+                // the plastic material: onset where its strain localises, the waist's area following the neck's force
+                if (materialSoftening < 0f) { neckDepth = 0f; paperNecking = false; zoneWaistSquared = 1f; return; }
+                if (s.NeckMode == NeckMode.Zone)
+                {
+                    neckDepth = materialSoftening;
+                    zoneWaistSquared = 1f - materialSoftening;
+                    paperNecking = false;
+                    return;
+                }
+                onset = double.NegativeInfinity;
+            }
             if (s.NeckMode == NeckMode.Zone)
             {
                 double depth = (strain - onset) / s.NeckGrowthStrain;
@@ -361,7 +397,8 @@ namespace HookeRope.Radius
 
         /// <summary>
         /// The one fracture criterion: with <see cref="RadiusSettings.Fracture"/> on, the defect segment breaks when
-        /// its strain reaches <see cref="RadiusSettings.BreakStrain"/>, or, only with <see cref="RadiusSettings.Necking"/>
+        /// its strain reaches <see cref="RadiusSettings.BreakStrain"/> (the material's ultimate strain when the neck
+        /// <see cref="FollowsMaterial"/>), or, only with <see cref="RadiusSettings.Necking"/>
         /// on, when the neck radius falls below <see cref="RadiusSettings.BreakRadiusFraction"/>·R.
         /// </summary>
         private void DecideBreak()
@@ -369,7 +406,8 @@ namespace HookeRope.Radius
             RadiusSettings s = Settings;
             breakReason = BreakReason.None;
             if (!s.Fracture || broken) return;
-            if (segmentStretch[defectSegment] - 1f >= s.BreakStrain) breakReason = BreakReason.Strain;
+            float breakStrain = materialNeck ? materialUltimateStrain : s.BreakStrain;
+            if (segmentStretch[defectSegment] - 1f >= breakStrain) breakReason = BreakReason.Strain;
             else if (s.Necking && neckRadius < s.BreakRadiusFraction * restRadius) breakReason = BreakReason.NeckRadius;
         }
     }

@@ -6,7 +6,7 @@ namespace HookeRope.Solver
     {
         /// <summary>
         /// The recoil of a break at the middle of <paramref name="segment"/> (still intact): the elastic energy the segment
-        /// holds, E = ½·C²/α (J; C = l − L, none when slack on a tension-only rope or inextensible), goes into the two end
+        /// holds, E = ½·C²/α (J; C = l − L, L_p for a plastic segment; none when slack on a tension-only rope or inextensible), goes into the two end
         /// particles as equal and opposite impulses p along the segment's direction n, apart from the cut:
         /// Δv_j = −p·w_j·n, Δv_{j+1} = +p·w_{j+1}·n (w = 1/m, 0 for a kinematic particle). p solves
         /// p²/(2μ) + p·u = E (μ = 1/(w_j + w_{j+1}), u = (v_{j+1} − v_j)·n the separation speed), so the kinetic energy
@@ -26,9 +26,9 @@ namespace HookeRope.Solver
             int a = segment, b = segment + 1;
             double compliance = chain.Compliance[segment];
             if (!(compliance > 0.0)) return 0.0;
-            double dx = (double)chain.X[b] - chain.X[a], dy = (double)chain.Y[b] - chain.Y[a], dz = (double)chain.Z[b] - chain.Z[a];
+            chain.Span(segment, out double dx, out double dy, out double dz);
             double length = Math.Sqrt(dx * dx + dy * dy + dz * dz);
-            double c = length - chain.RestLength[segment];
+            double c = length - chain.CurrentRest(segment);   // a plastic segment stores only what lies beyond its permanent set
             if (settings.Tension == TensionModel.TensionOnly && c < 0.0) return 0.0;
             double energy = 0.5 * c * c / compliance;
             if (!(energy > 0.0) || double.IsInfinity(energy)) return 0.0;
@@ -65,15 +65,15 @@ namespace HookeRope.Solver
         }
 
         /// <summary>
-        /// Stretch l − L (m) of the intact segment on the far side of end particle <paramref name="particle"/> (side −1: the
+        /// Stretch l − L (m; L_p for a plastic segment) of the intact segment on the far side of end particle <paramref name="particle"/> (side −1: the
         /// segment before it, +1: after it); +∞ when there is none (a free end has nothing to fold into).
         /// </summary>
         private double StretchBehind(int particle, int side)
         {
             int j = side < 0 ? particle - 1 : particle;
             if (j < 0 || j >= chain.SegmentCount || chain.Broken[j]) return double.PositiveInfinity;
-            double dx = (double)chain.X[j + 1] - chain.X[j], dy = (double)chain.Y[j + 1] - chain.Y[j], dz = (double)chain.Z[j + 1] - chain.Z[j];
-            return Math.Sqrt(dx * dx + dy * dy + dz * dz) - chain.RestLength[j];
+            chain.Span(j, out double dx, out double dy, out double dz);
+            return Math.Sqrt(dx * dx + dy * dy + dz * dz) - chain.CurrentRest(j);
         }
 
         /// <summary>Adds (dx, dy, dz) m/s to particle i's velocity and to its integrator history.</summary>

@@ -182,6 +182,13 @@ namespace HookeRope.Lab.Bench
             names.Add("collisions on (one plane, never touched)");
             actions.Add(() => collider.Rope.Step(dt));
 
+            var farColliders = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), false);
+            farColliders.Rope.AddCollider(ColliderShape.Plane(new Float3(0f, -100f, 0f), new Float3(0f, 1f, 0f)));
+            for (int k = 0; k < 9; k++)
+                farColliders.Rope.AddCollider(ColliderShape.Sphere(new Float3(20f * MathF.Cos(0.7f * k), -5f, 20f * MathF.Sin(0.7f * k)), 1f));
+            names.Add("collisions on (ten colliders out of reach: a plane, nine spheres)");
+            actions.Add(() => farColliders.Rope.Step(dt));
+
             var radiusOff = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), true);
             radiusOff.Simulation.RadiusSettings.PoissonThinning = false;
             radiusOff.Simulation.RadiusSettings.Necking = false;

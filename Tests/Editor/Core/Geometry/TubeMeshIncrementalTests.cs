@@ -177,6 +177,9 @@ namespace HookeRope.Tests.Core.Geometry
         public void AStaticRopeSkipsTheMeshAndMovedPositionsSkipTheRadiusWork()
         {
             RopeSimulation sim = RestingRope();
+            // a few steps first: the solver resolves the float rounding of the laid-out particle positions (exact to below
+            // float resolution, issue 14 item 5), after which the rope does not move at all
+            for (int i = 0; i < 10; i++) sim.Step(1f / 90f);
             var vertices = new TubeVertex[sim.GetVertexCount()];
             var indices = new int[sim.GetIndexCount()];
             sim.FillMesh(vertices, indices);
