@@ -82,6 +82,32 @@ namespace HookeRope.Geometry
         /// </summary>
         internal const float FoldSkew = 0.5f;
 
+        /// <summary>
+        /// Ring <paramref name="k"/> as the last build drew it: centre (m, relative to the build's frame origin), unit
+        /// tangent (the normal of its plane), drawn radius (m) and whether it is one of a fold tip's two rings.
+        /// For tests and the lab's figures.
+        /// </summary>
+        internal void DrawnRing(int k, out Float3 centre, out Float3 tangent, out float radius, out bool tip)
+        {
+            centre = centers[k];
+            tangent = tangents[k];
+            radius = ringRadii[k];
+            tip = foldTip[k];
+        }
+
+        /// <summary>Rings of the last build that are fold tips, drawn thinner than their radius, or given strip normals (all 0 on a taut rope).</summary>
+        internal void FoldCounts(out int tips, out int thinnedRings, out int stripRings)
+        {
+            tips = 0; thinnedRings = 0; stripRings = 0;
+            int rings = layout.RingCount;
+            for (int k = 0; k < rings && k < foldTip.Length; k++)
+            {
+                if (foldTip[k]) tips++;
+                if (thinned[k]) thinnedRings++;
+                if (stripNormals[k]) stripRings++;
+            }
+        }
+
         private void EnsureFoldStorage(int size)
         {
             if (capSquared.Length >= size) return;

@@ -71,30 +71,15 @@ namespace HookeRope.Tests.Core.Geometry
             return new RopeSimulation(rope, radius, mesh);
         }
 
-        /// <summary>The case's simulation <paramref name="after"/> host steps after the break (or release).</summary>
-        internal static RopeSimulation Run(Case c, int after)
+        /// <summary>What one host step's mesh shows (areas in R², lengths in R).</summary>
+        internal struct Frame
         {
-            var sim = Cord(c, out int pin);
-            int step = 0;
-            bool Done() => c.ReleaseAtStrain > 0f ? sim.Readouts.Strain >= c.ReleaseAtStrain : sim.IsBroken;
-            while (!Done() && step < 400)
-            {
-                step++;
-                sim.Rope.SetPinTarget(pin, new Float3(1f + 0.5f * step * HostStep, 0f, 0f));
-                sim.Step(HostStep);
-            }
-            if (c.ReleaseAtStrain > 0f) sim.Rope.ReleasePin(pin);
-            for (int k = 1; k <= after; k++)
-            {
-                step++;
-                if (c.ReleaseAtStrain == 0f) sim.Rope.SetPinTarget(pin, new Float3(1f + 0.5f * step * HostStep, 0f, 0f));
-                sim.Step(HostStep);
-            }
-            return sim;
+            public int Inverted, Crossings, Tips, BadEdges;
+            public double InvertedArea, LeastClearance, LeastNormalCosine;
         }
 
-        /// <summary>Inverted tube and cap triangles at each host step from the break (or release) to <paramref name="steps"/> after it, and their areas in R².</summary>
-        internal static int[] Census(Case c, int steps, out double[] areas, out int triangles)
+        /// <summary>The mesh at each host step from the break (or release) to <paramref name="steps"/> after it.</summary>
+        internal static Frame[] Census(Case c, int steps, out int triangles)
         {
             var sim = Cord(c, out int pin);
             int step = 0;
@@ -107,11 +92,11 @@ namespace HookeRope.Tests.Core.Geometry
             }
             Assert.That(Done(), Is.True, c.Name + ": breaks or reaches the strain within 400 steps");
             if (c.ReleaseAtStrain > 0f) sim.Rope.ReleasePin(pin);
-            var counts = new int[steps + 1];
-            areas = new double[steps + 1];
+            var frames = new Frame[steps + 1];
             triangles = 0;
             var vertices = new TubeVertex[0];
             var indices = new int[0];
+            var broken = new bool[c.Segments];
             for (int k = 0; k <= steps; k++)
             {
                 if (k > 0)
@@ -123,28 +108,61 @@ namespace HookeRope.Tests.Core.Geometry
                 if (vertices.Length < sim.GetVertexCount()) vertices = new TubeVertex[sim.GetVertexCount()];
                 if (indices.Length < sim.GetIndexCount()) indices = new int[sim.GetIndexCount()];
                 var update = sim.FillMesh(vertices, indices);
-                counts[k] = MeshChecks.Inverted(vertices, indices, 0, update.TubeIndexCount, out double area);
-                areas[k] = area / (R * R);
+                sim.Rope.BrokenSegments.CopyTo(broken);
+                ref Frame f = ref frames[k];
+                f.Inverted = MeshChecks.Inverted(vertices, indices, 0, update.TubeIndexCount, out double area);
+                f.InvertedArea = area / (R * R);
+                f.Crossings = MeshChecks.RingCrossings(sim.Mesh.Builder, broken, out double clearance, out f.Tips);
+                f.LeastClearance = clearance / R;
+                f.LeastNormalCosine = MeshChecks.LeastNormalCosine(vertices, indices, 0, update.TubeIndexCount, 1e-6 * R * R);
+                MeshChecks.Topology(vertices, update.VertexCount, indices, 0, update.TubeIndexCount, out _, out _, out _, out f.BadEdges, out int directions);
+                f.BadEdges += directions;
+                Assert.That(MeshChecks.AllFiniteAndUnit(vertices, update.VertexCount), Is.True, c.Name + ": finite, unit normals and tangents");
                 triangles = Math.Max(triangles, update.TubeIndexCount / 3);
             }
-            return counts;
+            return frames;
         }
 
         [TestCaseSource(nameof(Cases))]
         public void NoTriangleIsInvertedForTwentyStepsAfterTheBreak(Case c)
         {
-            int[] counts = Census(c, 20, out double[] areas, out int triangles);
+            Frame[] frames = Census(c, 20, out int triangles);
             var line = new StringBuilder();
-            int total = 0;
+            int total = 0, tips = 0, open = 0;
             double area = 0.0;
-            for (int k = 0; k < counts.Length; k++)
+            foreach (Frame f in frames)
             {
-                line.Append(counts[k]).Append(' ');
-                total += counts[k];
-                area += areas[k];
+                line.Append(f.Inverted).Append(' ');
+                total += f.Inverted;
+                area += f.InvertedArea;
+                tips = Math.Max(tips, f.Tips);
+                open += f.BadEdges;
             }
-            TestContext.WriteLine($"{c.Name}: inverted per step 0-20: {line}(total {total}, {area:F2} R², of up to {triangles} triangles)");
+            TestContext.WriteLine($"{c.Name}: inverted per step 0-20: {line}(total {total}, {area:F2} R², of up to {triangles} triangles; up to {tips} fold-tip rings)");
             Assert.That(total, Is.EqualTo(0));
+            Assert.That(open, Is.EqualTo(0), "every tube and cap edge shared by two triangles, wound one way");
+        }
+
+        [TestCaseSource(nameof(Cases))]
+        public void ConsecutiveRingsNeverCrossForTwentyStepsAfterTheBreak(Case c)
+        {
+            Frame[] frames = Census(c, 20, out _);
+            int crossings = 0;
+            double least = double.MaxValue;
+            foreach (Frame f in frames) { crossings += f.Crossings; least = Math.Min(least, f.LeastClearance); }
+            TestContext.WriteLine($"{c.Name}: ring pairs crossing over 21 steps {crossings}, least clearance {least:E3} R");
+            Assert.That(crossings, Is.EqualTo(0));
+            Assert.That(least, Is.GreaterThan(0.0));
+        }
+
+        [TestCaseSource(nameof(Cases))]
+        public void VertexNormalsFaceEveryTriangleAroundThemForTwentyStepsAfterTheBreak(Case c)
+        {
+            Frame[] frames = Census(c, 20, out _);
+            double least = double.MaxValue;
+            foreach (Frame f in frames) least = Math.Min(least, f.LeastNormalCosine);
+            TestContext.WriteLine($"{c.Name}: least cosine between a vertex normal and a triangle around it over 21 steps {least:F4}");
+            Assert.That(least, Is.GreaterThan(0.0), "no vertex is lit from behind on a triangle it belongs to");
         }
     }
 }
