@@ -155,7 +155,7 @@ namespace HookeRope.Geometry
                 }
                 if (!found) { tx = px; ty = py; tz = pz; }
                 if (k == first) foldTip[k] = false;
-                else { foldTip[k] = false; RepairFold(k, ref tx, ref ty, ref tz); }
+                else { foldTip[k] = false; if (!ClearOfFold(k, tx, ty, tz)) RepairFold(k, ref tx, ref ty, ref tz); }
                 var tangent = new Float3(tx, ty, tz);
                 if (k == first)
                 {
