@@ -131,12 +131,15 @@ namespace HookeRope.Geometry
         /// rope of <paramref name="segmentCount"/> segments and rest radius <paramref name="restRadius"/> (m; 0 = unknown,
         /// sets the burr fibres); <paramref name="neckStations"/> (null = none) holds a Zone neck's stations
         /// (<see cref="RingLayout.Adapted"/> with one ring per segment), drawn while the neck is active. Call
-        /// <see cref="PlanRings"/> before each build.
+        /// <see cref="PlanRings"/> before each build. <paramref name="meanRingsPerSegment"/> is the ring budget's cap
+        /// (<see cref="AdaptiveRings.MaxMeanRingsPerSegment"/>; the tests pass <see cref="AdaptiveRings.MaxRingsPerSegment"/>
+        /// for the placement without a budget).
         /// </summary>
-        internal static TubeMeshBuilder Adaptive(TubeMeshSettings settings, int segmentCount, float restRadius, RingLayout neckStations)
+        internal static TubeMeshBuilder Adaptive(TubeMeshSettings settings, int segmentCount, float restRadius, RingLayout neckStations,
+            int meanRingsPerSegment = AdaptiveRings.MaxMeanRingsPerSegment)
         {
             if (settings == null) throw new ArgumentNullException(nameof(settings));
-            var rings = new AdaptiveRings(segmentCount, settings.RadialSegments, neckStations);
+            var rings = new AdaptiveRings(segmentCount, settings.RadialSegments, neckStations, meanRingsPerSegment);
             return new TubeMeshBuilder(settings, RingLayout.Rewritable(segmentCount, rings.MostRings), rings, restRadius);
         }
 

@@ -38,7 +38,7 @@ namespace HookeRope.Tests.Components
 
         static void AssertMeshFollowsRope(ElasticRope rope, Mesh mesh)
         {
-            var vertices = mesh.vertices;
+            var vertices = MeshInUse.Vertices(mesh);
             Assert.That(vertices.Length, Is.GreaterThan(0));
             var bounds = mesh.bounds;
             Vector3 min = bounds.center - bounds.size * 0.5f, max = bounds.center + bounds.size * 0.5f;
@@ -173,7 +173,10 @@ namespace HookeRope.Tests.Components
             var indices = new int[simulation.GetIndexCount()];
             var update = simulation.FillMesh(x, y, z, vertices, indices, radiusScale: 0.5f);
 
-            var uploaded = renderer.Mesh.vertices;
+            // the vertex buffer holds the ring budget's most (sized once), the sub-meshes the vertices in use
+            Assert.That(renderer.Mesh.vertexCount, Is.EqualTo(simulation.GetVertexCapacity()), "vertex buffer = capacity");
+            Assert.That(renderer.Mesh.GetSubMesh(0).vertexCount, Is.EqualTo(update.VertexCount), "vertices in use");
+            var uploaded = MeshInUse.Vertices(renderer.Mesh);
             Assert.That(uploaded.Length, Is.EqualTo(update.VertexCount));
             for (int v = 0; v < update.VertexCount; v++)
             {
