@@ -119,7 +119,10 @@ namespace HookeRope.Geometry
         /// </summary>
         public int CapOfPiece(int a, int b) => capBefore[b] - capBefore[a];
 
-        /// <summary>True when the last plan's demand of some piece exceeded its cap: its rings were redistributed within the budget.</summary>
+        /// <summary>
+        /// True when the cap limited the last plan's budget of some piece: the budget step that holds its demand is above its
+        /// cap, so the piece keeps the cap and its rings are redistributed within it (false: every budget is as without the cap).
+        /// </summary>
         public bool BudgetHit { get; private set; }
 
         /// <summary>The neck's stations (null = none): a broken segment keeps them (<see cref="KeepsNeckStations"/>).</summary>
@@ -232,7 +235,7 @@ namespace HookeRope.Geometry
                 int segments = b - a;
                 bool withZone = zoneActive && zone != null;
                 int demand = Demand(a, b, withZone, 1f);
-                if (demand > CapOfPiece(a, b)) BudgetHit = true;
+                if (Step(demand, segments) > CapOfPiece(a, b)) BudgetHit = true;
                 int current = budget[a];
                 int wanted = next[a];
                 int comfortable = demand > current ? 0 : Demand(a, b, withZone, ShrinkMargin);

@@ -155,7 +155,7 @@ namespace HookeRope.Geometry
         /// <summary>Adaptive builders: incremented whenever the counts the builder reports change (a topology change ahead); 0 otherwise.</summary>
         internal int BudgetVersion => adaptive?.BudgetVersion ?? 0;
 
-        /// <summary>Adaptive builders: true when the last <see cref="PlanRings"/> found a piece wanting more rings than its ring budget's cap (they were redistributed within it); false otherwise.</summary>
+        /// <summary>Adaptive builders: true when the ring budget's cap limited a piece's budget in the last <see cref="PlanRings"/> (<see cref="AdaptiveRings.BudgetHit"/>); false otherwise.</summary>
         internal bool BudgetHit => adaptive?.BudgetHit ?? false;
 
         /// <summary>Adaptive builders: the tolerance of the drawn surface as a fraction of the drawn radius; 0 otherwise.</summary>
