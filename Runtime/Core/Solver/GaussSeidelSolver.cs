@@ -1,5 +1,4 @@
 using System;
-using System.Diagnostics;
 
 namespace HookeRope.Solver
 {
@@ -11,51 +10,67 @@ namespace HookeRope.Solver
     {
         public static void Iterate(ChainState c, double h, double beta, bool tensionOnly)
         {
-            int s = c.SegmentCount;
             double invH2 = 1.0 / (h * h);
             double gamma = beta / h; // γ = α̃·β̃/h with β̃ = h²·β·k, k = 1/α
-            float[] w = c.InverseMass, rest = c.RestLength, compliance = c.Compliance;
-            float[] dx = c.DX, dy = c.DY, dz = c.DZ;
-            bool[] broken = c.Broken;
-            double[] lambda = c.Lambda;
-            // ChainState sizes every particle array from SegmentCount + 1 and every segment array from SegmentCount
-            Debug.Assert(w.Length == s + 1 && dx.Length == s + 1 && dy.Length == s + 1 && dz.Length == s + 1
-                && rest.Length == s && compliance.Length == s && broken.Length == s && lambda.Length == s, "ChainState arrays sized from SegmentCount");
+            float[] w = c.InverseMass, dx = c.DX, dy = c.DY, dz = c.DZ, px = c.PrevX, py = c.PrevY, pz = c.PrevZ, lx = c.LowX, ly = c.LowY, lz = c.LowZ;
+            int s = c.SegmentCount;
+            if (w == null || dx == null || dy == null || dz == null || px == null || py == null || pz == null || lx == null || ly == null || lz == null)
+                ChainState.ThrowSizes();
+            // every array viewed as spans of exactly s entries, the segment's first particle (A, index j) and its second (B,
+            // index j + 1): spans of one known length, the loop bound, index without bounds checks (an array indexed j + 1 would not)
+            ReadOnlySpan<float> wA = w.AsSpan(0, s), wB = w.AsSpan(1, s);
+            Span<float> dxA = dx.AsSpan(0, s), dyA = dy.AsSpan(0, s), dzA = dz.AsSpan(0, s), dxB = dx.AsSpan(1, s), dyB = dy.AsSpan(1, s), dzB = dz.AsSpan(1, s);
+            ReadOnlySpan<float> pxA = px.AsSpan(0, s), pyA = py.AsSpan(0, s), pzA = pz.AsSpan(0, s), pxB = px.AsSpan(1, s), pyB = py.AsSpan(1, s), pzB = pz.AsSpan(1, s);
+            ReadOnlySpan<float> lxA = lx.AsSpan(0, s), lyA = ly.AsSpan(0, s), lzA = lz.AsSpan(0, s), lxB = lx.AsSpan(1, s), lyB = ly.AsSpan(1, s), lzB = lz.AsSpan(1, s);
+            ReadOnlySpan<float> rest = c.RestLength.AsSpan(0, s), compliance = c.Compliance.AsSpan(0, s);
+            ReadOnlySpan<bool> broken = c.Broken.AsSpan(0, s);
+            Span<double> lambda = c.Lambda.AsSpan(0, s);
+            float[] dirX = c.DirX, dirY = c.DirY, dirZ = c.DirZ;
             bool contacts = c.ContactCount > 0;
             SegmentPlasticity plastic = c.Plasticity;
-            float wa = w[0];
+            // particle a = j is carried from the projection before (its displacement as that projection left it): each
+            // particle's displacement is loaded and stored once per sweep
+            float wa = wA[0], dxa = dxA[0], dya = dyA[0], dza = dzA[0];
             for (int j = 0; j < s; j++)
             {
-                float wb = w[j + 1];
-                if (broken[j]) { wa = wb; continue; }
+                float wb = wB[j], dxb = dxB[j], dyb = dyB[j], dzb = dzB[j];
                 double alpha = compliance[j];
                 double wSum = (double)wa + wb;
-                if (wSum == 0.0 && alpha == 0.0) { wa = wb; continue; }
-                double len = c.Direction(j, out double ex, out double ey, out double ez, out float ddx, out float ddy, out float ddz);
-                float nx = (float)ex, ny = (float)ey, nz = (float)ez;
-                double alphaTilde = alpha * invH2;
-                double g = alpha > 0.0 ? gamma : 0.0;
-                double rel = g > 0.0 ? nx * ddx + ny * ddy + nz * ddz : 0.0;
-                double restJ = plastic == null ? rest[j] : plastic.Rest(j); // a plastic segment's force is measured from L_p
-                double numerator = -((double)len - restJ) - alphaTilde * lambda[j] - g * rel;
-                if (plastic != null) plastic.ChooseBranch(j, lambda[j], g, wSum, invH2, ref numerator, ref alphaTilde);
-                if (contacts && (c.ContactActive[j] || c.ContactActive[j + 1]))
+                if (!broken[j] && (wSum != 0.0 || alpha != 0.0))
                 {
-                    ProjectWithContacts(c, j, nx, ny, nz, numerator, g, alphaTilde, tensionOnly);
-                    wa = wb;
-                    continue;
+                    float ddx = dxb - dxa, ddy = dyb - dya, ddz = dzb - dza;
+                    double len = ChainState.Normalise(j, ChainState.Component(pxA[j], pxB[j], lxA[j], lxB[j], ddx), ChainState.Component(pyA[j], pyB[j], lyA[j], lyB[j], ddy),
+                        ChainState.Component(pzA[j], pzB[j], lzA[j], lzB[j], ddz), dirX, dirY, dirZ, out double ex, out double ey, out double ez);
+                    float nx = (float)ex, ny = (float)ey, nz = (float)ez;
+                    double alphaTilde = alpha * invH2;
+                    double g = alpha > 0.0 ? gamma : 0.0;
+                    double rel = g > 0.0 ? nx * ddx + ny * ddy + nz * ddz : 0.0;
+                    double restJ = plastic == null ? rest[j] : plastic.Rest(j); // a plastic segment's force is measured from L_p
+                    double numerator = -((double)len - restJ) - alphaTilde * lambda[j] - g * rel;
+                    if (plastic != null) plastic.ChooseBranch(j, lambda[j], g, wSum, invH2, ref numerator, ref alphaTilde);
+                    if (contacts && (c.ContactActive[j] || c.ContactActive[j + 1]))
+                    {
+                        dxA[j] = dxa; dyA[j] = dya; dzA[j] = dza; dxB[j] = dxb; dyB[j] = dyb; dzB[j] = dzb;
+                        ProjectWithContacts(c, j, nx, ny, nz, numerator, g, alphaTilde, tensionOnly);
+                        dxa = dxA[j]; dya = dyA[j]; dza = dzA[j]; dxb = dxB[j]; dyb = dyB[j]; dzb = dzB[j];
+                    }
+                    else
+                    {
+                        double d = numerator / ((1.0 + g) * wSum + alphaTilde);
+                        d = ChainState.LimitToPulling(lambda[j], d, tensionOnly);
+                        if (d != 0.0)
+                        {
+                            lambda[j] += d;
+                            float ma = (float)(wa * d), mb = (float)(wb * d);
+                            dxa -= nx * ma; dya -= ny * ma; dza -= nz * ma;
+                            dxb += nx * mb; dyb += ny * mb; dzb += nz * mb;
+                        }
+                    }
                 }
-                double d = numerator / ((1.0 + g) * wSum + alphaTilde);
-                d = ChainState.LimitToPulling(lambda[j], d, tensionOnly);
-                if (d != 0.0)
-                {
-                    lambda[j] += d;
-                    float a = (float)(wa * d), b = (float)(wb * d);
-                    dx[j] -= nx * a; dy[j] -= ny * a; dz[j] -= nz * a;
-                    dx[j + 1] += nx * b; dy[j + 1] += ny * b; dz[j + 1] += nz * b;
-                }
-                wa = wb;
+                dxA[j] = dxa; dyA[j] = dya; dzA[j] = dza;
+                wa = wb; dxa = dxb; dya = dyb; dza = dzb;
             }
+            dx[s] = dxa; dy[s] = dya; dz[s] = dza;
         }
 
         /// <summary>

@@ -155,18 +155,23 @@ namespace HookeRope.Solver
 
         private void Predict(float h, Float3 g)
         {
-            int n = chain.ParticleCount;
             float gx = g.X * h, gy = g.Y * h, gz = g.Z * h;
             float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
             float[] vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ;
             bool[] kinematic = chain.Kinematic;
             float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
-            for (int i = 0; i < n; i++)
+            int n = x.Length;
+            // one check of the lengths: the loop, bounded by x.Length, then indexes every array without bounds checks
+            if (y.Length != n || z.Length != n || px.Length != n || py.Length != n || pz.Length != n || vx.Length != n || vy.Length != n
+                || vz.Length != n || kinematic.Length != n || dx.Length != n || dy.Length != n || dz.Length != n)
+                ChainState.ThrowSizes();
+            for (int i = 0; i < x.Length; i++)
             {
                 px[i] = x[i]; py[i] = y[i]; pz[i] = z[i];
                 if (kinematic[i]) { dx[i] = 0f; dy[i] = 0f; dz[i] = 0f; continue; }
-                vx[i] += gx; vy[i] += gy; vz[i] += gz;
-                dx[i] = vx[i] * h; dy[i] = vy[i] * h; dz[i] = vz[i] * h;
+                float ux = vx[i] + gx, uy = vy[i] + gy, uz = vz[i] + gz;
+                vx[i] = ux; vy[i] = uy; vz[i] = uz;
+                dx[i] = ux * h; dy[i] = uy * h; dz[i] = uz * h;
             }
         }
 
@@ -255,36 +260,59 @@ namespace HookeRope.Solver
 
         private void UpdateVelocities(float h)
         {
-            int n = chain.ParticleCount;
             float invH = 1f / h;
-            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
-            for (int i = 0; i < n; i++) CommitParticle(i, dx[i] * invH, dy[i] * invH, dz[i] * invH);
+            float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
+            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ, lx = chain.LowX, ly = chain.LowY, lz = chain.LowZ;
+            float[] vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ;
+            int n = x.Length;
+            // one check of the lengths: the loop, bounded by x.Length, then indexes every array without bounds checks
+            if (y.Length != n || z.Length != n || px.Length != n || py.Length != n || pz.Length != n || dx.Length != n || dy.Length != n
+                || dz.Length != n || lx.Length != n || ly.Length != n || lz.Length != n || vx.Length != n || vy.Length != n || vz.Length != n)
+                ChainState.ThrowSizes();
+            for (int i = 0; i < x.Length; i++)
+            {
+                // CommitParticle, with the arrays in locals
+                float ux = dx[i] * invH, uy = dy[i] * invH, uz = dz[i] * invH;
+                double ex = (double)px[i] + lx[i] + dx[i], ey = (double)py[i] + ly[i] + dy[i], ez = (double)pz[i] + lz[i] + dz[i];
+                float nx = (float)ex, ny = (float)ey, nz = (float)ez;
+                if (float.IsFinite(ux + uy + uz) && float.IsFinite(nx + ny + nz))
+                {
+                    x[i] = nx; y[i] = ny; z[i] = nz;
+                    lx[i] = (float)(ex - nx); ly[i] = (float)(ey - ny); lz[i] = (float)(ez - nz);
+                    vx[i] = ux; vy[i] = uy; vz[i] = uz;
+                }
+                else RestoreParticle(i);
+            }
         }
 
         /// <summary>
         /// Ends particle i's substep at x = x_prev + Low + d with velocity (ux, uy, uz) m/s. The sum is formed in double and
         /// split into the float position and its new remainder Low, so no part of d is rounded away. Never lets a non-finite value into
-        /// the state: then the particle falls back to its last good position, at rest, with no displacement.
+        /// the state: then the particle falls back to its last good position, at rest, with no displacement
+        /// (<see cref="RestoreParticle"/>). <see cref="UpdateVelocities"/> does the same inline.
         /// </summary>
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         private void CommitParticle(int i, float ux, float uy, float uz)
         {
-            float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
-            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ, lx = chain.LowX, ly = chain.LowY, lz = chain.LowZ;
+            float[] px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ, dx = chain.DX, dy = chain.DY, dz = chain.DZ;
+            float[] lx = chain.LowX, ly = chain.LowY, lz = chain.LowZ;
             double ex = (double)px[i] + lx[i] + dx[i], ey = (double)py[i] + ly[i] + dy[i], ez = (double)pz[i] + lz[i] + dz[i];
             float nx = (float)ex, ny = (float)ey, nz = (float)ez;
             if (float.IsFinite(ux + uy + uz) && float.IsFinite(nx + ny + nz))
             {
-                x[i] = nx; y[i] = ny; z[i] = nz;
+                chain.X[i] = nx; chain.Y[i] = ny; chain.Z[i] = nz;
                 lx[i] = (float)(ex - nx); ly[i] = (float)(ey - ny); lz[i] = (float)(ez - nz);
                 chain.VelX[i] = ux; chain.VelY[i] = uy; chain.VelZ[i] = uz;
             }
-            else
-            {
-                x[i] = px[i]; y[i] = py[i]; z[i] = pz[i];
-                chain.VelX[i] = 0f; chain.VelY[i] = 0f; chain.VelZ[i] = 0f;
-                dx[i] = 0f; dy[i] = 0f; dz[i] = 0f;
-            }
+            else RestoreParticle(i);
+        }
+
+        /// <summary>A non-finite substep end of particle i: back to its last good position, at rest, with no displacement.</summary>
+        private void RestoreParticle(int i)
+        {
+            chain.X[i] = chain.PrevX[i]; chain.Y[i] = chain.PrevY[i]; chain.Z[i] = chain.PrevZ[i];
+            chain.VelX[i] = 0f; chain.VelY[i] = 0f; chain.VelZ[i] = 0f;
+            chain.DX[i] = 0f; chain.DY[i] = 0f; chain.DZ[i] = 0f;
         }
 
         /// <summary>
@@ -294,19 +322,39 @@ namespace HookeRope.Solver
         private void UpdateTensions(double h, bool firstSubstep)
         {
             double invH2 = 1.0 / (h * h);
-            int s = chain.SegmentCount;
             double[] lambda = chain.Lambda;
             float[] tension = chain.Tension, peak = chain.PeakTension, sum = chain.MeanTension;
             bool[] broken = chain.Broken;
-            for (int j = 0; j < s; j++)
+            int s = lambda.Length;
+            // one check of the lengths: the loops, bounded by lambda.Length, then index without bounds checks
+            if (tension.Length != s || peak.Length != s || sum.Length != s || broken.Length != s) ChainState.ThrowSizes();
+            // a broken segment reads 0 (skipped while none is broken); the host step's largest and summed substep tension
+            // restart on its first substep
+            bool intact = chain.BrokenCount == 0;
+            if (firstSubstep)
             {
-                double t = broken[j] ? 0.0 : -lambda[j] * invH2;
-                float value = (float)t;
-                value = float.IsFinite(value) ? value : float.MaxValue;
-                tension[j] = value;
-                if (firstSubstep) { peak[j] = value; sum[j] = value; }
-                else { if (value > peak[j]) peak[j] = value; sum[j] += value; }
+                for (int j = 0; j < lambda.Length; j++)
+                {
+                    float value = Tension(intact || !broken[j] ? lambda[j] : 0.0, invH2);
+                    tension[j] = value; peak[j] = value; sum[j] = value;
+                }
+                return;
             }
+            for (int j = 0; j < lambda.Length; j++)
+            {
+                float value = Tension(intact || !broken[j] ? lambda[j] : 0.0, invH2);
+                tension[j] = value;
+                if (value > peak[j]) peak[j] = value;
+                sum[j] += value;
+            }
+        }
+
+        /// <summary>Tension T = −λ/h² (N, float; non-finite reads float.MaxValue) of a multiplier λ (N·s²), invH2 = 1/h².</summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static float Tension(double lambda, double invH2)
+        {
+            float value = (float)(-lambda * invH2);
+            return float.IsFinite(value) ? value : float.MaxValue;
         }
 
         /// <summary>Raises each load's <see cref="GetLoadPeakForce"/> to this substep's |M·(Δv/h − g)| (invH = 1/h in 1/s).</summary>
