@@ -156,16 +156,14 @@ namespace HookeRope.Solver
         private void Predict(float h, Float3 g)
         {
             float gx = g.X * h, gy = g.Y * h, gz = g.Z * h;
-            float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
-            float[] vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ;
-            bool[] kinematic = chain.Kinematic;
-            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
-            int n = x.Length;
-            // one check of the lengths: the loop, bounded by x.Length, then indexes every array without bounds checks
-            if (y.Length != n || z.Length != n || px.Length != n || py.Length != n || pz.Length != n || vx.Length != n || vy.Length != n
-                || vz.Length != n || kinematic.Length != n || dx.Length != n || dy.Length != n || dz.Length != n)
-                ChainState.ThrowSizes();
-            for (int i = 0; i < x.Length; i++)
+            int n = chain.ParticleCount;
+            // spans of exactly n entries (the loop bound): indexed without bounds checks
+            ReadOnlySpan<float> x = Exactly(chain.X, n), y = Exactly(chain.Y, n), z = Exactly(chain.Z, n);
+            Span<float> px = Exactly(chain.PrevX, n), py = Exactly(chain.PrevY, n), pz = Exactly(chain.PrevZ, n);
+            Span<float> vx = Exactly(chain.VelX, n), vy = Exactly(chain.VelY, n), vz = Exactly(chain.VelZ, n);
+            Span<float> dx = Exactly(chain.DX, n), dy = Exactly(chain.DY, n), dz = Exactly(chain.DZ, n);
+            ReadOnlySpan<bool> kinematic = chain.Kinematic.AsSpan(0, n);
+            for (int i = 0; i < n; i++)
             {
                 px[i] = x[i]; py[i] = y[i]; pz[i] = z[i];
                 if (kinematic[i]) { dx[i] = 0f; dy[i] = 0f; dz[i] = 0f; continue; }
@@ -173,6 +171,17 @@ namespace HookeRope.Solver
                 vx[i] = ux; vy[i] = uy; vz[i] = uz;
                 dx[i] = ux * h; dy[i] = uy * h; dz[i] = uz * h;
             }
+        }
+
+        /// <summary>
+        /// The first n entries of a particle (or segment) array as a span whose length the JIT knows to be n (the array is checked non-null
+        /// first, so the span's length is not a choice between n and 0): a loop bounded by n indexes it without bounds checks.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static Span<float> Exactly(float[] values, int n)
+        {
+            if (values == null) ChainState.ThrowSizes();
+            return values.AsSpan(0, n);
         }
 
         private void MovePins(float t)
@@ -261,17 +270,16 @@ namespace HookeRope.Solver
         private void UpdateVelocities(float h)
         {
             float invH = 1f / h;
-            float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
-            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ, lx = chain.LowX, ly = chain.LowY, lz = chain.LowZ;
-            float[] vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ;
-            int n = x.Length;
-            // one check of the lengths: the loop, bounded by x.Length, then indexes every array without bounds checks
-            if (y.Length != n || z.Length != n || px.Length != n || py.Length != n || pz.Length != n || dx.Length != n || dy.Length != n
-                || dz.Length != n || lx.Length != n || ly.Length != n || lz.Length != n || vx.Length != n || vy.Length != n || vz.Length != n)
-                ChainState.ThrowSizes();
-            for (int i = 0; i < x.Length; i++)
+            int n = chain.ParticleCount;
+            // spans of exactly n entries (the loop bound): indexed without bounds checks
+            Span<float> x = Exactly(chain.X, n), y = Exactly(chain.Y, n), z = Exactly(chain.Z, n);
+            ReadOnlySpan<float> px = Exactly(chain.PrevX, n), py = Exactly(chain.PrevY, n), pz = Exactly(chain.PrevZ, n);
+            ReadOnlySpan<float> dx = Exactly(chain.DX, n), dy = Exactly(chain.DY, n), dz = Exactly(chain.DZ, n);
+            Span<float> lx = Exactly(chain.LowX, n), ly = Exactly(chain.LowY, n), lz = Exactly(chain.LowZ, n);
+            Span<float> vx = Exactly(chain.VelX, n), vy = Exactly(chain.VelY, n), vz = Exactly(chain.VelZ, n);
+            for (int i = 0; i < n; i++)
             {
-                // CommitParticle, with the arrays in locals
+                // CommitParticle, on the spans
                 float ux = dx[i] * invH, uy = dy[i] * invH, uz = dz[i] * invH;
                 double ex = (double)px[i] + lx[i] + dx[i], ey = (double)py[i] + ly[i] + dy[i], ez = (double)pz[i] + lz[i] + dz[i];
                 float nx = (float)ex, ny = (float)ey, nz = (float)ez;
@@ -322,25 +330,24 @@ namespace HookeRope.Solver
         private void UpdateTensions(double h, bool firstSubstep)
         {
             double invH2 = 1.0 / (h * h);
-            double[] lambda = chain.Lambda;
-            float[] tension = chain.Tension, peak = chain.PeakTension, sum = chain.MeanTension;
-            bool[] broken = chain.Broken;
-            int s = lambda.Length;
-            // one check of the lengths: the loops, bounded by lambda.Length, then index without bounds checks
-            if (tension.Length != s || peak.Length != s || sum.Length != s || broken.Length != s) ChainState.ThrowSizes();
+            int s = chain.SegmentCount;
+            // spans of exactly s entries (the loop bound): indexed without bounds checks
+            ReadOnlySpan<double> lambda = chain.Lambda.AsSpan(0, s);
+            Span<float> tension = Exactly(chain.Tension, s), peak = Exactly(chain.PeakTension, s), sum = Exactly(chain.MeanTension, s);
+            ReadOnlySpan<bool> broken = chain.Broken.AsSpan(0, s);
             // a broken segment reads 0 (skipped while none is broken); the host step's largest and summed substep tension
             // restart on its first substep
             bool intact = chain.BrokenCount == 0;
             if (firstSubstep)
             {
-                for (int j = 0; j < lambda.Length; j++)
+                for (int j = 0; j < s; j++)
                 {
                     float value = Tension(intact || !broken[j] ? lambda[j] : 0.0, invH2);
                     tension[j] = value; peak[j] = value; sum[j] = value;
                 }
                 return;
             }
-            for (int j = 0; j < lambda.Length; j++)
+            for (int j = 0; j < s; j++)
             {
                 float value = Tension(intact || !broken[j] ? lambda[j] : 0.0, invH2);
                 tension[j] = value;
