@@ -173,10 +173,10 @@ namespace HookeRope.Solver
         /// <summary>
         /// Length (m) of segment j's live vector (ex, ey, ez) and its unit direction (nx, ny, nz), stored in float into
         /// dirX/Y/Z[j] as the last valid direction; a vanishing or non-finite vector keeps the stored direction (see
-        /// <see cref="Direction"/>). The kernels pass the direction arrays they hold in locals.
+        /// <see cref="Direction"/>). The kernels pass the direction arrays as spans (<see cref="Exactly"/>).
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Normalise(int j, double ex, double ey, double ez, float[] dirX, float[] dirY, float[] dirZ, out double nx, out double ny, out double nz)
+        public static double Normalise(int j, double ex, double ey, double ez, Span<float> dirX, Span<float> dirY, Span<float> dirZ, out double nx, out double ny, out double nz)
         {
             double len = Math.Sqrt(ex * ex + ey * ey + ez * ez);
             if (len > 1e-12 && len <= float.MaxValue)
@@ -188,6 +188,26 @@ namespace HookeRope.Solver
             }
             nx = dirX[j]; ny = dirY[j]; nz = dirZ[j];
             return len <= float.MaxValue ? len : 0.0;
+        }
+
+        /// <summary>
+        /// The first n entries of an array (one of these particle or segment arrays) as a span whose length the JIT knows to
+        /// be n: the array is checked non-null first, so the span's length is not a choice between n and 0, and a loop bounded
+        /// by n indexes it without bounds checks (an array indexed j + 1, or several arrays under one loop bound, keep theirs).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static Span<T> Exactly<T>(T[] values, int n)
+        {
+            if (values == null) ThrowSizes();
+            return values.AsSpan(0, n);
+        }
+
+        /// <summary>The entries j + 1 … j + n of an array as a span of n (see <see cref="Exactly"/>): a segment's second particle at index j.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static Span<T> Shifted<T>(T[] values, int n)
+        {
+            if (values == null) ThrowSizes();
+            return values.AsSpan(1, n);
         }
 
         /// <summary>

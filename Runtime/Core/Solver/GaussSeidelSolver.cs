@@ -12,20 +12,20 @@ namespace HookeRope.Solver
         {
             double invH2 = 1.0 / (h * h);
             double gamma = beta / h; // γ = α̃·β̃/h with β̃ = h²·β·k, k = 1/α
-            float[] w = c.InverseMass, dx = c.DX, dy = c.DY, dz = c.DZ, px = c.PrevX, py = c.PrevY, pz = c.PrevZ, lx = c.LowX, ly = c.LowY, lz = c.LowZ;
             int s = c.SegmentCount;
-            if (w == null || dx == null || dy == null || dz == null || px == null || py == null || pz == null || lx == null || ly == null || lz == null)
-                ChainState.ThrowSizes();
-            // every array viewed as spans of exactly s entries, the segment's first particle (A, index j) and its second (B,
-            // index j + 1): spans of one known length, the loop bound, index without bounds checks (an array indexed j + 1 would not)
-            ReadOnlySpan<float> wA = w.AsSpan(0, s), wB = w.AsSpan(1, s);
-            Span<float> dxA = dx.AsSpan(0, s), dyA = dy.AsSpan(0, s), dzA = dz.AsSpan(0, s), dxB = dx.AsSpan(1, s), dyB = dy.AsSpan(1, s), dzB = dz.AsSpan(1, s);
-            ReadOnlySpan<float> pxA = px.AsSpan(0, s), pyA = py.AsSpan(0, s), pzA = pz.AsSpan(0, s), pxB = px.AsSpan(1, s), pyB = py.AsSpan(1, s), pzB = pz.AsSpan(1, s);
-            ReadOnlySpan<float> lxA = lx.AsSpan(0, s), lyA = ly.AsSpan(0, s), lzA = lz.AsSpan(0, s), lxB = lx.AsSpan(1, s), lyB = ly.AsSpan(1, s), lzB = lz.AsSpan(1, s);
-            ReadOnlySpan<float> rest = c.RestLength.AsSpan(0, s), compliance = c.Compliance.AsSpan(0, s);
-            ReadOnlySpan<bool> broken = c.Broken.AsSpan(0, s);
-            Span<double> lambda = c.Lambda.AsSpan(0, s);
-            float[] dirX = c.DirX, dirY = c.DirY, dirZ = c.DirZ;
+            // every array as spans of exactly s entries, the segment's first particle (A, index j) and its second (B, index
+            // j + 1): spans of one known length, the loop bound, index without bounds checks (arrays indexed j + 1 would not)
+            ReadOnlySpan<float> wA = ChainState.Exactly(c.InverseMass, s), wB = ChainState.Shifted(c.InverseMass, s);
+            Span<float> dxA = ChainState.Exactly(c.DX, s), dyA = ChainState.Exactly(c.DY, s), dzA = ChainState.Exactly(c.DZ, s);
+            Span<float> dxB = ChainState.Shifted(c.DX, s), dyB = ChainState.Shifted(c.DY, s), dzB = ChainState.Shifted(c.DZ, s);
+            ReadOnlySpan<float> pxA = ChainState.Exactly(c.PrevX, s), pyA = ChainState.Exactly(c.PrevY, s), pzA = ChainState.Exactly(c.PrevZ, s);
+            ReadOnlySpan<float> pxB = ChainState.Shifted(c.PrevX, s), pyB = ChainState.Shifted(c.PrevY, s), pzB = ChainState.Shifted(c.PrevZ, s);
+            ReadOnlySpan<float> lxA = ChainState.Exactly(c.LowX, s), lyA = ChainState.Exactly(c.LowY, s), lzA = ChainState.Exactly(c.LowZ, s);
+            ReadOnlySpan<float> lxB = ChainState.Shifted(c.LowX, s), lyB = ChainState.Shifted(c.LowY, s), lzB = ChainState.Shifted(c.LowZ, s);
+            ReadOnlySpan<float> rest = ChainState.Exactly(c.RestLength, s), compliance = ChainState.Exactly(c.Compliance, s);
+            ReadOnlySpan<bool> broken = ChainState.Exactly(c.Broken, s);
+            Span<double> lambda = ChainState.Exactly(c.Lambda, s);
+            Span<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
             bool contacts = c.ContactCount > 0;
             SegmentPlasticity plastic = c.Plasticity;
             // particle a = j is carried from the projection before (its displacement as that projection left it): each
@@ -47,7 +47,11 @@ namespace HookeRope.Solver
                     double rel = g > 0.0 ? nx * ddx + ny * ddy + nz * ddz : 0.0;
                     double restJ = plastic == null ? rest[j] : plastic.Rest(j); // a plastic segment's force is measured from L_p
                     double numerator = -((double)len - restJ) - alphaTilde * lambda[j] - g * rel;
-                    if (plastic != null) plastic.ChooseBranch(j, lambda[j], g, wSum, invH2, ref numerator, ref alphaTilde);
+                    if (plastic != null)
+                    {
+                        numerator = ChooseBranch(plastic, j, lambda[j], g, wSum, invH2, numerator, alphaTilde, out double branchCompliance);
+                        alphaTilde = branchCompliance;
+                    }
                     if (contacts && (c.ContactActive[j] || c.ContactActive[j + 1]))
                     {
                         dxA[j] = dxa; dyA[j] = dya; dzA[j] = dza; dxB[j] = dxb; dyB[j] = dyb; dzB[j] = dzb;
@@ -70,7 +74,19 @@ namespace HookeRope.Solver
                 dxA[j] = dxa; dyA[j] = dya; dzA[j] = dza;
                 wa = wb; dxa = dxb; dya = dyb; dza = dzb;
             }
-            dx[s] = dxa; dy[s] = dya; dz[s] = dza;
+            c.DX[s] = dxa; c.DY[s] = dya; c.DZ[s] = dza;
+        }
+
+        /// <summary>
+        /// <see cref="SegmentPlasticity.ChooseBranch"/> on copies (returns the numerator, the compliance α̃ in branchCompliance),
+        /// so the sweep's own numerator and compliance are not address-exposed: they stay in registers.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
+        private static double ChooseBranch(SegmentPlasticity plastic, int j, double lambda, double g, double wSum, double invH2, double numerator, double alphaTilde, out double branchCompliance)
+        {
+            plastic.ChooseBranch(j, lambda, g, wSum, invH2, ref numerator, ref alphaTilde);
+            branchCompliance = alphaTilde;
+            return numerator;
         }
 
         /// <summary>

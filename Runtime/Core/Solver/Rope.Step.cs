@@ -158,11 +158,11 @@ namespace HookeRope.Solver
             float gx = g.X * h, gy = g.Y * h, gz = g.Z * h;
             int n = chain.ParticleCount;
             // spans of exactly n entries (the loop bound): indexed without bounds checks
-            ReadOnlySpan<float> x = Exactly(chain.X, n), y = Exactly(chain.Y, n), z = Exactly(chain.Z, n);
-            Span<float> px = Exactly(chain.PrevX, n), py = Exactly(chain.PrevY, n), pz = Exactly(chain.PrevZ, n);
-            Span<float> vx = Exactly(chain.VelX, n), vy = Exactly(chain.VelY, n), vz = Exactly(chain.VelZ, n);
-            Span<float> dx = Exactly(chain.DX, n), dy = Exactly(chain.DY, n), dz = Exactly(chain.DZ, n);
-            ReadOnlySpan<bool> kinematic = chain.Kinematic.AsSpan(0, n);
+            ReadOnlySpan<float> x = ChainState.Exactly(chain.X, n), y = ChainState.Exactly(chain.Y, n), z = ChainState.Exactly(chain.Z, n);
+            Span<float> px = ChainState.Exactly(chain.PrevX, n), py = ChainState.Exactly(chain.PrevY, n), pz = ChainState.Exactly(chain.PrevZ, n);
+            Span<float> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
+            Span<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
+            ReadOnlySpan<bool> kinematic = ChainState.Exactly(chain.Kinematic, n);
             for (int i = 0; i < n; i++)
             {
                 px[i] = x[i]; py[i] = y[i]; pz[i] = z[i];
@@ -171,17 +171,6 @@ namespace HookeRope.Solver
                 vx[i] = ux; vy[i] = uy; vz[i] = uz;
                 dx[i] = ux * h; dy[i] = uy * h; dz[i] = uz * h;
             }
-        }
-
-        /// <summary>
-        /// The first n entries of a particle (or segment) array as a span whose length the JIT knows to be n (the array is checked non-null
-        /// first, so the span's length is not a choice between n and 0): a loop bounded by n indexes it without bounds checks.
-        /// </summary>
-        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
-        private static Span<float> Exactly(float[] values, int n)
-        {
-            if (values == null) ChainState.ThrowSizes();
-            return values.AsSpan(0, n);
         }
 
         private void MovePins(float t)
@@ -272,11 +261,11 @@ namespace HookeRope.Solver
             float invH = 1f / h;
             int n = chain.ParticleCount;
             // spans of exactly n entries (the loop bound): indexed without bounds checks
-            Span<float> x = Exactly(chain.X, n), y = Exactly(chain.Y, n), z = Exactly(chain.Z, n);
-            ReadOnlySpan<float> px = Exactly(chain.PrevX, n), py = Exactly(chain.PrevY, n), pz = Exactly(chain.PrevZ, n);
-            ReadOnlySpan<float> dx = Exactly(chain.DX, n), dy = Exactly(chain.DY, n), dz = Exactly(chain.DZ, n);
-            Span<float> lx = Exactly(chain.LowX, n), ly = Exactly(chain.LowY, n), lz = Exactly(chain.LowZ, n);
-            Span<float> vx = Exactly(chain.VelX, n), vy = Exactly(chain.VelY, n), vz = Exactly(chain.VelZ, n);
+            Span<float> x = ChainState.Exactly(chain.X, n), y = ChainState.Exactly(chain.Y, n), z = ChainState.Exactly(chain.Z, n);
+            ReadOnlySpan<float> px = ChainState.Exactly(chain.PrevX, n), py = ChainState.Exactly(chain.PrevY, n), pz = ChainState.Exactly(chain.PrevZ, n);
+            ReadOnlySpan<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
+            Span<float> lx = ChainState.Exactly(chain.LowX, n), ly = ChainState.Exactly(chain.LowY, n), lz = ChainState.Exactly(chain.LowZ, n);
+            Span<float> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
             for (int i = 0; i < n; i++)
             {
                 // CommitParticle, on the spans
@@ -332,9 +321,9 @@ namespace HookeRope.Solver
             double invH2 = 1.0 / (h * h);
             int s = chain.SegmentCount;
             // spans of exactly s entries (the loop bound): indexed without bounds checks
-            ReadOnlySpan<double> lambda = chain.Lambda.AsSpan(0, s);
-            Span<float> tension = Exactly(chain.Tension, s), peak = Exactly(chain.PeakTension, s), sum = Exactly(chain.MeanTension, s);
-            ReadOnlySpan<bool> broken = chain.Broken.AsSpan(0, s);
+            ReadOnlySpan<double> lambda = ChainState.Exactly(chain.Lambda, s);
+            Span<float> tension = ChainState.Exactly(chain.Tension, s), peak = ChainState.Exactly(chain.PeakTension, s), sum = ChainState.Exactly(chain.MeanTension, s);
+            ReadOnlySpan<bool> broken = ChainState.Exactly(chain.Broken, s);
             // a broken segment reads 0 (skipped while none is broken); the host step's largest and summed substep tension
             // restart on its first substep
             bool intact = chain.BrokenCount == 0;
