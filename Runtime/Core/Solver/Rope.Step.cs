@@ -260,48 +260,41 @@ namespace HookeRope.Solver
         {
             float invH = 1f / h;
             int n = chain.ParticleCount;
+            ReadOnlySpan<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
+            Span<float> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
+            for (int i = 0; i < n; i++)
+            {
+                vx[i] = dx[i] * invH; vy[i] = dy[i] * invH; vz[i] = dz[i] * invH;
+            }
+            CommitPositions();
+        }
+
+        /// <summary>
+        /// Ends every particle's substep at x = x_prev + Low + d, with the velocity the integrator just wrote (m/s). The sum is
+        /// formed in double and split into the float position and its new remainder Low, so no part of d is rounded away. Never
+        /// lets a non-finite value into the state: then the particle falls back to its last good position, at rest, with no
+        /// displacement (<see cref="RestoreParticle"/>).
+        /// </summary>
+        private void CommitPositions()
+        {
+            int n = chain.ParticleCount;
             // spans of exactly n entries (the loop bound): indexed without bounds checks
             Span<float> x = ChainState.Exactly(chain.X, n), y = ChainState.Exactly(chain.Y, n), z = ChainState.Exactly(chain.Z, n);
             ReadOnlySpan<float> px = ChainState.Exactly(chain.PrevX, n), py = ChainState.Exactly(chain.PrevY, n), pz = ChainState.Exactly(chain.PrevZ, n);
             ReadOnlySpan<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
             Span<float> lx = ChainState.Exactly(chain.LowX, n), ly = ChainState.Exactly(chain.LowY, n), lz = ChainState.Exactly(chain.LowZ, n);
-            Span<float> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
+            ReadOnlySpan<float> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
             for (int i = 0; i < n; i++)
             {
-                // CommitParticle, on the spans
-                float ux = dx[i] * invH, uy = dy[i] * invH, uz = dz[i] * invH;
                 double ex = (double)px[i] + lx[i] + dx[i], ey = (double)py[i] + ly[i] + dy[i], ez = (double)pz[i] + lz[i] + dz[i];
                 float nx = (float)ex, ny = (float)ey, nz = (float)ez;
-                if (float.IsFinite(ux + uy + uz) && float.IsFinite(nx + ny + nz))
+                if (float.IsFinite(vx[i] + vy[i] + vz[i]) && float.IsFinite(nx + ny + nz))
                 {
                     x[i] = nx; y[i] = ny; z[i] = nz;
                     lx[i] = (float)(ex - nx); ly[i] = (float)(ey - ny); lz[i] = (float)(ez - nz);
-                    vx[i] = ux; vy[i] = uy; vz[i] = uz;
                 }
                 else RestoreParticle(i);
             }
-        }
-
-        /// <summary>
-        /// Ends particle i's substep at x = x_prev + Low + d with velocity (ux, uy, uz) m/s. The sum is formed in double and
-        /// split into the float position and its new remainder Low, so no part of d is rounded away. Never lets a non-finite value into
-        /// the state: then the particle falls back to its last good position, at rest, with no displacement
-        /// (<see cref="RestoreParticle"/>). <see cref="UpdateVelocities"/> does the same inline.
-        /// </summary>
-        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
-        private void CommitParticle(int i, float ux, float uy, float uz)
-        {
-            float[] px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ, dx = chain.DX, dy = chain.DY, dz = chain.DZ;
-            float[] lx = chain.LowX, ly = chain.LowY, lz = chain.LowZ;
-            double ex = (double)px[i] + lx[i] + dx[i], ey = (double)py[i] + ly[i] + dy[i], ez = (double)pz[i] + lz[i] + dz[i];
-            float nx = (float)ex, ny = (float)ey, nz = (float)ez;
-            if (float.IsFinite(ux + uy + uz) && float.IsFinite(nx + ny + nz))
-            {
-                chain.X[i] = nx; chain.Y[i] = ny; chain.Z[i] = nz;
-                lx[i] = (float)(ex - nx); ly[i] = (float)(ey - ny); lz[i] = (float)(ez - nz);
-                chain.VelX[i] = ux; chain.VelY[i] = uy; chain.VelZ[i] = uz;
-            }
-            else RestoreParticle(i);
         }
 
         /// <summary>A non-finite substep end of particle i: back to its last good position, at rest, with no displacement.</summary>
