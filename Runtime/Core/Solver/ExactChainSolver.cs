@@ -72,18 +72,33 @@ namespace HookeRope.Solver
         private static void Assemble(ChainState c, double invH2, double gammaAll, bool first)
         {
             int s = c.SegmentCount;
-            float[] w = c.InverseMass, rest = c.RestLength, compliance = c.Compliance, length = c.Length;
-            double[] fx = c.ForceX, fy = c.ForceY, fz = c.ForceZ, rx = c.ResidualX, ry = c.ResidualY, rz = c.ResidualZ;
-            double[] axial = c.AxialCompliance, transverse = c.TransverseCompliance, estimate = c.EstimatedTension;
-            bool[] broken = c.Broken, active = c.Active;
+            // spans of exactly s entries (the loop bound) index without bounds checks; B spans are particle j + 1's
+            ReadOnlySpan<float> wA = ChainState.Exactly(c.InverseMass, s), wB = ChainState.Shifted(c.InverseMass, s);
+            ReadOnlySpan<float> dxA = ChainState.Exactly(c.DX, s), dyA = ChainState.Exactly(c.DY, s), dzA = ChainState.Exactly(c.DZ, s);
+            ReadOnlySpan<float> dxB = ChainState.Shifted(c.DX, s), dyB = ChainState.Shifted(c.DY, s), dzB = ChainState.Shifted(c.DZ, s);
+            ReadOnlySpan<float> pxA = ChainState.Exactly(c.PrevX, s), pyA = ChainState.Exactly(c.PrevY, s), pzA = ChainState.Exactly(c.PrevZ, s);
+            ReadOnlySpan<float> pxB = ChainState.Shifted(c.PrevX, s), pyB = ChainState.Shifted(c.PrevY, s), pzB = ChainState.Shifted(c.PrevZ, s);
+            ReadOnlySpan<float> lxA = ChainState.Exactly(c.LowX, s), lyA = ChainState.Exactly(c.LowY, s), lzA = ChainState.Exactly(c.LowZ, s);
+            ReadOnlySpan<float> lxB = ChainState.Shifted(c.LowX, s), lyB = ChainState.Shifted(c.LowY, s), lzB = ChainState.Shifted(c.LowZ, s);
+            ReadOnlySpan<float> rest = ChainState.Exactly(c.RestLength, s), compliance = ChainState.Exactly(c.Compliance, s), lastTension = ChainState.Exactly(c.Tension, s);
+            Span<float> length = ChainState.Exactly(c.Length, s);
+            ReadOnlySpan<double> fx = ChainState.Exactly(c.ForceX, s), fy = ChainState.Exactly(c.ForceY, s), fz = ChainState.Exactly(c.ForceZ, s);
+            Span<double> rx = ChainState.Exactly(c.ResidualX, s), ry = ChainState.Exactly(c.ResidualY, s), rz = ChainState.Exactly(c.ResidualZ, s);
+            Span<double> axial = ChainState.Exactly(c.AxialCompliance, s), transverse = ChainState.Exactly(c.TransverseCompliance, s), estimate = ChainState.Exactly(c.EstimatedTension, s);
+            ReadOnlySpan<bool> broken = ChainState.Exactly(c.Broken, s);
+            Span<bool> active = ChainState.Exactly(c.Active, s);
+            float[] dirX = c.DirX, dirY = c.DirY, dirZ = c.DirZ;
             SegmentPlasticity plastic = c.Plasticity;
             for (int j = 0; j < s; j++)
             {
                 if (broken[j]) { active[j] = false; continue; }
-                double len = c.Direction(j, out double nx, out double ny, out double nz, out float ddx, out float ddy, out float ddz);
+                // ChainState.Direction on the spans
+                float ddx = dxB[j] - dxA[j], ddy = dyB[j] - dyA[j], ddz = dzB[j] - dzA[j];
+                double len = ChainState.Normalise(j, ChainState.Component(pxA[j], pxB[j], lxA[j], lxB[j], ddx), ChainState.Component(pyA[j], pyB[j], lyA[j], lyB[j], ddy),
+                    ChainState.Component(pzA[j], pzB[j], lzA[j], lzB[j], ddz), dirX, dirY, dirZ, out double nx, out double ny, out double nz);
                 length[j] = (float)len;
                 double alpha = compliance[j];
-                double mobility = (double)w[j] + w[j + 1];
+                double mobility = (double)wA[j] + wB[j];
                 if (mobility == 0.0 && alpha == 0.0) { active[j] = false; continue; }
                 double g = alpha > 0.0 ? gammaAll : 0.0;
                 double restJ = plastic == null ? rest[j] : plastic.Rest(j); // a plastic segment's force is measured from L_p
@@ -94,7 +109,11 @@ namespace HookeRope.Solver
                     restEffective = (restJ + g * (len - rate)) / (1.0 + g);
                     alphaTilde /= 1.0 + g;
                 }
-                if (plastic != null && plastic.IsYielding(j)) plastic.FlowRow(j, invH2, ref restEffective, ref alphaTilde);
+                if (plastic != null && plastic.IsYielding(j))
+                {
+                    restEffective = FlowRow(plastic, j, invH2, restEffective, alphaTilde, out double flowCompliance);
+                    alphaTilde = flowCompliance;
+                }
                 double magnitude = Math.Sqrt(fx[j] * fx[j] + fy[j] * fy[j] + fz[j] * fz[j]);
                 double ex = nx, ey = ny, ez = nz, signed = 0.0;
                 if (magnitude > 0.0)
@@ -108,7 +127,7 @@ namespace HookeRope.Solver
                 // the geometric stiffness T/l: with the last substep's tension on the first iteration, the accumulated one after;
                 // a pushing (bilateral) segment's is −|T|/l, which would let it buckle explicitly, so it takes |T| and the
                 // buckling is damped instead
-                double tension = first ? Math.Abs(c.Tension[j]) : Math.Abs(signed * invH2);
+                double tension = first ? Math.Abs(lastTension[j]) : Math.Abs(signed * invH2);
                 estimate[j] = tension;
                 double target = restEffective + alphaTilde * signed; // the length the accumulated force implies
                 double geometric = Math.Max(target, 1e-6 * rest[j]) * invH2;
@@ -117,6 +136,18 @@ namespace HookeRope.Solver
                 axial[j] = alphaTilde;
                 rx[j] = len * nx - target * ex; ry[j] = len * ny - target * ey; rz[j] = len * nz - target * ez;
             }
+        }
+
+        /// <summary>
+        /// <see cref="SegmentPlasticity.FlowRow"/> on copies (returns the effective rest length, the compliance in flowCompliance),
+        /// so the assembly's own locals are not address-exposed and stay in registers.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
+        private static double FlowRow(SegmentPlasticity plastic, int j, double invH2, double restEffective, double alphaTilde, out double flowCompliance)
+        {
+            plastic.FlowRow(j, invH2, ref restEffective, ref alphaTilde);
+            flowCompliance = alphaTilde;
+            return restEffective;
         }
 
         /// <summary>
