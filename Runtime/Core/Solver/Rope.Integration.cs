@@ -32,12 +32,16 @@ namespace HookeRope.Solver
         /// </summary>
         private bool Violent()
         {
-            float[] length = chain.Length, rest = chain.RestLength, x = chain.PrevX, y = chain.PrevY, z = chain.PrevZ;
-            bool[] broken = chain.Broken;
-            for (int j = 0; j < chain.SegmentCount; j++)
+            int s = chain.SegmentCount;
+            // spans of exactly s entries (the loop bound), B for particle j + 1: indexed without bounds checks
+            ReadOnlySpan<float> length = ChainState.Exactly(chain.Length, s), rest = ChainState.Exactly(chain.RestLength, s);
+            ReadOnlySpan<float> xA = ChainState.Exactly(chain.PrevX, s), yA = ChainState.Exactly(chain.PrevY, s), zA = ChainState.Exactly(chain.PrevZ, s);
+            ReadOnlySpan<float> xB = ChainState.Shifted(chain.PrevX, s), yB = ChainState.Shifted(chain.PrevY, s), zB = ChainState.Shifted(chain.PrevZ, s);
+            ReadOnlySpan<bool> broken = ChainState.Exactly(chain.Broken, s);
+            for (int j = 0; j < s; j++)
             {
                 if (broken[j]) continue;
-                float dx = x[j + 1] - x[j], dy = y[j + 1] - y[j], dz = z[j + 1] - z[j];
+                float dx = xB[j] - xA[j], dy = yB[j] - yA[j], dz = zB[j] - zA[j];
                 float start = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
                 if (MathF.Abs(length[j] - start) > ViolentStrain * rest[j]) return true;
             }
