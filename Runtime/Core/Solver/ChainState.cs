@@ -160,7 +160,7 @@ namespace HookeRope.Solver
             double ex = Component(PrevX[j], PrevX[j + 1], LowX[j], LowX[j + 1], ddx);
             double ey = Component(PrevY[j], PrevY[j + 1], LowY[j], LowY[j + 1], ddy);
             double ez = Component(PrevZ[j], PrevZ[j + 1], LowZ[j], LowZ[j + 1], ddz);
-            return Normalise(j, ex, ey, ez, DirX, DirY, DirZ, out nx, out ny, out nz);
+            return Normalise(j, ex, ey, ez, Exactly(DirX, SegmentCount), Exactly(DirY, SegmentCount), Exactly(DirZ, SegmentCount), out nx, out ny, out nz);
         }
 
         /// <summary>

@@ -87,7 +87,7 @@ namespace HookeRope.Solver
             Span<double> axial = ChainState.Exactly(c.AxialCompliance, s), transverse = ChainState.Exactly(c.TransverseCompliance, s), estimate = ChainState.Exactly(c.EstimatedTension, s);
             ReadOnlySpan<bool> broken = ChainState.Exactly(c.Broken, s);
             Span<bool> active = ChainState.Exactly(c.Active, s);
-            float[] dirX = c.DirX, dirY = c.DirY, dirZ = c.DirZ;
+            Span<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
             SegmentPlasticity plastic = c.Plasticity;
             for (int j = 0; j < s; j++)
             {
