@@ -95,8 +95,10 @@ namespace HookeRope.Solver
             if (secondOrder) PredictSecondOrder(scheme, hd, g);
             else Predict(h, g);
             MovePins(t);
-            Array.Clear(chain.Lambda, 0, chain.SegmentCount);
-            if (pinCount > 0) Array.Clear(pinLambda, 0, pinCount * 3);
+            // cleared in loops: for the short arrays of a rope a call to Array.Clear costs more than the stores
+            Span<double> lambda = ChainState.Exactly(chain.Lambda, chain.SegmentCount);
+            for (int j = 0; j < lambda.Length; j++) lambda[j] = 0.0;
+            for (int b = 0; b < pinCount * 3; b++) pinLambda[b] = 0.0;
         }
 
         /// <summary>Phase 2 (and the end of each iteration): push the particles out of the colliders; the pass decides contact detection and friction.</summary>
