@@ -37,9 +37,20 @@ namespace HookeRope.Kernels
             "exact-bdf2-chain16", "exact-be-load64", "exact-bdf2-swing256", "exact-plastic-neck", "exact-drag-plane", "gs-plane",
         };
 
-        /// <summary>A scene by name (see <see cref="Names"/>).</summary>
+        /// <summary>
+        /// A scene by name (see <see cref="Names"/>), or <c>gs-load:N</c> / <c>exact-load:N</c>: N segments of 0.1 m hanging
+        /// straight down from a pin with an 80 kg load (taut), backward Euler / BDF2, 8 substeps × 1 iteration, for the
+        /// instructions per segment-iteration against the segment count.
+        /// </summary>
         public static Rope Build(string name)
         {
+            int colon = name.IndexOf(':');
+            if (colon > 0)
+            {
+                int segments = int.Parse(name.Substring(colon + 1), System.Globalization.CultureInfo.InvariantCulture);
+                bool gs = name.StartsWith("gs-load", StringComparison.Ordinal);
+                return Hanging(gs ? ConstraintSolverKind.GaussSeidel : ConstraintSolverKind.ExactChain, gs ? TimeIntegrator.BackwardEuler : TimeIntegrator.Bdf2, segments, 8, 1);
+            }
             switch (name)
             {
                 case "gs-be-chain16": return Chain(ConstraintSolverKind.GaussSeidel, TimeIntegrator.BackwardEuler, 16);
@@ -83,6 +94,24 @@ namespace HookeRope.Kernels
                 }
                 default: throw new ArgumentException("unknown scene " + name + " (known: " + string.Join(", ", Names) + ")", nameof(name));
             }
+        }
+
+        /// <summary>A 0.1 m-per-segment rope hanging straight down from a pin with an 80 kg load (the kernel timer's and the load:N scenes' rope).</summary>
+        public static Rope Hanging(ConstraintSolverKind solver, TimeIntegrator integrator, int segments, int substeps, int iterations)
+        {
+            var settings = new RopeSettings
+            {
+                SegmentCount = segments,
+                RestLength = 0.1f * segments,
+                Solver = solver,
+                Integrator = integrator,
+                Substeps = substeps,
+                Iterations = iterations,
+            };
+            var rope = new Rope(settings, Float3.Zero, new Float3(0f, -0.1f * segments, 0f));
+            rope.AddPin(0, Float3.Zero);
+            rope.AddLoad(segments, 80f);
+            return rope;
         }
 
         /// <summary>A rope hanging straight down from a pin with a load at its end (segments × 0.1 m).</summary>

@@ -25,20 +25,10 @@ namespace HookeRope.Kernels
             return 0;
         }
 
-        /// <summary>A 0.1 m-per-segment rope hanging from a pin with an 80 kg load (taut: the exact solve's geometric stiffness acts), settled 30 steps.</summary>
+        /// <summary>The hanging loaded rope of <see cref="KernelScene.Hanging"/> (taut: the exact solve's geometric stiffness acts), settled 30 steps.</summary>
         private static Rope Hanging(ConstraintSolverKind solver, int segments, int substeps, int iterations)
         {
-            var settings = new RopeSettings
-            {
-                SegmentCount = segments,
-                RestLength = 0.1f * segments,
-                Solver = solver,
-                Substeps = substeps,
-                Iterations = iterations,
-            };
-            var rope = new Rope(settings, Float3.Zero, new Float3(0f, -0.1f * segments, 0f));
-            rope.AddPin(0, Float3.Zero);
-            rope.AddLoad(segments, 80f);
+            Rope rope = KernelScene.Hanging(solver, RopeSettings.DefaultIntegrator, segments, substeps, iterations);
             for (int i = 0; i < 30; i++) rope.Step(KernelScene.HostStep);
             return rope;
         }
