@@ -314,7 +314,13 @@ namespace HookeRope.Solver
         private static void Move(ChainState c, int i, double wi, double px, double py, double pz, bool contacts, out double mx, out double my, out double mz)
         {
             mx = wi * px; my = wi * py; mz = wi * pz;
-            if (contacts && c.ContactActive[i]) HoldContact(c, i, ref mx, ref my, ref mz);
+            if (contacts && c.ContactActive[i])
+            {
+                // on copies: the caller's motion is never passed by reference, so it stays in registers
+                double hx = mx, hy = my, hz = mz;
+                HoldContact(c, i, ref hx, ref hy, ref hz);
+                mx = hx; my = hy; mz = hz;
+            }
         }
 
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]

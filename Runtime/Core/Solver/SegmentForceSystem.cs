@@ -41,29 +41,31 @@ namespace HookeRope.Solver
                 else
                 {
                     Block(dirX[j], dirY[j], dirZ[j], transverse[j], axial[j], (double)wA[j] + wB[j], out sxx, out sxy, out sxz, out syy, out syz, out szz);
+                    bx = rx[j]; by = ry[j]; bz = rz[j];
                     if (contacts)
                     {
-                        SubtractHeldNormal(c, j, ref sxx, ref sxy, ref sxz, ref syy, ref syz, ref szz);
-                        SubtractHeldNormal(c, j + 1, ref sxx, ref sxy, ref sxz, ref syy, ref syz, ref szz);
-                    }
-                    bx = rx[j]; by = ry[j]; bz = rz[j];
-                    if (j > 0)
-                    {
-                        if (contacts && c.ContactActive[j])
+                        // the contact terms work on a copy: the row's own locals are never passed by reference, so they stay
+                        // in registers on a rope without contacts
+                        var row = new Row { XX = sxx, XY = sxy, XZ = sxz, YY = syy, YZ = syz, ZZ = szz, X = bx, Y = by, Z = bz };
+                        SubtractHeldNormal(c, j, ref row.XX, ref row.XY, ref row.XZ, ref row.YY, ref row.YZ, ref row.ZZ);
+                        SubtractHeldNormal(c, j + 1, ref row.XX, ref row.XY, ref row.XZ, ref row.YY, ref row.YZ, ref row.ZZ);
+                        if (j > 0 && c.ContactActive[j])
                             EliminateHeld(c, j, previousActive, gxx, gxy, gxz, gyy, gyz, gzz, px, py, pz,
-                                ref sxx, ref sxy, ref sxz, ref syy, ref syz, ref szz, ref bx, ref by, ref bz);
-                        else
+                                ref row.XX, ref row.XY, ref row.XZ, ref row.YY, ref row.YZ, ref row.ZZ, ref row.X, ref row.Y, ref row.Z);
+                        sxx = row.XX; sxy = row.XY; sxz = row.XZ; syy = row.YY; syz = row.YZ; szz = row.ZZ; bx = row.X; by = row.Y; bz = row.Z;
+                    }
+                    if (j > 0 && !(contacts && c.ContactActive[j]))
+                    {
+                        // elimination through a free particle j (isotropic coupling −w_j I)
+                        double wj = wA[j];
+                        if (previousActive)
                         {
-                            double wj = wA[j];
-                            if (previousActive)
-                            {
-                                double k = wj * wj;
-                                sxx -= k * gxx; sxy -= k * gxy; sxz -= k * gxz; syy -= k * gyy; syz -= k * gyz; szz -= k * gzz;
-                            }
-                            bx += wj * (gxx * px + gxy * py + gxz * pz);
-                            by += wj * (gxy * px + gyy * py + gyz * pz);
-                            bz += wj * (gxz * px + gyz * py + gzz * pz);
+                            double k = wj * wj;
+                            sxx -= k * gxx; sxy -= k * gxy; sxz -= k * gxz; syy -= k * gyy; syz -= k * gyz; szz -= k * gzz;
                         }
+                        bx += wj * (gxx * px + gxy * py + gxz * pz);
+                        by += wj * (gxy * px + gyy * py + gyz * pz);
+                        bz += wj * (gxz * px + gyz * py + gzz * pz);
                     }
                 }
                 Invert(sxx, sxy, sxz, syy, syz, szz, out gxx, out gxy, out gxz, out gyy, out gyz, out gzz);
@@ -97,6 +99,12 @@ namespace HookeRope.Solver
                 dx[j] = ox; dy[j] = oy; dz[j] = oz;
                 nx = ox; ny = oy; nz = oz;
             }
+        }
+
+        /// <summary>A row's symmetric block (XX … ZZ) and right-hand side (X, Y, Z) while the contact terms change it.</summary>
+        private struct Row
+        {
+            public double XX, XY, XZ, YY, YZ, ZZ, X, Y, Z;
         }
 
         /// <summary>
