@@ -157,20 +157,65 @@ namespace HookeRope.Solver
         public double Direction(int j, out double nx, out double ny, out double nz, out float ddx, out float ddy, out float ddz)
         {
             ddx = DX[j + 1] - DX[j]; ddy = DY[j + 1] - DY[j]; ddz = DZ[j + 1] - DZ[j];
-            double ex = ((double)PrevX[j + 1] - PrevX[j]) + (((double)LowX[j + 1] - LowX[j]) + ddx);
-            double ey = ((double)PrevY[j + 1] - PrevY[j]) + (((double)LowY[j + 1] - LowY[j]) + ddy);
-            double ez = ((double)PrevZ[j + 1] - PrevZ[j]) + (((double)LowZ[j + 1] - LowZ[j]) + ddz);
+            double ex = Component(PrevX[j], PrevX[j + 1], LowX[j], LowX[j + 1], ddx);
+            double ey = Component(PrevY[j], PrevY[j + 1], LowY[j], LowY[j + 1], ddy);
+            double ez = Component(PrevZ[j], PrevZ[j + 1], LowZ[j], LowZ[j + 1], ddz);
+            return Normalise(j, ex, ey, ez, Exactly(DirX, SegmentCount), Exactly(DirY, SegmentCount), Exactly(DirZ, SegmentCount), out nx, out ny, out nz);
+        }
+
+        /// <summary>
+        /// One component (m, double) of a segment's live vector from its ends' previous positions, remainders (both float,
+        /// passed as double) and the change of its span over the substep, D_b − D_a (float): (P_b − P_a) + ((Low_b − Low_a) + change).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double Component(double prevA, double prevB, double lowA, double lowB, float change) => (prevB - prevA) + ((lowB - lowA) + change);
+
+        /// <summary>
+        /// Length (m) of segment j's live vector (ex, ey, ez) and its unit direction (nx, ny, nz), stored in float into
+        /// dirX/Y/Z[j] as the last valid direction; a vanishing or non-finite vector keeps the stored direction (see
+        /// <see cref="Direction"/>). The kernels pass the direction arrays as spans (<see cref="Exactly"/>).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double Normalise(int j, double ex, double ey, double ez, Span<float> dirX, Span<float> dirY, Span<float> dirZ, out double nx, out double ny, out double nz)
+        {
             double len = Math.Sqrt(ex * ex + ey * ey + ez * ez);
             if (len > 1e-12 && len <= float.MaxValue)
             {
                 double inv = 1.0 / len;
                 nx = ex * inv; ny = ey * inv; nz = ez * inv;
-                DirX[j] = (float)nx; DirY[j] = (float)ny; DirZ[j] = (float)nz;
+                dirX[j] = (float)nx; dirY[j] = (float)ny; dirZ[j] = (float)nz;
                 return len;
             }
-            nx = DirX[j]; ny = DirY[j]; nz = DirZ[j];
+            nx = dirX[j]; ny = dirY[j]; nz = dirZ[j];
             return len <= float.MaxValue ? len : 0.0;
         }
+
+        /// <summary>
+        /// The first n entries of an array (one of these particle or segment arrays) as a span whose length the JIT knows to
+        /// be n: the array is checked non-null first, so the span's length is not a choice between n and 0, and a loop bounded
+        /// by n indexes it without bounds checks (an array indexed j + 1, or several arrays under one loop bound, keep theirs).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static Span<T> Exactly<T>(T[] values, int n)
+        {
+            if (values == null) ThrowSizes();
+            return values.AsSpan(0, n);
+        }
+
+        /// <summary>The entries j + 1 … j + n of an array as a span of n (see <see cref="Exactly"/>): a segment's second particle at index j.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static Span<T> Shifted<T>(T[] values, int n)
+        {
+            if (values == null) ThrowSizes();
+            return values.AsSpan(1, n);
+        }
+
+        /// <summary>
+        /// Throws unless every particle array the kernels index has ParticleCount entries and every segment array
+        /// SegmentCount (true by construction): after this check the JIT drops the per-element bounds checks of loops bounded by
+        /// those lengths (a method that only throws is not inlined, and the JIT knows the call does not return).
+        /// </summary>
+        public static void ThrowSizes() => throw new InvalidOperationException("ChainState arrays are sized from SegmentCount");
 
         /// <summary>Vector (m, double) of segment j between the committed positions X + Low of its ends.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
