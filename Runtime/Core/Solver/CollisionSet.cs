@@ -101,24 +101,39 @@ namespace HookeRope.Solver
         /// <summary>
         /// Pushes every dynamic particle out of every collider (substep h in s). What else the pass does depends on where
         /// in the substep it runs (<see cref="ContactPass"/>): before the last iteration it records for each particle the
-        /// closest surface within <see cref="ContactMarginFraction"/>·radius (normal, gap) as the contact set of the next
-        /// chain solve, and at the start of the substep it also resets the per-substep normal corrections; after the last
-        /// iteration it applies Coulomb friction instead, limited by μ times the particle's whole normal correction in
-        /// this substep (<see cref="ChainState.ContactLoad"/>: pushes plus the normal motion the chain solve's
-        /// tangent-plane mass withheld).
+        /// closest surface within <see cref="ContactMarginFraction"/>·radius (normal, gap, friction coefficients, the
+        /// collider's displacement over the substep) as the contact set of the next chain solve, and at the start of the
+        /// substep it also resets the per-substep normal corrections and contact impulses. Every push adds m·push·normal to
+        /// the particle's contact impulse (<see cref="ChainState.ContactImpulseX"/>).
+        /// With <paramref name="frictionInSolve"/> (the exact chain solve) friction is part of the solve: a contact that was
+        /// sticking or sliding at the last detection starts so again, a new one gets its friction state from the solve (see
+        /// <see cref="ChainContacts"/>). Without it (Gauss–Seidel) every contact starts held, and after the last
+        /// iteration Coulomb friction is applied here instead, limited by μ times the particle's whole normal correction in
+        /// this substep (<see cref="ChainState.ContactLoad"/>: pushes plus the normal motion the chain solve's tangent-plane
+        /// mass withheld).
         /// </summary>
-        public void Project(ChainState c, float h, ContactPass pass)
+        public void Project(ChainState c, float h, ContactPass pass, bool frictionInSolve)
         {
-            bool friction = pass == ContactPass.LastIteration;
+            bool friction = pass == ContactPass.LastIteration && !frictionInSolve;
             bool detect = pass != ContactPass.LastIteration;
             bool startOfSubstep = pass == ContactPass.StartOfSubstep;
             int n = c.ParticleCount;
             float[] load = c.ContactLoad;
-            if (detect) c.ClearContacts();
+            if (startOfSubstep)
+            {
+                Array.Clear(c.ContactImpulseX, 0, n);
+                Array.Clear(c.ContactImpulseY, 0, n);
+                Array.Clear(c.ContactImpulseZ, 0, n);
+                Array.Clear(c.ContactFrictionX, 0, n);
+                Array.Clear(c.ContactFrictionY, 0, n);
+                Array.Clear(c.ContactFrictionZ, 0, n);
+                Array.Clear(c.ContactStopped, 0, n);
+            }
+            if (detect) RememberContacts(c);
             for (int i = 0; i < n; i++)
             {
                 if (startOfSubstep) load[i] = 0f;
-                if (c.InverseMass[i] == 0f) continue;
+                if (c.InverseMass[i] == 0f) { if (detect) c.ContactMemory[i] = 0; continue; }
                 float r = c.Radius[i];
                 float bestGap = ContactMarginFraction * r;
                 int best = -1;
@@ -139,6 +154,8 @@ namespace HookeRope.Solver
                     {
                         d += normal * push;
                         load[i] += push;
+                        double impulse = c.ContactImpulseScale * c.Mass[i] * push;
+                        c.ContactImpulseX[i] += impulse * normal.X; c.ContactImpulseY[i] += impulse * normal.Y; c.ContactImpulseZ[i] += impulse * normal.Z;
                     }
                     else if (!friction || c.ContactCollider[i] != k || -push > ContactMarginFraction * r)
                     {
@@ -155,15 +172,47 @@ namespace HookeRope.Solver
                     }
                     c.DX[i] = d.X; c.DY[i] = d.Y; c.DZ[i] = d.Z;
                 }
+                if (!detect) continue;
                 if (best >= 0 && float.IsFinite(bestNormal.X + bestNormal.Y + bestNormal.Z))
-                {
-                    c.ContactCollider[i] = best;
-                    c.ContactActive[i] = true;
-                    c.ContactNX[i] = bestNormal.X; c.ContactNY[i] = bestNormal.Y; c.ContactNZ[i] = bestNormal.Z;
-                    c.ContactGap[i] = bestGap;
-                    c.ContactList[c.ContactCount++] = i;
-                }
+                    AddContact(c, i, best, bestNormal, bestGap, h, frictionInSolve, startOfSubstep);
+                c.ContactMemory[i] = 0;
             }
+        }
+
+        /// <summary>
+        /// Before a detection: the state of every contact of the set about to be replaced (1 held, 2 sticking, 3 sliding) into
+        /// <see cref="ChainState.ContactMemory"/> (the detection reads it for the new set and clears it), then the set is cleared.
+        /// </summary>
+        private static void RememberContacts(ChainState c)
+        {
+            for (int k = 0; k < c.ContactCount; k++)
+            {
+                int i = c.ContactList[k];
+                c.ContactMemory[i] = !c.ContactActive[i] ? (byte)0 : c.ContactSticking[i] ? (byte)2 : c.ContactSliding[i] ? (byte)3 : (byte)1;
+            }
+            c.ClearContacts();
+        }
+
+        /// <summary>Adds particle i's contact with collider k (outward normal, gap in m) to the set, in its initial state (see <see cref="ChainContacts"/>).</summary>
+        private void AddContact(ChainState c, int i, int k, Float3 normal, float gap, float h, bool frictionInSolve, bool startOfSubstep)
+        {
+            c.ContactCollider[i] = k;
+            // touching (pushed out) or held in the iteration before: held; else within the margin: free until the chain
+            // drives it onto the surface
+            byte memory = c.ContactMemory[i];
+            c.ContactActive[i] = gap <= 0f || !frictionInSolve || !startOfSubstep && memory != 0;
+            c.ContactNX[i] = normal.X; c.ContactNY[i] = normal.Y; c.ContactNZ[i] = normal.Z;
+            c.ContactGap[i] = gap;
+            c.ContactList[c.ContactCount++] = i;
+            float kinetic = shapes[k].Friction, stat = Math.Max(shapes[k].StaticFriction, kinetic);
+            c.ContactKineticFriction[i] = kinetic;
+            c.ContactStaticFriction[i] = stat;
+            Float3 surface = velocity[k] * h;
+            c.ContactSurfaceX[i] = surface.X; c.ContactSurfaceY[i] = surface.Y; c.ContactSurfaceZ[i] = surface.Z;
+            // a held contact keeps its friction state from one detection to the next (see ChainContacts.DecideFriction); a new
+            // one has none until the chain solve's first pass gives it one
+            c.ContactSticking[i] = frictionInSolve && memory == 2;
+            c.ContactSliding[i] = frictionInSolve && memory == 3;
         }
 
         /// <summary>Signed distance (m) from point x (rope-local) to the surface of collider k, and the outward unit normal.</summary>

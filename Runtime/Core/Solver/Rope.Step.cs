@@ -7,6 +7,8 @@ namespace HookeRope.Solver
     {
         /// <summary>Largest host step in seconds that <see cref="Step"/> accepts.</summary>
         public const float MaxHostDeltaTime = 1f;
+        internal static Action<Rope, string> DebugHook; // TEMP
+        internal ChainState DebugChain => chain; // TEMP
 
         /// <summary>
         /// Advances the rope by one host step (s, in (0, 1]): <see cref="RopeSettings.Substeps"/> substeps of
@@ -51,14 +53,21 @@ namespace HookeRope.Solver
             {
                 float t = (float)(k + 1) / substeps;
                 TimeIntegrator scheme = SubstepScheme(integrator, hd);
+                // friction in contact: backward Euler (see HeldWithFriction)
+                if (scheme == TimeIntegrator.Bdf2 && exact && chain.HeldWithFriction) scheme = TimeIntegrator.BackwardEuler;
                 double hEff = EffectiveStep(scheme, hd);
+                chain.Bdf2Substep = scheme == TimeIntegrator.Bdf2;
+                chain.Substep = hd;
+                chain.ContactImpulseScale = (hEff / hd) * (hEff / hd);
                 PredictPhase(t, hostDeltaTime, secondOrder, scheme, h, hd, g);
                 // push the prediction out of the colliders and find the contacts the chain solve folds in
                 CollidePhase(h, ContactPass.StartOfSubstep);
+                DebugHook?.Invoke(this, "collide");
                 SolvePhase(h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder);
                 if (secondOrder) UpdateVelocitiesSecondOrder(scheme, hd, Violent());
                 else UpdateVelocities(h);
                 FinishPhase(hd, hEff, g, k == 0);
+                DebugHook?.Invoke(this, "finish");
                 if (loadCount > 0) TrackLoadPeaks(1f / h, g);
             }
             ScaleMeanTensions(1f / substeps);
@@ -96,7 +105,7 @@ namespace HookeRope.Solver
         /// <summary>Phase 2 (and the end of each iteration): push the particles out of the colliders; the pass decides contact detection and friction.</summary>
         private void CollidePhase(float h, ContactPass pass)
         {
-            if (colliders.Count > 0) colliders.Project(chain, h, pass);
+            if (colliders.Count > 0) colliders.Project(chain, h, pass, settings.Solver == ConstraintSolverKind.ExactChain);
         }
 
         /// <summary>
@@ -125,16 +134,20 @@ namespace HookeRope.Solver
                 if (exact)
                 {
                     bool underestimated = ExactChainSolver.Iterate(chain, hEff, solveBeta, tensionOnly, it == 0);
-                    if (underestimated && it == total - 1 && total < MaxNewtonIterations) total++;
+                    if (underestimated && it == total - 1 && total < MaxNewtonIterations && !chain.HeldWithFriction) total++;
                 }
                 else
                 {
                     GaussSeidelSolver.Iterate(chain, hEff, solveBeta, tensionOnly);
                 }
+                DebugHook?.Invoke(this, "solve");
                 if (trackSolve) TrackSolveDisplacement(1.0);
                 if (softPins) ReleaseCompliantPins(hEff, t);
                 CollidePhase(h, it == total - 1 ? ContactPass.LastIteration : ContactPass.BetweenIterations);
             }
+            // the exact solve's friction for the next substep, from this one's contact impulses
+            if (exact && chain.ContactCount > 0) ChainContacts.DecideFriction(chain);
+            else chain.HeldWithFriction = false;
         }
 
         /// <summary>Phase 4 (after the velocities): time, tensions T = −λ/h_eff², pin forces (and pin breaks). The segment lengths are refreshed once, after the last substep.</summary>

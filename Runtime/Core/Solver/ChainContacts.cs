@@ -1,0 +1,413 @@
+using System;
+
+namespace HookeRope.Solver
+{
+    /// <summary>
+    /// The contacts of the exact chain solve (<see cref="ExactChainSolver"/>), Coulomb friction included. A contact of the set
+    /// is free (the particle moves with its whole mobility w) or held on the surface, where friction is an implicit
+    /// tangential damper: the substep's friction impulse is F = −ζ·s (N·s², ζ in kg) with s the particle's slip over the
+    /// substep relative to the collider, so its tangential mobility is w_t = 1/(m + ζ) and W = w_t (I − c cᵀ) in the block
+    /// system (symmetric, positive definite). A damper can only slow the slip, never reverse it, and does negative work,
+    /// F·s = −ζ|s|²: whatever ζ a contact has, friction cannot add energy, and no contact position is prescribed that a
+    /// stiff segment could not follow (which is what made sticking particles fixed in the solve throw loads up).
+    /// <para>
+    /// Each contact also prescribes a displacement u, folded into its two segments' residuals (R_{i−1} += u, R_i −= u: exact,
+    /// R is linear in the positions), so the solve knows every displacement a contact makes and none moves a particle
+    /// behind its back (which strained stiff segments without the solve seeing it: the energy gain of heavy loads swinging
+    /// into a sphere). Held: onto the surface, −gap·c (a contact is only held with a gap once the chain drives it past it:
+    /// one found with a gap starts free), or sticking back to where the substep started, and the friction's part of the
+    /// slip, −w_t·(ζ·s₀ + G_t), s₀ the slip before this iteration and G_t the friction the substep has applied so far.
+    /// Free: −w·G, the substep's contact impulse given back, so that a contact released after some iteration gives none.
+    /// </para>
+    /// <para>
+    /// The contact impulse G = m·motion − pull (h² times the force, summed over the substep with the push-outs) is what the
+    /// solve produced: N = G·c is its normal impulse (tension × wrap for a rope over a collider). Normal states are decided
+    /// by the active-set passes (<see cref="Update"/>); friction once per substep from the substep's impulses
+    /// (<see cref="DecideFriction"/>): |a| = |m·s − G_t| is the friction that would have stopped the particle (its inertia
+    /// and the chain's pull); inside the cone (|a| ≤ μ_s·κ·N, or μ_k·κ·N for a sliding one) it sticks, with ζ so large
+    /// (<see cref="CreepSpeed"/>) that it creeps by a millionth of its free slip, and outside it slides
+    /// with the ζ whose impulse is the kinetic friction, ζ = m·f/(|a| − f), f = μ_k·κ·N.
+    /// </para>
+    /// <para>
+    /// κ is the rope's discretisation: a contact particle stands for the piece of rope around it, which turns by the bend
+    /// angle Δθ between its two segments. Coulomb at a point whose normal bisects that bend holds the tension ratio
+    /// (1 + μ tan(Δθ/2))/(1 − μ tan(Δθ/2)); over the continuous piece it is e^{μΔθ} (Euler–Eytelwein). The bound κ·μ·N with
+    /// κ = tanh(μΔθ/2)/(μ tan(Δθ/2)) gives each contact exactly e^{μΔθ}, so the whole wrap holds e^{μθ} for any segment
+    /// length; κ → 1 as Δθ → 0 (a straight rope pressed on a surface has plain μ).
+    /// </para>
+    /// </summary>
+    internal static class ChainContacts
+    {
+
+        /// <summary>A sticking contact's friction damping ζ as a multiple of its particle's mass: it slips by 1/(1 + this) of what it would without friction.</summary>
+        /// <summary>Fastest creep (m/s) of a contact inside its friction cone: sticking is a damper that lets it slip this fast at the cone's edge.</summary>
+        public const double CreepSpeed = 1e-4;
+
+        /// <summary>A contact's friction impulse may differ from the one Coulomb asks for by this fraction of its cone before the passes solve again.</summary>
+        public const double FrictionTolerance = 0.01;
+
+        /// <summary>Largest bend angle (rad) κ is evaluated at: a hairpin's tan(Δθ/2) is infinite.</summary>
+        private const double MaxBend = Math.PI - 1e-3;
+
+        /// <summary>Start of an iteration (after the residual is assembled): every contact's mobility and prescribed displacement, folded into R.</summary>
+        public static void Prepare(ChainState c)
+        {
+            for (int k = 0; k < c.ContactCount; k++)
+            {
+                int i = c.ContactList[k];
+                c.ContactShiftX[i] = 0.0; c.ContactShiftY[i] = 0.0; c.ContactShiftZ[i] = 0.0;
+                Reshift(c, i);
+            }
+        }
+
+        /// <summary>Recomputes contact i's tangential mobility and prescribed displacement for its state and moves its segments' residuals by the change.</summary>
+        private static void Reshift(ChainState c, int i)
+        {
+            double ux, uy, uz;
+            double w = c.InverseMass[i];
+            double zeta = Damping(c, i);
+            c.ContactMobility[i] = w / (1.0 + w * zeta);
+            if (c.ContactActive[i]) Shift(c, i, zeta, out ux, out uy, out uz);
+            else
+            {
+                // the impulse given back: along the normal as the displacement a push-out would make, along the surface as a force
+                double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
+                double gx = c.ContactImpulseX[i], gy = c.ContactImpulseY[i], gz = c.ContactImpulseZ[i];
+                double gn = gx * nx + gy * ny + gz * nz;
+                double un = -w * gn / c.ContactImpulseScale;
+                ux = un * nx - w * (gx - gn * nx); uy = un * ny - w * (gy - gn * ny); uz = un * nz - w * (gz - gn * nz);
+            }
+            double dx = ux - c.ContactShiftX[i], dy = uy - c.ContactShiftY[i], dz = uz - c.ContactShiftZ[i];
+            if (i > 0 && !c.Broken[i - 1]) { c.ResidualX[i - 1] += dx; c.ResidualY[i - 1] += dy; c.ResidualZ[i - 1] += dz; }
+            if (i < c.SegmentCount && !c.Broken[i]) { c.ResidualX[i] -= dx; c.ResidualY[i] -= dy; c.ResidualZ[i] -= dz; }
+            c.ContactShiftX[i] = ux; c.ContactShiftY[i] = uy; c.ContactShiftZ[i] = uz;
+        }
+
+        /// <summary>Contact i's friction damping ζ (kg): a sticking one's, none in a BDF2 substep (friction in contact makes the next substeps backward Euler, see <see cref="ChainState.HeldWithFriction"/>).</summary>
+        private static double Damping(ChainState c, int i) => c.Bdf2Substep || !c.ContactSticking[i] ? 0.0 : c.ContactDamping[i];
+
+        /// <summary>
+        /// The displacement (m) held contact i prescribes in this iteration: along the normal onto the surface (−gap·c), and
+        /// along the surface its friction's part: a sticking one's damper −w_t·(ζ·s₀ + G_t), a sliding one's kinetic
+        /// impulse w·(F − G_t) (s₀ the slip before this iteration, G_t the friction applied in the substep's earlier ones).
+        /// </summary>
+        private static void Shift(ChainState c, int i, double zeta, out double ux, out double uy, out double uz)
+        {
+            double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
+            double gap = c.ContactGap[i];
+            ux = -gap * nx; uy = -gap * ny; uz = -gap * nz;
+            if (zeta > 0.0)
+            {
+                Slip(c, i, out double sx, out double sy, out double sz);
+                Friction(c, i, out double gx, out double gy, out double gz);
+                double wt = c.ContactMobility[i];
+                ux -= wt * (zeta * sx + gx);
+                uy -= wt * (zeta * sy + gy);
+                uz -= wt * (zeta * sz + gz);
+            }
+            else if (KineticImpulse(c, i, out double fx, out double fy, out double fz))
+            {
+                Friction(c, i, out double gx, out double gy, out double gz);
+                double w = c.InverseMass[i];
+                ux += w * (fx - gx); uy += w * (fy - gy); uz += w * (fz - gz);
+            }
+        }
+
+        /// <summary>
+        /// A sliding contact's kinetic friction impulse F (N·s²) over the substep: μ_k·κ·N (<see cref="ChainState.ContactKineticImpulse"/>)
+        /// along its friction direction laid into the current tangent plane. False (F = 0) for any other contact and in a BDF2 substep.
+        /// </summary>
+        private static bool KineticImpulse(ChainState c, int i, out double fx, out double fy, out double fz)
+        {
+            fx = 0.0; fy = 0.0; fz = 0.0;
+            if (c.Bdf2Substep || !c.ContactSliding[i]) return false;
+            double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
+            double dx = c.ContactFrictionDirX[i], dy = c.ContactFrictionDirY[i], dz = c.ContactFrictionDirZ[i];
+            double along = dx * nx + dy * ny + dz * nz;
+            dx -= along * nx; dy -= along * ny; dz -= along * nz;
+            double length = Math.Sqrt(dx * dx + dy * dy + dz * dz);
+            if (!(length > 1e-9)) return false;
+            double scale = c.ContactKineticImpulse[i] / length;
+            fx = dx * scale; fy = dy * scale; fz = dz * scale;
+            return true;
+        }
+
+        /// <summary>The friction impulse (N·s²) contact i has applied so far in the substep, in its current tangent plane.</summary>
+        private static void Friction(ChainState c, int i, out double fx, out double fy, out double fz)
+        {
+            double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
+            fx = c.ContactFrictionX[i]; fy = c.ContactFrictionY[i]; fz = c.ContactFrictionZ[i];
+            double along = fx * nx + fy * ny + fz * nz;
+            fx -= along * nx; fy -= along * ny; fz -= along * nz;
+        }
+
+        /// <summary>
+        /// Contact particle i's tangential slip (m) so far in the substep: its displacement D less the collider's v_c·h,
+        /// along the surface. Friction acts in backward-Euler substeps only (v = D/h), so the slip is h·(v − v_c): a
+        /// sticking particle ends the substep (nearly) at rest on the collider.
+        /// </summary>
+        private static void Slip(ChainState c, int i, out double sx, out double sy, out double sz)
+        {
+            double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
+            double qx = c.ContactSurfaceX[i], qy = c.ContactSurfaceY[i], qz = c.ContactSurfaceZ[i];
+            double rx = c.DX[i] - qx, ry = c.DY[i] - qy, rz = c.DZ[i] - qz;
+            double along = rx * nx + ry * ny + rz * nz;
+            sx = rx - along * nx; sy = ry - along * ny; sz = rz - along * nz;
+        }
+
+        /// <summary>The slip (m) contact i makes under this solution: the one so far plus the motion's part along the surface.</summary>
+        private static void SlipAfter(ChainState c, int i, double mx, double my, double mz, out double sx, out double sy, out double sz)
+        {
+            Slip(c, i, out sx, out sy, out sz);
+            double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
+            double mn = mx * nx + my * ny + mz * nz;
+            sx += mx - mn * nx; sy += my - mn * ny; sz += mz - mn * nz;
+        }
+
+        /// <summary>
+        /// κ (see the class summary) at particle i for μ: tanh(μΔθ/2)/(μ tan(Δθ/2)) with Δθ the angle between its
+        /// segments' directions; 1 at an end of the chain or beside a broken segment.
+        /// </summary>
+        public static double Kappa(ChainState c, int i, double mu)
+        {
+            if (i == 0 || i >= c.SegmentCount || c.Broken[i - 1] || c.Broken[i] || mu <= 0.0) return 1.0;
+            double cos = (double)c.DirX[i - 1] * c.DirX[i] + (double)c.DirY[i - 1] * c.DirY[i] + (double)c.DirZ[i - 1] * c.DirZ[i];
+            double bend = Math.Acos(Math.Max(-1.0, Math.Min(1.0, cos)));
+            if (bend < 1e-6) return 1.0;
+            double half = 0.5 * Math.Min(bend, MaxBend);
+            return Math.Tanh(mu * half) / (mu * Math.Tan(half));
+        }
+
+        /// <summary>Particle i's motion (m) under this solution: W_i·pull, plus the displacement its contact prescribes when it is in the contact set.</summary>
+        public static void Motion(ChainState c, int i, out double mx, out double my, out double mz)
+        {
+            SegmentForceSystem.Motion(c, i, out mx, out my, out mz);
+            if (c.ContactCount == 0 || c.ContactCollider[i] < 0) return;
+            mx += c.ContactShiftX[i]; my += c.ContactShiftY[i]; mz += c.ContactShiftZ[i];
+        }
+
+        /// <summary>
+        /// The active-set pass over the contacts after a solve: a held contact whose normal impulse over the substep would
+        /// pull is released (and gives back the impulse of the substep's earlier passes), a free one whose motion takes it
+        /// past its gap is held again with the friction it had, and a sticking one that needs more friction than its cone
+        /// holds slides (a contact only ever goes from sticking to sliding within a substep, so the passes cannot cycle on
+        /// friction; <see cref="DecideFriction"/> lets it stick again). Returns true when some state changed, so the system
+        /// must be solved again. Contacts are released and their friction changed only in the substep's
+        /// <paramref name="first"/> iteration: in a later one a held contact has taken the chain's whole pull so far, and a
+        /// release or a new damping would give it back as a displacement far outside the linearisation (a light particle
+        /// under a taut rope's pull would move metres); later iterations only hold contacts their motion reaches.
+        /// </summary>
+        public static bool Update(ChainState c, bool first)
+        {
+            bool changed = false;
+            for (int k = 0; k < c.ContactCount; k++)
+            {
+                int i = c.ContactList[k];
+                double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
+                Motion(c, i, out double mx, out double my, out double mz);
+                if (!c.ContactActive[i])
+                {
+                    if (-(nx * mx + ny * my + nz * mz) > c.ContactGap[i])
+                    {
+                        c.ContactActive[i] = true;
+                        Reshift(c, i);
+                        changed = true;
+                    }
+                    continue;
+                }
+                SegmentForceSystem.Pull(c, i, out double px, out double py, out double pz);
+                double m = 1.0 / c.InverseMass[i];
+                // the substep's contact impulse with this iteration's, m·motion − pull
+                IterationImpulse(c, i, m, mx, my, mz, px, py, pz, out double gx, out double gy, out double gz);
+                gx += c.ContactImpulseX[i]; gy += c.ContactImpulseY[i]; gz += c.ContactImpulseZ[i];
+                double normal = gx * nx + gy * ny + gz * nz;
+                // a contact held through the first iteration stays held in the later ones (on the surface it does no work
+                // even where it would pull; giving its impulse back would move the particle by the chain's whole pull)
+                if (!first) continue;
+                if (normal < 0.0)
+                {
+                    c.ContactActive[i] = false;
+                    Reshift(c, i);
+                    changed = true;
+                    continue;
+                }
+                if (!c.Bdf2Substep && c.ContactStaticFriction[i] > 0f && Coulomb(c, i, mx, my, mz, normal))
+                {
+                    Reshift(c, i);
+                    changed = true;
+                }
+            }
+            if (changed) DropContactsWithoutMobility(c);
+            return changed;
+        }
+
+        /// <summary>
+        /// Coulomb's cone at held contact i under this solution (motion in m, substep normal impulse N in N·s², ≥ 0), in the
+        /// passes of the first iteration. Sticking: the friction the damper applies, ζ|s|, is the impulse that holds the
+        /// particle against its inertia and the chain's pull; above μ_s·κ·N (by more than <see cref="FrictionTolerance"/>) it
+        /// slides, its kinetic impulse μ_k·κ·N along that friction's direction. Sliding: the kinetic impulse follows N;
+        /// a solution that would carry the particle along its friction (the slip reversed: friction doing work on it) sticks
+        /// instead, and stays stuck for the rest of the substep (the passes cannot cycle). A contact without a friction
+        /// state yet (new) sticks. Returns true when the state or impulse changed (the system is solved again).
+        /// </summary>
+        internal static Action<string> Debug; // TEMP
+        private static bool Coulomb(ChainState c, int i, double mx, double my, double mz, double normal)
+        {
+            SlipAfter(c, i, mx, my, mz, out double sx, out double sy, out double sz);
+            if (Debug != null) Debug($"p{i} {(c.ContactSliding[i] ? "slide" : c.ContactSticking[i] ? "stick" : "none")} stopped {c.ContactStopped[i]} slip ({sx:E3},{sy:E3},{sz:E3}) D ({c.DX[i]:E3},{c.DY[i]:E3},{c.DZ[i]:E3}) m ({mx:E3},{my:E3},{mz:E3}) |s| {Math.Sqrt(sx*sx+sy*sy+sz*sz):E3} zeta {c.ContactDamping[i]:E3} F {c.ContactDamping[i]*Math.Sqrt(sx*sx+sy*sy+sz*sz):E3} cone {c.ContactStaticFriction[i]*Kappa(c,i,c.ContactStaticFriction[i])*normal:E3} dir ({c.ContactFrictionDirX[i]:F3},{c.ContactFrictionDirY[i]:F3}) kin {c.ContactKineticImpulse[i]:E3}"); // TEMP
+            float kinetic = c.ContactKineticFriction[i], stat = c.ContactStaticFriction[i];
+            if (c.ContactSliding[i])
+            {
+                double dx = c.ContactFrictionDirX[i], dy = c.ContactFrictionDirY[i], dz = c.ContactFrictionDirZ[i];
+                if (sx * dx + sy * dy + sz * dz > 0.0)
+                {
+                    Stick(c, i, normal);
+                    c.ContactStopped[i] = true;
+                    return true;
+                }
+                double impulse = kinetic * Kappa(c, i, kinetic) * normal;
+                if (Math.Abs(impulse - c.ContactKineticImpulse[i]) <= FrictionTolerance * impulse) return false;
+                c.ContactKineticImpulse[i] = impulse;
+                return true;
+            }
+            if (!c.ContactSticking[i])
+            {
+                Stick(c, i, normal);
+                return true;
+            }
+            if (c.ContactStopped[i]) return false;
+            double slip = Math.Sqrt(sx * sx + sy * sy + sz * sz);
+            double cone = stat * Kappa(c, i, stat) * normal;
+            if (c.ContactDamping[i] * slip <= (1.0 + FrictionTolerance) * cone) return false;
+            Slide(c, i, -sx / slip, -sy / slip, -sz / slip, kinetic * Kappa(c, i, kinetic) * normal);
+            return true;
+        }
+
+        /// <summary>
+        /// After the substep's last iteration: each held contact's friction state for the next substep (one substep's lag).
+        /// A sliding contact that still slips against its friction, faster than <see cref="CreepSpeed"/>, slides on, its
+        /// friction opposing the slip it ended with; any other held contact pressed onto a surface with friction sticks,
+        /// with the damping of its normal impulse.
+        /// </summary>
+        public static void DecideFriction(ChainState c)
+        {
+            c.HeldWithFriction = false;
+            for (int k = 0; k < c.ContactCount; k++)
+            {
+                int i = c.ContactList[k];
+                if (!c.ContactActive[i]) continue;
+                double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
+                double normal = c.ContactImpulseX[i] * nx + c.ContactImpulseY[i] * ny + c.ContactImpulseZ[i] * nz;
+                c.ContactNormalImpulse[i] = normal;
+                if (!(normal > 0.0) || c.ContactStaticFriction[i] == 0f)
+                {
+                    c.ContactSticking[i] = false;
+                    c.ContactSliding[i] = false;
+                    continue;
+                }
+                c.HeldWithFriction = true;
+                Slip(c, i, out double sx, out double sy, out double sz);
+                double slip = Math.Sqrt(sx * sx + sy * sy + sz * sz);
+                bool against = sx * c.ContactFrictionDirX[i] + sy * c.ContactFrictionDirY[i] + sz * c.ContactFrictionDirZ[i] < 0.0;
+                float kinetic = c.ContactKineticFriction[i];
+                if (c.ContactSliding[i] && against && slip > CreepSpeed * c.Substep)
+                    Slide(c, i, -sx / slip, -sy / slip, -sz / slip, kinetic * Kappa(c, i, kinetic) * normal);
+                else Stick(c, i, normal);
+            }
+        }
+
+        /// <summary>
+        /// Contact i sticks under normal impulse N (N·s²): a damper ζ = μ_s·κ·N/ε, ε the slip of <see cref="CreepSpeed"/>
+        /// over the substep, so the friction reaches its cone when the particle creeps that fast.
+        /// </summary>
+        private static void Stick(ChainState c, int i, double normal)
+        {
+            float stat = c.ContactStaticFriction[i];
+            c.ContactSticking[i] = true;
+            c.ContactSliding[i] = false;
+            c.ContactDamping[i] = stat * Kappa(c, i, stat) * normal / (CreepSpeed * c.Substep);
+        }
+
+        /// <summary>Contact i slides: kinetic friction impulse (N·s²) along the unit direction d (opposite its slip).</summary>
+        private static void Slide(ChainState c, int i, double dx, double dy, double dz, double impulse)
+        {
+            c.ContactSticking[i] = false;
+            c.ContactSliding[i] = true;
+            c.ContactFrictionDirX[i] = dx; c.ContactFrictionDirY[i] = dy; c.ContactFrictionDirZ[i] = dz;
+            c.ContactKineticImpulse[i] = impulse;
+        }
+
+        /// <summary>
+        /// A held contact that would leave one of its segments with no mobility along it (the other end pinned, no
+        /// compliance) would make that row singular: it is dropped.
+        /// </summary>
+        public static void DropContactsWithoutMobility(ChainState c)
+        {
+            for (int k = 0; k < c.ContactCount; k++)
+            {
+                int i = c.ContactList[k];
+                if (!c.ContactActive[i] || HasAxialMobility(c, i)) continue;
+                c.ContactActive[i] = false;
+                Reshift(c, i);
+            }
+        }
+
+        private static bool HasAxialMobility(ChainState c, int i) =>
+            (i == 0 || AxialMobilityLeft(c, i - 1)) && (i >= c.SegmentCount || AxialMobilityLeft(c, i));
+
+        /// <summary>True when segment j keeps mobility (or compliance) along its direction with its ends' contacts held.</summary>
+        private static bool AxialMobilityLeft(ChainState c, int j)
+        {
+            if (c.Broken[j] || c.Compliance[j] > 0f) return true;
+            double nx = c.DirX[j], ny = c.DirY[j], nz = c.DirZ[j];
+            double along = SegmentForceSystem.AlongMobility(c, j, nx, ny, nz) + SegmentForceSystem.AlongMobility(c, j + 1, nx, ny, nz);
+            return along > 1e-12 * ((double)c.InverseMass[j] + c.InverseMass[j + 1]);
+        }
+
+        /// <summary>
+        /// The contact impulse (N·s², the solve's h_eff² times the force) of contact particle i (mass m, kg) in this iteration,
+        /// motion (m) and pull (N·s²) given: m·motion − pull, with the motion along the normal scaled by (h_eff/h)²
+        /// (<see cref="ChainState.ContactImpulseScale"/>): it is taken as backward Euler takes a push-out, as the force
+        /// m·motion/h² (a particle resting on a surface is pushed out by h²·g each substep in either scheme), so its impulse
+        /// in the solve's units is h_eff²/h² of m·motion (in backward Euler the scale is 1).
+        /// </summary>
+        private static void IterationImpulse(ChainState c, int i, double m, double mx, double my, double mz, double px, double py, double pz,
+            out double ix, out double iy, out double iz)
+        {
+            double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
+            double along = (c.ContactImpulseScale - 1.0) * (mx * nx + my * ny + mz * nz);
+            ix = m * (mx + along * nx) - px; iy = m * (my + along * ny) - py; iz = m * (mz + along * nz) - pz;
+        }
+
+        /// <summary>
+        /// Contact particle i makes the motion (mx, my, mz) of this solution (m): adds the contact impulse to the substep's
+        /// and takes the displacement the contact imposes out of the solve displacement Δ of the second-order integrator,
+        /// which takes it as backward Euler does a push-out (see <see cref="Rope"/>'s integration): its part along the normal.
+        /// Friction stays in Δ: it is a force like the chain's (a viscous one, see <see cref="Slip"/>).
+        /// </summary>
+        public static void Finish(ChainState c, int i, double px, double py, double pz, double mx, double my, double mz)
+        {
+            double w = c.InverseMass[i], m = 1.0 / w;
+            IterationImpulse(c, i, m, mx, my, mz, px, py, pz, out double ix, out double iy, out double iz);
+            c.ContactImpulseX[i] += ix; c.ContactImpulseY[i] += iy; c.ContactImpulseZ[i] += iz;
+            double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
+            // the friction of the substep so far: a sticking damper's −ζ·s on the slip it ends with, a sliding one's kinetic impulse
+            double zeta = c.ContactActive[i] ? Damping(c, i) : 0.0;
+            if (zeta > 0.0)
+            {
+                SlipAfter(c, i, mx, my, mz, out double sx, out double sy, out double sz);
+                c.ContactFrictionX[i] = -zeta * sx; c.ContactFrictionY[i] = -zeta * sy; c.ContactFrictionZ[i] = -zeta * sz;
+            }
+            else
+            {
+                double fx = 0.0, fy = 0.0, fz = 0.0;
+                if (c.ContactActive[i]) KineticImpulse(c, i, out fx, out fy, out fz);
+                c.ContactFrictionX[i] = fx; c.ContactFrictionY[i] = fy; c.ContactFrictionZ[i] = fz;
+            }
+            double ux = c.ContactShiftX[i], uy = c.ContactShiftY[i], uz = c.ContactShiftZ[i];
+            double along = ux * nx + uy * ny + uz * nz;
+            double ex = along * nx, ey = along * ny, ez = along * nz;
+            c.SolveDX[i] -= ex; c.SolveDY[i] -= ey; c.SolveDZ[i] -= ez;
+        }
+    }
+}
