@@ -62,7 +62,8 @@ namespace HookeRope.Solver
             }
             SolveActiveSet(c, tensionOnly, contacts, first);
             double nonlinear = Apply(c, contacts);
-            return EstimateTooLow(c, invH2) || nonlinear > NonlinearTolerance;
+            bool branches = c.Plasticity != null && c.Plasticity.UpdateBranches(c, invH2);
+            return EstimateTooLow(c, invH2) || nonlinear > NonlinearTolerance || branches;
         }
 
         private static void ClearForces(ChainState c)
@@ -87,23 +88,25 @@ namespace HookeRope.Solver
             double[] fx = c.ForceX, fy = c.ForceY, fz = c.ForceZ, rx = c.ResidualX, ry = c.ResidualY, rz = c.ResidualZ;
             double[] axial = c.AxialCompliance, transverse = c.TransverseCompliance, estimate = c.EstimatedTension;
             bool[] broken = c.Broken, active = c.Active;
+            SegmentPlasticity plastic = c.Plasticity;
             for (int j = 0; j < s; j++)
             {
                 if (broken[j]) { active[j] = false; continue; }
-                float len = c.Direction(j, out float fnx, out float fny, out float fnz, out float ddx, out float ddy, out float ddz);
-                length[j] = len;
-                double nx = fnx, ny = fny, nz = fnz;
+                double len = c.Direction(j, out double nx, out double ny, out double nz, out float ddx, out float ddy, out float ddz);
+                length[j] = (float)len;
                 double alpha = compliance[j];
                 double mobility = (double)w[j] + w[j + 1];
                 if (mobility == 0.0 && alpha == 0.0) { active[j] = false; continue; }
                 double g = alpha > 0.0 ? gammaAll : 0.0;
-                double restEffective = rest[j], alphaTilde = alpha * invH2;
+                double restJ = plastic == null ? rest[j] : plastic.Rest(j); // a plastic segment's force is measured from L_p
+                double restEffective = restJ, alphaTilde = alpha * invH2;
                 if (g > 0.0)
                 {
                     double rate = nx * ddx + ny * ddy + nz * ddz; // the substep's stretch along n, m
-                    restEffective = (rest[j] + g * (len - rate)) / (1.0 + g);
+                    restEffective = (restJ + g * (len - rate)) / (1.0 + g);
                     alphaTilde /= 1.0 + g;
                 }
+                if (plastic != null && plastic.IsYielding(j)) plastic.FlowRow(j, invH2, ref restEffective, ref alphaTilde);
                 double magnitude = Math.Sqrt(fx[j] * fx[j] + fy[j] * fy[j] + fz[j] * fz[j]);
                 double ex = nx, ey = ny, ez = nz, signed = 0.0;
                 if (magnitude > 0.0)
