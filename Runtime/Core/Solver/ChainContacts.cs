@@ -38,13 +38,27 @@ namespace HookeRope.Solver
     /// </summary>
     internal static class ChainContacts
     {
+        internal static Action<string> Log; // TEMP
 
-        /// <summary>A sticking contact's friction damping ζ as a multiple of its particle's mass: it slips by 1/(1 + this) of what it would without friction.</summary>
         /// <summary>Fastest creep (m/s) of a contact inside its friction cone: sticking is a damper that lets it slip this fast at the cone's edge.</summary>
         public const double CreepSpeed = 1e-4;
 
         /// <summary>A contact's friction impulse may differ from the one Coulomb asks for by this fraction of its cone before the passes solve again.</summary>
-        public const double FrictionTolerance = 0.01;
+        public const double FrictionTolerance = 1e-3;
+
+        /// <summary>
+        /// A contact whose normal impulse is below this fraction of the largest one of the last substep
+        /// (<see cref="ChainState.ContactNormalScale"/>) slides without friction (ζ = 0): its friction is negligible, and
+        /// following it would only make the passes run out.
+        /// </summary>
+        public const double NegligibleNormal = 1e-3;
+
+        /// <summary>
+        /// A free contact is held once the solution drives it past its gap by more than this fraction of the particle's
+        /// radius (less is left to the collision pass's push-out): a rope lying along a face without load would otherwise
+        /// be held and released in turn through every pass.
+        /// </summary>
+        public const double HoldTolerance = 1e-4;
 
         /// <summary>Largest bend angle (rad) κ is evaluated at: a hairpin's tan(Δθ/2) is infinite.</summary>
         private const double MaxBend = Math.PI - 1e-3;
@@ -83,13 +97,13 @@ namespace HookeRope.Solver
             c.ContactShiftX[i] = ux; c.ContactShiftY[i] = uy; c.ContactShiftZ[i] = uz;
         }
 
-        /// <summary>Contact i's friction damping ζ (kg): a sticking one's, none in a BDF2 substep (friction in contact makes the next substeps backward Euler, see <see cref="ChainState.HeldWithFriction"/>).</summary>
-        private static double Damping(ChainState c, int i) => c.Bdf2Substep || !c.ContactSticking[i] ? 0.0 : c.ContactDamping[i];
+        /// <summary>Contact i's friction damping ζ (kg): a sticking or sliding one's, none in a BDF2 substep (friction in contact makes the next substeps backward Euler, see <see cref="ChainState.HeldWithFriction"/>).</summary>
+        private static double Damping(ChainState c, int i) => c.Bdf2Substep || !(c.ContactSticking[i] || c.ContactSliding[i]) ? 0.0 : c.ContactDamping[i];
 
         /// <summary>
         /// The displacement (m) held contact i prescribes in this iteration: along the normal onto the surface (−gap·c), and
-        /// along the surface its friction's part: a sticking one's damper −w_t·(ζ·s₀ + G_t), a sliding one's kinetic
-        /// impulse w·(F − G_t) (s₀ the slip before this iteration, G_t the friction applied in the substep's earlier ones).
+        /// along the surface its friction damper's part, −w_t·(ζ·s₀ + G_t) (s₀ the slip before this iteration, G_t the
+        /// friction applied in the substep's earlier ones).
         /// </summary>
         private static void Shift(ChainState c, int i, double zeta, out double ux, out double uy, out double uz)
         {
@@ -105,31 +119,6 @@ namespace HookeRope.Solver
                 uy -= wt * (zeta * sy + gy);
                 uz -= wt * (zeta * sz + gz);
             }
-            else if (KineticImpulse(c, i, out double fx, out double fy, out double fz))
-            {
-                Friction(c, i, out double gx, out double gy, out double gz);
-                double w = c.InverseMass[i];
-                ux += w * (fx - gx); uy += w * (fy - gy); uz += w * (fz - gz);
-            }
-        }
-
-        /// <summary>
-        /// A sliding contact's kinetic friction impulse F (N·s²) over the substep: μ_k·κ·N (<see cref="ChainState.ContactKineticImpulse"/>)
-        /// along its friction direction laid into the current tangent plane. False (F = 0) for any other contact and in a BDF2 substep.
-        /// </summary>
-        private static bool KineticImpulse(ChainState c, int i, out double fx, out double fy, out double fz)
-        {
-            fx = 0.0; fy = 0.0; fz = 0.0;
-            if (c.Bdf2Substep || !c.ContactSliding[i]) return false;
-            double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
-            double dx = c.ContactFrictionDirX[i], dy = c.ContactFrictionDirY[i], dz = c.ContactFrictionDirZ[i];
-            double along = dx * nx + dy * ny + dz * nz;
-            dx -= along * nx; dy -= along * ny; dz -= along * nz;
-            double length = Math.Sqrt(dx * dx + dy * dy + dz * dz);
-            if (!(length > 1e-9)) return false;
-            double scale = c.ContactKineticImpulse[i] / length;
-            fx = dx * scale; fy = dy * scale; fz = dz * scale;
-            return true;
         }
 
         /// <summary>The friction impulse (N·s²) contact i has applied so far in the substep, in its current tangent plane.</summary>
@@ -199,6 +188,7 @@ namespace HookeRope.Solver
         /// </summary>
         public static bool Update(ChainState c, bool first)
         {
+            Log?.Invoke("PASS");
             bool changed = false;
             for (int k = 0; k < c.ContactCount; k++)
             {
@@ -207,11 +197,14 @@ namespace HookeRope.Solver
                 Motion(c, i, out double mx, out double my, out double mz);
                 if (!c.ContactActive[i])
                 {
-                    if (-(nx * mx + ny * my + nz * mz) > c.ContactGap[i])
+                    // one released in this substep stays free in it (a contact with next to no load would cycle between the
+                    // states; if it ends up inside the surface the collision pass pushes it out)
+                    if (!c.ContactStopped[i] && -(nx * mx + ny * my + nz * mz) > c.ContactGap[i] + HoldTolerance * c.Radius[i])
                     {
                         c.ContactActive[i] = true;
                         Reshift(c, i);
                         changed = true;
+                        Log?.Invoke($"hold p{i}");
                     }
                     continue;
                 }
@@ -223,15 +216,17 @@ namespace HookeRope.Solver
                 double normal = gx * nx + gy * ny + gz * nz;
                 // a contact held through the first iteration stays held in the later ones (on the surface it does no work
                 // even where it would pull; giving its impulse back would move the particle by the chain's whole pull)
-                if (!first) continue;
-                if (normal < 0.0)
+                if (first && normal < -NegligibleNormal * c.ContactNormalScale)
                 {
                     c.ContactActive[i] = false;
+                    c.ContactStopped[i] = true;
                     Reshift(c, i);
                     changed = true;
+                    Log?.Invoke($"release p{i} N {normal:E2}");
                     continue;
                 }
-                if (!c.Bdf2Substep && c.ContactStaticFriction[i] > 0f && Coulomb(c, i, mx, my, mz, normal))
+                // friction follows its cone in every iteration (a sliding contact's slip grows in the later ones)
+                if (!c.Bdf2Substep && c.ContactStaticFriction[i] > 0f && Coulomb(c, i, mx, my, mz, Math.Max(normal, 0.0)))
                 {
                     Reshift(c, i);
                     changed = true;
@@ -243,55 +238,80 @@ namespace HookeRope.Solver
 
         /// <summary>
         /// Coulomb's cone at held contact i under this solution (motion in m, substep normal impulse N in N·s², ≥ 0), in the
-        /// passes of the first iteration. Sticking: the friction the damper applies, ζ|s|, is the impulse that holds the
-        /// particle against its inertia and the chain's pull; above μ_s·κ·N (by more than <see cref="FrictionTolerance"/>) it
-        /// slides, its kinetic impulse μ_k·κ·N along that friction's direction. Sliding: the kinetic impulse follows N;
-        /// a solution that would carry the particle along its friction (the slip reversed: friction doing work on it) sticks
-        /// instead, and stays stuck for the rest of the substep (the passes cannot cycle). A contact without a friction
-        /// state yet (new) sticks. Returns true when the state or impulse changed (the system is solved again).
+        /// passes of the first iteration. The friction is the damper's ζ|s| (s the slip over the substep under this
+        /// solution); the cone is μ·κ·N (μ_s while it sticks, μ_k once it slides). Sticking: ζ is the stiff damper of
+        /// <see cref="StickingDamping"/>; where that asks more than the cone (by more than <see cref="FrictionTolerance"/>)
+        /// the contact slides, and a sliding contact's ζ is moved to the one whose friction is the cone, ζ·cone/(ζ|s|): the
+        /// friction is then μ·κ·N opposing the slip, whatever the slip, and stays a damper (it can slow the slip, never
+        /// reverse it: no energy gain). A sliding contact whose ζ reaches the sticking one sticks. A contact without a
+        /// friction state yet (new) sticks. Returns true when ζ changed (the system is solved again).
         /// </summary>
-        internal static Action<string> Debug; // TEMP
         private static bool Coulomb(ChainState c, int i, double mx, double my, double mz, double normal)
         {
-            SlipAfter(c, i, mx, my, mz, out double sx, out double sy, out double sz);
-            if (Debug != null) Debug($"p{i} {(c.ContactSliding[i] ? "slide" : c.ContactSticking[i] ? "stick" : "none")} stopped {c.ContactStopped[i]} slip ({sx:E3},{sy:E3},{sz:E3}) D ({c.DX[i]:E3},{c.DY[i]:E3},{c.DZ[i]:E3}) m ({mx:E3},{my:E3},{mz:E3}) |s| {Math.Sqrt(sx*sx+sy*sy+sz*sz):E3} zeta {c.ContactDamping[i]:E3} F {c.ContactDamping[i]*Math.Sqrt(sx*sx+sy*sy+sz*sz):E3} cone {c.ContactStaticFriction[i]*Kappa(c,i,c.ContactStaticFriction[i])*normal:E3} dir ({c.ContactFrictionDirX[i]:F3},{c.ContactFrictionDirY[i]:F3}) kin {c.ContactKineticImpulse[i]:E3}"); // TEMP
-            float kinetic = c.ContactKineticFriction[i], stat = c.ContactStaticFriction[i];
-            if (c.ContactSliding[i])
+            // no friction under a normal impulse below NegligibleNormal of the largest one (following it would only make the
+            // passes run out)
+            if (normal < NegligibleNormal * c.ContactNormalScale)
             {
-                double dx = c.ContactFrictionDirX[i], dy = c.ContactFrictionDirY[i], dz = c.ContactFrictionDirZ[i];
-                if (sx * dx + sy * dy + sz * dz > 0.0)
-                {
-                    Stick(c, i, normal);
-                    c.ContactStopped[i] = true;
-                    return true;
-                }
-                double impulse = kinetic * Kappa(c, i, kinetic) * normal;
-                if (Math.Abs(impulse - c.ContactKineticImpulse[i]) <= FrictionTolerance * impulse) return false;
-                c.ContactKineticImpulse[i] = impulse;
+                if (c.ContactDamping[i] == 0.0 && c.ContactSliding[i]) return false;
+                c.ContactDamping[i] = 0.0;
+                c.ContactSliding[i] = true;
+                c.ContactSticking[i] = false;
                 return true;
             }
-            if (!c.ContactSticking[i])
+            if (!c.ContactSticking[i] && !c.ContactSliding[i])
             {
                 Stick(c, i, normal);
                 return true;
             }
-            if (c.ContactStopped[i]) return false;
+            SlipAfter(c, i, mx, my, mz, out double sx, out double sy, out double sz);
             double slip = Math.Sqrt(sx * sx + sy * sy + sz * sz);
-            double cone = stat * Kappa(c, i, stat) * normal;
-            if (c.ContactDamping[i] * slip <= (1.0 + FrictionTolerance) * cone) return false;
-            Slide(c, i, -sx / slip, -sy / slip, -sz / slip, kinetic * Kappa(c, i, kinetic) * normal);
+            bool sliding = c.ContactSliding[i];
+            float mu = sliding ? c.ContactKineticFriction[i] : c.ContactStaticFriction[i];
+            double cone = mu * Kappa(c, i, mu) * normal;
+            double stiff = StickingDamping(c, i, normal);
+            double zeta = c.ContactDamping[i];
+            double force = zeta * slip;
+            double next;
+            if (force > (1.0 + FrictionTolerance) * cone)
+            {
+                if (!sliding)
+                {
+                    // leaves the static cone: slides with the kinetic one
+                    float kinetic = c.ContactKineticFriction[i];
+                    cone = kinetic * Kappa(c, i, kinetic) * normal;
+                }
+                next = zeta * cone / force;
+            }
+            else if (sliding && force < (1.0 - FrictionTolerance) * cone)
+            {
+                next = force > 0.0 ? Math.Min(stiff, zeta * cone / force) : stiff;
+            }
+            else if (!sliding && Math.Abs(zeta - stiff) > 0.5 * stiff)
+            {
+                // a sticking contact's damper follows its normal impulse only roughly (it stiffens the cone's edge, it is no
+                // friction force of its own): every change makes the system be solved again
+                next = stiff;
+            }
+            else
+            {
+                return false;
+            }
+            c.ContactDamping[i] = next;
+            c.ContactSliding[i] = next < stiff;
+            c.ContactSticking[i] = !c.ContactSliding[i];
             return true;
         }
 
         /// <summary>
-        /// After the substep's last iteration: each held contact's friction state for the next substep (one substep's lag).
-        /// A sliding contact that still slips against its friction, faster than <see cref="CreepSpeed"/>, slides on, its
-        /// friction opposing the slip it ended with; any other held contact pressed onto a surface with friction sticks,
-        /// with the damping of its normal impulse.
+        /// After the substep's last iteration: each held contact's normal impulse (kept for the next substep's first pass)
+        /// and whether friction acts on it: one not pressed onto a surface with friction loses its friction state; the
+        /// others keep theirs (ζ included: a sliding contact's ζ is the next substep's first guess) and make the next
+        /// substep backward Euler (<see cref="ChainState.HeldWithFriction"/>).
         /// </summary>
         public static void DecideFriction(ChainState c)
         {
             c.HeldWithFriction = false;
+            c.ContactNormalScale = 0.0;
             for (int k = 0; k < c.ContactCount; k++)
             {
                 int i = c.ContactList[k];
@@ -299,6 +319,7 @@ namespace HookeRope.Solver
                 double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
                 double normal = c.ContactImpulseX[i] * nx + c.ContactImpulseY[i] * ny + c.ContactImpulseZ[i] * nz;
                 c.ContactNormalImpulse[i] = normal;
+                c.ContactNormalScale = Math.Max(c.ContactNormalScale, normal);
                 if (!(normal > 0.0) || c.ContactStaticFriction[i] == 0f)
                 {
                     c.ContactSticking[i] = false;
@@ -306,35 +327,26 @@ namespace HookeRope.Solver
                     continue;
                 }
                 c.HeldWithFriction = true;
-                Slip(c, i, out double sx, out double sy, out double sz);
-                double slip = Math.Sqrt(sx * sx + sy * sy + sz * sz);
-                bool against = sx * c.ContactFrictionDirX[i] + sy * c.ContactFrictionDirY[i] + sz * c.ContactFrictionDirZ[i] < 0.0;
-                float kinetic = c.ContactKineticFriction[i];
-                if (c.ContactSliding[i] && against && slip > CreepSpeed * c.Substep)
-                    Slide(c, i, -sx / slip, -sy / slip, -sz / slip, kinetic * Kappa(c, i, kinetic) * normal);
-                else Stick(c, i, normal);
+                if (!c.ContactSticking[i] && !c.ContactSliding[i]) Stick(c, i, normal);
             }
         }
 
         /// <summary>
-        /// Contact i sticks under normal impulse N (N·s²): a damper ζ = μ_s·κ·N/ε, ε the slip of <see cref="CreepSpeed"/>
-        /// over the substep, so the friction reaches its cone when the particle creeps that fast.
+        /// A sticking contact's damping ζ = μ_s·κ·N/ε (kg) under normal impulse N (N·s²), ε the slip of <see cref="CreepSpeed"/>
+        /// over the substep: the friction reaches its cone when the particle creeps that fast.
         /// </summary>
-        private static void Stick(ChainState c, int i, double normal)
+        private static double StickingDamping(ChainState c, int i, double normal)
         {
             float stat = c.ContactStaticFriction[i];
-            c.ContactSticking[i] = true;
-            c.ContactSliding[i] = false;
-            c.ContactDamping[i] = stat * Kappa(c, i, stat) * normal / (CreepSpeed * c.Substep);
+            return stat * Kappa(c, i, stat) * normal / (CreepSpeed * c.Substep);
         }
 
-        /// <summary>Contact i slides: kinetic friction impulse (N·s²) along the unit direction d (opposite its slip).</summary>
-        private static void Slide(ChainState c, int i, double dx, double dy, double dz, double impulse)
+        /// <summary>Contact i sticks under normal impulse N (N·s²), with the damping of <see cref="StickingDamping"/>.</summary>
+        private static void Stick(ChainState c, int i, double normal)
         {
-            c.ContactSticking[i] = false;
-            c.ContactSliding[i] = true;
-            c.ContactFrictionDirX[i] = dx; c.ContactFrictionDirY[i] = dy; c.ContactFrictionDirZ[i] = dz;
-            c.ContactKineticImpulse[i] = impulse;
+            c.ContactSticking[i] = true;
+            c.ContactSliding[i] = false;
+            c.ContactDamping[i] = StickingDamping(c, i, normal);
         }
 
         /// <summary>
@@ -400,9 +412,7 @@ namespace HookeRope.Solver
             }
             else
             {
-                double fx = 0.0, fy = 0.0, fz = 0.0;
-                if (c.ContactActive[i]) KineticImpulse(c, i, out fx, out fy, out fz);
-                c.ContactFrictionX[i] = fx; c.ContactFrictionY[i] = fy; c.ContactFrictionZ[i] = fz;
+                c.ContactFrictionX[i] = 0.0; c.ContactFrictionY[i] = 0.0; c.ContactFrictionZ[i] = 0.0;
             }
             double ux = c.ContactShiftX[i], uy = c.ContactShiftY[i], uz = c.ContactShiftZ[i];
             double along = ux * nx + uy * ny + uz * nz;

@@ -85,7 +85,8 @@ namespace HookeRope.Solver
         public float[] ContactSurfaceX, ContactSurfaceY, ContactSurfaceZ;
         public double[] ContactImpulseX, ContactImpulseY, ContactImpulseZ;
         public double[] ContactFrictionX, ContactFrictionY, ContactFrictionZ;
-        public bool[] ContactStopped;
+        public bool[] ContactStopped;                   // released in this substep (stays free in it)
+        public bool[] ContactSettled;                   // stopped sliding in this substep (sticks for the rest of it)
         public byte[] ContactMemory;
         public double[] ContactDamping;
         public double[] ContactFrictionDirX, ContactFrictionDirY, ContactFrictionDirZ;
@@ -93,6 +94,7 @@ namespace HookeRope.Solver
         public double[] ContactNormalImpulse;
         public bool Bdf2Substep;                        // this substep runs BDF2 (where a contact particle is at rest depends on it)
         public double Substep;                          // s, this substep's h
+        public double ContactNormalScale;               // N·s², the largest normal impulse of the last substep's contacts
         public bool HeldWithFriction;                   // the last substep ended with a held contact pressed onto a surface with friction
         public double ContactImpulseScale = 1.0;        // (h_eff/h)²: the impulse (in the solve's h_eff² units) of a push-out per m·push
         // plastic state of the segments (issue 15; null for an elastic rope without an energy absorber: no work, no memory)
@@ -138,7 +140,7 @@ namespace HookeRope.Solver
             ContactNX = new float[n]; ContactNY = new float[n]; ContactNZ = new float[n];
             ContactGap = new float[n]; ContactLoad = new float[n];
             ContactCollider = new int[n]; ContactActive = new bool[n]; ContactList = new int[n];
-            ContactSticking = new bool[n]; ContactSliding = new bool[n]; ContactStopped = new bool[n]; ContactMobility = new double[n];
+            ContactSticking = new bool[n]; ContactSliding = new bool[n]; ContactStopped = new bool[n]; ContactSettled = new bool[n]; ContactMobility = new double[n];
             ContactShiftX = new double[n]; ContactShiftY = new double[n]; ContactShiftZ = new double[n];
             ContactKineticFriction = new float[n]; ContactStaticFriction = new float[n];
             ContactSurfaceX = new float[n]; ContactSurfaceY = new float[n]; ContactSurfaceZ = new float[n];
