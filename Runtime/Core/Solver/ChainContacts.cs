@@ -21,12 +21,13 @@ namespace HookeRope.Solver
     /// </para>
     /// <para>
     /// The contact impulse G = m·motion − pull (h² times the force, summed over the substep with the push-outs) is what the
-    /// solve produced: N = G·c is its normal impulse (tension × wrap for a rope over a collider). Normal states are decided
-    /// by the active-set passes (<see cref="Update"/>); friction once per substep from the substep's impulses
-    /// (<see cref="DecideFriction"/>): |a| = |m·s − G_t| is the friction that would have stopped the particle (its inertia
-    /// and the chain's pull); inside the cone (|a| ≤ μ_s·κ·N, or μ_k·κ·N for a sliding one) it sticks, with ζ so large
-    /// (<see cref="CreepSpeed"/>) that it creeps by a millionth of its free slip, and outside it slides
-    /// with the ζ whose impulse is the kinetic friction, ζ = m·f/(|a| − f), f = μ_k·κ·N.
+    /// solve produced: N = G·c is its normal impulse (tension × wrap for a rope over a collider). Normal states and
+    /// friction are decided by the active-set passes (<see cref="Update"/>) against that N. Sticking: ζ so large
+    /// (<see cref="CreepSpeed"/>) that the friction reaches the cone μ_s·κ·N only when the particle creeps at 0.1 mm/s.
+    /// Where the friction ζ|s| a solution asks exceeds the cone the contact slides, and a sliding contact's ζ is the one
+    /// whose friction is the kinetic cone, ζ·cone/(ζ|s|), iterated through the passes (and kept from one substep to the
+    /// next, where it is the first guess): Coulomb's bound μ_k·κ·N opposing the slip, still a damper. A sliding contact
+    /// whose ζ reaches the sticking one sticks again.
     /// </para>
     /// <para>
     /// κ is the rope's discretisation: a contact particle stands for the piece of rope around it, which turns by the bend
@@ -38,8 +39,6 @@ namespace HookeRope.Solver
     /// </summary>
     internal static class ChainContacts
     {
-        internal static Action<string> Log; // TEMP
-
         /// <summary>Fastest creep (m/s) of a contact inside its friction cone: sticking is a damper that lets it slip this fast at the cone's edge.</summary>
         public const double CreepSpeed = 1e-4;
 
@@ -177,18 +176,16 @@ namespace HookeRope.Solver
 
         /// <summary>
         /// The active-set pass over the contacts after a solve: a held contact whose normal impulse over the substep would
-        /// pull is released (and gives back the impulse of the substep's earlier passes), a free one whose motion takes it
-        /// past its gap is held again with the friction it had, and a sticking one that needs more friction than its cone
-        /// holds slides (a contact only ever goes from sticking to sliding within a substep, so the passes cannot cycle on
-        /// friction; <see cref="DecideFriction"/> lets it stick again). Returns true when some state changed, so the system
-        /// must be solved again. Contacts are released and their friction changed only in the substep's
-        /// <paramref name="first"/> iteration: in a later one a held contact has taken the chain's whole pull so far, and a
-        /// release or a new damping would give it back as a displacement far outside the linearisation (a light particle
-        /// under a taut rope's pull would move metres); later iterations only hold contacts their motion reaches.
+        /// pull is released (and gives back the impulse of the substep's earlier passes) and stays free for the rest of the
+        /// substep; a free one whose motion takes it past its gap (by more than <see cref="HoldTolerance"/>) is held again
+        /// with the friction it had; and each held contact's friction is moved to its cone (<see cref="Coulomb"/>).
+        /// Returns true when some state changed, so the system must be solved again. Contacts are released only in the
+        /// substep's <paramref name="first"/> iteration: in a later one a held contact has taken the chain's whole pull so
+        /// far, and a release would give it back as a displacement far outside the linearisation (a light particle under a
+        /// taut rope's pull would move metres).
         /// </summary>
         public static bool Update(ChainState c, bool first)
         {
-            Log?.Invoke("PASS");
             bool changed = false;
             for (int k = 0; k < c.ContactCount; k++)
             {
@@ -204,7 +201,6 @@ namespace HookeRope.Solver
                         c.ContactActive[i] = true;
                         Reshift(c, i);
                         changed = true;
-                        Log?.Invoke($"hold p{i}");
                     }
                     continue;
                 }
@@ -222,10 +218,9 @@ namespace HookeRope.Solver
                     c.ContactStopped[i] = true;
                     Reshift(c, i);
                     changed = true;
-                    Log?.Invoke($"release p{i} N {normal:E2}");
                     continue;
                 }
-                // friction follows its cone in every iteration (a sliding contact's slip grows in the later ones)
+                // friction follows its cone in every iteration
                 if (!c.Bdf2Substep && c.ContactStaticFriction[i] > 0f && Coulomb(c, i, mx, my, mz, Math.Max(normal, 0.0)))
                 {
                     Reshift(c, i);

@@ -70,14 +70,13 @@ namespace HookeRope.Solver
         public int ContactCount;
 
         // friction in the exact solve (see ChainContacts; allocated with the contacts). Per contact of the current set:
-        // its friction state (sticking: a damper; sliding: a kinetic impulse; neither: none yet), the tangential mobility
-        // of a held contact (1/kg: 1/(m + ζ)), the displacement the contact prescribes in this iteration (m: onto the
-        // surface, and for a held one what its friction does; folded into the residual), the collider's friction
-        // coefficients and its displacement over the substep at the contact (m). Per particle: the contact impulse of this
-        // substep (N·s², h² times the force: push-outs, normal reaction, friction) and its friction part, whether the
-        // contact stopped sliding in this substep, and, kept from one detection to the next, the contact's state (0 none,
-        // 1 held, 2 sticking, 3 sliding), a sticking one's damping ζ (kg), a sliding one's friction direction (unit) and
-        // kinetic impulse (N·s²), and the last normal impulse (N·s²).
+        // its friction state (sticking: the stiff damper; sliding: the damper whose friction is the kinetic cone; neither:
+        // none yet), the tangential mobility of a held contact (1/kg: 1/(m + ζ)), the displacement the contact prescribes
+        // in this iteration (m: onto the surface, and for a held one what its friction does; folded into the residual), the
+        // collider's friction coefficients and its displacement over the substep at the contact (m). Per particle: the
+        // contact impulse of this substep (N·s², h² times the force: push-outs, normal reaction, friction) and its friction
+        // part, whether the contact was released in this substep, and, kept from one detection to the next, the contact's
+        // state (0 none, 1 held, 2 sticking, 3 sliding), its damping ζ (kg) and its last normal impulse (N·s²).
         public bool[] ContactSticking, ContactSliding;
         public double[] ContactMobility;
         public double[] ContactShiftX, ContactShiftY, ContactShiftZ;
@@ -86,11 +85,8 @@ namespace HookeRope.Solver
         public double[] ContactImpulseX, ContactImpulseY, ContactImpulseZ;
         public double[] ContactFrictionX, ContactFrictionY, ContactFrictionZ;
         public bool[] ContactStopped;                   // released in this substep (stays free in it)
-        public bool[] ContactSettled;                   // stopped sliding in this substep (sticks for the rest of it)
         public byte[] ContactMemory;
         public double[] ContactDamping;
-        public double[] ContactFrictionDirX, ContactFrictionDirY, ContactFrictionDirZ;
-        public double[] ContactKineticImpulse;
         public double[] ContactNormalImpulse;
         public bool Bdf2Substep;                        // this substep runs BDF2 (where a contact particle is at rest depends on it)
         public double Substep;                          // s, this substep's h
@@ -140,15 +136,13 @@ namespace HookeRope.Solver
             ContactNX = new float[n]; ContactNY = new float[n]; ContactNZ = new float[n];
             ContactGap = new float[n]; ContactLoad = new float[n];
             ContactCollider = new int[n]; ContactActive = new bool[n]; ContactList = new int[n];
-            ContactSticking = new bool[n]; ContactSliding = new bool[n]; ContactStopped = new bool[n]; ContactSettled = new bool[n]; ContactMobility = new double[n];
+            ContactSticking = new bool[n]; ContactSliding = new bool[n]; ContactStopped = new bool[n]; ContactMobility = new double[n];
             ContactShiftX = new double[n]; ContactShiftY = new double[n]; ContactShiftZ = new double[n];
             ContactKineticFriction = new float[n]; ContactStaticFriction = new float[n];
             ContactSurfaceX = new float[n]; ContactSurfaceY = new float[n]; ContactSurfaceZ = new float[n];
             ContactImpulseX = new double[n]; ContactImpulseY = new double[n]; ContactImpulseZ = new double[n];
             ContactFrictionX = new double[n]; ContactFrictionY = new double[n]; ContactFrictionZ = new double[n];
             ContactMemory = new byte[n]; ContactDamping = new double[n]; ContactNormalImpulse = new double[n];
-            ContactFrictionDirX = new double[n]; ContactFrictionDirY = new double[n]; ContactFrictionDirZ = new double[n];
-            ContactKineticImpulse = new double[n];
             for (int i = 0; i < n; i++) ContactCollider[i] = -1;
             ContactCount = 0;
         }

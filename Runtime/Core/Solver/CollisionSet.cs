@@ -139,7 +139,6 @@ namespace HookeRope.Solver
                 Array.Clear(c.ContactImpulseX, 0, n); Array.Clear(c.ContactImpulseY, 0, n); Array.Clear(c.ContactImpulseZ, 0, n);
                 Array.Clear(c.ContactFrictionX, 0, n); Array.Clear(c.ContactFrictionY, 0, n); Array.Clear(c.ContactFrictionZ, 0, n);
                 Array.Clear(c.ContactStopped, 0, n);
-                Array.Clear(c.ContactSettled, 0, n);
             }
             if (detect) RememberContacts(c);
             ProjectPass(c, h, pass, detect, pass == ContactPass.LastIteration && !frictionInSolve);

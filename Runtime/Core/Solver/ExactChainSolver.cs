@@ -28,7 +28,6 @@ namespace HookeRope.Solver
 
         /// <summary>Largest number of active-set passes per iteration.</summary>
         public const int MaxPasses = 8;
-        internal static long[] PassHist = new long[64]; // TEMP
 
         /// <summary>
         /// Largest transverse compliance of a segment as a multiple of its ends' mobility w_j + w_{j+1}: a slack or
@@ -149,7 +148,6 @@ namespace HookeRope.Solver
             for (int pass = 1; ; pass++)
             {
                 SegmentForceSystem.Solve(c);
-                PassHist[pass]++; // TEMP
                 if ((!tensionOnly && !contacts) || pass >= MaxPasses) return;
                 bool changed = tensionOnly && UpdateTensionOnlySet(c);
                 if (contacts) changed |= ChainContacts.Update(c, first);

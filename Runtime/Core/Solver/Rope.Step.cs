@@ -7,8 +7,6 @@ namespace HookeRope.Solver
     {
         /// <summary>Largest host step in seconds that <see cref="Step"/> accepts.</summary>
         public const float MaxHostDeltaTime = 1f;
-        internal static Action<Rope, string> DebugHook; // TEMP
-        internal ChainState DebugChain => chain; // TEMP
 
         /// <summary>
         /// Advances the rope by one host step (s, in (0, 1]): <see cref="RopeSettings.Substeps"/> substeps of
@@ -65,7 +63,6 @@ namespace HookeRope.Solver
                 if (drag) PredictDrag(secondOrder, scheme == TimeIntegrator.Bdf2, h, hd, hEff, g);
                 // push the prediction out of the colliders and find the contacts the chain solve folds in
                 CollidePhase(h, ContactPass.StartOfSubstep);
-                DebugHook?.Invoke(this, "collide");
                 if (viscousDrag) FoldViscousDrag(hEff);
                 SolvePhase(h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder);
                 if (viscousDrag) UnfoldViscousDrag();
@@ -73,7 +70,6 @@ namespace HookeRope.Solver
                 else UpdateVelocities(h);
                 if (drag) AccumulateDragWork();
                 FinishPhase(hd, hEff, g, k == 0);
-                DebugHook?.Invoke(this, "finish");
                 if (loadCount > 0) TrackLoadPeaks(1f / h, g);
             }
             ScaleMeanTensions(1f / substeps);
@@ -146,7 +142,6 @@ namespace HookeRope.Solver
                 {
                     GaussSeidelSolver.Iterate(chain, hEff, solveBeta, tensionOnly);
                 }
-                DebugHook?.Invoke(this, "solve");
                 if (trackSolve) TrackSolveDisplacement(1.0);
                 if (softPins) ReleaseCompliantPins(hEff, t);
                 CollidePhase(h, it == total - 1 ? ContactPass.LastIteration : ContactPass.BetweenIterations);

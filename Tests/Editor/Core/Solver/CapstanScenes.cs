@@ -106,6 +106,8 @@ namespace HookeRope.Tests.Solver
 
         /// <summary>Host steps (1/90 s) the rope settles with equal loads before the heavy one gets the rest of its mass.</summary>
         public const int SettleSteps = 45;
+        /// <summary>Host steps (1/90 s) over which the heavy load grows to its mass after the settling, in equal parts.</summary>
+        public const int RampSteps = 45;
         /// <summary>Host steps (1/90 s) measured after that: 2 s.</summary>
         public const int MeasureSteps = 180;
         /// <summary>The acceleration is fitted over the measured time from this on (s): the first part carries the load step's transient.</summary>
@@ -120,17 +122,22 @@ namespace HookeRope.Tests.Solver
 
         /// <summary>
         /// Builds the scene, lets the rope settle for <see cref="SettleSteps"/> with both loads m2 (balanced: it holds at
-        /// any μ), then adds (ratio − 1)·m2 to the heavy end and steps 2 s: the slide of the heavy load, its acceleration
-        /// (least-squares parabola over t ≥ <see cref="FitFrom"/>) and the largest gain of the total energy over its value
-        /// right after the load step.
+        /// any μ), adds (ratio − 1)·m2 to the heavy end over <see cref="RampSteps"/>, then steps 2 s: the slide of the
+        /// heavy load, its acceleration (least-squares parabola over t ≥ <see cref="FitFrom"/>) and the largest gain of the
+        /// total energy over its value at the start of those 2 s.
         /// </summary>
         public static Result Run(Shape shape, double theta, float mu, double ratio)
         {
             var rope = Build(shape, theta, mu, ratio, out int heavy, out _);
             for (int k = 0; k < SettleSteps; k++) rope.Step(RopeTestKit.HostStep);
             int p = rope.GetLoadParticle(heavy);
+            // the rest of the heavy load comes on over RampSteps (a sudden step would overshoot the static tension and slip)
+            for (int k = 0; k < RampSteps; k++)
+            {
+                if (ratio > 1.0) rope.AddLoad(p, (float)((ratio - 1.0) * LightLoad / RampSteps));
+                rope.Step(RopeTestKit.HostStep);
+            }
             double y0 = rope.GetPosition(p).Y;
-            if (ratio > 1.0) rope.AddLoad(p, (float)((ratio - 1.0) * LightLoad));
             double e0 = rope.TotalEnergy();
             var result = new Result { Finite = true, EnergyGain = double.NegativeInfinity };
             // normal equations of y = c0 + c1 t + c2 t²
