@@ -179,14 +179,16 @@ namespace HookeRope.Solver
         /// pull is released (and gives back the impulse of the substep's earlier passes) and stays free for the rest of the
         /// substep; a free one whose motion takes it past its gap (by more than <see cref="HoldTolerance"/>) is held again
         /// with the friction it had; and each held contact's friction is moved to its cone (<see cref="Coulomb"/>).
-        /// Returns true when some state changed, so the system must be solved again. Contacts are released only in the
+        /// Returns true when some state changed, so the system must be solved again (<paramref name="frictionChanged"/>: some
+        /// friction did). Contacts are released only in the
         /// substep's <paramref name="first"/> iteration: in a later one a held contact has taken the chain's whole pull so
         /// far, and a release would give it back as a displacement far outside the linearisation (a light particle under a
         /// taut rope's pull would move metres).
         /// </summary>
-        public static bool Update(ChainState c, bool first)
+        public static bool Update(ChainState c, bool first, out bool frictionChanged)
         {
             bool changed = false;
+            frictionChanged = false;
             for (int k = 0; k < c.ContactCount; k++)
             {
                 int i = c.ContactList[k];
@@ -225,6 +227,7 @@ namespace HookeRope.Solver
                 {
                     Reshift(c, i);
                     changed = true;
+                    frictionChanged = true;
                 }
             }
             if (changed) DropContactsWithoutMobility(c);
