@@ -401,7 +401,7 @@ namespace HookeRope.Solver
             IterationImpulse(c, i, m, mx, my, mz, px, py, pz, out double ix, out double iy, out double iz);
             c.ContactImpulseX[i] += ix; c.ContactImpulseY[i] += iy; c.ContactImpulseZ[i] += iz;
             double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
-            // the friction of the substep so far: a sticking damper's −ζ·s on the slip it ends with, a sliding one's kinetic impulse
+            // the friction of the substep so far: the damper's −ζ·s on the slip it ends with (sticking or sliding)
             double zeta = c.ContactActive[i] ? Damping(c, i) : 0.0;
             if (zeta > 0.0)
             {
