@@ -69,6 +69,30 @@ namespace HookeRope.Solver
         public int[] ContactList;                       // particles with ContactCollider ≥ 0, first ContactCount entries
         public int ContactCount;
 
+        // friction in the exact solve (see ChainContacts; allocated with the contacts). Per contact of the current set:
+        // its friction state (sticking: the stiff damper; sliding: the damper whose friction is the kinetic cone; neither:
+        // none yet), the tangential mobility of a held contact (1/kg: 1/(m + ζ)), the displacement the contact prescribes
+        // in this iteration (m: onto the surface, and for a held one what its friction does; folded into the residual), the
+        // collider's friction coefficients and its displacement over the substep at the contact (m). Per particle: the
+        // contact impulse of this substep (N·s², h² times the force: push-outs, normal reaction, friction) and its friction
+        // part, whether the contact was released in this substep, and, kept from one detection to the next, the contact's
+        // state (0 none, 1 held, 2 sticking, 3 sliding), its damping ζ (kg) and its last normal impulse (N·s²).
+        public bool[] ContactSticking, ContactSliding;
+        public double[] ContactMobility;
+        public double[] ContactShiftX, ContactShiftY, ContactShiftZ;
+        public float[] ContactKineticFriction, ContactStaticFriction;
+        public float[] ContactSurfaceX, ContactSurfaceY, ContactSurfaceZ;
+        public double[] ContactImpulseX, ContactImpulseY, ContactImpulseZ;
+        public double[] ContactFrictionX, ContactFrictionY, ContactFrictionZ;
+        public bool[] ContactStopped;                   // released in this substep (stays free in it)
+        public byte[] ContactMemory;
+        public double[] ContactDamping;
+        public double[] ContactNormalImpulse;
+        public bool Bdf2Substep;                        // this substep runs BDF2 (where a contact particle is at rest depends on it)
+        public double Substep;                          // s, this substep's h
+        public double ContactNormalScale;               // N·s², the largest normal impulse of the last substep's contacts
+        public bool HeldWithFriction;                   // the last substep ended with a held contact pressed onto a surface with friction
+        public double ContactImpulseScale = 1.0;        // (h_eff/h)²: the impulse (in the solve's h_eff² units) of a push-out per m·push
         // plastic state of the segments (issue 15; null for an elastic rope without an energy absorber: no work, no memory)
         public SegmentPlasticity Plasticity;
 
@@ -112,6 +136,13 @@ namespace HookeRope.Solver
             ContactNX = new float[n]; ContactNY = new float[n]; ContactNZ = new float[n];
             ContactGap = new float[n]; ContactLoad = new float[n];
             ContactCollider = new int[n]; ContactActive = new bool[n]; ContactList = new int[n];
+            ContactSticking = new bool[n]; ContactSliding = new bool[n]; ContactStopped = new bool[n]; ContactMobility = new double[n];
+            ContactShiftX = new double[n]; ContactShiftY = new double[n]; ContactShiftZ = new double[n];
+            ContactKineticFriction = new float[n]; ContactStaticFriction = new float[n];
+            ContactSurfaceX = new float[n]; ContactSurfaceY = new float[n]; ContactSurfaceZ = new float[n];
+            ContactImpulseX = new double[n]; ContactImpulseY = new double[n]; ContactImpulseZ = new double[n];
+            ContactFrictionX = new double[n]; ContactFrictionY = new double[n]; ContactFrictionZ = new double[n];
+            ContactMemory = new byte[n]; ContactDamping = new double[n]; ContactNormalImpulse = new double[n];
             for (int i = 0; i < n; i++) ContactCollider[i] = -1;
             ContactCount = 0;
         }
@@ -125,6 +156,8 @@ namespace HookeRope.Solver
                 int i = ContactList[k];
                 ContactCollider[i] = -1;
                 ContactActive[i] = false;
+                ContactSticking[i] = false;
+                ContactSliding[i] = false;
             }
             ContactCount = 0;
         }

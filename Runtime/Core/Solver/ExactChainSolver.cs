@@ -18,8 +18,24 @@ namespace HookeRope.Solver
     /// </summary>
     internal static class ExactChainSolver
     {
+        /// <summary>
+        /// Smallest cosine between the accumulated force of a segment beside a held contact and its direction for the force's
+        /// direction to set the residual (about 25°): a converged force lies along its segment, and one far off it comes
+        /// from a segment that was slack or held sideways by the contact in an earlier iteration; taking its direction as
+        /// the target would ask for a correction of the order of the segment's length.
+        /// </summary>
+        public const double MinForceAlignment = 0.9;
+
         /// <summary>Largest number of active-set passes per iteration.</summary>
         public const int MaxPasses = 8;
+
+        /// <summary>
+        /// Largest number of active-set passes per iteration while the friction of some contact is still moving to its cone:
+        /// many contacts sliding together converge slowly (each one's damping changes the slip of all), and friction cut
+        /// short at 8 passes was up to 7 % above its cone at the light end of a wrap (box edges μ 0.3: capstan
+        /// acceleration −95 % at 8 passes, −5 % at 32).
+        /// </summary>
+        public const int MaxFrictionPasses = 64;
 
         /// <summary>
         /// Largest transverse compliance of a segment as a multiple of its ends' mobility w_j + w_{j+1}: a slack or
@@ -47,8 +63,12 @@ namespace HookeRope.Solver
             if (first) ClearForces(c);
             Assemble(c, invH2, beta / h, first);
             bool contacts = c.ContactCount > 0;
-            if (contacts) DropContactsWithoutMobility(c);
-            SolveActiveSet(c, tensionOnly, contacts);
+            if (contacts)
+            {
+                ChainContacts.Prepare(c);
+                ChainContacts.DropContactsWithoutMobility(c);
+            }
+            SolveActiveSet(c, tensionOnly, contacts, first);
             double nonlinear = Apply(c, contacts);
             bool branches = c.Plasticity != null && c.Plasticity.UpdateBranches(c, invH2);
             return EstimateTooLow(c, invH2) || nonlinear > NonlinearTolerance || branches;
@@ -123,6 +143,9 @@ namespace HookeRope.Solver
                     signed = sense * magnitude;
                     double inverse = sense / magnitude;
                     ex = fx[j] * inverse; ey = fy[j] * inverse; ez = fz[j] * inverse;
+                    // beside a held contact, a force far off its segment (a nearly slack one held sideways by the contact in
+                    // an earlier iteration) is no estimate of where the segment points: the residual is taken along n
+                    if (ex * nx + ey * ny + ez * nz < MinForceAlignment && BesideHeldContact(c, j)) { ex = nx; ey = ny; ez = nz; }
                 }
                 // the geometric stiffness T/l: with the last substep's tension on the first iteration, the accumulated one after;
                 // a pushing (bilateral) segment's is −|T|/l, which would let it buckle explicitly, so it takes |T| and the
@@ -150,44 +173,25 @@ namespace HookeRope.Solver
             return restEffective;
         }
 
-        /// <summary>
-        /// A held contact that would leave one of its segments with no mobility along it (the other end pinned, the normal
-        /// along the segment, and no compliance) is dropped: the row would be singular.
-        /// </summary>
-        private static void DropContactsWithoutMobility(ChainState c)
-        {
-            for (int k = 0; k < c.ContactCount; k++)
-            {
-                int i = c.ContactList[k];
-                if (!c.ContactActive[i]) continue;
-                if ((i > 0 && !AxialMobilityLeft(c, i - 1)) || (i < c.SegmentCount && !AxialMobilityLeft(c, i)))
-                    c.ContactActive[i] = false;
-            }
-        }
-
-        /// <summary>True when segment j keeps mobility (or compliance) along its direction with its ends' contacts held.</summary>
-        private static bool AxialMobilityLeft(ChainState c, int j)
-        {
-            if (c.Broken[j] || c.Compliance[j] > 0f) return true;
-            double nx = c.DirX[j], ny = c.DirY[j], nz = c.DirZ[j];
-            double along = SegmentForceSystem.AlongMobility(c, j, nx, ny, nz) + SegmentForceSystem.AlongMobility(c, j + 1, nx, ny, nz);
-            return along > 1e-9 * ((double)c.InverseMass[j] + c.InverseMass[j + 1]);
-        }
+        /// <summary>True when an end of segment j is a held contact.</summary>
+        private static bool BesideHeldContact(ChainState c, int j) => c.ContactCount > 0 && (c.ContactActive[j] || c.ContactActive[j + 1]);
 
         /// <summary>
         /// Solves for δΛ, then repeats on the same linearisation while the active set changes (at most
-        /// <see cref="MaxPasses"/> solves): a tension-only segment whose total force would push is released (its force
-        /// returns to zero), a released one the solution stretches is re-admitted; a held contact the chain pulls off the
-        /// surface is released, a released one it drives deeper than its gap is held.
+        /// <see cref="MaxPasses"/> solves, or <see cref="MaxFrictionPasses"/> while contact friction is still moving to its
+        /// cone): a tension-only segment whose total force would push is released (its force returns to zero), a released
+        /// one the solution stretches is re-admitted; a held contact the chain pulls off the surface is released, a released
+        /// one it drives deeper than its gap is held; friction follows its cone (<see cref="ChainContacts"/>).
         /// </summary>
-        private static void SolveActiveSet(ChainState c, bool tensionOnly, bool contacts)
+        private static void SolveActiveSet(ChainState c, bool tensionOnly, bool contacts, bool first)
         {
+            bool frictionMoving = false;
             for (int pass = 1; ; pass++)
             {
                 SegmentForceSystem.Solve(c);
-                if ((!tensionOnly && !contacts) || pass >= MaxPasses) return;
+                if ((!tensionOnly && !contacts) || pass >= MaxFrictionPasses || (pass >= MaxPasses && !frictionMoving)) return;
                 bool changed = tensionOnly && UpdateTensionOnlySet(c);
-                if (contacts) changed |= UpdateContacts(c);
+                if (contacts) changed |= ChainContacts.Update(c, first, out frictionMoving);
                 if (!changed) return;
             }
         }
@@ -226,44 +230,15 @@ namespace HookeRope.Solver
         /// <summary>Stretch (m) segment j would have after this solution: n·(R + its ends' relative motion).</summary>
         private static double StretchAfter(ChainState c, int j, double nx, double ny, double nz)
         {
-            SegmentForceSystem.Motion(c, j, out double ax, out double ay, out double az);
-            SegmentForceSystem.Motion(c, j + 1, out double bx, out double by, out double bz);
+            ChainContacts.Motion(c, j, out double ax, out double ay, out double az);
+            ChainContacts.Motion(c, j + 1, out double bx, out double by, out double bz);
             return nx * (c.ResidualX[j] + bx - ax) + ny * (c.ResidualY[j] + by - ay) + nz * (c.ResidualZ[j] + bz - az);
         }
 
-        private static bool UpdateContacts(ChainState c)
-        {
-            bool changed = false;
-            for (int k = 0; k < c.ContactCount; k++)
-            {
-                int i = c.ContactList[k];
-                double outward = FreeNormalMotion(c, i);
-                if (c.ContactActive[i])
-                {
-                    if (outward > 0.0) { c.ContactActive[i] = false; changed = true; }
-                }
-                else if (-outward > c.ContactGap[i])
-                {
-                    c.ContactActive[i] = true;
-                    changed = true;
-                }
-            }
-            if (changed) DropContactsWithoutMobility(c);
-            return changed;
-        }
-
-        /// <summary>Normal motion (m, &gt; 0 outward) contact particle i would make without its contact under this solution's pull.</summary>
-        private static double FreeNormalMotion(ChainState c, int i)
-        {
-            SegmentForceSystem.Pull(c, i, out double px, out double py, out double pz);
-            double w = c.InverseMass[i];
-            return w * (c.ContactNX[i] * px + c.ContactNY[i] * py + c.ContactNZ[i] * pz);
-        }
-
         /// <summary>
-        /// Moves every particle by its mobility times this iteration's pull, accumulates the forces and writes the scalar
-        /// multipliers λ_j = −Λ_j·n_j the tension read-outs use. A held contact may still close its gap; the normal motion
-        /// it withheld is recorded as its normal load (the friction limit). Returns the largest second-order length error
+        /// Moves every particle by its mobility times this iteration's pull (a held contact also by the displacement it
+        /// prescribes, exactly as the system assumed: <see cref="ChainContacts"/>), accumulates the forces and writes the
+        /// scalar multipliers λ_j = −Λ_j·n_j the tension read-outs use. Returns the largest second-order length error
         /// |Δ_⊥|²/(2l) of a segment over its rest length (see <see cref="NonlinearTolerance"/>).
         /// </summary>
         private static double Apply(ChainState c, bool contacts)
@@ -314,24 +289,19 @@ namespace HookeRope.Solver
         private static void Move(ChainState c, int i, double wi, double px, double py, double pz, bool contacts, out double mx, out double my, out double mz)
         {
             mx = wi * px; my = wi * py; mz = wi * pz;
-            if (contacts && c.ContactActive[i])
-            {
-                // on copies: the caller's motion is never passed by reference, so it stays in registers
-                double hx = mx, hy = my, hz = mz;
-                HoldContact(c, i, ref hx, ref hy, ref hz);
-                mx = hx; my = hy; mz = hz;
-            }
+            if (contacts && c.ContactCollider[i] >= 0) MoveAtContact(c, i, px, py, pz, out mx, out my, out mz);
         }
 
+        /// <summary>
+        /// Motion of a particle at a contact under the pull (px, py, pz): the held motion W_i·pull plus what the contact
+        /// prescribes (its shift: the gap allowance and friction), which <see cref="ChainContacts.Finish"/> records.
+        /// </summary>
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
-        private static void HoldContact(ChainState c, int i, ref double mx, ref double my, ref double mz)
+        private static void MoveAtContact(ChainState c, int i, double px, double py, double pz, out double mx, out double my, out double mz)
         {
-            double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
-            double normal = nx * mx + ny * my + nz * mz;
-            double allowed = normal < 0.0 ? Math.Max(normal, -c.ContactGap[i]) : 0.0;
-            double withheld = normal - allowed;
-            mx -= nx * withheld; my -= ny * withheld; mz -= nz * withheld;
-            if (normal < 0.0) c.ContactLoad[i] += (float)(-withheld);
+            SegmentForceSystem.Mobility(c, i, px, py, pz, out mx, out my, out mz);
+            mx += c.ContactShiftX[i]; my += c.ContactShiftY[i]; mz += c.ContactShiftZ[i];
+            ChainContacts.Finish(c, i, px, py, pz, mx, my, mz);
         }
 
         /// <summary>The larger of worst and e, ignoring a NaN e.</summary>

@@ -53,7 +53,12 @@ namespace HookeRope.Solver
             {
                 float t = (float)(k + 1) / substeps;
                 TimeIntegrator scheme = SubstepScheme(integrator, hd);
+                // friction in contact: backward Euler (see HeldWithFriction)
+                if (scheme == TimeIntegrator.Bdf2 && exact && chain.HeldWithFriction) scheme = TimeIntegrator.BackwardEuler;
                 double hEff = EffectiveStep(scheme, hd);
+                chain.Bdf2Substep = scheme == TimeIntegrator.Bdf2;
+                chain.Substep = hd;
+                chain.ContactImpulseScale = (hEff / hd) * (hEff / hd);
                 PredictPhase(t, hostDeltaTime, secondOrder, scheme, h, hd, g);
                 if (drag) PredictDrag(secondOrder, scheme == TimeIntegrator.Bdf2, h, hd, hEff, g);
                 // push the prediction out of the colliders and find the contacts the chain solve folds in
@@ -104,7 +109,7 @@ namespace HookeRope.Solver
         /// <summary>Phase 2 (and the end of each iteration): push the particles out of the colliders; the pass decides contact detection and friction.</summary>
         private void CollidePhase(float h, ContactPass pass)
         {
-            if (colliders.Count > 0) colliders.Project(chain, h, pass);
+            if (colliders.Count > 0) colliders.Project(chain, h, pass, settings.Solver == ConstraintSolverKind.ExactChain);
         }
 
         /// <summary>
@@ -133,7 +138,7 @@ namespace HookeRope.Solver
                 if (exact)
                 {
                     bool underestimated = ExactChainSolver.Iterate(chain, hEff, solveBeta, tensionOnly, it == 0);
-                    if (underestimated && it == total - 1 && total < MaxNewtonIterations) total++;
+                    if (underestimated && it == total - 1 && total < MaxNewtonIterations && !chain.HeldWithFriction) total++;
                 }
                 else
                 {
@@ -143,6 +148,9 @@ namespace HookeRope.Solver
                 if (softPins) ReleaseCompliantPins(hEff, t);
                 CollidePhase(h, it == total - 1 ? ContactPass.LastIteration : ContactPass.BetweenIterations);
             }
+            // the exact solve's friction for the next substep, from this one's contact impulses
+            if (exact && chain.ContactCount > 0) ChainContacts.DecideFriction(chain);
+            else chain.HeldWithFriction = false;
         }
 
         /// <summary>Phase 4 (after the velocities): time, tensions T = −λ/h_eff², the plastic return mapping, pin forces (and pin breaks). The segment lengths are refreshed once, after the last substep.</summary>

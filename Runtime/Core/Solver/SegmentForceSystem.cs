@@ -6,7 +6,9 @@ namespace HookeRope.Solver
     /// <summary>
     /// The block-tridiagonal system of <see cref="ExactChainSolver"/> in the segment force changes δΛ_j (3-vectors,
     /// N·s²): row j reads −W_j δΛ_{j−1} + (W_j + W_{j+1} + α̃_j n nᵀ + τ_j (I − n nᵀ)) δΛ_j − W_{j+1} δΛ_{j+1} = R_j, with
-    /// W_i = w_i I, or w_i (I − c cᵀ) for a particle held on a surface of normal c. A released or invalid row is
+    /// W_i = w_i I, or w_t (I − c cᵀ) for a particle held on a surface of normal c (w_t its tangential mobility under friction,
+    /// see <see cref="ChainContacts"/>; 0 when it is stuck, which decouples its two segments: the elimination passes nothing
+    /// through it). A released or invalid row is
     /// δΛ_j = −Λ_j (its force returns to zero). Solved by block Thomas elimination in double precision: the 3×3 pivots
     /// are symmetric positive definite (each is a compliance plus a mobility), so no pivoting is needed; where the
     /// couplings are isotropic (no contact) the elimination costs one 3×3 inverse and a few scaled adds per segment.
@@ -123,12 +125,16 @@ namespace HookeRope.Solver
             xy = d * nx * ny; xz = d * nx * nz; yz = d * ny * nz;
         }
 
-        /// <summary>W_i = w (I − c cᵀ) for a held contact: subtracts w c cᵀ from a diagonal block.</summary>
+        /// <summary>
+        /// W_i = w_t (I − c cᵀ) for a held contact (w_t its tangential mobility: w without friction, 0 stuck): replaces w I in a
+        /// diagonal block, subtracting (w − w_t) I + w_t c cᵀ.
+        /// </summary>
         private static void SubtractHeldNormal(ChainState c, int i, ref double xx, ref double xy, ref double xz, ref double yy, ref double yz, ref double zz)
         {
             if (!c.ContactActive[i]) return;
-            double w = c.InverseMass[i], nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
-            xx -= w * nx * nx; xy -= w * nx * ny; xz -= w * nx * nz; yy -= w * ny * ny; yz -= w * ny * nz; zz -= w * nz * nz;
+            double wt = c.ContactMobility[i], d = c.InverseMass[i] - wt;
+            double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
+            xx -= d + wt * nx * nx; xy -= wt * nx * ny; xz -= wt * nx * nz; yy -= d + wt * ny * ny; yz -= wt * ny * nz; zz -= d + wt * nz * nz;
         }
 
         /// <summary>The elimination step through a held contact particle j: S −= W G W (when the row before is active), y += W G y_{j−1}.</summary>
@@ -163,13 +169,14 @@ namespace HookeRope.Solver
             rz = gxz * vx + gyz * vy + gzz * vz;
         }
 
-        /// <summary>r = W_i v (1/kg · N·s² = m): w v, or w (v − c (c·v)) with a held contact.</summary>
+        /// <summary>r = W_i v (1/kg · N·s² = m): w v, or w_t (v − c (c·v)) with a held contact (w_t its tangential mobility, 0 stuck).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static void Mobility(ChainState c, int i, double vx, double vy, double vz, out double rx, out double ry, out double rz)
         {
             double w = c.InverseMass[i];
             if (c.ContactCount > 0 && c.ContactActive[i])
             {
+                w = c.ContactMobility[i];
                 double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
                 double along = nx * vx + ny * vy + nz * vz;
                 vx -= nx * along; vy -= ny * along; vz -= nz * along;
