@@ -80,7 +80,7 @@ namespace HookeRope.Solver
             for (int j = 0; j < s; j++)
             {
                 if (broken[j]) { active[j] = false; continue; }
-                double len = c.Direction(j, out double nx, out double ny, out double nz, out float ddx, out float ddy, out float ddz);
+                double len = c.Direction(j, out double nx, out double ny, out double nz, out double ddx, out double ddy, out double ddz);
                 length[j] = (float)len;
                 double alpha = compliance[j];
                 double mobility = (double)w[j] + w[j + 1];
@@ -250,7 +250,7 @@ namespace HookeRope.Solver
                     mx -= nx * withheld; my -= ny * withheld; mz -= nz * withheld;
                     if (normal < 0.0) c.ContactLoad[i] += (float)(-withheld);
                 }
-                c.DX[i] += (float)mx; c.DY[i] += (float)my; c.DZ[i] += (float)mz;
+                c.AddDisplacement(i, mx, my, mz);
                 if (i > 0 && c.Active[i - 1])
                 {
                     double ux = mx - qx, uy = my - qy, uz = mz - qz;

@@ -31,7 +31,7 @@ namespace HookeRope.Solver
                 double alpha = compliance[j];
                 double wSum = (double)wa + wb;
                 if (wSum == 0.0 && alpha == 0.0) { wa = wb; continue; }
-                double len = c.Direction(j, out double ex, out double ey, out double ez, out float ddx, out float ddy, out float ddz);
+                double len = c.Direction(j, out double ex, out double ey, out double ez, out double ddx, out double ddy, out double ddz);
                 float nx = (float)ex, ny = (float)ey, nz = (float)ez;
                 double alphaTilde = alpha * invH2;
                 double g = alpha > 0.0 ? gamma : 0.0;
@@ -50,9 +50,9 @@ namespace HookeRope.Solver
                 if (d != 0.0)
                 {
                     lambda[j] += d;
-                    float a = (float)(wa * d), b = (float)(wb * d);
-                    dx[j] -= nx * a; dy[j] -= ny * a; dz[j] -= nz * a;
-                    dx[j + 1] += nx * b; dy[j + 1] += ny * b; dz[j + 1] += nz * b;
+                    double a = wa * d, b = wb * d;
+                    c.AddDisplacement(j, -nx * a, -ny * a, -nz * a);
+                    c.AddDisplacement(j + 1, nx * b, ny * b, nz * b);
                 }
                 wa = wb;
             }
@@ -101,8 +101,8 @@ namespace HookeRope.Solver
                 bx -= c.ContactNX[j + 1] * normal; by -= c.ContactNY[j + 1] * normal; bz -= c.ContactNZ[j + 1] * normal;
                 c.ContactLoad[j + 1] -= (float)normal;
             }
-            c.DX[j] -= (float)ax; c.DY[j] -= (float)ay; c.DZ[j] -= (float)az;
-            c.DX[j + 1] += (float)bx; c.DY[j + 1] += (float)by; c.DZ[j + 1] += (float)bz;
+            c.AddDisplacement(j, -ax, -ay, -az);
+            c.AddDisplacement(j + 1, bx, by, bz);
         }
     }
 }

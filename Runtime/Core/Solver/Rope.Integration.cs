@@ -57,14 +57,14 @@ namespace HookeRope.Solver
         /// <summary>
         /// Prediction of a second-order run (scheme: this substep's, h s, g m/s²): d = d_pred, the velocity base, v_prev = v,
         /// Δ = 0; kinematic particles do not move here (the pins place them). A backward-Euler substep predicts d = h·v + h²·g
-        /// with base 0 (v = d/h).
+        /// with base v + h·g − d/h (v = d/h of the unrounded prediction plus what moved the particle since).
         /// </summary>
         private void PredictSecondOrder(TimeIntegrator scheme, double h, Float3 g)
         {
             int n = chain.ParticleCount;
             float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
-            float[] vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ, ux = chain.PrevVelX, uy = chain.PrevVelY, uz = chain.PrevVelZ;
-            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
+            double[] vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ, ux = chain.PrevVelX, uy = chain.PrevVelY, uz = chain.PrevVelZ;
+            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ, lx = chain.DLowX, ly = chain.DLowY, lz = chain.DLowZ;
             double[] bx = chain.BaseVelX, by = chain.BaseVelY, bz = chain.BaseVelZ;
             float[] qx = chain.PredictedDX, qy = chain.PredictedDY, qz = chain.PredictedDZ;
             bool[] kinematic = chain.Kinematic;
@@ -82,9 +82,10 @@ namespace HookeRope.Solver
                 else if (bdf2)
                 {
                     double mx = (4.0 * wx - ux[i]) / 3.0, my = (4.0 * wy - uy[i]) / 3.0, mz = (4.0 * wz - uz[i]) / 3.0;
-                    dx[i] = (float)(dx[i] / 3.0 + e * mx + c * g.X);
-                    dy[i] = (float)(dy[i] / 3.0 + e * my + c * g.Y);
-                    dz[i] = (float)(dz[i] / 3.0 + e * mz + c * g.Z);
+                    // d_prev = D + DLow of the substep before
+                    dx[i] = (float)(((double)dx[i] + lx[i]) / 3.0 + e * mx + c * g.X);
+                    dy[i] = (float)(((double)dy[i] + ly[i]) / 3.0 + e * my + c * g.Y);
+                    dz[i] = (float)(((double)dz[i] + lz[i]) / 3.0 + e * mz + c * g.Z);
                     bx[i] = mx + e * g.X - dx[i] * invH;
                     by[i] = my + e * g.Y - dy[i] * invH;
                     bz[i] = mz + e * g.Z - dz[i] * invH;
@@ -92,10 +93,12 @@ namespace HookeRope.Solver
                 else
                 {
                     dx[i] = (float)(h * wx + h2 * g.X); dy[i] = (float)(h * wy + h2 * g.Y); dz[i] = (float)(h * wz + h2 * g.Z);
-                    bx[i] = 0.0; by[i] = 0.0; bz[i] = 0.0;
+                    bx[i] = wx + h * g.X - dx[i] * invH; by[i] = wy + h * g.Y - dy[i] * invH; bz[i] = wz + h * g.Z - dz[i] * invH;
                 }
-                ux[i] = (float)wx; uy[i] = (float)wy; uz[i] = (float)wz;
+                ux[i] = wx; uy[i] = wy; uz[i] = wz;
                 qx[i] = dx[i]; qy[i] = dy[i]; qz[i] = dz[i];
+                // the prediction's own rounding stays out of DLow: the velocity base above is measured from the float D
+                lx[i] = 0f; ly[i] = 0f; lz[i] = 0f;
             }
             Array.Clear(chain.SolveDX, 0, n);
             Array.Clear(chain.SolveDY, 0, n);
@@ -107,22 +110,22 @@ namespace HookeRope.Solver
         /// d_prev = x_n − x_{n−1} by h·Δv), a Galilean boost that keeps BDF2's acceleration memory. A moved position needs
         /// nothing: d_prev is a difference.
         /// </summary>
-        private void BoostHistory(int i, float dx, float dy, float dz)
+        private void BoostHistory(int i, double dx, double dy, double dz)
         {
             chain.PrevVelX[i] += dx; chain.PrevVelY[i] += dy; chain.PrevVelZ[i] += dz;
-            float h = (float)historyStep;
-            chain.DX[i] += dx * h; chain.DY[i] += dy * h; chain.DZ[i] += dz * h;
+            double h = historyStep;
+            chain.AddDisplacement(i, dx * h, dy * h, dz * h);
         }
 
         /// <summary>Marks the start (sign −1) or the end (+1) of a chain solve: Δ accumulates the displacement it applies.</summary>
         private void TrackSolveDisplacement(double sign)
         {
             int n = chain.ParticleCount;
-            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
             double[] sx = chain.SolveDX, sy = chain.SolveDY, sz = chain.SolveDZ;
             for (int i = 0; i < n; i++)
             {
-                sx[i] += sign * dx[i]; sy[i] += sign * dy[i]; sz[i] += sign * dz[i];
+                chain.Displacement(i, out double dx, out double dy, out double dz);
+                sx[i] += sign * dx; sy[i] += sign * dy; sz[i] += sign * dz;
             }
         }
 
@@ -133,28 +136,28 @@ namespace HookeRope.Solver
         private void UpdateVelocitiesSecondOrder(TimeIntegrator scheme, double h, bool violent)
         {
             int n = chain.ParticleCount;
-            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
             double[] bx = chain.BaseVelX, by = chain.BaseVelY, bz = chain.BaseVelZ;
             double[] sx = chain.SolveDX, sy = chain.SolveDY, sz = chain.SolveDZ;
-            float[] wx = chain.PrevVelX, wy = chain.PrevVelY, wz = chain.PrevVelZ;
+            double[] wx = chain.PrevVelX, wy = chain.PrevVelY, wz = chain.PrevVelZ;
             float[] qx = chain.PredictedDX, qy = chain.PredictedDY, qz = chain.PredictedDZ;
             bool[] kinematic = chain.Kinematic;
             double invH = 1.0 / h, k = scheme == TimeIntegrator.Bdf2 ? 0.5 * invH : 0.0;
             for (int i = 0; i < n; i++)
             {
+                chain.Displacement(i, out double dx, out double dy, out double dz);
                 // what moved the particle besides the prediction and the chain solve (collider push-out, friction, a pin
                 // target) is a velocity kick c/h, as in backward Euler; boosting the history by it too (v_prev += c/h) makes
                 // the next prediction carry it exactly once instead of 11/9 times
-                double cx = dx[i] - qx[i] - sx[i], cy = dy[i] - qy[i] - sy[i], cz = dz[i] - qz[i] - sz[i];
+                double cx = dx - qx[i] - sx[i], cy = dy - qy[i] - sy[i], cz = dz - qz[i] - sz[i];
                 if (kinematic[i])
                 {
-                    wx[i] = (float)(dx[i] * invH); wy[i] = (float)(dy[i] * invH); wz[i] = (float)(dz[i] * invH);
+                    wx[i] = dx * invH; wy[i] = dy * invH; wz[i] = dz * invH;
                 }
                 else if (cx != 0.0 || cy != 0.0 || cz != 0.0)
                 {
-                    wx[i] += (float)(cx * invH); wy[i] += (float)(cy * invH); wz[i] += (float)(cz * invH);
+                    wx[i] += cx * invH; wy[i] += cy * invH; wz[i] += cz * invH;
                 }
-                CommitParticle(i, (float)(bx[i] + dx[i] * invH + k * sx[i]), (float)(by[i] + dy[i] * invH + k * sy[i]), (float)(bz[i] + dz[i] * invH + k * sz[i]));
+                CommitParticle(i, bx[i] + dx * invH + k * sx[i], by[i] + dy * invH + k * sy[i], bz[i] + dz * invH + k * sz[i]);
             }
             // a violent substep (see ViolentStrain) restarts the history: the next substep is backward Euler
             historyValid = !violent;

@@ -39,7 +39,7 @@ namespace HookeRope.Solver
             for (int l = 0; l < loadCount; l++)
             {
                 int i = loadParticle[l];
-                loadStartVelocity[l] = new Float3(chain.VelX[i], chain.VelY[i], chain.VelZ[i]);
+                loadStartVelocity[l] = new Float3((float)chain.VelX[i], (float)chain.VelY[i], (float)chain.VelZ[i]);
                 loadStartPosition[l] = new Float3(chain.X[i], chain.Y[i], chain.Z[i]);
                 loadSubstepVelocity[l] = loadStartVelocity[l];
                 loadPeakForce[l] = 0f;
@@ -62,7 +62,7 @@ namespace HookeRope.Solver
                 SolvePhase(h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder);
                 if (viscousDrag) UnfoldViscousDrag();
                 if (secondOrder) UpdateVelocitiesSecondOrder(scheme, hd, Violent());
-                else UpdateVelocities(h);
+                else UpdateVelocities(hd);
                 if (drag) AccumulateDragWork();
                 FinishPhase(hd, hEff, g, k == 0);
                 if (loadCount > 0) TrackLoadPeaks(1f / h, g);
@@ -77,7 +77,7 @@ namespace HookeRope.Solver
             for (int l = 0; l < loadCount; l++)
             {
                 int i = loadParticle[l];
-                var v = new Float3(chain.VelX[i], chain.VelY[i], chain.VelZ[i]);
+                var v = new Float3((float)chain.VelX[i], (float)chain.VelY[i], (float)chain.VelZ[i]);
                 loadForce[l] = ((v - loadStartVelocity[l]) * invDt - g) * loadMass[l];
             }
 
@@ -93,7 +93,7 @@ namespace HookeRope.Solver
         {
             if (colliders.Count > 0) colliders.PrepareSubstep(t, hostDeltaTime);
             if (secondOrder) PredictSecondOrder(scheme, hd, g);
-            else Predict(h, g);
+            else Predict(hd, g);
             MovePins(t);
             Array.Clear(chain.Lambda, 0, chain.SegmentCount);
             if (pinCount > 0) Array.Clear(pinLambda, 0, pinCount * 3);
@@ -153,20 +153,19 @@ namespace HookeRope.Solver
             if (pinCount > 0) UpdatePinForces(hEff, g);
         }
 
-        private void Predict(float h, Float3 g)
+        private void Predict(double h, Float3 g)
         {
             int n = chain.ParticleCount;
-            float gx = g.X * h, gy = g.Y * h, gz = g.Z * h;
+            double gx = g.X * h, gy = g.Y * h, gz = g.Z * h;
             float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
-            float[] vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ;
+            double[] vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ;
             bool[] kinematic = chain.Kinematic;
-            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
             for (int i = 0; i < n; i++)
             {
                 px[i] = x[i]; py[i] = y[i]; pz[i] = z[i];
-                if (kinematic[i]) { dx[i] = 0f; dy[i] = 0f; dz[i] = 0f; continue; }
+                if (kinematic[i]) { chain.SetDisplacement(i, 0.0, 0.0, 0.0); continue; }
                 vx[i] += gx; vy[i] += gy; vz[i] += gz;
-                dx[i] = vx[i] * h; dy[i] = vy[i] * h; dz[i] = vz[i] * h;
+                chain.SetDisplacement(i, vx[i] * h, vy[i] * h, vz[i] * h);
             }
         }
 
@@ -177,9 +176,8 @@ namespace HookeRope.Solver
                 if (pinBroken[p] || pinCompliance[p] != 0f) continue;
                 int i = pinParticle[p];
                 Float3 target = PinTarget(p, t);
-                chain.DX[i] = (float)((double)target.X - chain.PrevX[i] - chain.LowX[i]);
-                chain.DY[i] = (float)((double)target.Y - chain.PrevY[i] - chain.LowY[i]);
-                chain.DZ[i] = (float)((double)target.Z - chain.PrevZ[i] - chain.LowZ[i]);
+                chain.SetDisplacement(i, (double)target.X - chain.PrevX[i] - chain.LowX[i], (double)target.Y - chain.PrevY[i] - chain.LowY[i],
+                    (double)target.Z - chain.PrevZ[i] - chain.LowZ[i]);
             }
         }
 
@@ -215,7 +213,7 @@ namespace HookeRope.Solver
                 double dx = (-cx - alphaTilde * pinLambda[b]) / denominator;
                 double dy = (-cy - alphaTilde * pinLambda[b + 1]) / denominator;
                 double dz = (-cz - alphaTilde * pinLambda[b + 2]) / denominator;
-                chain.DX[i] += (float)(w * dx); chain.DY[i] += (float)(w * dy); chain.DZ[i] += (float)(w * dz);
+                chain.AddDisplacement(i, w * dx, w * dy, w * dz);
                 chain.InverseMass[i] = (float)(w * alphaTilde / denominator);
                 any = true;
             }
@@ -245,35 +243,39 @@ namespace HookeRope.Solver
         /// <summary>Target (rope-local m) of pin p at substep fraction t of the host step.</summary>
         private Float3 PinTarget(int p, float t) => Float3.Lerp(pinStart[p], pinEnd[p], t);
 
-        /// <summary>Pin constraint C = x_i − target (m, double) from particle i's live position Prev + Low + D.</summary>
+        /// <summary>Pin constraint C = x_i − target (m, double) from particle i's live position Prev + Low + D + DLow.</summary>
         private void PinOffset(int i, Float3 target, out double cx, out double cy, out double cz)
         {
-            cx = (double)chain.PrevX[i] - target.X + chain.LowX[i] + chain.DX[i];
-            cy = (double)chain.PrevY[i] - target.Y + chain.LowY[i] + chain.DY[i];
-            cz = (double)chain.PrevZ[i] - target.Z + chain.LowZ[i] + chain.DZ[i];
+            cx = (double)chain.PrevX[i] - target.X + chain.LowX[i] + ((double)chain.DX[i] + chain.DLowX[i]);
+            cy = (double)chain.PrevY[i] - target.Y + chain.LowY[i] + ((double)chain.DY[i] + chain.DLowY[i]);
+            cz = (double)chain.PrevZ[i] - target.Z + chain.LowZ[i] + ((double)chain.DZ[i] + chain.DLowZ[i]);
         }
 
-        private void UpdateVelocities(float h)
+        private void UpdateVelocities(double h)
         {
             int n = chain.ParticleCount;
-            float invH = 1f / h;
-            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
-            for (int i = 0; i < n; i++) CommitParticle(i, dx[i] * invH, dy[i] * invH, dz[i] * invH);
+            double invH = 1.0 / h;
+            for (int i = 0; i < n; i++)
+            {
+                chain.Displacement(i, out double dx, out double dy, out double dz);
+                CommitParticle(i, dx * invH, dy * invH, dz * invH);
+            }
         }
 
         /// <summary>
-        /// Ends particle i's substep at x = x_prev + Low + d with velocity (ux, uy, uz) m/s. The sum is formed in double and
-        /// split into the float position and its new remainder Low, so no part of d is rounded away. Never lets a non-finite value into
+        /// Ends particle i's substep at x = x_prev + Low + d with velocity (ux, uy, uz) m/s (d = D + DLow). The sum is formed in
+        /// double and split into the float position and its new remainder Low, so no part of d is rounded away. Never lets a non-finite value into
         /// the state: then the particle falls back to its last good position, at rest, with no displacement.
         /// </summary>
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
-        private void CommitParticle(int i, float ux, float uy, float uz)
+        private void CommitParticle(int i, double ux, double uy, double uz)
         {
             float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
-            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ, lx = chain.LowX, ly = chain.LowY, lz = chain.LowZ;
-            double ex = (double)px[i] + lx[i] + dx[i], ey = (double)py[i] + ly[i] + dy[i], ez = (double)pz[i] + lz[i] + dz[i];
+            float[] lx = chain.LowX, ly = chain.LowY, lz = chain.LowZ;
+            chain.Displacement(i, out double dx, out double dy, out double dz);
+            double ex = (double)px[i] + lx[i] + dx, ey = (double)py[i] + ly[i] + dy, ez = (double)pz[i] + lz[i] + dz;
             float nx = (float)ex, ny = (float)ey, nz = (float)ez;
-            if (float.IsFinite(ux + uy + uz) && float.IsFinite(nx + ny + nz))
+            if (double.IsFinite(ux + uy + uz) && float.IsFinite(nx + ny + nz))
             {
                 x[i] = nx; y[i] = ny; z[i] = nz;
                 lx[i] = (float)(ex - nx); ly[i] = (float)(ey - ny); lz[i] = (float)(ez - nz);
@@ -282,8 +284,8 @@ namespace HookeRope.Solver
             else
             {
                 x[i] = px[i]; y[i] = py[i]; z[i] = pz[i];
-                chain.VelX[i] = 0f; chain.VelY[i] = 0f; chain.VelZ[i] = 0f;
-                dx[i] = 0f; dy[i] = 0f; dz[i] = 0f;
+                chain.VelX[i] = 0.0; chain.VelY[i] = 0.0; chain.VelZ[i] = 0.0;
+                chain.SetDisplacement(i, 0.0, 0.0, 0.0);
             }
         }
 
@@ -315,7 +317,7 @@ namespace HookeRope.Solver
             for (int l = 0; l < loadCount; l++)
             {
                 int i = loadParticle[l];
-                var v = new Float3(chain.VelX[i], chain.VelY[i], chain.VelZ[i]);
+                var v = new Float3((float)chain.VelX[i], (float)chain.VelY[i], (float)chain.VelZ[i]);
                 float force = (((v - loadSubstepVelocity[l]) * invH - g) * loadMass[l]).Length;
                 if (force > loadPeakForce[l]) loadPeakForce[l] = force;
                 loadSubstepVelocity[l] = v;
