@@ -162,7 +162,10 @@ namespace HookeRope.Solver
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void AddDisplacement(int i, double mx, double my, double mz)
         {
-            SetDisplacement(i, ((double)DX[i] + DLowX[i]) + mx, ((double)DY[i] + DLowY[i]) + my, ((double)DZ[i] + DLowZ[i]) + mz);
+            double x = ((double)DX[i] + DLowX[i]) + mx, y = ((double)DY[i] + DLowY[i]) + my, z = ((double)DZ[i] + DLowZ[i]) + mz;
+            float fx = (float)x, fy = (float)y, fz = (float)z;
+            DX[i] = fx; DY[i] = fy; DZ[i] = fz;
+            DLowX[i] = (float)(x - fx); DLowY[i] = (float)(y - fy); DLowZ[i] = (float)(z - fz);
         }
 
         /// <summary>Sets particle i's substep displacement D + DLow to (x, y, z) m (double), split into the float D and its remainder.</summary>
@@ -194,7 +197,9 @@ namespace HookeRope.Solver
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void LiveSpan(int j, out double ex, out double ey, out double ez, out double ddx, out double ddy, out double ddz)
         {
-            SubstepChange(j, out ddx, out ddy, out ddz);
+            ddx = ((double)DX[j + 1] - DX[j]) + ((double)DLowX[j + 1] - DLowX[j]);
+            ddy = ((double)DY[j + 1] - DY[j]) + ((double)DLowY[j + 1] - DLowY[j]);
+            ddz = ((double)DZ[j + 1] - DZ[j]) + ((double)DLowZ[j + 1] - DLowZ[j]);
             ex = ((double)PrevX[j + 1] - PrevX[j]) + (((double)LowX[j + 1] - LowX[j]) + ddx);
             ey = ((double)PrevY[j + 1] - PrevY[j]) + (((double)LowY[j + 1] - LowY[j]) + ddy);
             ez = ((double)PrevZ[j + 1] - PrevZ[j]) + (((double)LowZ[j + 1] - LowZ[j]) + ddz);

@@ -121,11 +121,11 @@ namespace HookeRope.Solver
         private void TrackSolveDisplacement(double sign)
         {
             int n = chain.ParticleCount;
+            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ, lx = chain.DLowX, ly = chain.DLowY, lz = chain.DLowZ;
             double[] sx = chain.SolveDX, sy = chain.SolveDY, sz = chain.SolveDZ;
             for (int i = 0; i < n; i++)
             {
-                chain.Displacement(i, out double dx, out double dy, out double dz);
-                sx[i] += sign * dx; sy[i] += sign * dy; sz[i] += sign * dz;
+                sx[i] += sign * ((double)dx[i] + lx[i]); sy[i] += sign * ((double)dy[i] + ly[i]); sz[i] += sign * ((double)dz[i] + lz[i]);
             }
         }
 
@@ -157,7 +157,7 @@ namespace HookeRope.Solver
                 {
                     wx[i] += cx * invH; wy[i] += cy * invH; wz[i] += cz * invH;
                 }
-                CommitParticle(i, bx[i] + dx * invH + k * sx[i], by[i] + dy * invH + k * sy[i], bz[i] + dz * invH + k * sz[i]);
+                CommitParticle(i, dx, dy, dz, bx[i] + dx * invH + k * sx[i], by[i] + dy * invH + k * sy[i], bz[i] + dz * invH + k * sz[i]);
             }
             // a violent substep (see ViolentStrain) restarts the history: the next substep is backward Euler
             historyValid = !violent;

@@ -258,21 +258,21 @@ namespace HookeRope.Solver
             for (int i = 0; i < n; i++)
             {
                 chain.Displacement(i, out double dx, out double dy, out double dz);
-                CommitParticle(i, dx * invH, dy * invH, dz * invH);
+                CommitParticle(i, dx, dy, dz, dx * invH, dy * invH, dz * invH);
             }
         }
 
         /// <summary>
-        /// Ends particle i's substep at x = x_prev + Low + d with velocity (ux, uy, uz) m/s (d = D + DLow). The sum is formed in
-        /// double and split into the float position and its new remainder Low, so no part of d is rounded away. Never lets a non-finite value into
+        /// Ends particle i's substep at x = x_prev + Low + d with velocity (ux, uy, uz) m/s; d = (dx, dy, dz) m is its
+        /// <see cref="ChainState.Displacement"/> D + DLow. The sum is formed in double and split into the float position and its
+        /// new remainder Low, so no part of d is rounded away. Never lets a non-finite value into
         /// the state: then the particle falls back to its last good position, at rest, with no displacement.
         /// </summary>
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
-        private void CommitParticle(int i, double ux, double uy, double uz)
+        private void CommitParticle(int i, double dx, double dy, double dz, double ux, double uy, double uz)
         {
             float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
             float[] lx = chain.LowX, ly = chain.LowY, lz = chain.LowZ;
-            chain.Displacement(i, out double dx, out double dy, out double dz);
             double ex = (double)px[i] + lx[i] + dx, ey = (double)py[i] + ly[i] + dy, ez = (double)pz[i] + lz[i] + dz;
             float nx = (float)ex, ny = (float)ey, nz = (float)ez;
             if (double.IsFinite(ux + uy + uz) && float.IsFinite(nx + ny + nz))

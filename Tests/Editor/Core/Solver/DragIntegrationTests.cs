@@ -100,7 +100,7 @@ namespace HookeRope.Tests.Solver
         /// Order of convergence with drag: halving the substep divides the error of BDF2 by about 4 (second order) with viscous
         /// drag — which is exactly implicit, folded into the chain solve — and with air drag; backward Euler by 2. The rope: 2 m in
         /// 4 segments (E 150 MPa, β 0.002 s damps the axial ringing the coarse runs would not resolve), 1/45 s host steps, the
-        /// segment angles after 1 s against 512 substeps (converged: 128 … 1000 substeps agree within 1e-6 rad since the velocities
+        /// segment angles after 1 s against 512 substeps (converged: 128 … 1000 substeps agree within 2e-6 rad since the velocities
         /// are double and the solves' corrections keep their sub-float part, SmallSubstepTests). The ratios are taken from 2 to 8
         /// substeps; 16 is printed.
         /// </summary>
