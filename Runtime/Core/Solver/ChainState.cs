@@ -26,14 +26,15 @@ namespace HookeRope.Solver
         // velocities D/h keep full float precision however small h is.
         public readonly float[] DX, DY, DZ;
         // the part of D below its float resolution (m), |DLow| ≤ half an ulp of D, written by the chain solves, the compliant
-        // pins and the rigid pins (AddDisplacement, SetDisplacement); zero after the prediction. Without it every solver
-        // correction was rounded to D's ulp (4e-12 m at 4e-5 m), and as the velocity reads the correction over h that was
-        // a velocity error of up to 1e-7 m/s per substep, with the same sign substep after substep: the segment angles of a
-        // swinging rope drifted by 2e-4 rad at 512 substeps of 1/45 s. A writer that does not know it (a collider) leaves it.
+        // and rigid pins, the history boost and backward Euler's prediction (AddDisplacement, SetDisplacement); zero after a
+        // second-order prediction, whose velocity base absorbs its rounding. Without it every solver correction was rounded
+        // to D's ulp (4e-12 m at 4e-5 m), and as the velocity reads the correction over h that was a velocity error of up to
+        // 1e-7 m/s per substep, with the same sign substep after substep: the segment angles of a swinging rope drifted by
+        // 2e-4 rad at 512 substeps of 1/45 s. A writer that does not know it (a collider) leaves it: at most half an ulp of D.
         public readonly float[] DLowX, DLowY, DLowZ;
-        // velocities (m/s) in double: the integrator's state. A substep changes a velocity by a·h, far below its float
-        // resolution at small h (2e-4 m/s against 6e-8 m/s at 1000 substeps of 1/45 s), and rounding it to float every substep
-        // added up to a systematic drift (see Rope.Integration)
+        // velocities (m/s) in double: the integrator's state. A substep changes a velocity by a·h (2e-4 m/s at 1000 substeps of
+        // 1/45 s), and rounding the sum to float (a step of up to 9.5e-7 m/s at 10 m/s) every substep erred the same way
+        // substep after substep: a free fall read v off g·t by 1e-4 after 1 s
         public readonly double[] VelX, VelY, VelZ;
         public readonly float[] Mass;
         public readonly float[] InverseMass;
