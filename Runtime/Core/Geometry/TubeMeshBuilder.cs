@@ -18,8 +18,9 @@ namespace HookeRope.Geometry
     /// colliders push the rings). The result is bit-identical to a full recompute (tested), provided the caller does
     /// not write into the vertex buffer between builds (another buffer forces a full build). The index buffer is
     /// rewritten only when the topology changes (first build, a newly broken segment, a piece's ring count, another
-    /// index array). Allocation-free after construction (the storage grows only when an adaptive layout holds more rings
-    /// than any before it).
+    /// index array). Allocation-free after construction: an adaptive builder's ring storage is made at construction for
+    /// the most rings its ring budget allows (<see cref="AdaptiveRings.MostRings"/>), and buffers of
+    /// <see cref="GetVertexCapacity"/> and <see cref="GetIndexCapacity"/> take every budget until a segment breaks.
     /// </para>
     /// </summary>
     internal sealed partial class TubeMeshBuilder
@@ -130,12 +131,15 @@ namespace HookeRope.Geometry
         /// rope of <paramref name="segmentCount"/> segments and rest radius <paramref name="restRadius"/> (m; 0 = unknown,
         /// sets the burr fibres); <paramref name="neckStations"/> (null = none) holds a Zone neck's stations
         /// (<see cref="RingLayout.Adapted"/> with one ring per segment), drawn while the neck is active. Call
-        /// <see cref="PlanRings"/> before each build.
+        /// <see cref="PlanRings"/> before each build. <paramref name="meanRingsPerSegment"/> is the ring budget's cap
+        /// (<see cref="AdaptiveRings.MaxMeanRingsPerSegment"/>; the tests pass <see cref="AdaptiveRings.MaxRingsPerSegment"/>
+        /// for the placement without a budget).
         /// </summary>
-        internal static TubeMeshBuilder Adaptive(TubeMeshSettings settings, int segmentCount, float restRadius, RingLayout neckStations)
+        internal static TubeMeshBuilder Adaptive(TubeMeshSettings settings, int segmentCount, float restRadius, RingLayout neckStations,
+            int meanRingsPerSegment = AdaptiveRings.MaxMeanRingsPerSegment)
         {
             if (settings == null) throw new ArgumentNullException(nameof(settings));
-            var rings = new AdaptiveRings(segmentCount, settings.RadialSegments, neckStations);
+            var rings = new AdaptiveRings(segmentCount, settings.RadialSegments, neckStations, meanRingsPerSegment);
             return new TubeMeshBuilder(settings, RingLayout.Rewritable(segmentCount, rings.MostRings), rings, restRadius);
         }
 
@@ -150,6 +154,9 @@ namespace HookeRope.Geometry
 
         /// <summary>Adaptive builders: incremented whenever the counts the builder reports change (a topology change ahead); 0 otherwise.</summary>
         internal int BudgetVersion => adaptive?.BudgetVersion ?? 0;
+
+        /// <summary>Adaptive builders: true when the ring budget's cap limited a piece's budget in the last <see cref="PlanRings"/> (<see cref="AdaptiveRings.BudgetHit"/>); false otherwise.</summary>
+        internal bool BudgetHit => adaptive?.BudgetHit ?? false;
 
         /// <summary>Adaptive builders: the tolerance of the drawn surface as a fraction of the drawn radius; 0 otherwise.</summary>
         internal float ToleranceFraction => adaptive?.ToleranceFraction ?? 0f;
@@ -202,14 +209,32 @@ namespace HookeRope.Geometry
         /// </summary>
         public int GetVertexCount(ReadOnlySpan<bool> brokenSegments)
         {
-            Count(brokenSegments, true, out int vertices, out _, out _);
+            Count(brokenSegments, Counted.Reported, out int vertices, out _, out _);
             return vertices;
         }
 
         /// <summary>Indices the mesh needs for these broken-segment flags (tube, caps and burr strands).</summary>
         public int GetIndexCount(ReadOnlySpan<bool> brokenSegments)
         {
-            Count(brokenSegments, true, out _, out int tube, out int burr);
+            Count(brokenSegments, Counted.Reported, out _, out int tube, out int burr);
+            return tube + burr;
+        }
+
+        /// <summary>
+        /// Most vertices any build can need for these broken-segment flags: every piece at its ring cap
+        /// (<see cref="AdaptiveRings.CapOfPiece"/>) for an adaptive builder, the layout's count for a fixed one. Buffers of
+        /// this size (and <see cref="GetIndexCapacity"/>) take every budget the adaptive rings choose until a segment breaks.
+        /// </summary>
+        public int GetVertexCapacity(ReadOnlySpan<bool> brokenSegments)
+        {
+            Count(brokenSegments, adaptive != null ? Counted.Capacity : Counted.Layout, out int vertices, out _, out _);
+            return vertices;
+        }
+
+        /// <summary>Most indices any build can need for these broken-segment flags (see <see cref="GetVertexCapacity"/>).</summary>
+        public int GetIndexCapacity(ReadOnlySpan<bool> brokenSegments)
+        {
+            Count(brokenSegments, adaptive != null ? Counted.Capacity : Counted.Layout, out _, out int tube, out int burr);
             return tube + burr;
         }
 
@@ -243,7 +268,7 @@ namespace HookeRope.Geometry
             bool takeNext = true;
             if (adaptive.BudgetPending(brokenSegments))
             {
-                Count(brokenSegments, true, out int vertices, out int tube, out int burr);
+                Count(brokenSegments, Counted.Reported, out int vertices, out int tube, out int burr);
                 takeNext = vertices <= vertexCapacity && tube + burr <= indexCapacity;
             }
             bool changed = adaptive.Plan(x, y, z, brokenSegments, neckActive, radius, takeNext, layout);
@@ -305,7 +330,7 @@ namespace HookeRope.Geometry
                 throw new ArgumentException("radii must hold RingCount = " + rings + " values.", nameof(radii));
             if (vertices == null) throw new ArgumentNullException(nameof(vertices));
             if (indices == null) throw new ArgumentNullException(nameof(indices));
-            Count(brokenSegments, false, out int vertexCount, out int tubeIndexCount, out int burrIndexCount);
+            Count(brokenSegments, Counted.Layout, out int vertexCount, out int tubeIndexCount, out int burrIndexCount);
             if (vertices.Length < vertexCount)
                 throw new ArgumentException("vertices must hold at least GetVertexCount = " + vertexCount + " vertices.", nameof(vertices));
             if (indices.Length < tubeIndexCount + burrIndexCount)
@@ -488,9 +513,21 @@ namespace HookeRope.Geometry
         private static bool NextPiece(ReadOnlySpan<bool> brokenSegments, int n, ref int segment, out int a, out int b) =>
             RopePieces.Next(brokenSegments, n, ref segment, out a, out b);
 
-        /// <summary>Vertex and index counts: of the layout (<paramref name="reported"/> false) or of the next adaptive budgets.</summary>
-        private void Count(ReadOnlySpan<bool> brokenSegments, bool reported, out int vertexCount, out int tubeIndexCount, out int burrIndexCount)
+        /// <summary>What <see cref="Count"/> counts.</summary>
+        private enum Counted
         {
+            /// <summary>The layout of the next build.</summary>
+            Layout,
+            /// <summary>The next adaptive budgets (the layout for a fixed builder).</summary>
+            Reported,
+            /// <summary>Every adaptive piece at its ring cap.</summary>
+            Capacity,
+        }
+
+        /// <summary>Vertex and index counts: of the layout, of the next adaptive budgets or of the caps (<paramref name="what"/>).</summary>
+        private void Count(ReadOnlySpan<bool> brokenSegments, Counted what, out int vertexCount, out int tubeIndexCount, out int burrIndexCount)
+        {
+            bool reported = what != Counted.Layout;
             int n = layout.SegmentCount;
             bool hasBroken = brokenSegments.Length > 0;
             if (hasBroken && brokenSegments.Length != n)
@@ -499,9 +536,9 @@ namespace HookeRope.Geometry
             int segment = 0;
             while (NextPiece(brokenSegments, n, ref segment, out int a, out int b))
             {
-                int rings = reported && adaptive != null
-                    ? adaptive.RingsOfPiece(a, brokenSegments)
-                    : layout.FirstRing(b) - layout.FirstRing(a) + 1;
+                int rings = !reported || adaptive == null ? layout.FirstRing(b) - layout.FirstRing(a) + 1
+                    : what == Counted.Capacity ? adaptive.CapOfPiece(a, b) + 1
+                    : adaptive.RingsOfPiece(a, brokenSegments);
                 vertexCount += rings * (radial + 1);
                 tubeIndexCount += (rings - 1) * radial * 6;
                 CountEnd(a > 0, a > 0 ? DanglingRingCount(a - 1, true, reported) : 0, ref vertexCount, ref tubeIndexCount, ref burrIndexCount);

@@ -169,6 +169,32 @@ namespace HookeRope.Solver
             DLowX[i] = (float)(x - fx); DLowY[i] = (float)(y - fy); DLowZ[i] = (float)(z - fz);
         }
 
+        /// <summary>
+        /// Adds m (m, double) to one component of a displacement, d with its sub-float remainder low, exactly as
+        /// <see cref="AddDisplacement"/> does: d + low + m formed in double and split back. For the kernels' carried copies (inlined,
+        /// so the refs do not expose the locals).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static void Add(ref float d, ref float low, double m)
+        {
+            double x = ((double)d + low) + m;
+            float f = (float)x;
+            d = f;
+            low = (float)(x - f);
+        }
+
+        /// <summary>
+        /// Sets one component of a displacement, d with its sub-float remainder low, to x (m, double), as
+        /// <see cref="SetDisplacement"/> does (for the kernels' spans; inlined).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static void Set(ref float d, ref float low, double x)
+        {
+            float f = (float)x;
+            d = f;
+            low = (float)(x - f);
+        }
+
         /// <summary>Sets particle i's substep displacement D + DLow to (x, y, z) m (double), split into the float D and its remainder.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void SetDisplacement(int i, double x, double y, double z)
@@ -217,18 +243,76 @@ namespace HookeRope.Solver
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public double Direction(int j, out double nx, out double ny, out double nz, out double ddx, out double ddy, out double ddz)
         {
-            LiveSpan(j, out double ex, out double ey, out double ez, out ddx, out ddy, out ddz);
+            ddx = Change(DX[j], DX[j + 1], DLowX[j], DLowX[j + 1]);
+            ddy = Change(DY[j], DY[j + 1], DLowY[j], DLowY[j + 1]);
+            ddz = Change(DZ[j], DZ[j + 1], DLowZ[j], DLowZ[j + 1]);
+            double ex = Component(PrevX[j], PrevX[j + 1], LowX[j], LowX[j + 1], ddx);
+            double ey = Component(PrevY[j], PrevY[j + 1], LowY[j], LowY[j + 1], ddy);
+            double ez = Component(PrevZ[j], PrevZ[j + 1], LowZ[j], LowZ[j + 1], ddz);
+            return Normalise(j, ex, ey, ez, Exactly(DirX, SegmentCount), Exactly(DirY, SegmentCount), Exactly(DirZ, SegmentCount), out nx, out ny, out nz);
+        }
+
+        /// <summary>
+        /// One component (m, double) of a segment's change over the substep from its ends' displacements and their sub-float
+        /// remainders (all float): (D_b − D_a) + (DLow_b − DLow_a), formed in double.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double Change(float dA, float dB, float lowA, float lowB) => ((double)dB - dA) + ((double)lowB - lowA);
+
+        /// <summary>
+        /// One component (m, double) of a segment's live vector from its ends' previous positions, remainders (both float,
+        /// passed as double) and the change of its span over the substep (<see cref="Change"/>, double):
+        /// (P_b − P_a) + ((Low_b − Low_a) + change).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double Component(double prevA, double prevB, double lowA, double lowB, double change) => (prevB - prevA) + ((lowB - lowA) + change);
+
+        /// <summary>
+        /// Length (m) of segment j's live vector (ex, ey, ez) and its unit direction (nx, ny, nz), stored in float into
+        /// dirX/Y/Z[j] as the last valid direction; a vanishing or non-finite vector keeps the stored direction (see
+        /// <see cref="Direction"/>). The kernels pass the direction arrays as spans (<see cref="Exactly"/>).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double Normalise(int j, double ex, double ey, double ez, Span<float> dirX, Span<float> dirY, Span<float> dirZ, out double nx, out double ny, out double nz)
+        {
             double len = Math.Sqrt(ex * ex + ey * ey + ez * ez);
             if (len > 1e-12 && len <= float.MaxValue)
             {
                 double inv = 1.0 / len;
                 nx = ex * inv; ny = ey * inv; nz = ez * inv;
-                DirX[j] = (float)nx; DirY[j] = (float)ny; DirZ[j] = (float)nz;
+                dirX[j] = (float)nx; dirY[j] = (float)ny; dirZ[j] = (float)nz;
                 return len;
             }
-            nx = DirX[j]; ny = DirY[j]; nz = DirZ[j];
+            nx = dirX[j]; ny = dirY[j]; nz = dirZ[j];
             return len <= float.MaxValue ? len : 0.0;
         }
+
+        /// <summary>
+        /// The first n entries of an array (one of these particle or segment arrays) as a span whose length the JIT knows to
+        /// be n: the array is checked non-null first, so the span's length is not a choice between n and 0, and a loop bounded
+        /// by n indexes it without bounds checks (an array indexed j + 1, or several arrays under one loop bound, keep theirs).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static Span<T> Exactly<T>(T[] values, int n)
+        {
+            if (values == null) ThrowSizes();
+            return values.AsSpan(0, n);
+        }
+
+        /// <summary>The entries j + 1 … j + n of an array as a span of n (see <see cref="Exactly"/>): a segment's second particle at index j.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static Span<T> Shifted<T>(T[] values, int n)
+        {
+            if (values == null) ThrowSizes();
+            return values.AsSpan(1, n);
+        }
+
+        /// <summary>
+        /// Throws unless every particle array the kernels index has ParticleCount entries and every segment array
+        /// SegmentCount (true by construction): after this check the JIT drops the per-element bounds checks of loops bounded by
+        /// those lengths (a method that only throws is not inlined, and the JIT knows the call does not return).
+        /// </summary>
+        public static void ThrowSizes() => throw new InvalidOperationException("ChainState arrays are sized from SegmentCount");
 
         /// <summary>Vector (m, double) of segment j between the committed positions X + Low of its ends.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

@@ -72,18 +72,36 @@ namespace HookeRope.Solver
         private static void Assemble(ChainState c, double invH2, double gammaAll, bool first)
         {
             int s = c.SegmentCount;
-            float[] w = c.InverseMass, rest = c.RestLength, compliance = c.Compliance, length = c.Length;
-            double[] fx = c.ForceX, fy = c.ForceY, fz = c.ForceZ, rx = c.ResidualX, ry = c.ResidualY, rz = c.ResidualZ;
-            double[] axial = c.AxialCompliance, transverse = c.TransverseCompliance, estimate = c.EstimatedTension;
-            bool[] broken = c.Broken, active = c.Active;
+            // spans of exactly s entries (the loop bound) index without bounds checks; B spans are particle j + 1's
+            ReadOnlySpan<float> wA = ChainState.Exactly(c.InverseMass, s), wB = ChainState.Shifted(c.InverseMass, s);
+            ReadOnlySpan<float> dxA = ChainState.Exactly(c.DX, s), dyA = ChainState.Exactly(c.DY, s), dzA = ChainState.Exactly(c.DZ, s);
+            ReadOnlySpan<float> dxB = ChainState.Shifted(c.DX, s), dyB = ChainState.Shifted(c.DY, s), dzB = ChainState.Shifted(c.DZ, s);
+            ReadOnlySpan<float> dlxA = ChainState.Exactly(c.DLowX, s), dlyA = ChainState.Exactly(c.DLowY, s), dlzA = ChainState.Exactly(c.DLowZ, s);
+            ReadOnlySpan<float> dlxB = ChainState.Shifted(c.DLowX, s), dlyB = ChainState.Shifted(c.DLowY, s), dlzB = ChainState.Shifted(c.DLowZ, s);
+            ReadOnlySpan<float> pxA = ChainState.Exactly(c.PrevX, s), pyA = ChainState.Exactly(c.PrevY, s), pzA = ChainState.Exactly(c.PrevZ, s);
+            ReadOnlySpan<float> pxB = ChainState.Shifted(c.PrevX, s), pyB = ChainState.Shifted(c.PrevY, s), pzB = ChainState.Shifted(c.PrevZ, s);
+            ReadOnlySpan<float> lxA = ChainState.Exactly(c.LowX, s), lyA = ChainState.Exactly(c.LowY, s), lzA = ChainState.Exactly(c.LowZ, s);
+            ReadOnlySpan<float> lxB = ChainState.Shifted(c.LowX, s), lyB = ChainState.Shifted(c.LowY, s), lzB = ChainState.Shifted(c.LowZ, s);
+            ReadOnlySpan<float> rest = ChainState.Exactly(c.RestLength, s), compliance = ChainState.Exactly(c.Compliance, s), lastTension = ChainState.Exactly(c.Tension, s);
+            Span<float> length = ChainState.Exactly(c.Length, s);
+            ReadOnlySpan<double> fx = ChainState.Exactly(c.ForceX, s), fy = ChainState.Exactly(c.ForceY, s), fz = ChainState.Exactly(c.ForceZ, s);
+            Span<double> rx = ChainState.Exactly(c.ResidualX, s), ry = ChainState.Exactly(c.ResidualY, s), rz = ChainState.Exactly(c.ResidualZ, s);
+            Span<double> axial = ChainState.Exactly(c.AxialCompliance, s), transverse = ChainState.Exactly(c.TransverseCompliance, s), estimate = ChainState.Exactly(c.EstimatedTension, s);
+            ReadOnlySpan<bool> broken = ChainState.Exactly(c.Broken, s);
+            Span<bool> active = ChainState.Exactly(c.Active, s);
+            Span<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
             SegmentPlasticity plastic = c.Plasticity;
             for (int j = 0; j < s; j++)
             {
                 if (broken[j]) { active[j] = false; continue; }
-                double len = c.Direction(j, out double nx, out double ny, out double nz, out double ddx, out double ddy, out double ddz);
+                // ChainState.Direction on the spans
+                double ddx = ChainState.Change(dxA[j], dxB[j], dlxA[j], dlxB[j]), ddy = ChainState.Change(dyA[j], dyB[j], dlyA[j], dlyB[j]);
+                double ddz = ChainState.Change(dzA[j], dzB[j], dlzA[j], dlzB[j]);
+                double len = ChainState.Normalise(j, ChainState.Component(pxA[j], pxB[j], lxA[j], lxB[j], ddx), ChainState.Component(pyA[j], pyB[j], lyA[j], lyB[j], ddy),
+                    ChainState.Component(pzA[j], pzB[j], lzA[j], lzB[j], ddz), dirX, dirY, dirZ, out double nx, out double ny, out double nz);
                 length[j] = (float)len;
                 double alpha = compliance[j];
-                double mobility = (double)w[j] + w[j + 1];
+                double mobility = (double)wA[j] + wB[j];
                 if (mobility == 0.0 && alpha == 0.0) { active[j] = false; continue; }
                 double g = alpha > 0.0 ? gammaAll : 0.0;
                 double restJ = plastic == null ? rest[j] : plastic.Rest(j); // a plastic segment's force is measured from L_p
@@ -94,7 +112,11 @@ namespace HookeRope.Solver
                     restEffective = (restJ + g * (len - rate)) / (1.0 + g);
                     alphaTilde /= 1.0 + g;
                 }
-                if (plastic != null && plastic.IsYielding(j)) plastic.FlowRow(j, invH2, ref restEffective, ref alphaTilde);
+                if (plastic != null && plastic.IsYielding(j))
+                {
+                    restEffective = FlowRow(plastic, j, invH2, restEffective, alphaTilde, out double flowCompliance);
+                    alphaTilde = flowCompliance;
+                }
                 double magnitude = Math.Sqrt(fx[j] * fx[j] + fy[j] * fy[j] + fz[j] * fz[j]);
                 double ex = nx, ey = ny, ez = nz, signed = 0.0;
                 if (magnitude > 0.0)
@@ -108,7 +130,7 @@ namespace HookeRope.Solver
                 // the geometric stiffness T/l: with the last substep's tension on the first iteration, the accumulated one after;
                 // a pushing (bilateral) segment's is −|T|/l, which would let it buckle explicitly, so it takes |T| and the
                 // buckling is damped instead
-                double tension = first ? Math.Abs(c.Tension[j]) : Math.Abs(signed * invH2);
+                double tension = first ? Math.Abs(lastTension[j]) : Math.Abs(signed * invH2);
                 estimate[j] = tension;
                 double target = restEffective + alphaTilde * signed; // the length the accumulated force implies
                 double geometric = Math.Max(target, 1e-6 * rest[j]) * invH2;
@@ -117,6 +139,18 @@ namespace HookeRope.Solver
                 axial[j] = alphaTilde;
                 rx[j] = len * nx - target * ex; ry[j] = len * ny - target * ey; rz[j] = len * nz - target * ez;
             }
+        }
+
+        /// <summary>
+        /// <see cref="SegmentPlasticity.FlowRow"/> on copies (returns the effective rest length, the compliance in flowCompliance),
+        /// so the assembly's own locals are not address-exposed and stay in registers.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
+        private static double FlowRow(SegmentPlasticity plastic, int j, double invH2, double restEffective, double alphaTilde, out double flowCompliance)
+        {
+            plastic.FlowRow(j, invH2, ref restEffective, ref alphaTilde);
+            flowCompliance = alphaTilde;
+            return restEffective;
         }
 
         /// <summary>
@@ -164,13 +198,17 @@ namespace HookeRope.Solver
         private static bool UpdateTensionOnlySet(ChainState c)
         {
             int s = c.SegmentCount;
-            double[] fx = c.ForceX, fy = c.ForceY, fz = c.ForceZ, dx = c.StepX, dy = c.StepY, dz = c.StepZ;
-            bool[] active = c.Active, broken = c.Broken;
+            // spans of exactly s entries (the loop bound): indexed without bounds checks
+            ReadOnlySpan<double> fx = ChainState.Exactly(c.ForceX, s), fy = ChainState.Exactly(c.ForceY, s), fz = ChainState.Exactly(c.ForceZ, s);
+            ReadOnlySpan<double> dx = ChainState.Exactly(c.StepX, s), dy = ChainState.Exactly(c.StepY, s), dz = ChainState.Exactly(c.StepZ, s);
+            ReadOnlySpan<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
+            Span<bool> active = ChainState.Exactly(c.Active, s);
+            ReadOnlySpan<bool> broken = ChainState.Exactly(c.Broken, s);
             bool changed = false;
             for (int j = 0; j < s; j++)
             {
                 if (broken[j]) continue;
-                double nx = c.DirX[j], ny = c.DirY[j], nz = c.DirZ[j];
+                double nx = dirX[j], ny = dirY[j], nz = dirZ[j];
                 if (active[j])
                 {
                     double along = (fx[j] + dx[j]) * nx + (fy[j] + dy[j]) * ny + (fz[j] + dz[j]) * nz;
@@ -234,53 +272,104 @@ namespace HookeRope.Solver
         private static double Apply(ChainState c, bool contacts)
         {
             int s = c.SegmentCount;
-            float[] w = c.InverseMass;
-            double worst = 0.0, qx = 0, qy = 0, qz = 0;
-            for (int i = 0; i <= s; i++)
+            // spans of exactly s entries (the loop bound) index without bounds checks; particle s is moved after the loop.
+            // Particle i is pulled by segment i (index i) and segment i − 1, whose values are carried from the pass before.
+            ReadOnlySpan<float> w = ChainState.Exactly(c.InverseMass, s), dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
+            ReadOnlySpan<float> length = ChainState.Exactly(c.Length, s), rest = ChainState.Exactly(c.RestLength, s);
+            Span<float> dx = ChainState.Exactly(c.DX, s), dy = ChainState.Exactly(c.DY, s), dz = ChainState.Exactly(c.DZ, s);
+            Span<float> dlx = ChainState.Exactly(c.DLowX, s), dly = ChainState.Exactly(c.DLowY, s), dlz = ChainState.Exactly(c.DLowZ, s);
+            ReadOnlySpan<double> sx = ChainState.Exactly(c.StepX, s), sy = ChainState.Exactly(c.StepY, s), sz = ChainState.Exactly(c.StepZ, s);
+            ReadOnlySpan<bool> broken = ChainState.Exactly(c.Broken, s), active = ChainState.Exactly(c.Active, s);
+            double worst = 0.0, qx = 0, qy = 0, qz = 0, mx, my, mz;
+            // segment i − 1: its step (0 when broken or before the first particle), active flag, direction, length and rest length
+            double ax = 0, ay = 0, az = 0;
+            bool before = false;
+            float ex = 0f, ey = 0f, ez = 0f, el = 0f, er = 0f;
+            for (int i = 0; i < s; i++)
             {
-                SegmentForceSystem.Pull(c, i, out double px, out double py, out double pz);
-                double wi = w[i];
-                double mx = wi * px, my = wi * py, mz = wi * pz;
-                if (contacts && c.ContactActive[i])
-                {
-                    double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
-                    double normal = nx * mx + ny * my + nz * mz;
-                    double allowed = normal < 0.0 ? Math.Max(normal, -c.ContactGap[i]) : 0.0;
-                    double withheld = normal - allowed;
-                    mx -= nx * withheld; my -= ny * withheld; mz -= nz * withheld;
-                    if (normal < 0.0) c.ContactLoad[i] += (float)(-withheld);
-                }
-                c.AddDisplacement(i, mx, my, mz);
-                if (i > 0 && c.Active[i - 1])
-                {
-                    double ux = mx - qx, uy = my - qy, uz = mz - qz;
-                    double along = ux * c.DirX[i - 1] + uy * c.DirY[i - 1] + uz * c.DirZ[i - 1];
-                    double perp = ux * ux + uy * uy + uz * uz - along * along;
-                    double e = perp / (2.0 * Math.Max(c.Length[i - 1], 1e-6 * c.RestLength[i - 1]) * c.RestLength[i - 1]);
-                    if (e > worst) worst = e;
-                }
+                double px = 0, py = 0, pz = 0;
+                if (!broken[i]) { px = sx[i]; py = sy[i]; pz = sz[i]; }
+                Move(c, i, w[i], px - ax, py - ay, pz - az, contacts, out mx, out my, out mz);
+                ChainState.Add(ref dx[i], ref dlx[i], mx); ChainState.Add(ref dy[i], ref dly[i], my); ChainState.Add(ref dz[i], ref dlz[i], mz);
+                if (before) worst = Worse(worst, LengthError(mx - qx, my - qy, mz - qz, ex, ey, ez, el, er));
                 qx = mx; qy = my; qz = mz;
+                if (broken[i]) { ax = 0; ay = 0; az = 0; } else { ax = sx[i]; ay = sy[i]; az = sz[i]; }
+                before = active[i]; ex = dirX[i]; ey = dirY[i]; ez = dirZ[i]; el = length[i]; er = rest[i];
             }
-            double[] fx = c.ForceX, fy = c.ForceY, fz = c.ForceZ, dx = c.StepX, dy = c.StepY, dz = c.StepZ;
+            Move(c, s, c.InverseMass[s], -ax, -ay, -az, contacts, out mx, out my, out mz);
+            c.AddDisplacement(s, mx, my, mz);
+            if (before) worst = Worse(worst, LengthError(mx - qx, my - qy, mz - qz, ex, ey, ez, el, er));
+            Span<double> fx = ChainState.Exactly(c.ForceX, s), fy = ChainState.Exactly(c.ForceY, s), fz = ChainState.Exactly(c.ForceZ, s);
+            Span<double> lambda = ChainState.Exactly(c.Lambda, s);
             for (int j = 0; j < s; j++)
             {
-                fx[j] += dx[j]; fy[j] += dy[j]; fz[j] += dz[j];
-                c.Lambda[j] = c.Active[j] ? -(fx[j] * c.DirX[j] + fy[j] * c.DirY[j] + fz[j] * c.DirZ[j]) : 0.0;
+                double gx = fx[j] + sx[j], gy = fy[j] + sy[j], gz = fz[j] + sz[j];
+                fx[j] = gx; fy[j] = gy; fz[j] = gz;
+                lambda[j] = active[j] ? -(gx * dirX[j] + gy * dirY[j] + gz * dirZ[j]) : 0.0;
             }
             return worst;
+        }
+
+        /// <summary>
+        /// Particle i's motion (m) under the pull (px, py, pz) (N·s²) with inverse mass wi: wi·pull, less the normal motion a
+        /// held contact withholds (which it records as the contact's normal load; the contact may still close its gap).
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static void Move(ChainState c, int i, double wi, double px, double py, double pz, bool contacts, out double mx, out double my, out double mz)
+        {
+            mx = wi * px; my = wi * py; mz = wi * pz;
+            if (contacts && c.ContactActive[i])
+            {
+                // on copies: the caller's motion is never passed by reference, so it stays in registers
+                double hx = mx, hy = my, hz = mz;
+                HoldContact(c, i, ref hx, ref hy, ref hz);
+                mx = hx; my = hy; mz = hz;
+            }
+        }
+
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
+        private static void HoldContact(ChainState c, int i, ref double mx, ref double my, ref double mz)
+        {
+            double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
+            double normal = nx * mx + ny * my + nz * mz;
+            double allowed = normal < 0.0 ? Math.Max(normal, -c.ContactGap[i]) : 0.0;
+            double withheld = normal - allowed;
+            mx -= nx * withheld; my -= ny * withheld; mz -= nz * withheld;
+            if (normal < 0.0) c.ContactLoad[i] += (float)(-withheld);
+        }
+
+        /// <summary>The larger of worst and e, ignoring a NaN e.</summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static double Worse(double worst, double e) => e > worst ? e : worst;
+
+        /// <summary>
+        /// Second-order length error |Δ_⊥|²/(2l) over the rest length of a segment (direction e, length l, rest length L, m)
+        /// whose ends moved apart by (ux, uy, uz) in this iteration (see <see cref="NonlinearTolerance"/>).
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static double LengthError(double ux, double uy, double uz, float ex, float ey, float ez, float length, float rest)
+        {
+            double along = ux * ex + uy * ey + uz * ez;
+            double perp = ux * ux + uy * uy + uz * uz - along * along;
+            return perp / (2.0 * Math.Max(length, 1e-6 * rest) * rest);
         }
 
         /// <summary>See <see cref="Iterate"/>: the estimated tension was below half the result where 4·T·h²·max(w)/l &gt; 1.</summary>
         private static bool EstimateTooLow(ChainState c, double invH2)
         {
             int s = c.SegmentCount;
+            // spans of exactly s entries (the loop bound): indexed without bounds checks
+            ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
+            ReadOnlySpan<double> lambda = ChainState.Exactly(c.Lambda, s), estimate = ChainState.Exactly(c.EstimatedTension, s);
+            ReadOnlySpan<float> wA = ChainState.Exactly(c.InverseMass, s), wB = ChainState.Shifted(c.InverseMass, s);
+            ReadOnlySpan<float> length = ChainState.Exactly(c.Length, s), rest = ChainState.Exactly(c.RestLength, s);
             for (int j = 0; j < s; j++)
             {
-                if (!c.Active[j]) continue;
-                double found = -c.Lambda[j] * invH2;
-                if (!(found > 2.0 * c.EstimatedTension[j])) continue;
-                double w = Math.Max(c.InverseMass[j], c.InverseMass[j + 1]);
-                if (4.0 * found * w > invH2 * Math.Max(c.Length[j], 1e-6 * c.RestLength[j])) return true;
+                if (!active[j]) continue;
+                double found = -lambda[j] * invH2;
+                if (!(found > 2.0 * estimate[j])) continue;
+                double w = Math.Max(wA[j], wB[j]);
+                if (4.0 * found * w > invH2 * Math.Max(length[j], 1e-6 * rest[j])) return true;
             }
             return false;
         }

@@ -1,5 +1,4 @@
 using System;
-using System.Diagnostics;
 
 namespace HookeRope.Solver
 {
@@ -11,51 +10,89 @@ namespace HookeRope.Solver
     {
         public static void Iterate(ChainState c, double h, double beta, bool tensionOnly)
         {
-            int s = c.SegmentCount;
             double invH2 = 1.0 / (h * h);
             double gamma = beta / h; // γ = α̃·β̃/h with β̃ = h²·β·k, k = 1/α
-            float[] w = c.InverseMass, rest = c.RestLength, compliance = c.Compliance;
-            float[] dx = c.DX, dy = c.DY, dz = c.DZ;
-            bool[] broken = c.Broken;
-            double[] lambda = c.Lambda;
-            // ChainState sizes every particle array from SegmentCount + 1 and every segment array from SegmentCount
-            Debug.Assert(w.Length == s + 1 && dx.Length == s + 1 && dy.Length == s + 1 && dz.Length == s + 1
-                && rest.Length == s && compliance.Length == s && broken.Length == s && lambda.Length == s, "ChainState arrays sized from SegmentCount");
+            int s = c.SegmentCount;
+            // every array as spans of exactly s entries, the segment's first particle (A, index j) and its second (B, index
+            // j + 1): spans of one known length, the loop bound, index without bounds checks (arrays indexed j + 1 would not)
+            ReadOnlySpan<float> wA = ChainState.Exactly(c.InverseMass, s), wB = ChainState.Shifted(c.InverseMass, s);
+            Span<float> dxA = ChainState.Exactly(c.DX, s), dyA = ChainState.Exactly(c.DY, s), dzA = ChainState.Exactly(c.DZ, s);
+            Span<float> dxB = ChainState.Shifted(c.DX, s), dyB = ChainState.Shifted(c.DY, s), dzB = ChainState.Shifted(c.DZ, s);
+            // the sub-float parts DLow of the displacements (live position = Prev + Low + D + DLow)
+            Span<float> dlxA = ChainState.Exactly(c.DLowX, s), dlyA = ChainState.Exactly(c.DLowY, s), dlzA = ChainState.Exactly(c.DLowZ, s);
+            Span<float> dlxB = ChainState.Shifted(c.DLowX, s), dlyB = ChainState.Shifted(c.DLowY, s), dlzB = ChainState.Shifted(c.DLowZ, s);
+            ReadOnlySpan<float> pxA = ChainState.Exactly(c.PrevX, s), pyA = ChainState.Exactly(c.PrevY, s), pzA = ChainState.Exactly(c.PrevZ, s);
+            ReadOnlySpan<float> pxB = ChainState.Shifted(c.PrevX, s), pyB = ChainState.Shifted(c.PrevY, s), pzB = ChainState.Shifted(c.PrevZ, s);
+            ReadOnlySpan<float> lxA = ChainState.Exactly(c.LowX, s), lyA = ChainState.Exactly(c.LowY, s), lzA = ChainState.Exactly(c.LowZ, s);
+            ReadOnlySpan<float> lxB = ChainState.Shifted(c.LowX, s), lyB = ChainState.Shifted(c.LowY, s), lzB = ChainState.Shifted(c.LowZ, s);
+            ReadOnlySpan<float> rest = ChainState.Exactly(c.RestLength, s), compliance = ChainState.Exactly(c.Compliance, s);
+            ReadOnlySpan<bool> broken = ChainState.Exactly(c.Broken, s);
+            Span<double> lambda = ChainState.Exactly(c.Lambda, s);
+            Span<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
             bool contacts = c.ContactCount > 0;
             SegmentPlasticity plastic = c.Plasticity;
-            float wa = w[0];
+            // particle a = j is carried from the projection before (its displacement as that projection left it): each
+            // particle's displacement is loaded and stored once per sweep
+            float wa = wA[0], dxa = dxA[0], dya = dyA[0], dza = dzA[0], dlxa = dlxA[0], dlya = dlyA[0], dlza = dlzA[0];
             for (int j = 0; j < s; j++)
             {
-                float wb = w[j + 1];
-                if (broken[j]) { wa = wb; continue; }
+                float wb = wB[j], dxb = dxB[j], dyb = dyB[j], dzb = dzB[j], dlxb = dlxB[j], dlyb = dlyB[j], dlzb = dlzB[j];
                 double alpha = compliance[j];
                 double wSum = (double)wa + wb;
-                if (wSum == 0.0 && alpha == 0.0) { wa = wb; continue; }
-                double len = c.Direction(j, out double ex, out double ey, out double ez, out double ddx, out double ddy, out double ddz);
-                float nx = (float)ex, ny = (float)ey, nz = (float)ez;
-                double alphaTilde = alpha * invH2;
-                double g = alpha > 0.0 ? gamma : 0.0;
-                double rel = g > 0.0 ? nx * ddx + ny * ddy + nz * ddz : 0.0;
-                double restJ = plastic == null ? rest[j] : plastic.Rest(j); // a plastic segment's force is measured from L_p
-                double numerator = -((double)len - restJ) - alphaTilde * lambda[j] - g * rel;
-                if (plastic != null) plastic.ChooseBranch(j, lambda[j], g, wSum, invH2, ref numerator, ref alphaTilde);
-                if (contacts && (c.ContactActive[j] || c.ContactActive[j + 1]))
+                if (!broken[j] && (wSum != 0.0 || alpha != 0.0))
                 {
-                    ProjectWithContacts(c, j, nx, ny, nz, numerator, g, alphaTilde, tensionOnly);
-                    wa = wb;
-                    continue;
+                    double ddx = ChainState.Change(dxa, dxb, dlxa, dlxb), ddy = ChainState.Change(dya, dyb, dlya, dlyb), ddz = ChainState.Change(dza, dzb, dlza, dlzb);
+                    double len = ChainState.Normalise(j, ChainState.Component(pxA[j], pxB[j], lxA[j], lxB[j], ddx), ChainState.Component(pyA[j], pyB[j], lyA[j], lyB[j], ddy),
+                        ChainState.Component(pzA[j], pzB[j], lzA[j], lzB[j], ddz), dirX, dirY, dirZ, out double ex, out double ey, out double ez);
+                    float nx = (float)ex, ny = (float)ey, nz = (float)ez;
+                    double alphaTilde = alpha * invH2;
+                    double g = alpha > 0.0 ? gamma : 0.0;
+                    double rel = g > 0.0 ? nx * ddx + ny * ddy + nz * ddz : 0.0;
+                    double restJ = plastic == null ? rest[j] : plastic.Rest(j); // a plastic segment's force is measured from L_p
+                    double numerator = -((double)len - restJ) - alphaTilde * lambda[j] - g * rel;
+                    if (plastic != null)
+                    {
+                        numerator = ChooseBranch(plastic, j, lambda[j], g, wSum, invH2, numerator, alphaTilde, out double branchCompliance);
+                        alphaTilde = branchCompliance;
+                    }
+                    if (contacts && (c.ContactActive[j] || c.ContactActive[j + 1]))
+                    {
+                        dxA[j] = dxa; dyA[j] = dya; dzA[j] = dza; dxB[j] = dxb; dyB[j] = dyb; dzB[j] = dzb;
+                        dlxA[j] = dlxa; dlyA[j] = dlya; dlzA[j] = dlza; dlxB[j] = dlxb; dlyB[j] = dlyb; dlzB[j] = dlzb;
+                        ProjectWithContacts(c, j, nx, ny, nz, numerator, g, alphaTilde, tensionOnly);
+                        dxa = dxA[j]; dya = dyA[j]; dza = dzA[j]; dxb = dxB[j]; dyb = dyB[j]; dzb = dzB[j];
+                        dlxa = dlxA[j]; dlya = dlyA[j]; dlza = dlzA[j]; dlxb = dlxB[j]; dlyb = dlyB[j]; dlzb = dlzB[j];
+                    }
+                    else
+                    {
+                        double d = numerator / ((1.0 + g) * wSum + alphaTilde);
+                        d = ChainState.LimitToPulling(lambda[j], d, tensionOnly);
+                        if (d != 0.0)
+                        {
+                            lambda[j] += d;
+                            // D + DLow moved exactly (ChainState.AddDisplacement on the carried copies)
+                            double ma = wa * d, mb = wb * d;
+                            ChainState.Add(ref dxa, ref dlxa, -nx * ma); ChainState.Add(ref dya, ref dlya, -ny * ma); ChainState.Add(ref dza, ref dlza, -nz * ma);
+                            ChainState.Add(ref dxb, ref dlxb, nx * mb); ChainState.Add(ref dyb, ref dlyb, ny * mb); ChainState.Add(ref dzb, ref dlzb, nz * mb);
+                        }
+                    }
                 }
-                double d = numerator / ((1.0 + g) * wSum + alphaTilde);
-                d = ChainState.LimitToPulling(lambda[j], d, tensionOnly);
-                if (d != 0.0)
-                {
-                    lambda[j] += d;
-                    double a = wa * d, b = wb * d;
-                    c.AddDisplacement(j, -nx * a, -ny * a, -nz * a);
-                    c.AddDisplacement(j + 1, nx * b, ny * b, nz * b);
-                }
-                wa = wb;
+                dxA[j] = dxa; dyA[j] = dya; dzA[j] = dza; dlxA[j] = dlxa; dlyA[j] = dlya; dlzA[j] = dlza;
+                wa = wb; dxa = dxb; dya = dyb; dza = dzb; dlxa = dlxb; dlya = dlyb; dlza = dlzb;
             }
+            c.DX[s] = dxa; c.DY[s] = dya; c.DZ[s] = dza; c.DLowX[s] = dlxa; c.DLowY[s] = dlya; c.DLowZ[s] = dlza;
+        }
+
+        /// <summary>
+        /// <see cref="SegmentPlasticity.ChooseBranch"/> on copies (returns the numerator, the compliance α̃ in branchCompliance),
+        /// so the sweep's own numerator and compliance are not address-exposed: they stay in registers.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
+        private static double ChooseBranch(SegmentPlasticity plastic, int j, double lambda, double g, double wSum, double invH2, double numerator, double alphaTilde, out double branchCompliance)
+        {
+            plastic.ChooseBranch(j, lambda, g, wSum, invH2, ref numerator, ref alphaTilde);
+            branchCompliance = alphaTilde;
+            return numerator;
         }
 
         /// <summary>

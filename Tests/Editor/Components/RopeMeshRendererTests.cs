@@ -38,7 +38,7 @@ namespace HookeRope.Tests.Components
 
         static void AssertMeshFollowsRope(ElasticRope rope, Mesh mesh)
         {
-            var vertices = mesh.vertices;
+            var vertices = MeshInUse.Vertices(mesh);
             Assert.That(vertices.Length, Is.GreaterThan(0));
             var bounds = mesh.bounds;
             Vector3 min = bounds.center - bounds.size * 0.5f, max = bounds.center + bounds.size * 0.5f;
@@ -142,6 +142,42 @@ namespace HookeRope.Tests.Components
             Assert.That(() => { renderer.Render(0.5f); }, Is.Not.AllocatingGCMemory(), "broken");
         }
 
+        /// <summary>
+        /// Issue 18, "0 bytes per update": the mesh's buffers hold the ring budget's most from the first frame, so while the
+        /// swung rope's adaptive ring budget steps the vertex buffer keeps its size (the capacity) and only the sub-meshes'
+        /// counts move, and no frame allocates.
+        /// </summary>
+        [Test]
+        public void ARingBudgetStepsWithinTheMeshBuffersAndNoFrameAllocates()
+        {
+            var (rope, renderer, grip) = Build();
+            rope.Radius = 0.002f;
+            rope.Rebuild();
+            renderer.Render(1f);
+            for (int frame = 0; frame < 3; frame++) { rope.Simulate(0.01f); renderer.Render(1f); }
+            var mesh = renderer.Mesh;
+            int capacity = rope.Simulation.GetVertexCapacity();
+            var inUse = new int[120];
+            var sizes = new int[120];
+            Assert.That(() =>
+            {
+                for (int frame = 0; frame < inUse.Length; frame++)
+                {
+                    grip.position = new Vector3(0.3f + 0.25f * System.MathF.Sin(0.2f * frame), 2f, 0.1f * System.MathF.Sin(0.3f * frame));
+                    rope.Simulate(0.01f);
+                    renderer.Render(1f);
+                    inUse[frame] = mesh.GetSubMesh(0).vertexCount;
+                    sizes[frame] = mesh.vertexCount;
+                }
+            }, Is.Not.AllocatingGCMemory(), "120 frames of a swung rope");
+            int steps = 0;
+            for (int frame = 1; frame < inUse.Length; frame++) if (inUse[frame] != inUse[frame - 1]) steps++;
+            TestContext.WriteLine("capacity " + capacity + " vertices; in use " + inUse[0] + " … " + inUse[inUse.Length - 1] + ", " + steps + " budget steps");
+            Assert.That(steps, Is.GreaterThan(0), "the ring budget stepped during the frames");
+            foreach (int size in sizes) Assert.That(size, Is.EqualTo(capacity), "the vertex buffer keeps the capacity");
+            foreach (int used in inUse) Assert.That(used, Is.LessThanOrEqualTo(capacity));
+        }
+
         [TestCase(false)]
         [TestCase(true)]
         public void UploadedVerticesAreTheCoreMesh(bool broken)
@@ -173,7 +209,10 @@ namespace HookeRope.Tests.Components
             var indices = new int[simulation.GetIndexCount()];
             var update = simulation.FillMesh(x, y, z, vertices, indices, radiusScale: 0.5f);
 
-            var uploaded = renderer.Mesh.vertices;
+            // the vertex buffer holds the ring budget's most (sized once), the sub-meshes the vertices in use
+            Assert.That(renderer.Mesh.vertexCount, Is.EqualTo(simulation.GetVertexCapacity()), "vertex buffer = capacity");
+            Assert.That(renderer.Mesh.GetSubMesh(0).vertexCount, Is.EqualTo(update.VertexCount), "vertices in use");
+            var uploaded = MeshInUse.Vertices(renderer.Mesh);
             Assert.That(uploaded.Length, Is.EqualTo(update.VertexCount));
             for (int v = 0; v < update.VertexCount; v++)
             {
