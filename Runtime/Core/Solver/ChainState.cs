@@ -215,21 +215,19 @@ namespace HookeRope.Solver
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void SubstepChange(int j, out double ddx, out double ddy, out double ddz)
         {
-            ddx = ((double)DX[j + 1] - DX[j]) + ((double)DLowX[j + 1] - DLowX[j]);
-            ddy = ((double)DY[j + 1] - DY[j]) + ((double)DLowY[j + 1] - DLowY[j]);
-            ddz = ((double)DZ[j + 1] - DZ[j]) + ((double)DLowZ[j + 1] - DLowZ[j]);
+            ddx = Change(DX[j], DX[j + 1], DLowX[j], DLowX[j + 1]);
+            ddy = Change(DY[j], DY[j + 1], DLowY[j], DLowY[j + 1]);
+            ddz = Change(DZ[j], DZ[j + 1], DLowZ[j], DLowZ[j + 1]);
         }
 
         /// <summary>Vector (m, double) of segment j between the live positions Prev + Low + D + DLow of its ends; (ddx, ddy, ddz) is its <see cref="SubstepChange"/>.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void LiveSpan(int j, out double ex, out double ey, out double ez, out double ddx, out double ddy, out double ddz)
         {
-            ddx = ((double)DX[j + 1] - DX[j]) + ((double)DLowX[j + 1] - DLowX[j]);
-            ddy = ((double)DY[j + 1] - DY[j]) + ((double)DLowY[j + 1] - DLowY[j]);
-            ddz = ((double)DZ[j + 1] - DZ[j]) + ((double)DLowZ[j + 1] - DLowZ[j]);
-            ex = ((double)PrevX[j + 1] - PrevX[j]) + (((double)LowX[j + 1] - LowX[j]) + ddx);
-            ey = ((double)PrevY[j + 1] - PrevY[j]) + (((double)LowY[j + 1] - LowY[j]) + ddy);
-            ez = ((double)PrevZ[j + 1] - PrevZ[j]) + (((double)LowZ[j + 1] - LowZ[j]) + ddz);
+            SubstepChange(j, out ddx, out ddy, out ddz);
+            ex = Component(PrevX[j], PrevX[j + 1], LowX[j], LowX[j + 1], ddx);
+            ey = Component(PrevY[j], PrevY[j + 1], LowY[j], LowY[j + 1], ddy);
+            ez = Component(PrevZ[j], PrevZ[j + 1], LowZ[j], LowZ[j + 1], ddz);
         }
 
         /// <summary>
@@ -243,12 +241,7 @@ namespace HookeRope.Solver
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public double Direction(int j, out double nx, out double ny, out double nz, out double ddx, out double ddy, out double ddz)
         {
-            ddx = Change(DX[j], DX[j + 1], DLowX[j], DLowX[j + 1]);
-            ddy = Change(DY[j], DY[j + 1], DLowY[j], DLowY[j + 1]);
-            ddz = Change(DZ[j], DZ[j + 1], DLowZ[j], DLowZ[j + 1]);
-            double ex = Component(PrevX[j], PrevX[j + 1], LowX[j], LowX[j + 1], ddx);
-            double ey = Component(PrevY[j], PrevY[j + 1], LowY[j], LowY[j + 1], ddy);
-            double ez = Component(PrevZ[j], PrevZ[j + 1], LowZ[j], LowZ[j + 1], ddz);
+            LiveSpan(j, out double ex, out double ey, out double ez, out ddx, out ddy, out ddz);
             return Normalise(j, ex, ey, ez, Exactly(DirX, SegmentCount), Exactly(DirY, SegmentCount), Exactly(DirZ, SegmentCount), out nx, out ny, out nz);
         }
 
