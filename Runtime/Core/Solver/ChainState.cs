@@ -22,10 +22,20 @@ namespace HookeRope.Solver
         // displacement below half an ulp of it was lost: a steel cable's load, 10 m down, could not settle closer than the
         // solve's damping-amplified dead band (up to 0.3 % of its stretch). Zero where the host places a particle.
         public readonly float[] LowX, LowY, LowZ;
-        // displacement over the current substep: live position = Prev + Low + D. Kept separately so that
+        // displacement over the current substep: live position = Prev + Low + D + DLow. Kept separately so that
         // velocities D/h keep full float precision however small h is.
         public readonly float[] DX, DY, DZ;
-        public readonly float[] VelX, VelY, VelZ;
+        // the part of D below its float resolution (m), |DLow| ≤ half an ulp of D, written by the chain solves, the compliant
+        // and rigid pins, the history boost and backward Euler's prediction (AddDisplacement, SetDisplacement); zero after a
+        // second-order prediction, whose velocity base absorbs its rounding. Without it every solver correction was rounded
+        // to D's ulp (4e-12 m at 4e-5 m), and as the velocity reads the correction over h that was a velocity error of up to
+        // 1e-7 m/s per substep, with the same sign substep after substep: the segment angles of a swinging rope drifted by
+        // 2e-4 rad at 512 substeps of 1/45 s. A writer that does not know it (a collider) leaves it: at most half an ulp of D.
+        public readonly float[] DLowX, DLowY, DLowZ;
+        // velocities (m/s) in double: the integrator's state. A substep changes a velocity by a·h (2e-4 m/s at 1000 substeps of
+        // 1/45 s), and rounding the sum to float (a step of up to 9.5e-7 m/s at 10 m/s) every substep erred the same way
+        // substep after substep: a free fall read v off g·t by 1e-4 after 1 s
+        public readonly double[] VelX, VelY, VelZ;
         public readonly float[] Mass;
         public readonly float[] InverseMass;
         public readonly float[] LoadMass;
@@ -57,7 +67,7 @@ namespace HookeRope.Solver
         // the scheme adds to d/h + κΔ/h (m/s), and the velocity of the substep before (m/s)
         public readonly double[] SolveDX, SolveDY, SolveDZ;
         public readonly double[] BaseVelX, BaseVelY, BaseVelZ;
-        public readonly float[] PrevVelX, PrevVelY, PrevVelZ;
+        public readonly double[] PrevVelX, PrevVelY, PrevVelZ;
         public readonly float[] PredictedDX, PredictedDY, PredictedDZ; // m, the scheme's prediction d_pred of this substep
 
         // contacts (allocated by EnsureContacts when the rope gets its first collider; null before)
@@ -106,7 +116,8 @@ namespace HookeRope.Solver
             StepStartX = new float[n]; StepStartY = new float[n]; StepStartZ = new float[n];
             LowX = new float[n]; LowY = new float[n]; LowZ = new float[n];
             DX = new float[n]; DY = new float[n]; DZ = new float[n];
-            VelX = new float[n]; VelY = new float[n]; VelZ = new float[n];
+            DLowX = new float[n]; DLowY = new float[n]; DLowZ = new float[n];
+            VelX = new double[n]; VelY = new double[n]; VelZ = new double[n];
             Mass = new float[n]; InverseMass = new float[n]; LoadMass = new float[n];
             Kinematic = new bool[n]; Radius = new float[n];
             RestLength = new float[s]; Compliance = new float[s]; Lambda = new double[s];
@@ -120,7 +131,7 @@ namespace HookeRope.Solver
             Active = new bool[s];
             SolveDX = new double[n]; SolveDY = new double[n]; SolveDZ = new double[n];
             BaseVelX = new double[n]; BaseVelY = new double[n]; BaseVelZ = new double[n];
-            PrevVelX = new float[n]; PrevVelY = new float[n]; PrevVelZ = new float[n];
+            PrevVelX = new double[n]; PrevVelY = new double[n]; PrevVelZ = new double[n];
             PredictedDX = new float[n]; PredictedDY = new float[n]; PredictedDZ = new float[n];
         }
 
@@ -179,29 +190,108 @@ namespace HookeRope.Solver
         }
 
         /// <summary>
-        /// Length (m) of segment j from the live positions Prev + Low + D, and its unit direction into (nx, ny, nz), which it
-        /// also stores (in float) as the segment's last valid direction; when the ends coincide (or the length is not finite)
+        /// Adds (mx, my, mz) m to particle i's substep displacement D + DLow, exactly: the sum is formed in double and split
+        /// into the float D and its remainder DLow.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void AddDisplacement(int i, double mx, double my, double mz)
+        {
+            double x = ((double)DX[i] + DLowX[i]) + mx, y = ((double)DY[i] + DLowY[i]) + my, z = ((double)DZ[i] + DLowZ[i]) + mz;
+            float fx = (float)x, fy = (float)y, fz = (float)z;
+            DX[i] = fx; DY[i] = fy; DZ[i] = fz;
+            DLowX[i] = (float)(x - fx); DLowY[i] = (float)(y - fy); DLowZ[i] = (float)(z - fz);
+        }
+
+        /// <summary>
+        /// Adds m (m, double) to one component of a displacement, d with its sub-float remainder low, exactly as
+        /// <see cref="AddDisplacement"/> does: d + low + m formed in double and split back. For the kernels' carried copies (inlined,
+        /// so the refs do not expose the locals).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static void Add(ref float d, ref float low, double m)
+        {
+            double x = ((double)d + low) + m;
+            float f = (float)x;
+            d = f;
+            low = (float)(x - f);
+        }
+
+        /// <summary>
+        /// Sets one component of a displacement, d with its sub-float remainder low, to x (m, double), as
+        /// <see cref="SetDisplacement"/> does (for the kernels' spans; inlined).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static void Set(ref float d, ref float low, double x)
+        {
+            float f = (float)x;
+            d = f;
+            low = (float)(x - f);
+        }
+
+        /// <summary>Sets particle i's substep displacement D + DLow to (x, y, z) m (double), split into the float D and its remainder.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void SetDisplacement(int i, double x, double y, double z)
+        {
+            float fx = (float)x, fy = (float)y, fz = (float)z;
+            DX[i] = fx; DY[i] = fy; DZ[i] = fz;
+            DLowX[i] = (float)(x - fx); DLowY[i] = (float)(y - fy); DLowZ[i] = (float)(z - fz);
+        }
+
+        /// <summary>Particle i's substep displacement D + DLow (m, double).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void Displacement(int i, out double dx, out double dy, out double dz)
+        {
+            dx = (double)DX[i] + DLowX[i]; dy = (double)DY[i] + DLowY[i]; dz = (double)DZ[i] + DLowZ[i];
+        }
+
+        /// <summary>Change (m, double) of segment j over the substep: (D + DLow)_{j+1} − (D + DLow)_j.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void SubstepChange(int j, out double ddx, out double ddy, out double ddz)
+        {
+            ddx = Change(DX[j], DX[j + 1], DLowX[j], DLowX[j + 1]);
+            ddy = Change(DY[j], DY[j + 1], DLowY[j], DLowY[j + 1]);
+            ddz = Change(DZ[j], DZ[j + 1], DLowZ[j], DLowZ[j + 1]);
+        }
+
+        /// <summary>Vector (m, double) of segment j between the live positions Prev + Low + D + DLow of its ends; (ddx, ddy, ddz) is its <see cref="SubstepChange"/>.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void LiveSpan(int j, out double ex, out double ey, out double ez, out double ddx, out double ddy, out double ddz)
+        {
+            SubstepChange(j, out ddx, out ddy, out ddz);
+            ex = Component(PrevX[j], PrevX[j + 1], LowX[j], LowX[j + 1], ddx);
+            ey = Component(PrevY[j], PrevY[j + 1], LowY[j], LowY[j + 1], ddy);
+            ez = Component(PrevZ[j], PrevZ[j + 1], LowZ[j], LowZ[j + 1], ddz);
+        }
+
+        /// <summary>
+        /// Length (m) of segment j from the live positions Prev + Low + D + DLow, and its unit direction into (nx, ny, nz), which
+        /// it also stores (in float) as the segment's last valid direction; when the ends coincide (or the length is not finite)
         /// the last valid direction is kept and a non-finite length reads 0. (ddx, ddy, ddz) is the segment's change over the
-        /// substep, D_{j+1} − D_j (m), which the damping term needs. Formed in double from the exact positions: a segment's
+        /// substep, <see cref="SubstepChange"/> (m), which the damping term needs. Formed in double from the exact positions: a segment's
         /// stretch is resolved far below the float resolution of its ends' coordinates (1e-6 m at 10 m, 1e-3 m at 10 km) and
         /// of its own length (1.5e-8 m at 0.125 m, which an inextensible rope's tension felt as ±0.5 % noise).
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public double Direction(int j, out double nx, out double ny, out double nz, out float ddx, out float ddy, out float ddz)
+        public double Direction(int j, out double nx, out double ny, out double nz, out double ddx, out double ddy, out double ddz)
         {
-            ddx = DX[j + 1] - DX[j]; ddy = DY[j + 1] - DY[j]; ddz = DZ[j + 1] - DZ[j];
-            double ex = Component(PrevX[j], PrevX[j + 1], LowX[j], LowX[j + 1], ddx);
-            double ey = Component(PrevY[j], PrevY[j + 1], LowY[j], LowY[j + 1], ddy);
-            double ez = Component(PrevZ[j], PrevZ[j + 1], LowZ[j], LowZ[j + 1], ddz);
+            LiveSpan(j, out double ex, out double ey, out double ez, out ddx, out ddy, out ddz);
             return Normalise(j, ex, ey, ez, Exactly(DirX, SegmentCount), Exactly(DirY, SegmentCount), Exactly(DirZ, SegmentCount), out nx, out ny, out nz);
         }
 
         /// <summary>
-        /// One component (m, double) of a segment's live vector from its ends' previous positions, remainders (both float,
-        /// passed as double) and the change of its span over the substep, D_b − D_a (float): (P_b − P_a) + ((Low_b − Low_a) + change).
+        /// One component (m, double) of a segment's change over the substep from its ends' displacements and their sub-float
+        /// remainders (all float): (D_b − D_a) + (DLow_b − DLow_a), formed in double.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public static double Component(double prevA, double prevB, double lowA, double lowB, float change) => (prevB - prevA) + ((lowB - lowA) + change);
+        public static double Change(float dA, float dB, float lowA, float lowB) => ((double)dB - dA) + ((double)lowB - lowA);
+
+        /// <summary>
+        /// One component (m, double) of a segment's live vector from its ends' previous positions, remainders (both float,
+        /// passed as double) and the change of its span over the substep (<see cref="Change"/>, double):
+        /// (P_b − P_a) + ((Low_b − Low_a) + change).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double Component(double prevA, double prevB, double lowA, double lowB, double change) => (prevB - prevA) + ((lowB - lowA) + change);
 
         /// <summary>
         /// Length (m) of segment j's live vector (ex, ey, ez) and its unit direction (nx, ny, nz), stored in float into

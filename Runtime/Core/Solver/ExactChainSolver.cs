@@ -96,6 +96,8 @@ namespace HookeRope.Solver
             ReadOnlySpan<float> wA = ChainState.Exactly(c.InverseMass, s), wB = ChainState.Shifted(c.InverseMass, s);
             ReadOnlySpan<float> dxA = ChainState.Exactly(c.DX, s), dyA = ChainState.Exactly(c.DY, s), dzA = ChainState.Exactly(c.DZ, s);
             ReadOnlySpan<float> dxB = ChainState.Shifted(c.DX, s), dyB = ChainState.Shifted(c.DY, s), dzB = ChainState.Shifted(c.DZ, s);
+            ReadOnlySpan<float> dlxA = ChainState.Exactly(c.DLowX, s), dlyA = ChainState.Exactly(c.DLowY, s), dlzA = ChainState.Exactly(c.DLowZ, s);
+            ReadOnlySpan<float> dlxB = ChainState.Shifted(c.DLowX, s), dlyB = ChainState.Shifted(c.DLowY, s), dlzB = ChainState.Shifted(c.DLowZ, s);
             ReadOnlySpan<float> pxA = ChainState.Exactly(c.PrevX, s), pyA = ChainState.Exactly(c.PrevY, s), pzA = ChainState.Exactly(c.PrevZ, s);
             ReadOnlySpan<float> pxB = ChainState.Shifted(c.PrevX, s), pyB = ChainState.Shifted(c.PrevY, s), pzB = ChainState.Shifted(c.PrevZ, s);
             ReadOnlySpan<float> lxA = ChainState.Exactly(c.LowX, s), lyA = ChainState.Exactly(c.LowY, s), lzA = ChainState.Exactly(c.LowZ, s);
@@ -113,7 +115,8 @@ namespace HookeRope.Solver
             {
                 if (broken[j]) { active[j] = false; continue; }
                 // ChainState.Direction on the spans
-                float ddx = dxB[j] - dxA[j], ddy = dyB[j] - dyA[j], ddz = dzB[j] - dzA[j];
+                double ddx = ChainState.Change(dxA[j], dxB[j], dlxA[j], dlxB[j]), ddy = ChainState.Change(dyA[j], dyB[j], dlyA[j], dlyB[j]);
+                double ddz = ChainState.Change(dzA[j], dzB[j], dlzA[j], dlzB[j]);
                 double len = ChainState.Normalise(j, ChainState.Component(pxA[j], pxB[j], lxA[j], lxB[j], ddx), ChainState.Component(pyA[j], pyB[j], lyA[j], lyB[j], ddy),
                     ChainState.Component(pzA[j], pzB[j], lzA[j], lzB[j], ddz), dirX, dirY, dirZ, out double nx, out double ny, out double nz);
                 length[j] = (float)len;
@@ -249,6 +252,7 @@ namespace HookeRope.Solver
             ReadOnlySpan<float> w = ChainState.Exactly(c.InverseMass, s), dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
             ReadOnlySpan<float> length = ChainState.Exactly(c.Length, s), rest = ChainState.Exactly(c.RestLength, s);
             Span<float> dx = ChainState.Exactly(c.DX, s), dy = ChainState.Exactly(c.DY, s), dz = ChainState.Exactly(c.DZ, s);
+            Span<float> dlx = ChainState.Exactly(c.DLowX, s), dly = ChainState.Exactly(c.DLowY, s), dlz = ChainState.Exactly(c.DLowZ, s);
             ReadOnlySpan<double> sx = ChainState.Exactly(c.StepX, s), sy = ChainState.Exactly(c.StepY, s), sz = ChainState.Exactly(c.StepZ, s);
             ReadOnlySpan<bool> broken = ChainState.Exactly(c.Broken, s), active = ChainState.Exactly(c.Active, s);
             double worst = 0.0, qx = 0, qy = 0, qz = 0, mx, my, mz;
@@ -261,14 +265,14 @@ namespace HookeRope.Solver
                 double px = 0, py = 0, pz = 0;
                 if (!broken[i]) { px = sx[i]; py = sy[i]; pz = sz[i]; }
                 Move(c, i, w[i], px - ax, py - ay, pz - az, contacts, out mx, out my, out mz);
-                dx[i] += (float)mx; dy[i] += (float)my; dz[i] += (float)mz;
+                ChainState.Add(ref dx[i], ref dlx[i], mx); ChainState.Add(ref dy[i], ref dly[i], my); ChainState.Add(ref dz[i], ref dlz[i], mz);
                 if (before) worst = Worse(worst, LengthError(mx - qx, my - qy, mz - qz, ex, ey, ez, el, er));
                 qx = mx; qy = my; qz = mz;
                 if (broken[i]) { ax = 0; ay = 0; az = 0; } else { ax = sx[i]; ay = sy[i]; az = sz[i]; }
                 before = active[i]; ex = dirX[i]; ey = dirY[i]; ez = dirZ[i]; el = length[i]; er = rest[i];
             }
             Move(c, s, c.InverseMass[s], -ax, -ay, -az, contacts, out mx, out my, out mz);
-            c.DX[s] += (float)mx; c.DY[s] += (float)my; c.DZ[s] += (float)mz;
+            c.AddDisplacement(s, mx, my, mz);
             if (before) worst = Worse(worst, LengthError(mx - qx, my - qy, mz - qz, ex, ey, ez, el, er));
             Span<double> fx = ChainState.Exactly(c.ForceX, s), fy = ChainState.Exactly(c.ForceY, s), fz = ChainState.Exactly(c.ForceZ, s);
             Span<double> lambda = ChainState.Exactly(c.Lambda, s);

@@ -18,6 +18,9 @@ namespace HookeRope.Solver
             ReadOnlySpan<float> wA = ChainState.Exactly(c.InverseMass, s), wB = ChainState.Shifted(c.InverseMass, s);
             Span<float> dxA = ChainState.Exactly(c.DX, s), dyA = ChainState.Exactly(c.DY, s), dzA = ChainState.Exactly(c.DZ, s);
             Span<float> dxB = ChainState.Shifted(c.DX, s), dyB = ChainState.Shifted(c.DY, s), dzB = ChainState.Shifted(c.DZ, s);
+            // the sub-float parts DLow of the displacements (live position = Prev + Low + D + DLow)
+            Span<float> dlxA = ChainState.Exactly(c.DLowX, s), dlyA = ChainState.Exactly(c.DLowY, s), dlzA = ChainState.Exactly(c.DLowZ, s);
+            Span<float> dlxB = ChainState.Shifted(c.DLowX, s), dlyB = ChainState.Shifted(c.DLowY, s), dlzB = ChainState.Shifted(c.DLowZ, s);
             ReadOnlySpan<float> pxA = ChainState.Exactly(c.PrevX, s), pyA = ChainState.Exactly(c.PrevY, s), pzA = ChainState.Exactly(c.PrevZ, s);
             ReadOnlySpan<float> pxB = ChainState.Shifted(c.PrevX, s), pyB = ChainState.Shifted(c.PrevY, s), pzB = ChainState.Shifted(c.PrevZ, s);
             ReadOnlySpan<float> lxA = ChainState.Exactly(c.LowX, s), lyA = ChainState.Exactly(c.LowY, s), lzA = ChainState.Exactly(c.LowZ, s);
@@ -30,15 +33,15 @@ namespace HookeRope.Solver
             SegmentPlasticity plastic = c.Plasticity;
             // particle a = j is carried from the projection before (its displacement as that projection left it): each
             // particle's displacement is loaded and stored once per sweep
-            float wa = wA[0], dxa = dxA[0], dya = dyA[0], dza = dzA[0];
+            float wa = wA[0], dxa = dxA[0], dya = dyA[0], dza = dzA[0], dlxa = dlxA[0], dlya = dlyA[0], dlza = dlzA[0];
             for (int j = 0; j < s; j++)
             {
-                float wb = wB[j], dxb = dxB[j], dyb = dyB[j], dzb = dzB[j];
+                float wb = wB[j], dxb = dxB[j], dyb = dyB[j], dzb = dzB[j], dlxb = dlxB[j], dlyb = dlyB[j], dlzb = dlzB[j];
                 double alpha = compliance[j];
                 double wSum = (double)wa + wb;
                 if (!broken[j] && (wSum != 0.0 || alpha != 0.0))
                 {
-                    float ddx = dxb - dxa, ddy = dyb - dya, ddz = dzb - dza;
+                    double ddx = ChainState.Change(dxa, dxb, dlxa, dlxb), ddy = ChainState.Change(dya, dyb, dlya, dlyb), ddz = ChainState.Change(dza, dzb, dlza, dlzb);
                     double len = ChainState.Normalise(j, ChainState.Component(pxA[j], pxB[j], lxA[j], lxB[j], ddx), ChainState.Component(pyA[j], pyB[j], lyA[j], lyB[j], ddy),
                         ChainState.Component(pzA[j], pzB[j], lzA[j], lzB[j], ddz), dirX, dirY, dirZ, out double ex, out double ey, out double ez);
                     float nx = (float)ex, ny = (float)ey, nz = (float)ez;
@@ -55,8 +58,10 @@ namespace HookeRope.Solver
                     if (contacts && (c.ContactActive[j] || c.ContactActive[j + 1]))
                     {
                         dxA[j] = dxa; dyA[j] = dya; dzA[j] = dza; dxB[j] = dxb; dyB[j] = dyb; dzB[j] = dzb;
+                        dlxA[j] = dlxa; dlyA[j] = dlya; dlzA[j] = dlza; dlxB[j] = dlxb; dlyB[j] = dlyb; dlzB[j] = dlzb;
                         ProjectWithContacts(c, j, nx, ny, nz, numerator, g, alphaTilde, tensionOnly);
                         dxa = dxA[j]; dya = dyA[j]; dza = dzA[j]; dxb = dxB[j]; dyb = dyB[j]; dzb = dzB[j];
+                        dlxa = dlxA[j]; dlya = dlyA[j]; dlza = dlzA[j]; dlxb = dlxB[j]; dlyb = dlyB[j]; dlzb = dlzB[j];
                     }
                     else
                     {
@@ -65,16 +70,17 @@ namespace HookeRope.Solver
                         if (d != 0.0)
                         {
                             lambda[j] += d;
-                            float ma = (float)(wa * d), mb = (float)(wb * d);
-                            dxa -= nx * ma; dya -= ny * ma; dza -= nz * ma;
-                            dxb += nx * mb; dyb += ny * mb; dzb += nz * mb;
+                            // D + DLow moved exactly (ChainState.AddDisplacement on the carried copies)
+                            double ma = wa * d, mb = wb * d;
+                            ChainState.Add(ref dxa, ref dlxa, -nx * ma); ChainState.Add(ref dya, ref dlya, -ny * ma); ChainState.Add(ref dza, ref dlza, -nz * ma);
+                            ChainState.Add(ref dxb, ref dlxb, nx * mb); ChainState.Add(ref dyb, ref dlyb, ny * mb); ChainState.Add(ref dzb, ref dlzb, nz * mb);
                         }
                     }
                 }
-                dxA[j] = dxa; dyA[j] = dya; dzA[j] = dza;
-                wa = wb; dxa = dxb; dya = dyb; dza = dzb;
+                dxA[j] = dxa; dyA[j] = dya; dzA[j] = dza; dlxA[j] = dlxa; dlyA[j] = dlya; dlzA[j] = dlza;
+                wa = wb; dxa = dxb; dya = dyb; dza = dzb; dlxa = dlxb; dlya = dlyb; dlza = dlzb;
             }
-            c.DX[s] = dxa; c.DY[s] = dya; c.DZ[s] = dza;
+            c.DX[s] = dxa; c.DY[s] = dya; c.DZ[s] = dza; c.DLowX[s] = dlxa; c.DLowY[s] = dlya; c.DLowZ[s] = dlza;
         }
 
         /// <summary>
@@ -132,8 +138,8 @@ namespace HookeRope.Solver
                 bx -= c.ContactNX[j + 1] * normal; by -= c.ContactNY[j + 1] * normal; bz -= c.ContactNZ[j + 1] * normal;
                 c.ContactLoad[j + 1] -= (float)normal;
             }
-            c.DX[j] -= (float)ax; c.DY[j] -= (float)ay; c.DZ[j] -= (float)az;
-            c.DX[j + 1] += (float)bx; c.DY[j + 1] += (float)by; c.DZ[j + 1] += (float)bz;
+            c.AddDisplacement(j, -ax, -ay, -az);
+            c.AddDisplacement(j + 1, bx, by, bz);
         }
     }
 }

@@ -49,7 +49,7 @@ namespace HookeRope.Solver
             double w = wa + wb;
             if (!(w > 0.0)) return 0.0;
             double reduced = 1.0 / w;
-            double u = (chain.VelX[b] - (double)chain.VelX[a]) * nx + (chain.VelY[b] - (double)chain.VelY[a]) * ny + (chain.VelZ[b] - (double)chain.VelZ[a]) * nz;
+            double u = (chain.VelX[b] - chain.VelX[a]) * nx + (chain.VelY[b] - chain.VelY[a]) * ny + (chain.VelZ[b] - chain.VelZ[a]) * nz;
             double p = reduced * (Math.Sqrt(u * u + 2.0 * energy / reduced) - u);
             // what a substep can resolve: in one substep an end may close at most the stretch of the segment behind it
             double h = lastStepTime > 0f ? (double)lastStepTime / settings.Substeps : 0.0;
@@ -79,11 +79,10 @@ namespace HookeRope.Solver
         /// <summary>Adds (dx, dy, dz) m/s to particle i's velocity and to its integrator history.</summary>
         private void Kick(int i, double dx, double dy, double dz)
         {
-            float fx = (float)dx, fy = (float)dy, fz = (float)dz;
-            BoostHistory(i, fx, fy, fz);
-            chain.VelX[i] += fx;
-            chain.VelY[i] += fy;
-            chain.VelZ[i] += fz;
+            BoostHistory(i, dx, dy, dz);
+            chain.VelX[i] += dx;
+            chain.VelY[i] += dy;
+            chain.VelZ[i] += dz;
         }
     }
 }

@@ -90,7 +90,8 @@ namespace HookeRope.Solver
         private void PredictViscousDrag(bool secondOrder, float h, double hd, double s)
         {
             int n = chain.ParticleCount;
-            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ, vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ;
+            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
+            double[] vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ;
             float[] qx = chain.PredictedDX, qy = chain.PredictedDY, qz = chain.PredictedDZ;
             double[] bx = chain.BaseVelX, by = chain.BaseVelY, bz = chain.BaseVelZ, rate = dragRate;
             bool[] kinematic = chain.Kinematic;
@@ -111,8 +112,8 @@ namespace HookeRope.Solver
                 }
                 else
                 {
-                    vx[i] = (float)(ux + (vx[i] - ux) * kept); vy[i] = (float)(uy + (vy[i] - uy) * kept); vz[i] = (float)(uz + (vz[i] - uz) * kept);
-                    dx[i] = vx[i] * h; dy[i] = vy[i] * h; dz[i] = vz[i] * h;
+                    vx[i] = ux + (vx[i] - ux) * kept; vy[i] = uy + (vy[i] - uy) * kept; vz[i] = uz + (vz[i] - uz) * kept;
+                    chain.SetDisplacement(i, vx[i] * hd, vy[i] * hd, vz[i] * hd);
                 }
             }
         }
@@ -122,7 +123,7 @@ namespace HookeRope.Solver
         {
             int n = chain.ParticleCount, segments = chain.SegmentCount;
             float[] px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ, dx = chain.DX, dy = chain.DY, dz = chain.DZ;
-            float[] vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ;
+            double[] vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ;
             float[] qx = chain.PredictedDX, qy = chain.PredictedDY, qz = chain.PredictedDZ;
             double[] bx = chain.BaseVelX, by = chain.BaseVelY, bz = chain.BaseVelZ, rate = dragRate;
             float[] ax = dragAccelX, ay = dragAccelY, az = dragAccelZ;
@@ -184,8 +185,8 @@ namespace HookeRope.Solver
                 }
                 else
                 {
-                    vx[i] = (float)nx; vy[i] = (float)ny; vz[i] = (float)nz;
-                    dx[i] = vx[i] * h; dy[i] = vy[i] * h; dz[i] = vz[i] * h;
+                    vx[i] = nx; vy[i] = ny; vz[i] = nz;
+                    chain.SetDisplacement(i, nx * hd, ny * hd, nz * hd);
                 }
             }
         }
@@ -220,7 +221,8 @@ namespace HookeRope.Solver
         {
             bool quadratic = QuadraticDrag;
             int n = chain.ParticleCount;
-            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ, vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ, mass = chain.Mass;
+            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ, mass = chain.Mass;
+            double[] vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ;
             bool[] kinematic = chain.Kinematic;
             double[] rate = dragRate;
             double viscous = settings.ViscousDrag;

@@ -61,7 +61,7 @@ namespace HookeRope.Solver
         /// <summary>
         /// Prediction of a second-order run (scheme: this substep's, h s, g m/s²): d = d_pred, the velocity base, v_prev = v,
         /// Δ = 0; kinematic particles do not move here (the pins place them). A backward-Euler substep predicts d = h·v + h²·g
-        /// with base 0 (v = d/h).
+        /// with base v + h·g − d/h (v = d/h of the unrounded prediction plus what moved the particle since).
         /// </summary>
         private void PredictSecondOrder(TimeIntegrator scheme, double h, Float3 g)
         {
@@ -69,9 +69,10 @@ namespace HookeRope.Solver
             // spans of exactly n entries (the loop bound): indexed without bounds checks
             ReadOnlySpan<float> x = ChainState.Exactly(chain.X, n), y = ChainState.Exactly(chain.Y, n), z = ChainState.Exactly(chain.Z, n);
             Span<float> px = ChainState.Exactly(chain.PrevX, n), py = ChainState.Exactly(chain.PrevY, n), pz = ChainState.Exactly(chain.PrevZ, n);
-            ReadOnlySpan<float> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
-            Span<float> ux = ChainState.Exactly(chain.PrevVelX, n), uy = ChainState.Exactly(chain.PrevVelY, n), uz = ChainState.Exactly(chain.PrevVelZ, n);
+            ReadOnlySpan<double> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
+            Span<double> ux = ChainState.Exactly(chain.PrevVelX, n), uy = ChainState.Exactly(chain.PrevVelY, n), uz = ChainState.Exactly(chain.PrevVelZ, n);
             Span<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
+            Span<float> lx = ChainState.Exactly(chain.DLowX, n), ly = ChainState.Exactly(chain.DLowY, n), lz = ChainState.Exactly(chain.DLowZ, n);
             Span<double> bx = ChainState.Exactly(chain.BaseVelX, n), by = ChainState.Exactly(chain.BaseVelY, n), bz = ChainState.Exactly(chain.BaseVelZ, n);
             Span<float> qx = ChainState.Exactly(chain.PredictedDX, n), qy = ChainState.Exactly(chain.PredictedDY, n), qz = ChainState.Exactly(chain.PredictedDZ, n);
             ReadOnlySpan<bool> kinematic = ChainState.Exactly(chain.Kinematic, n);
@@ -91,9 +92,10 @@ namespace HookeRope.Solver
                 else if (bdf2)
                 {
                     double mx = (4.0 * wx - ux[i]) / 3.0, my = (4.0 * wy - uy[i]) / 3.0, mz = (4.0 * wz - uz[i]) / 3.0;
-                    ox = (float)(dx[i] / 3.0 + e * mx + c * gx);
-                    oy = (float)(dy[i] / 3.0 + e * my + c * gy);
-                    oz = (float)(dz[i] / 3.0 + e * mz + c * gz);
+                    // d_prev = D + DLow of the substep before
+                    ox = (float)(((double)dx[i] + lx[i]) / 3.0 + e * mx + c * gx);
+                    oy = (float)(((double)dy[i] + ly[i]) / 3.0 + e * my + c * gy);
+                    oz = (float)(((double)dz[i] + lz[i]) / 3.0 + e * mz + c * gz);
                     bx[i] = mx + e * gx - ox * invH;
                     by[i] = my + e * gy - oy * invH;
                     bz[i] = mz + e * gz - oz * invH;
@@ -101,10 +103,12 @@ namespace HookeRope.Solver
                 else
                 {
                     ox = (float)(h * wx + h2 * gx); oy = (float)(h * wy + h2 * gy); oz = (float)(h * wz + h2 * gz);
-                    bx[i] = 0.0; by[i] = 0.0; bz[i] = 0.0;
+                    bx[i] = wx + h * gx - ox * invH; by[i] = wy + h * gy - oy * invH; bz[i] = wz + h * gz - oz * invH;
                 }
                 dx[i] = ox; dy[i] = oy; dz[i] = oz;
-                ux[i] = (float)wx; uy[i] = (float)wy; uz[i] = (float)wz;
+                // the prediction's own rounding stays out of DLow: the velocity base above is measured from the float D
+                lx[i] = 0f; ly[i] = 0f; lz[i] = 0f;
+                ux[i] = wx; uy[i] = wy; uz[i] = wz;
                 qx[i] = ox; qy[i] = oy; qz[i] = oz;
             }
             Array.Clear(chain.SolveDX, 0, n);
@@ -117,22 +121,24 @@ namespace HookeRope.Solver
         /// d_prev = x_n − x_{n−1} by h·Δv), a Galilean boost that keeps BDF2's acceleration memory. A moved position needs
         /// nothing: d_prev is a difference.
         /// </summary>
-        private void BoostHistory(int i, float dx, float dy, float dz)
+        private void BoostHistory(int i, double dx, double dy, double dz)
         {
             chain.PrevVelX[i] += dx; chain.PrevVelY[i] += dy; chain.PrevVelZ[i] += dz;
-            float h = (float)historyStep;
-            chain.DX[i] += dx * h; chain.DY[i] += dy * h; chain.DZ[i] += dz * h;
+            double h = historyStep;
+            chain.AddDisplacement(i, dx * h, dy * h, dz * h);
         }
 
         /// <summary>Marks the start (sign −1) or the end (+1) of a chain solve: Δ accumulates the displacement it applies.</summary>
         private void TrackSolveDisplacement(double sign)
         {
             int n = chain.ParticleCount;
-            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
-            double[] sx = chain.SolveDX, sy = chain.SolveDY, sz = chain.SolveDZ;
+            // spans of exactly n entries (the loop bound): indexed without bounds checks
+            ReadOnlySpan<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
+            ReadOnlySpan<float> lx = ChainState.Exactly(chain.DLowX, n), ly = ChainState.Exactly(chain.DLowY, n), lz = ChainState.Exactly(chain.DLowZ, n);
+            Span<double> sx = ChainState.Exactly(chain.SolveDX, n), sy = ChainState.Exactly(chain.SolveDY, n), sz = ChainState.Exactly(chain.SolveDZ, n);
             for (int i = 0; i < n; i++)
             {
-                sx[i] += sign * dx[i]; sy[i] += sign * dy[i]; sz[i] += sign * dz[i];
+                sx[i] += sign * ((double)dx[i] + lx[i]); sy[i] += sign * ((double)dy[i] + ly[i]); sz[i] += sign * ((double)dz[i] + lz[i]);
             }
         }
 
@@ -145,28 +151,31 @@ namespace HookeRope.Solver
             int n = chain.ParticleCount;
             // spans of exactly n entries (the loop bound): indexed without bounds checks
             ReadOnlySpan<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
+            ReadOnlySpan<float> lx = ChainState.Exactly(chain.DLowX, n), ly = ChainState.Exactly(chain.DLowY, n), lz = ChainState.Exactly(chain.DLowZ, n);
             ReadOnlySpan<double> bx = ChainState.Exactly(chain.BaseVelX, n), by = ChainState.Exactly(chain.BaseVelY, n), bz = ChainState.Exactly(chain.BaseVelZ, n);
             ReadOnlySpan<double> sx = ChainState.Exactly(chain.SolveDX, n), sy = ChainState.Exactly(chain.SolveDY, n), sz = ChainState.Exactly(chain.SolveDZ, n);
-            Span<float> wx = ChainState.Exactly(chain.PrevVelX, n), wy = ChainState.Exactly(chain.PrevVelY, n), wz = ChainState.Exactly(chain.PrevVelZ, n);
+            Span<double> wx = ChainState.Exactly(chain.PrevVelX, n), wy = ChainState.Exactly(chain.PrevVelY, n), wz = ChainState.Exactly(chain.PrevVelZ, n);
             ReadOnlySpan<float> qx = ChainState.Exactly(chain.PredictedDX, n), qy = ChainState.Exactly(chain.PredictedDY, n), qz = ChainState.Exactly(chain.PredictedDZ, n);
-            Span<float> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
+            Span<double> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
             ReadOnlySpan<bool> kinematic = ChainState.Exactly(chain.Kinematic, n);
             double invH = 1.0 / h, k = scheme == TimeIntegrator.Bdf2 ? 0.5 * invH : 0.0;
             for (int i = 0; i < n; i++)
             {
+                // d = D + DLow (ChainState.Displacement)
+                double mx = (double)dx[i] + lx[i], my = (double)dy[i] + ly[i], mz = (double)dz[i] + lz[i];
                 // what moved the particle besides the prediction and the chain solve (collider push-out, friction, a pin
                 // target) is a velocity kick c/h, as in backward Euler; boosting the history by it too (v_prev += c/h) makes
                 // the next prediction carry it exactly once instead of 11/9 times
-                double cx = dx[i] - qx[i] - sx[i], cy = dy[i] - qy[i] - sy[i], cz = dz[i] - qz[i] - sz[i];
+                double cx = mx - qx[i] - sx[i], cy = my - qy[i] - sy[i], cz = mz - qz[i] - sz[i];
                 if (kinematic[i])
                 {
-                    wx[i] = (float)(dx[i] * invH); wy[i] = (float)(dy[i] * invH); wz[i] = (float)(dz[i] * invH);
+                    wx[i] = mx * invH; wy[i] = my * invH; wz[i] = mz * invH;
                 }
                 else if (cx != 0.0 || cy != 0.0 || cz != 0.0)
                 {
-                    wx[i] += (float)(cx * invH); wy[i] += (float)(cy * invH); wz[i] += (float)(cz * invH);
+                    wx[i] += cx * invH; wy[i] += cy * invH; wz[i] += cz * invH;
                 }
-                vx[i] = (float)(bx[i] + dx[i] * invH + k * sx[i]); vy[i] = (float)(by[i] + dy[i] * invH + k * sy[i]); vz[i] = (float)(bz[i] + dz[i] * invH + k * sz[i]);
+                vx[i] = bx[i] + mx * invH + k * sx[i]; vy[i] = by[i] + my * invH + k * sy[i]; vz[i] = bz[i] + mz * invH + k * sz[i];
             }
             CommitPositions();
             // a violent substep (see ViolentStrain) restarts the history: the next substep is backward Euler

@@ -39,7 +39,7 @@ namespace HookeRope.Solver
             for (int l = 0; l < loadCount; l++)
             {
                 int i = loadParticle[l];
-                loadStartVelocity[l] = new Float3(chain.VelX[i], chain.VelY[i], chain.VelZ[i]);
+                loadStartVelocity[l] = new Float3((float)chain.VelX[i], (float)chain.VelY[i], (float)chain.VelZ[i]);
                 loadStartPosition[l] = new Float3(chain.X[i], chain.Y[i], chain.Z[i]);
                 loadSubstepVelocity[l] = loadStartVelocity[l];
                 loadPeakForce[l] = 0f;
@@ -67,7 +67,7 @@ namespace HookeRope.Solver
                 SolvePhase(h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder);
                 if (viscousDrag) UnfoldViscousDrag();
                 if (secondOrder) UpdateVelocitiesSecondOrder(scheme, hd, Violent());
-                else UpdateVelocities(h);
+                else UpdateVelocities(hd);
                 if (drag) AccumulateDragWork();
                 FinishPhase(hd, hEff, g, k == 0);
                 if (loadCount > 0) TrackLoadPeaks(1f / h, g);
@@ -82,7 +82,7 @@ namespace HookeRope.Solver
             for (int l = 0; l < loadCount; l++)
             {
                 int i = loadParticle[l];
-                var v = new Float3(chain.VelX[i], chain.VelY[i], chain.VelZ[i]);
+                var v = new Float3((float)chain.VelX[i], (float)chain.VelY[i], (float)chain.VelZ[i]);
                 loadForce[l] = ((v - loadStartVelocity[l]) * invDt - g) * loadMass[l];
             }
 
@@ -98,7 +98,7 @@ namespace HookeRope.Solver
         {
             if (colliders.Count > 0) colliders.PrepareSubstep(t, hostDeltaTime);
             if (secondOrder) PredictSecondOrder(scheme, hd, g);
-            else Predict(h, g);
+            else Predict(hd, g);
             MovePins(t);
             // cleared in loops: for the short arrays of a rope a call to Array.Clear costs more than the stores
             Span<double> lambda = ChainState.Exactly(chain.Lambda, chain.SegmentCount);
@@ -163,23 +163,25 @@ namespace HookeRope.Solver
             if (pinCount > 0) UpdatePinForces(hEff, g);
         }
 
-        private void Predict(float h, Float3 g)
+        private void Predict(double h, Float3 g)
         {
-            float gx = g.X * h, gy = g.Y * h, gz = g.Z * h;
+            double gx = g.X * h, gy = g.Y * h, gz = g.Z * h;
             int n = chain.ParticleCount;
             // spans of exactly n entries (the loop bound): indexed without bounds checks
             ReadOnlySpan<float> x = ChainState.Exactly(chain.X, n), y = ChainState.Exactly(chain.Y, n), z = ChainState.Exactly(chain.Z, n);
             Span<float> px = ChainState.Exactly(chain.PrevX, n), py = ChainState.Exactly(chain.PrevY, n), pz = ChainState.Exactly(chain.PrevZ, n);
-            Span<float> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
+            Span<double> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
             Span<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
+            Span<float> lx = ChainState.Exactly(chain.DLowX, n), ly = ChainState.Exactly(chain.DLowY, n), lz = ChainState.Exactly(chain.DLowZ, n);
             ReadOnlySpan<bool> kinematic = ChainState.Exactly(chain.Kinematic, n);
             for (int i = 0; i < n; i++)
             {
                 px[i] = x[i]; py[i] = y[i]; pz[i] = z[i];
-                if (kinematic[i]) { dx[i] = 0f; dy[i] = 0f; dz[i] = 0f; continue; }
-                float ux = vx[i] + gx, uy = vy[i] + gy, uz = vz[i] + gz;
+                if (kinematic[i]) { dx[i] = 0f; dy[i] = 0f; dz[i] = 0f; lx[i] = 0f; ly[i] = 0f; lz[i] = 0f; continue; }
+                double ux = vx[i] + gx, uy = vy[i] + gy, uz = vz[i] + gz;
                 vx[i] = ux; vy[i] = uy; vz[i] = uz;
-                dx[i] = ux * h; dy[i] = uy * h; dz[i] = uz * h;
+                // D + DLow = v·h exactly (ChainState.SetDisplacement)
+                ChainState.Set(ref dx[i], ref lx[i], ux * h); ChainState.Set(ref dy[i], ref ly[i], uy * h); ChainState.Set(ref dz[i], ref lz[i], uz * h);
             }
         }
 
@@ -190,9 +192,8 @@ namespace HookeRope.Solver
                 if (pinBroken[p] || pinCompliance[p] != 0f) continue;
                 int i = pinParticle[p];
                 Float3 target = PinTarget(p, t);
-                chain.DX[i] = (float)((double)target.X - chain.PrevX[i] - chain.LowX[i]);
-                chain.DY[i] = (float)((double)target.Y - chain.PrevY[i] - chain.LowY[i]);
-                chain.DZ[i] = (float)((double)target.Z - chain.PrevZ[i] - chain.LowZ[i]);
+                chain.SetDisplacement(i, (double)target.X - chain.PrevX[i] - chain.LowX[i], (double)target.Y - chain.PrevY[i] - chain.LowY[i],
+                    (double)target.Z - chain.PrevZ[i] - chain.LowZ[i]);
             }
         }
 
@@ -228,7 +229,7 @@ namespace HookeRope.Solver
                 double dx = (-cx - alphaTilde * pinLambda[b]) / denominator;
                 double dy = (-cy - alphaTilde * pinLambda[b + 1]) / denominator;
                 double dz = (-cz - alphaTilde * pinLambda[b + 2]) / denominator;
-                chain.DX[i] += (float)(w * dx); chain.DY[i] += (float)(w * dy); chain.DZ[i] += (float)(w * dz);
+                chain.AddDisplacement(i, w * dx, w * dy, w * dz);
                 chain.InverseMass[i] = (float)(w * alphaTilde / denominator);
                 any = true;
             }
@@ -258,23 +259,25 @@ namespace HookeRope.Solver
         /// <summary>Target (rope-local m) of pin p at substep fraction t of the host step.</summary>
         private Float3 PinTarget(int p, float t) => Float3.Lerp(pinStart[p], pinEnd[p], t);
 
-        /// <summary>Pin constraint C = x_i − target (m, double) from particle i's live position Prev + Low + D.</summary>
+        /// <summary>Pin constraint C = x_i − target (m, double) from particle i's live position Prev + Low + D + DLow.</summary>
         private void PinOffset(int i, Float3 target, out double cx, out double cy, out double cz)
         {
-            cx = (double)chain.PrevX[i] - target.X + chain.LowX[i] + chain.DX[i];
-            cy = (double)chain.PrevY[i] - target.Y + chain.LowY[i] + chain.DY[i];
-            cz = (double)chain.PrevZ[i] - target.Z + chain.LowZ[i] + chain.DZ[i];
+            cx = (double)chain.PrevX[i] - target.X + chain.LowX[i] + ((double)chain.DX[i] + chain.DLowX[i]);
+            cy = (double)chain.PrevY[i] - target.Y + chain.LowY[i] + ((double)chain.DY[i] + chain.DLowY[i]);
+            cz = (double)chain.PrevZ[i] - target.Z + chain.LowZ[i] + ((double)chain.DZ[i] + chain.DLowZ[i]);
         }
 
-        private void UpdateVelocities(float h)
+        private void UpdateVelocities(double h)
         {
-            float invH = 1f / h;
+            double invH = 1.0 / h;
             int n = chain.ParticleCount;
             ReadOnlySpan<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
-            Span<float> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
+            ReadOnlySpan<float> lx = ChainState.Exactly(chain.DLowX, n), ly = ChainState.Exactly(chain.DLowY, n), lz = ChainState.Exactly(chain.DLowZ, n);
+            Span<double> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
             for (int i = 0; i < n; i++)
             {
-                vx[i] = dx[i] * invH; vy[i] = dy[i] * invH; vz[i] = dz[i] * invH;
+                // v = (D + DLow)/h
+                vx[i] = ((double)dx[i] + lx[i]) * invH; vy[i] = ((double)dy[i] + ly[i]) * invH; vz[i] = ((double)dz[i] + lz[i]) * invH;
             }
             CommitPositions();
         }
@@ -292,13 +295,16 @@ namespace HookeRope.Solver
             Span<float> x = ChainState.Exactly(chain.X, n), y = ChainState.Exactly(chain.Y, n), z = ChainState.Exactly(chain.Z, n);
             ReadOnlySpan<float> px = ChainState.Exactly(chain.PrevX, n), py = ChainState.Exactly(chain.PrevY, n), pz = ChainState.Exactly(chain.PrevZ, n);
             ReadOnlySpan<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
+            ReadOnlySpan<float> dlx = ChainState.Exactly(chain.DLowX, n), dly = ChainState.Exactly(chain.DLowY, n), dlz = ChainState.Exactly(chain.DLowZ, n);
             Span<float> lx = ChainState.Exactly(chain.LowX, n), ly = ChainState.Exactly(chain.LowY, n), lz = ChainState.Exactly(chain.LowZ, n);
-            ReadOnlySpan<float> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
+            ReadOnlySpan<double> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
             for (int i = 0; i < n; i++)
             {
-                double ex = (double)px[i] + lx[i] + dx[i], ey = (double)py[i] + ly[i] + dy[i], ez = (double)pz[i] + lz[i] + dz[i];
+                // x = x_prev + Low + (D + DLow)
+                double ex = (double)px[i] + lx[i] + ((double)dx[i] + dlx[i]), ey = (double)py[i] + ly[i] + ((double)dy[i] + dly[i]);
+                double ez = (double)pz[i] + lz[i] + ((double)dz[i] + dlz[i]);
                 float nx = (float)ex, ny = (float)ey, nz = (float)ez;
-                if (float.IsFinite(vx[i] + vy[i] + vz[i]) && float.IsFinite(nx + ny + nz))
+                if (double.IsFinite(vx[i] + vy[i] + vz[i]) && float.IsFinite(nx + ny + nz))
                 {
                     x[i] = nx; y[i] = ny; z[i] = nz;
                     lx[i] = (float)(ex - nx); ly[i] = (float)(ey - ny); lz[i] = (float)(ez - nz);
@@ -311,8 +317,8 @@ namespace HookeRope.Solver
         private void RestoreParticle(int i)
         {
             chain.X[i] = chain.PrevX[i]; chain.Y[i] = chain.PrevY[i]; chain.Z[i] = chain.PrevZ[i];
-            chain.VelX[i] = 0f; chain.VelY[i] = 0f; chain.VelZ[i] = 0f;
-            chain.DX[i] = 0f; chain.DY[i] = 0f; chain.DZ[i] = 0f;
+            chain.VelX[i] = 0.0; chain.VelY[i] = 0.0; chain.VelZ[i] = 0.0;
+            chain.SetDisplacement(i, 0.0, 0.0, 0.0);
         }
 
         /// <summary>
@@ -362,7 +368,7 @@ namespace HookeRope.Solver
             for (int l = 0; l < loadCount; l++)
             {
                 int i = loadParticle[l];
-                var v = new Float3(chain.VelX[i], chain.VelY[i], chain.VelZ[i]);
+                var v = new Float3((float)chain.VelX[i], (float)chain.VelY[i], (float)chain.VelZ[i]);
                 float force = (((v - loadSubstepVelocity[l]) * invH - g) * loadMass[l]).Length;
                 if (force > loadPeakForce[l]) loadPeakForce[l] = force;
                 loadSubstepVelocity[l] = v;

@@ -157,7 +157,7 @@ namespace HookeRope.Solver
         public Float3 GetVelocity(int particle)
         {
             CheckParticle(particle);
-            return new Float3(chain.VelX[particle], chain.VelY[particle], chain.VelZ[particle]);
+            return new Float3((float)chain.VelX[particle], (float)chain.VelY[particle], (float)chain.VelZ[particle]);
         }
 
         /// <summary>Sets the velocity of a particle in m/s; NaN/∞ → ArgumentException.</summary>

@@ -237,10 +237,8 @@ namespace HookeRope.Solver
         private static double Misaligned(ChainState c, int j)
         {
             double fx = c.ForceX[j], fy = c.ForceY[j], fz = c.ForceZ[j];
-            // the live segment vector Prev + Low + D, exact as ChainState.Direction forms it
-            double dx = ((double)c.PrevX[j + 1] - c.PrevX[j]) + (((double)c.LowX[j + 1] - c.LowX[j]) + (c.DX[j + 1] - c.DX[j]));
-            double dy = ((double)c.PrevY[j + 1] - c.PrevY[j]) + (((double)c.LowY[j + 1] - c.LowY[j]) + (c.DY[j + 1] - c.DY[j]));
-            double dz = ((double)c.PrevZ[j + 1] - c.PrevZ[j]) + (((double)c.LowZ[j + 1] - c.LowZ[j]) + (c.DZ[j + 1] - c.DZ[j]));
+            // the live segment vector Prev + Low + D + DLow, exact as ChainState.Direction forms it
+            c.LiveSpan(j, out double dx, out double dy, out double dz, out _, out _, out _);
             double cx = fy * dz - fz * dy, cy = fz * dx - fx * dz, cz = fx * dy - fy * dx;
             double norms = Math.Sqrt((fx * fx + fy * fy + fz * fz) * (dx * dx + dy * dy + dz * dz));
             return norms > 0.0 ? Math.Sqrt(cx * cx + cy * cy + cz * cz) / norms : 0.0;
@@ -271,7 +269,8 @@ namespace HookeRope.Solver
             // exact committed length, and the length at the start of the substep (the committed vector less the substep's D)
             c.Span(j, out double ex, out double ey, out double ez);
             double l = Math.Sqrt(ex * ex + ey * ey + ez * ez);
-            ex -= c.DX[j + 1] - c.DX[j]; ey -= c.DY[j + 1] - c.DY[j]; ez -= c.DZ[j + 1] - c.DZ[j];
+            c.SubstepChange(j, out double ddx, out double ddy, out double ddz);
+            ex -= ddx; ey -= ddy; ez -= ddz;
             double l0 = Math.Sqrt(ex * ex + ey * ey + ez * ez);
             double lp = plasticRest[j], rest = reference[j];
             double excess = (l - lp) + g * (l - l0) - alpha * ty;
