@@ -30,18 +30,34 @@ namespace HookeRope.Solver
         /// <summary>
         /// Largest second-order length error of an iteration, as a fraction of the rest length, that needs no further
         /// iteration: a segment whose ends moved by Δ across it in this iteration is longer than the linearisation assumed
-        /// by about |Δ_⊥|²/(2l).
+        /// by about |Δ_⊥|²/(2l). Beyond it the linearisation is off and the iteration's step goes through
+        /// <see cref="ChainLineSearch"/>.
         /// </summary>
         public const double NonlinearTolerance = 1e-3;
+
+        /// <summary>
+        /// Largest energy a converged iteration may leave in its segments' length errors, Σ(|F|·e + ½e²/α), as a fraction of
+        /// the chain's kinetic and elastic energy: a stiff segment stores ½e²/α for a length error e (steel: 0.02 J for
+        /// 3 µm on a 4 mm segment), so its error must be small in energy, not only against its length.
+        /// </summary>
+        public const double EnergyTolerance = 1e-6;
+
+        /// <summary>
+        /// Length error (as a multiple of the largest coordinate of the rope, <see cref="ChainState.Size"/>, m/m) below which
+        /// an iteration cannot improve a segment: 4·2⁻²³, four float32 ulps of the positions it is stored in.
+        /// </summary>
+        public const double RoundOffFloor = 4.0 / 8388608.0;
 
         /// <summary>
         /// Runs one iteration (h: the integrator's effective substep, s; beta: damping β, s; first: the substep's first
         /// iteration, whose accumulated forces start at zero). Returns true when another iteration should follow: the
         /// tension the geometric stiffness was estimated with was less than half the tension found on some segment whose
-        /// transverse response it governs (4·T·h²·w/l &gt; 1), or the iteration moved some segment's ends across it by so
-        /// much that its linearisation is off by more than <see cref="NonlinearTolerance"/> of the rest length.
+        /// transverse response it governs (4·T·h²·w/l &gt; 1); the iteration moved some segment's ends across it by so
+        /// much that its length is off the linearisation by more than a converged chain allows (<see cref="Apply"/>); a
+        /// released tension-only segment ended stretched; or the line search shortened the step. <paramref name="violent"/>: the linearisation was off by more than <see cref="NonlinearTolerance"/> (its
+        /// step went through <see cref="ChainLineSearch"/>), or a released segment ended stretched by more than that.
         /// </summary>
-        public static bool Iterate(ChainState c, double h, double beta, bool tensionOnly, bool first)
+        public static bool Iterate(ChainState c, double h, double beta, bool tensionOnly, bool first, out bool violent, out bool shortened)
         {
             double invH2 = 1.0 / (h * h);
             if (first) ClearForces(c);
@@ -49,8 +65,17 @@ namespace HookeRope.Solver
             bool contacts = c.ContactCount > 0;
             if (contacts) DropContactsWithoutMobility(c);
             SolveActiveSet(c, tensionOnly, contacts);
-            double nonlinear = Apply(c, contacts);
-            return EstimateTooLow(c, invH2) || nonlinear > NonlinearTolerance;
+            double nonlinear = Apply(c, contacts, tensionOnly, out bool unconverged);
+            violent = nonlinear > NonlinearTolerance;
+            shortened = false;
+            if (violent)
+            {
+                double step = ChainLineSearch.Backtrack(c, tensionOnly);
+                shortened = step < 1.0;
+                if (shortened) ChainLineSearch.Shorten(c, step);
+                unconverged = true;
+            }
+            return EstimateTooLow(c, invH2) || unconverged;
         }
 
         private static void ClearForces(ChainState c)
@@ -74,9 +99,11 @@ namespace HookeRope.Solver
             float[] w = c.InverseMass, rest = c.RestLength, compliance = c.Compliance, length = c.Length;
             double[] fx = c.ForceX, fy = c.ForceY, fz = c.ForceZ, rx = c.ResidualX, ry = c.ResidualY, rz = c.ResidualZ;
             double[] axial = c.AxialCompliance, transverse = c.TransverseCompliance, estimate = c.EstimatedTension;
-            bool[] broken = c.Broken, active = c.Active;
+            bool[] broken = c.Broken, active = c.Active, assembled = c.Assembled;
+            c.RigidInSolve = false;
             for (int j = 0; j < s; j++)
             {
+                assembled[j] = false;
                 if (broken[j]) { active[j] = false; continue; }
                 float len = c.Direction(j, out float fnx, out float fny, out float fnz, out float ddx, out float ddy, out float ddz);
                 length[j] = len;
@@ -84,6 +111,7 @@ namespace HookeRope.Solver
                 double alpha = compliance[j];
                 double mobility = (double)w[j] + w[j + 1];
                 if (mobility == 0.0 && alpha == 0.0) { active[j] = false; continue; }
+                if (alpha == 0.0) c.RigidInSolve = true;
                 double g = alpha > 0.0 ? gammaAll : 0.0;
                 double restEffective = rest[j], alphaTilde = alpha * invH2;
                 if (g > 0.0)
@@ -112,6 +140,8 @@ namespace HookeRope.Solver
                 double cap = MaxTransverseComplianceRatio * mobility;
                 transverse[j] = geometric < cap * tension ? geometric / tension : cap;
                 axial[j] = alphaTilde;
+                c.EffectiveRest[j] = restEffective;
+                assembled[j] = true;
                 rx[j] = len * nx - target * ex; ry[j] = len * ny - target * ey; rz[j] = len * nz - target * ez;
             }
         }
@@ -223,16 +253,21 @@ namespace HookeRope.Solver
         }
 
         /// <summary>
-        /// Moves every particle by its mobility times this iteration's pull, accumulates the forces and writes the scalar
-        /// multipliers λ_j = −Λ_j·n_j the tension read-outs use. A held contact may still close its gap; the normal motion
-        /// it withheld is recorded as its normal load (the friction limit). Returns the largest second-order length error
-        /// |Δ_⊥|²/(2l) of a segment over its rest length (see <see cref="NonlinearTolerance"/>).
+        /// Moves every particle by its mobility times this iteration's pull (recorded as its motion), accumulates the forces
+        /// and writes the scalar multipliers λ_j = −Λ_j·n_j the tension read-outs use. A held contact may still close its
+        /// gap; the normal motion it withheld is recorded as its normal load (the friction limit). Then the convergence test:
+        /// returns the largest length error over the rest length of a pulling segment — its second-order error
+        /// e = |Δ_⊥|²/(2l) from this iteration's relative motion Δ of its ends (see <see cref="NonlinearTolerance"/>), or a
+        /// released (tension-only) segment's stretch beyond its rest length — and sets <paramref name="unconverged"/> when
+        /// some active segment's error exceeds NonlinearTolerance·L, a released one is stretched by that much, or the energy
+        /// the errors above round-off leave in the segments is too large (<see cref="Mismatched"/>).
         /// </summary>
-        private static double Apply(ChainState c, bool contacts)
+        private static double Apply(ChainState c, bool contacts, bool tensionOnly, out bool unconverged)
         {
             int s = c.SegmentCount;
             float[] w = c.InverseMass;
-            double worst = 0.0, qx = 0, qy = 0, qz = 0;
+            double[] error = c.LengthError;
+            double qx = 0, qy = 0, qz = 0;
             for (int i = 0; i <= s; i++)
             {
                 SegmentForceSystem.Pull(c, i, out double px, out double py, out double pz);
@@ -248,23 +283,88 @@ namespace HookeRope.Solver
                     if (normal < 0.0) c.ContactLoad[i] += (float)(-withheld);
                 }
                 c.DX[i] += (float)mx; c.DY[i] += (float)my; c.DZ[i] += (float)mz;
+                c.MotionX[i] = mx; c.MotionY[i] = my; c.MotionZ[i] = mz;
                 if (i > 0 && c.Active[i - 1])
                 {
                     double ux = mx - qx, uy = my - qy, uz = mz - qz;
                     double along = ux * c.DirX[i - 1] + uy * c.DirY[i - 1] + uz * c.DirZ[i - 1];
                     double perp = ux * ux + uy * uy + uz * uz - along * along;
-                    double e = perp / (2.0 * Math.Max(c.Length[i - 1], 1e-6 * c.RestLength[i - 1]) * c.RestLength[i - 1]);
-                    if (e > worst) worst = e;
+                    error[i - 1] = perp / (2.0 * Math.Max(c.Length[i - 1], 1e-6 * c.RestLength[i - 1]));
                 }
                 qx = mx; qy = my; qz = mz;
             }
             double[] fx = c.ForceX, fy = c.ForceY, fz = c.ForceZ, dx = c.StepX, dy = c.StepY, dz = c.StepZ;
+            double floor = RoundOffFloor * c.Size, worst = 0.0;
+            bool mismatched = false;
+            unconverged = false;
             for (int j = 0; j < s; j++)
             {
                 fx[j] += dx[j]; fy[j] += dy[j]; fz[j] += dz[j];
-                c.Lambda[j] = c.Active[j] ? -(fx[j] * c.DirX[j] + fy[j] * c.DirY[j] + fz[j] * c.DirZ[j]) : 0.0;
+                double lambda = c.Active[j] ? -(fx[j] * c.DirX[j] + fy[j] * c.DirY[j] + fz[j] * c.DirZ[j]) : 0.0;
+                c.Lambda[j] = lambda;
+                double e;
+                if (c.Active[j])
+                {
+                    e = error[j];
+                    // a pushing (bilateral) segment's transverse response is damped buckling by design (see Assemble): it
+                    // may add iterations, as before, but it is not a violent linearisation and keeps no energy test
+                    if (lambda > 0.0)
+                    {
+                        if (e > NonlinearTolerance * c.RestLength[j]) unconverged = true;
+                        continue;
+                    }
+                }
+                else if (tensionOnly && c.Assembled[j])
+                {
+                    e = StretchBeyondRest(c, j);
+                    error[j] = e;
+                }
+                else continue;
+                if (e <= floor) continue;
+                double rest = c.RestLength[j];
+                if (e > worst * rest) worst = e / rest;
+                if (e > NonlinearTolerance * rest) unconverged = true;
+                else mismatched = true;
             }
+            if (!unconverged && mismatched) unconverged = Mismatched(c, tensionOnly, floor);
             return worst;
+        }
+
+        /// <summary>How much longer (m) released segment j now is than its effective rest length (≤ 0: not stretched).</summary>
+        private static double StretchBeyondRest(ChainState c, int j)
+        {
+            double dx = ((double)c.PrevX[j + 1] + c.DX[j + 1]) - ((double)c.PrevX[j] + c.DX[j]);
+            double dy = ((double)c.PrevY[j + 1] + c.DY[j + 1]) - ((double)c.PrevY[j] + c.DY[j]);
+            double dz = ((double)c.PrevZ[j + 1] + c.DZ[j + 1]) - ((double)c.PrevZ[j] + c.DZ[j]);
+            return Math.Sqrt(dx * dx + dy * dy + dz * dz) - c.EffectiveRest[j];
+        }
+
+        /// <summary>
+        /// True when the length errors above round-off (<paramref name="floor"/>, m) of the pulling and released segments
+        /// (<see cref="ChainState.LengthError"/>) leave more energy in them, Σ (|F|·e + ½e²/α), than
+        /// <see cref="EnergyTolerance"/> of the chain's kinetic (over the substep) and elastic energy. A stiff segment stores
+        /// ½e²/α for a length error e, so its error must be small in energy, not only against its length; a floppy one
+        /// (a light free end) may keep a larger one.
+        /// </summary>
+        private static bool Mismatched(ChainState c, bool tensionOnly, double floor)
+        {
+            double mismatch = 0.0, reference = 0.0;
+            for (int j = 0; j < c.SegmentCount; j++)
+            {
+                if (!c.Assembled[j]) continue;
+                double alpha = c.AxialCompliance[j], squared = c.ForceX[j] * c.ForceX[j] + c.ForceY[j] * c.ForceY[j] + c.ForceZ[j] * c.ForceZ[j];
+                if (c.Active[j]) reference += 0.5 * alpha * squared;
+                bool counted = c.Active[j] ? c.Lambda[j] <= 0.0 : tensionOnly;
+                double e = c.LengthError[j];
+                if (!counted || e <= floor || alpha == 0.0) continue;
+                mismatch += (c.Active[j] ? Math.Sqrt(squared) * e : 0.0) + 0.5 * e * e / alpha;
+            }
+            for (int i = 0; i < c.ParticleCount; i++)
+            {
+                double w = c.InverseMass[i];
+                if (w > 0.0) reference += 0.5 * ((double)c.DX[i] * c.DX[i] + (double)c.DY[i] * c.DY[i] + (double)c.DZ[i] * c.DZ[i]) / w;
+            }
+            return mismatch > EnergyTolerance * reference;
         }
 
         /// <summary>See <see cref="Iterate"/>: the estimated tension was below half the result where 4·T·h²·max(w)/l &gt; 1.</summary>

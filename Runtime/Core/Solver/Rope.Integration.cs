@@ -60,9 +60,11 @@ namespace HookeRope.Solver
             bool[] kinematic = chain.Kinematic;
             bool bdf2 = scheme == TimeIntegrator.Bdf2;
             double invH = 1.0 / h, h2 = h * h, c = 4.0 * h2 / 9.0, e = 2.0 * h / 3.0;
+            float size = 0f;
             for (int i = 0; i < n; i++)
             {
                 px[i] = x[i]; py[i] = y[i]; pz[i] = z[i];
+                size = Larger(size, x[i], y[i], z[i]);
                 double wx = vx[i], wy = vy[i], wz = vz[i];
                 if (kinematic[i])
                 {
@@ -87,6 +89,7 @@ namespace HookeRope.Solver
                 ux[i] = (float)wx; uy[i] = (float)wy; uz[i] = (float)wz;
                 qx[i] = dx[i]; qy[i] = dy[i]; qz[i] = dz[i];
             }
+            chain.Size = size;
             Array.Clear(chain.SolveDX, 0, n);
             Array.Clear(chain.SolveDY, 0, n);
             Array.Clear(chain.SolveDZ, 0, n);

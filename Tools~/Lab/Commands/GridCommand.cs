@@ -12,6 +12,10 @@ namespace HookeRope.Lab.Commands
     /// <summary><c>stability --full</c>: the integrator grid (<see cref="GridSweep"/>), a summary per integrator and a table of every failure; exit code 1 if any case fails.</summary>
     public static class GridCommand
     {
+        /// <summary>"n (p %)": a count and its share of the substeps.</summary>
+        private static string Share(long n, long substeps) =>
+            string.Format(CultureInfo.InvariantCulture, "{0} ({1:G2} %)", n, 100.0 * n / System.Math.Max(substeps, 1));
+
         /// <summary>Runs the grid (whole, or the CI subset), prints and writes stability-grid.md (or stability-grid-ci.md) to <paramref name="outDir"/>.</summary>
         public static int Execute(IAnsiConsole console, string outDir, bool full)
         {
@@ -24,29 +28,44 @@ namespace HookeRope.Lab.Commands
             md.Append("# HookeRope integrator stability grid").Append(full ? "" : " (CI subset)").Append("\n\n");
             md.Append("Machine: ").Append(MachineInfo.Describe()).Append("\n\n");
             md.Append(string.Format(CultureInfo.InvariantCulture, "{0} cases in {1:F1} s.\n\n", cases.Count, seconds));
-            md.Append("| integrator | cases | failed | largest energy gain (J) |\n|---|---:|---:|---:|\n");
+            md.Append("| family | integrator | cases | failed | largest energy gain (J) | largest relative gain | iterations / substep | violent substeps | shortened steps | unconverged substeps |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
             var summary = new Table().Border(TableBorder.Rounded).Title("HookeRope integrator grid" + (full ? "" : " (CI subset)"));
+            summary.AddColumn("family");
             summary.AddColumn("integrator");
             summary.AddColumn(new TableColumn("cases").RightAligned());
             summary.AddColumn(new TableColumn("failed").RightAligned());
             summary.AddColumn(new TableColumn("largest energy gain (J)").RightAligned());
+            summary.AddColumn(new TableColumn("largest relative gain").RightAligned());
+            summary.AddColumn(new TableColumn("iterations / substep").RightAligned());
+            summary.AddColumn(new TableColumn("violent substeps").RightAligned());
+            summary.AddColumn(new TableColumn("shortened steps").RightAligned());
+            summary.AddColumn(new TableColumn("unconverged substeps").RightAligned());
             int failedAll = 0;
-            foreach (var integrator in new[] { TimeIntegrator.BackwardEuler, TimeIntegrator.Bdf2 })
-            {
-                int count = 0, failed = 0;
-                double gain = 0.0;
-                foreach (var o in outcomes)
+            foreach (var family in new[] { GridFamily.Undamped, GridFamily.Settle, GridFamily.Teleport })
+                foreach (var integrator in new[] { TimeIntegrator.BackwardEuler, TimeIntegrator.Bdf2 })
                 {
-                    if (o.Case.Integrator != integrator) continue;
-                    count++;
-                    if (o.Failed) failed++;
-                    if (o.EnergyGain > gain) gain = o.EnergyGain;
+                    int count = 0, failed = 0;
+                    double gain = 0.0, relative = 0.0;
+                    long substeps = 0, iterations = 0, violent = 0, shortened = 0, unconverged = 0;
+                    foreach (var o in outcomes)
+                    {
+                        if (o.Case.Integrator != integrator || o.Case.Family != family) continue;
+                        count++;
+                        if (o.Failed) failed++;
+                        if (o.EnergyGain > gain) gain = o.EnergyGain;
+                        double r = o.EnergyGain / System.Math.Max(System.Math.Abs(o.Ceiling), 1e-300);
+                        if (r > relative) relative = r;
+                        substeps += o.Substeps; iterations += o.SolveIterations; violent += o.ViolentSubsteps;
+                        shortened += o.ShortenedSteps; unconverged += o.UnconvergedSubsteps;
+                    }
+                    if (count == 0) continue;
+                    failedAll += failed;
+                    string g = gain.ToString("G3", CultureInfo.InvariantCulture), rel = relative.ToString("G3", CultureInfo.InvariantCulture);
+                    string its = ((double)iterations / System.Math.Max(substeps, 1)).ToString("F3", CultureInfo.InvariantCulture);
+                    string v = Share(violent, substeps), sh = shortened.ToString(CultureInfo.InvariantCulture), u = Share(unconverged, substeps);
+                    summary.AddRow(family.ToString(), integrator.ToString(), count.ToString(CultureInfo.InvariantCulture), failed == 0 ? "[green]0[/]" : $"[red]{failed}[/]", g, rel, its, v, sh, u);
+                    md.Append(string.Format(CultureInfo.InvariantCulture, "| {0} | {1} | {2} | {3} | {4} | {5} | {6} | {7} | {8} | {9} |\n", family, integrator, count, failed, g, rel, its, v, sh, u));
                 }
-                failedAll += failed;
-                string g = gain.ToString("G3", CultureInfo.InvariantCulture);
-                summary.AddRow(integrator.ToString(), count.ToString(CultureInfo.InvariantCulture), failed == 0 ? "[green]0[/]" : $"[red]{failed}[/]", g);
-                md.Append(string.Format(CultureInfo.InvariantCulture, "| {0} | {1} | {2} | {3} |\n", integrator, count, failed, g));
-            }
             console.Write(summary);
             md.Append("\n## Failures\n\n");
             if (failedAll == 0) md.Append("None.\n");
