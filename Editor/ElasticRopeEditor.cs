@@ -7,8 +7,8 @@ using UnityEngine;
 namespace HookeRope.Editor
 {
     /// <summary>
-    /// Inspector of <see cref="ElasticRope"/>, grouped Material / Geometry / Solver / Attachments / Collisions /
-    /// Fracture / Read-outs. Warns when the settings predict a large stretch error and previews the static
+    /// Inspector of <see cref="ElasticRope"/>, grouped Material / Material law / Geometry / Solver / Attachments / Collisions /
+    /// Drag / Fracture / Read-outs (the material law with its force–elongation preview: <see cref="MaterialLawInspector"/>). Warns when the settings predict a large stretch error and previews the static
     /// sag in edit mode. Read-outs repaint live in Play; with several ropes selected they show a table with one
     /// column per rope (<see cref="RopeReadoutTable"/>). Attachments has "Attach Start/End to selection"
     /// (<see cref="RopeAttachToSelection"/>); the Scene view shows a position handle per attached end (<see cref="RopeEndHandles"/>).
@@ -16,13 +16,16 @@ namespace HookeRope.Editor
     [CustomEditor(typeof(ElasticRope)), CanEditMultipleObjects]
     sealed class ElasticRopeEditor : UnityEditor.Editor
     {
-        static bool s_Material = true, s_Geometry = true, s_Solver = true, s_Attachments = true, s_Collisions, s_Fracture, s_Readouts = true;
+        static bool s_Material = true, s_Geometry = true, s_Solver = true, s_Attachments = true, s_Collisions, s_Drag, s_Fracture, s_Readouts = true;
+        static bool s_MaterialLaw = true;
+        MaterialLawInspector m_MaterialLaw;
 
         SerializedProperty m_StiffnessInput, m_YoungsModulus, m_AxialStiffness, m_Density, m_PoissonRatio, m_Damping;
         SerializedProperty m_RestLength, m_Radius, m_SegmentCount;
         SerializedProperty m_Solver, m_Substeps, m_Iterations, m_TensionModel, m_Integrator, m_Gravity;
         SerializedProperty m_Start, m_End, m_AttachmentCompliance, m_OnStepped;
         SerializedProperty m_CollisionMode, m_Colliders, m_CollisionLayers, m_Planes, m_Friction;
+        SerializedProperty m_ViscousDrag, m_DragCoefficient, m_SkinFriction, m_AirDensity, m_Wind;
         SerializedProperty m_RadiusModel, m_Necking, m_NeckMode, m_NeckRadiusFraction, m_DefectPosition, m_Fracture, m_BreakStrain, m_BreakRadiusFraction, m_OnBreak;
 
         void OnEnable()
@@ -52,6 +55,11 @@ namespace HookeRope.Editor
             m_CollisionLayers = so.FindProperty(nameof(m_CollisionLayers));
             m_Planes = so.FindProperty(nameof(m_Planes));
             m_Friction = so.FindProperty(nameof(m_Friction));
+            m_ViscousDrag = so.FindProperty(nameof(m_ViscousDrag));
+            m_DragCoefficient = so.FindProperty(nameof(m_DragCoefficient));
+            m_SkinFriction = so.FindProperty(nameof(m_SkinFriction));
+            m_AirDensity = so.FindProperty(nameof(m_AirDensity));
+            m_Wind = so.FindProperty(nameof(m_Wind));
             m_RadiusModel = so.FindProperty(nameof(m_RadiusModel));
             m_Necking = so.FindProperty(nameof(m_Necking));
             m_NeckMode = so.FindProperty(nameof(m_NeckMode));
@@ -61,6 +69,7 @@ namespace HookeRope.Editor
             m_BreakStrain = so.FindProperty(nameof(m_BreakStrain));
             m_BreakRadiusFraction = so.FindProperty(nameof(m_BreakRadiusFraction));
             m_OnBreak = so.FindProperty(nameof(m_OnBreak));
+            m_MaterialLaw = new MaterialLawInspector(so);
         }
 
         public override bool RequiresConstantRepaint() => EditorApplication.isPlaying;
@@ -80,6 +89,8 @@ namespace HookeRope.Editor
                 EditorGUILayout.LabelField("Axial stiffness E·A", Format(rope.AxialStiffness, "N"));
                 EditorGUILayout.LabelField("Mass per metre", Format(rope.LinearDensity, "kg/m"));
             }
+            if (Section(ref s_MaterialLaw, "Material law (yield, necking, energy absorber)"))
+                m_MaterialLaw.Draw(rope, !serializedObject.isEditingMultipleObjects);
             if (Section(ref s_Geometry, "Geometry"))
             {
                 Field(m_RestLength);
@@ -118,6 +129,15 @@ namespace HookeRope.Editor
                     EditorGUILayout.PropertyField(m_Planes, includeChildren: true);
                     Field(m_Friction);
                 }
+            }
+            if (Section(ref s_Drag, "Drag"))
+            {
+                Field(m_ViscousDrag);
+                Field(m_DragCoefficient);
+                Field(m_SkinFriction);
+                Field(m_AirDensity);
+                Field(m_Wind);
+                DragPreview(rope);
             }
             if (Section(ref s_Fracture, "Fracture (thinning, necking, break)"))
             {
@@ -160,6 +180,16 @@ namespace HookeRope.Editor
                 EditorGUILayout.HelpBox(string.Format(CultureInfo.InvariantCulture,
                     "These settings predict the rope to stretch about {0:P0} more than the material allows (Gauss-Seidel, {1} substeps × {2} iterations for {3} segments). Use the Exact Chain solver, or raise substeps.",
                     error, rope.Substeps, rope.Iterations, rope.SegmentCount), MessageType.Warning);
+        }
+
+        /// <summary>What the drag settings mean for this rope (uniform, <see cref="DragLaw"/>): how fast a swing decays, how fast it falls broadside.</summary>
+        static void DragPreview(ElasticRope rope)
+        {
+            double mu = rope.LinearDensity;
+            double rate = DragLaw.SwingDecayRate(rope.ViscousDrag, mu);
+            EditorGUILayout.LabelField("Swing amplitude 1/e after", rate > 0.0 ? Format((float)(1.0 / rate), "s") : "never (no viscous drag)");
+            double terminal = DragLaw.BroadsideTerminalVelocity(rope.ViscousDrag, rope.DragCoefficient, rope.AirDensity, rope.Radius, mu, rope.Gravity.magnitude);
+            EditorGUILayout.LabelField("Falls broadside at most", double.IsInfinity(terminal) ? "no limit (no drag)" : Format((float)terminal, "m/s"));
         }
 
         void AttachFixBox(ElasticRope rope)

@@ -6,7 +6,8 @@ namespace HookeRope.Editor
 {
     /// <summary>
     /// The rows of the inspector's Read-outs section for one or several selected ropes: a "Rope" row with the names, then
-    /// elongation/strain, tensions, radii, break state, arrest force and its limits, residual and step time, one value
+    /// elongation/strain, tensions, radii, break state, arrest force and its limits, permanent set and plastic work, absorber
+    /// deployment, residual and step time, one value
     /// text per rope. A rope that is not built shows <see cref="NotBuilt"/> in every row. Pure logic (no GUI), so it is
     /// tested headless; ElasticRopeEditor draws it.
     /// </summary>
@@ -28,11 +29,13 @@ namespace HookeRope.Editor
             ("Arrest force (peak)", r => Format(r.ArrestForce, "N") + " (" + Format(r.PeakArrestForce, "N") + ")"),
             ("EN 355 (6 kN)", r => r.MeetsEn355 ? "within limit" : "EXCEEDED"),
             ("ANSI Z359.13 (8 kN)", r => r.MeetsAnsiZ359_13 ? "within limit" : "EXCEEDED"),
+            ("Permanent set / plastic work", r => Format(r.PlasticElongation, "m") + " / " + Format(r.PlasticWork, "J")),
+            ("Absorber deployed", r => r.EnergyAbsorber ? Format(r.AbsorberDeployed, "m") + " of " + Format(r.AbsorberDeployment, "m") : "no absorber"),
             ("Residual (strain error)", r => Format(r.Residual, "")),
             ("Step time", r => Format(r.StepMilliseconds, "ms")),
         };
 
-        /// <summary>Number of rows <see cref="Build"/> returns: the name row and the 10 read-out rows.</summary>
+        /// <summary>Number of rows <see cref="Build"/> returns: the name row and the 12 read-out rows.</summary>
         public static int RowCount => s_Rows.Length + 1;
 
         /// <summary>The rows for <paramref name="ropes"/> (selection order; null entries, e.g. destroyed targets, are skipped).</summary>

@@ -86,6 +86,22 @@ namespace HookeRope
         [SerializeField, Min(RopeParameters.Friction.Min), Tooltip(RopeParameters.Friction.Tooltip)]
         float m_Friction = RopeParameters.Friction.Default;
 
+        // ---- Drag -----------------------------------------------------------------------------------------
+        [SerializeField, Min(RopeParameters.ViscousDrag.Min), Tooltip(RopeParameters.ViscousDrag.Tooltip)]
+        float m_ViscousDrag = RopeParameters.ViscousDrag.Default;
+
+        [SerializeField, Min(RopeParameters.DragCoefficient.Min), Tooltip(RopeParameters.DragCoefficient.Tooltip)]
+        float m_DragCoefficient = RopeParameters.DragCoefficient.Default;
+
+        [SerializeField, Min(RopeParameters.SkinFriction.Min), Tooltip(RopeParameters.SkinFriction.Tooltip)]
+        float m_SkinFriction = RopeParameters.SkinFriction.Default;
+
+        [SerializeField, Min(RopeParameters.AirDensity.Min), Tooltip(RopeParameters.AirDensity.Tooltip)]
+        float m_AirDensity = RopeParameters.AirDensity.Default;
+
+        [SerializeField, Min(RopeParameters.Wind.Min), Tooltip(RopeParameters.Wind.Tooltip)]
+        Vector3 m_Wind = new Vector3(RopeParameters.Wind.DefaultX, RopeParameters.Wind.DefaultY, RopeParameters.Wind.DefaultZ);
+
         // ---- Radius, necking and fracture -----------------------------------------------------------------
         [SerializeField, Tooltip(RopeParameters.PoissonThinning.Tooltip)]
         bool m_RadiusModel = RopeParameters.PoissonThinning.Default;
@@ -216,6 +232,35 @@ namespace HookeRope
             }
         }
 
+        /// <summary>Viscous drag c per metre of rope (N·s/m²), range <see cref="RopeParameters.ViscousDrag"/>; 0 = off. A swing decays as exp(−c·t/(2μ)).</summary>
+        public float ViscousDrag { get => m_ViscousDrag; set => SetLive(ref m_ViscousDrag, value, RopeParameters.ViscousDrag.Row); }
+
+        /// <summary>Drag coefficient C_d of the air drag across the rope (dimensionless), range <see cref="RopeParameters.DragCoefficient"/>; 0 = off.</summary>
+        public float DragCoefficient { get => m_DragCoefficient; set => SetLive(ref m_DragCoefficient, value, RopeParameters.DragCoefficient.Row); }
+
+        /// <summary>Skin-friction coefficient C_f of the air drag along the rope (dimensionless), range <see cref="RopeParameters.SkinFriction"/>; 0 = off.</summary>
+        public float SkinFriction { get => m_SkinFriction; set => SetLive(ref m_SkinFriction, value, RopeParameters.SkinFriction.Row); }
+
+        /// <summary>Density of the air (or fluid) the rope moves through (kg/m³), range <see cref="RopeParameters.AirDensity"/>.</summary>
+        public float AirDensity { get => m_AirDensity; set => SetLive(ref m_AirDensity, value, RopeParameters.AirDensity.Row); }
+
+        /// <summary>
+        /// Velocity of the air in world coordinates (m/s), each component in the range of <see cref="RopeParameters.Wind"/>. The core
+        /// rope's frame is the world shifted to the start point (never rotated), so the velocity goes in unchanged, as gravity does.
+        /// </summary>
+        public Vector3 Wind
+        {
+            get => m_Wind;
+            set
+            {
+                RopeParameters.Check(value.x, RopeParameters.Wind.Row);
+                RopeParameters.Check(value.y, RopeParameters.Wind.Row);
+                RopeParameters.Check(value.z, RopeParameters.Wind.Row);
+                m_Wind = value;
+                ApplySettings();
+            }
+        }
+
         /// <summary>Neck onset radius r_min as a fraction of R, range <see cref="RopeParameters.NeckRadiusFraction"/>.</summary>
         public float NeckRadiusFraction { get => m_NeckRadiusFraction; set => SetLive(ref m_NeckRadiusFraction, value, RopeParameters.NeckRadiusFraction.Row); }
 
@@ -310,10 +355,15 @@ namespace HookeRope
             Report(RopeParameters.Clamp(ref m_Iterations, RopeParameters.Iterations.Row));
             Report(RopeParameters.Clamp(ref m_Friction, RopeParameters.Friction.Row));
             Report(RopeParameters.Clamp(ref m_AttachmentCompliance, RopeParameters.AttachmentCompliance.Row));
+            Report(RopeParameters.Clamp(ref m_ViscousDrag, RopeParameters.ViscousDrag.Row));
+            Report(RopeParameters.Clamp(ref m_DragCoefficient, RopeParameters.DragCoefficient.Row));
+            Report(RopeParameters.Clamp(ref m_SkinFriction, RopeParameters.SkinFriction.Row));
+            Report(RopeParameters.Clamp(ref m_AirDensity, RopeParameters.AirDensity.Row));
             Report(RopeParameters.Clamp(ref m_NeckRadiusFraction, RopeParameters.NeckRadiusFraction.Row));
             Report(RopeParameters.Clamp(ref m_DefectPosition, RopeParameters.DefectPosition.Row));
             Report(RopeParameters.Clamp(ref m_BreakStrain, RopeParameters.BreakStrain.Row));
             Report(RopeParameters.Clamp(ref m_BreakRadiusFraction, RopeParameters.BreakRadiusFraction.Row));
+            ClampMaterialFields();   // the material law (ElasticRope.Material.cs)
             if (!RopeParameters.Contains(RopeParameters.NeckMode.Row, (int)m_NeckMode))
             {
                 m_NeckMode = RopeParameters.NeckMode.Default;
@@ -327,6 +377,14 @@ namespace HookeRope
             Report(RopeParameters.Clamp(ref m_Gravity.x, RopeParameters.Gravity.Row));
             Report(RopeParameters.Clamp(ref m_Gravity.y, RopeParameters.Gravity.Row));
             Report(RopeParameters.Clamp(ref m_Gravity.z, RopeParameters.Gravity.Row));
+            if (!m_Wind.ToFloat3().IsFinite)
+            {
+                m_Wind = new Vector3(RopeParameters.Wind.DefaultX, RopeParameters.Wind.DefaultY, RopeParameters.Wind.DefaultZ);
+                Report("Wind was not finite; reset to (0, 0, 0) m/s.");
+            }
+            Report(RopeParameters.Clamp(ref m_Wind.x, RopeParameters.Wind.Row));
+            Report(RopeParameters.Clamp(ref m_Wind.y, RopeParameters.Wind.Row));
+            Report(RopeParameters.Clamp(ref m_Wind.z, RopeParameters.Wind.Row));
             SyncStiffness();
             if (m_Colliders == null) m_Colliders = Array.Empty<Collider>();
             if (m_Planes == null) m_Planes = Array.Empty<Transform>();
@@ -367,6 +425,12 @@ namespace HookeRope
             settings.Solver = m_Solver;
             settings.Tension = m_TensionModel;
             settings.Integrator = m_Integrator;
+            settings.ViscousDrag = m_ViscousDrag;
+            settings.DragCoefficient = m_DragCoefficient;
+            settings.SkinFriction = m_SkinFriction;
+            settings.AirDensity = m_AirDensity;
+            settings.Wind = m_Wind.ToFloat3();   // world = rope frame up to a shift: a velocity is the same in both
+            WriteMaterialSettings(settings);   // the material law (ElasticRope.Material.cs)
         }
 
         /// <summary>True when any radius-model feature (thinning, necking, fracture) is on; all off costs nothing per step.</summary>
@@ -393,7 +457,7 @@ namespace HookeRope
         }
 
 
-        /// <summary>How far the Layer Mask collider query reaches: the rest length stretched to the break strain (or doubled), plus R.</summary>
-        ColliderReach Reach => new ColliderReach(m_RestLength * (1f + (m_Fracture ? m_BreakStrain : 1f)), m_Radius);
+        /// <summary>How far the Layer Mask collider query reaches: the rest length stretched to the break strain (or doubled) and the material's reach (ultimate strain, absorber), plus R.</summary>
+        ColliderReach Reach => new ColliderReach(m_RestLength * (1f + (m_Fracture ? m_BreakStrain : 1f)) + MaterialReach, m_Radius);
     }
 }

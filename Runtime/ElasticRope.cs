@@ -88,10 +88,10 @@ namespace HookeRope
         public float PeakArrestForce => Readouts?.PeakArrestForce ?? 0f;
 
         /// <summary>True while <see cref="PeakArrestForce"/> is within EN 355's 6 kN.</summary>
-        public bool MeetsEn355 => FallArrestLimits.MeetsEn355(PeakArrestForce);
+        public bool MeetsEn355 => Readouts?.MeetsEn355 ?? true;
 
         /// <summary>True while <see cref="PeakArrestForce"/> is within ANSI Z359.13's 8 kN.</summary>
-        public bool MeetsAnsiZ359_13 => FallArrestLimits.MeetsAnsiZ359_13(PeakArrestForce);
+        public bool MeetsAnsiZ359_13 => Readouts?.MeetsAnsiZ359_13 ?? true;
 
         /// <summary>Constraint residual of the last step: largest strain error against the compliance-consistent target (dimensionless).</summary>
         public float Residual => Readouts?.Residual ?? 0f;

@@ -93,20 +93,27 @@ namespace HookeRope
                 if (material.HasProperty(s_BaseColorProperties[i])) material.SetColor(s_BaseColorProperties[i], color);
         }
 
-        /// <summary>The package's burr texture (256 × 64 RGBA32, 16 strands, polyamide beige), from the core generator; HideAndDontSave (never saved, not listed in the hierarchy), the caller destroys it.</summary>
+        /// <summary>
+        /// The package's burr texture (256 × 64 RGBA32, 16 strands, polyamide beige) with its full mip chain (9 levels), all
+        /// from the core generator (each level the 2 × 2 box average of the one above): at 1 m in a headset a fibre covers a
+        /// few pixels, and without mipmaps the sampler would skip over the triangles and shimmer. HideAndDontSave (never
+        /// saved, not listed in the hierarchy), the caller destroys it.
+        /// </summary>
         internal static Texture2D CreateBurrTexture()
         {
             const int width = 256, height = 64;
-            var pixels = new byte[BurrTextureGenerator.ByteCount(width, height)];
-            BurrTextureGenerator.Generate(width, height, 16, 1u, 214, 200, 160, pixels);
-            var texture = new Texture2D(width, height, TextureFormat.RGBA32, mipChain: false)
+            var pixels = new byte[BurrTextureGenerator.MipChainByteCount(width, height)];
+            BurrTextureGenerator.GenerateMipChain(width, height, 16, 1u, 214, 200, 160, pixels);
+            var texture = new Texture2D(width, height, TextureFormat.RGBA32, mipChain: true)
             {
                 name = "Elastic Rope Burr (generated)",
                 hideFlags = HideFlags.HideAndDontSave,
                 wrapMode = TextureWrapMode.Repeat,
-                filterMode = FilterMode.Bilinear,
+                filterMode = FilterMode.Trilinear,
             };
-            texture.SetPixelData(pixels, 0);
+            int levels = BurrTextureGenerator.MipCount(width, height);
+            for (int level = 0; level < levels; level++)
+                texture.SetPixelData(pixels, level, BurrTextureGenerator.MipOffset(width, height, level));
             texture.Apply(updateMipmaps: false, makeNoLongerReadable: true);
             return texture;
         }

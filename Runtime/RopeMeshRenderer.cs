@@ -20,7 +20,7 @@ namespace HookeRope
     /// told where that space sits relative to the rope's colliders, so the tube is drawn outside a collider it wraps)
     /// and only uploads it. The mesh is dynamic (MarkDynamic), its vertex layout is set once per topology, vertices
     /// are uploaded with SetVertexBufferData from a preallocated array (no GC per frame), indices only when the
-    /// topology changes (new segment count, a break), and the bounds are set explicitly before each vertex upload.
+    /// topology changes (new segment count, a break, a new ring budget of the adaptive rings), and the bounds are set explicitly before each vertex upload.
     /// One mesh per frame serves both eyes in single-pass instanced stereo. Keep this GameObject's scale uniform.
     /// <para>
     /// Edit mode ([ExecuteAlways]): without entering Play, every editor update draws the rope without simulating it,
@@ -168,8 +168,9 @@ namespace HookeRope
         {
             if (!Prepare(alpha, out var simulation, out var origin)) return false;
             int vertexCount = simulation.GetVertexCount(), indexCount = simulation.GetIndexCount();
-            if (_vertices.Length < vertexCount) _vertices = new TubeVertex[vertexCount];
-            if (_indices.Length < indexCount) _indices = new int[indexCount];
+            // room to spare: the core's adaptive ring budget grows in steps as the rope bends more (each growth here allocates)
+            if (_vertices.Length < vertexCount) _vertices = new TubeVertex[Math.Max(vertexCount, 2 * _vertices.Length)];
+            if (_indices.Length < indexCount) _indices = new int[Math.Max(indexCount, 2 * _indices.Length)];
             var update = simulation.FillMesh(_x, _y, _z, _vertices, _indices, RadiusScale(), LocalFrameInRope(origin));
             Upload(simulation, update, _vertices, _indices);
             return true;

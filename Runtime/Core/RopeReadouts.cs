@@ -6,7 +6,8 @@ namespace HookeRope
     /// <summary>
     /// The read-outs of a <see cref="RopeSimulation"/>, updated at its construction and at the end of every
     /// <see cref="RopeSimulation.Step"/>: tensions, elongation and strain of the intact segments, the arrest force
-    /// on a load, radii, the solver residual and the first break. The component, its inspector and the lab all read
+    /// on a load and its fall-arrest limits, the permanent set, absorber deployment and plastic work, radii, the solver
+    /// residual and the first break. The component, its inspector and the lab all read
     /// these; nobody recomputes them. Allocation-free.
     /// </summary>
     public sealed class RopeReadouts
@@ -61,6 +62,21 @@ namespace HookeRope
         /// <see cref="ArrestLoad"/>), never below <see cref="ArrestForce"/>.
         /// </summary>
         public float PeakArrestForce { get; private set; }
+
+        /// <summary>True while <see cref="PeakArrestForce"/> is within EN 355's 6 kN (<see cref="FallArrestLimits.En355"/>): the pass/fail of an energy-absorber lanyard.</summary>
+        public bool MeetsEn355 => FallArrestLimits.MeetsEn355(PeakArrestForce);
+
+        /// <summary>True while <see cref="PeakArrestForce"/> is within ANSI Z359.13's 8 kN (<see cref="FallArrestLimits.AnsiZ359_13"/>).</summary>
+        public bool MeetsAnsiZ359_13 => FallArrestLimits.MeetsAnsiZ359_13(PeakArrestForce);
+
+        /// <summary>Permanent set in metres: Σ (L_p − L) over the intact segments, the energy absorber's deployment included (<see cref="Rope.PlasticElongation"/>; 0 for an elastic rope).</summary>
+        public double PlasticElongation { get; private set; }
+
+        /// <summary>How far the energy absorber has deployed, in metres (<see cref="Rope.AbsorberDeployment"/>; 0 without one).</summary>
+        public double AbsorberDeployment { get; private set; }
+
+        /// <summary>Plastic work in joules: the energy the permanent set, the neck and the absorber took (<see cref="Rope.PlasticWork"/>).</summary>
+        public double PlasticWork { get; private set; }
 
         /// <summary>Smallest radius along the rope in metres, neck included (R without a radius model).</summary>
         public float MinRadius { get; private set; }
@@ -117,6 +133,9 @@ namespace HookeRope
             float arrestPeak = arrestLoad >= 0 ? rope.GetLoadPeakForce(arrestLoad)
                 : n > 0 && !broken[n - 1] ? substepPeaks[n - 1] : 0f;
             PeakArrestForce = Math.Max(PeakArrestForce, Math.Max(ArrestForce, arrestPeak));
+            PlasticElongation = rope.PlasticElongation;
+            AbsorberDeployment = rope.AbsorberDeployment;
+            PlasticWork = rope.PlasticWork;
             MinRadius = simulation.MinRadius;
             NeckRadius = simulation.NeckRadius;
             Residual = residual;

@@ -22,6 +22,7 @@ namespace HookeRope
         private int settingsVersion;
         private float modelRestRadius;
         private float modelRestLength;
+        private float[] radiusLengths;
 
         /// <summary>
         /// Builds a rope from <paramref name="ropeSettings"/> between world points <paramref name="start"/> and
@@ -112,7 +113,10 @@ namespace HookeRope
         public void UpdateRadii()
         {
             if (!IsModelActive) return;
-            radiusModel.Update(Rope.SegmentLengths, Rope.BrokenSegments);
+            // the elastic–plastic material drives the neck (onset, waist, break at the ultimate strain)
+            radiusModel.FollowMaterial(Rope.IsRopePlastic, Rope.NeckSoftening, Rope.Settings.UltimateStrain);
+            radiusModel.Update(RadiusLengths(), Rope.BrokenSegments);
+            if (Rope.IsRopePlastic && Rope.NeckSegment != radiusModel.DefectSegment) Rope.SetNeckSegment(radiusModel.DefectSegment);
             if (RadiusSettings.PoissonThinning || RadiusSettings.Necking)
                 Rope.SetParticleRadii(radiusModel.ParticleRadii);
             if (radiusModel.ShouldBreak)
@@ -121,6 +125,21 @@ namespace HookeRope
                 radiusModel.MarkBroken();
                 Rope.BreakSegment(defect);
             }
+        }
+
+        /// <summary>
+        /// The segment lengths the radius model thins the rope by: the rope's, except the energy absorber's segment, whose
+        /// deployed webbing unfolds without stretching (its length less the deployment). Allocation-free.
+        /// </summary>
+        private ReadOnlySpan<float> RadiusLengths()
+        {
+            ReadOnlySpan<float> lengths = Rope.SegmentLengths;
+            int absorber = Rope.AbsorberSegment;
+            if (absorber < 0) return lengths;
+            if (radiusLengths == null || radiusLengths.Length != lengths.Length) radiusLengths = new float[lengths.Length];
+            lengths.CopyTo(radiusLengths);
+            radiusLengths[absorber] = Math.Max(lengths[absorber] - (float)Rope.AbsorberDeployment, 0f);
+            return radiusLengths;
         }
 
         /// <summary>Vertices the mesh needs now (the broken segments change it).</summary>
@@ -185,6 +204,8 @@ namespace HookeRope
                 bool wasBroken = radiusModel != null && radiusModel.IsBroken;
                 radiusModel = new RadiusModel(RadiusSettings, settings.Radius, Rope.RestLengths);
                 if (wasBroken || Rope.BrokenSegmentCount > 0) radiusModel.MarkBroken();
+                Rope.SetNeckSegment(radiusModel.DefectSegment);   // the plastic material necks at the model's defect
+                if (settings.EnergyAbsorber) radiusLengths = new float[Rope.SegmentCount];
             }
             mesh.Invalidate();
         }

@@ -34,6 +34,7 @@ namespace HookeRope.Bench
                 }
                 process.Refresh();
                 row.CpuMsPerFrame = (process.TotalProcessorTime - cpuBefore).TotalMilliseconds / samples.Count;
+                row.VerticesPerRope = MeanVertices(world);
                 samples.Sort();
                 row.MsPerFrame = samples[samples.Count / 2];
                 row.MinMsPerFrame = samples[0];
@@ -41,6 +42,14 @@ namespace HookeRope.Bench
             row.NsPerUnit = row.MsPerFrame * 1e6 / row.UnitsPerFrame;
             row.LoadAverage = LoadAverage();
             return row;
+        }
+
+        /// <summary>Mean vertex count of the world's mesh slots after their last fill.</summary>
+        public static double MeanVertices(HookeRope.World.RopeWorld world)
+        {
+            double sum = 0.0;
+            for (int i = 0; i < world.Count; i++) sum += world.GetMeshSlot(i).Update.VertexCount;
+            return world.Count > 0 ? sum / world.Count : 0.0;
         }
 
         /// <summary>The rows of the table: goal at 1 and 2 workers, then rope counts 1 … 500 and segment counts 16 … 1 024 at 2 workers.</summary>

@@ -8,7 +8,8 @@ namespace HookeRope.Bench
 {
     /// <summary>
     /// <c>goal [--quick] [--instructions] [--save]</c>: prints issue 18's goal table (ropes, segments, substeps, mesh
-    /// sides, workers, ms per frame, ns per unit, instructions per unit where measured, load average) and compares
+    /// sides, workers, ms per frame, ns per unit, instructions per unit where measured, mean tube vertices per rope,
+    /// load average) and compares
     /// every row with Tools~/Bench/baseline.json, flagging rises over 10 %. <c>--instructions</c> adds callgrind
     /// counts for the goal rows (a few minutes); <c>--save</c> stores the rows as the new baseline.
     /// <c>frames R S W N</c> steps the goal scene N frames and exits (what callgrind runs).
@@ -26,8 +27,8 @@ namespace HookeRope.Bench
                               $"{System.Runtime.InteropServices.RuntimeInformation.FrameworkDescription}");
             Console.WriteLine("frame = one 1/90 s RopeWorld.StepAndFillMeshes: step + 16-sided tube mesh of every rope; unit = segment-substep");
             Console.WriteLine();
-            string header = string.Format(c, "{0,-20} {1,6} {2,8} {3,9} {4,5} {5,7} {6,10} {7,10} {8,10} {9,10} {10,11} {11,6}  {12}",
-                "row", "ropes", "segments", "substeps", "sides", "workers", "ms/frame", "min ms", "cpu ms", "ns/unit", "instr/unit", "load", "against baseline");
+            string header = string.Format(c, "{0,-20} {1,6} {2,8} {3,9} {4,5} {5,7} {6,10} {7,10} {8,10} {9,10} {10,11} {11,10} {12,6}  {13}",
+                "row", "ropes", "segments", "substeps", "sides", "workers", "ms/frame", "min ms", "cpu ms", "ns/unit", "instr/unit", "verts/rope", "load", "against baseline");
             Console.WriteLine(header);
             Console.WriteLine(new string('-', header.Length + 10));
             var rows = new List<GoalRow>();
@@ -40,9 +41,9 @@ namespace HookeRope.Bench
                 string verdict = Baseline.Compare(row, stored);
                 if (verdict.StartsWith("REGRESSION", StringComparison.Ordinal)) regressions++;
                 rows.Add(row);
-                Console.WriteLine(string.Format(c, "{0,-20} {1,6} {2,8} {3,9} {4,5} {5,7} {6,10:F3} {7,10:F3} {8,10:F3} {9,10:F1} {10,11} {11,6:F2}  {12}",
+                Console.WriteLine(string.Format(c, "{0,-20} {1,6} {2,8} {3,9} {4,5} {5,7} {6,10:F3} {7,10:F3} {8,10:F3} {9,10:F1} {10,11} {11,10:F0} {12,6:F2}  {13}",
                     row.Id, row.Ropes, row.Segments, row.Substeps, row.MeshSides, row.Workers, row.MsPerFrame, row.MinMsPerFrame, row.CpuMsPerFrame, row.NsPerUnit,
-                    row.InstructionsPerUnit > 0 ? row.InstructionsPerUnit.ToString("F0", c) : "-", row.LoadAverage, verdict));
+                    row.InstructionsPerUnit > 0 ? row.InstructionsPerUnit.ToString("F0", c) : "-", row.VerticesPerRope, row.LoadAverage, verdict));
             }
             var one = rows.Find(r => r.Id == "goal 100x64 w1");
             var two = rows.Find(r => r.Id == "goal 100x64 w2");

@@ -25,6 +25,8 @@ namespace HookeRope.Bench
         public double NsPerUnit { get; set; }
         /// <summary>Instructions per unit from callgrind (all threads), or 0 when not measured.</summary>
         public double InstructionsPerUnit { get; set; }
+        /// <summary>Mean tube-mesh vertices per rope at the end of the measurement (adaptive rings: the rope's shape sets it), or 0 when not recorded.</summary>
+        public double VerticesPerRope { get; set; }
         /// <summary>1-minute load average while measured.</summary>
         public double LoadAverage { get; set; }
 

@@ -18,8 +18,11 @@ namespace HookeRope.Bench
         /// <summary>Host step of one VR frame, s.</summary>
         public const float Frame = 1f / 90f;
 
-        /// <summary>A world of <paramref name="ropes"/> lanyards × <paramref name="segments"/> on <paramref name="workers"/> workers, warmed up by 20 frames.</summary>
-        public static RopeWorld Build(int ropes, int segments, int workers)
+        /// <summary>
+        /// A world of <paramref name="ropes"/> lanyards × <paramref name="segments"/> on <paramref name="workers"/> workers,
+        /// warmed up by 20 frames; <paramref name="adaptiveRings"/> false draws 4 rings per segment (the mesh before issue 18).
+        /// </summary>
+        public static RopeWorld Build(int ropes, int segments, int workers, bool adaptiveRings = true)
         {
             var world = new RopeWorld(workers);
             for (int r = 0; r < ropes; r++)
@@ -29,6 +32,7 @@ namespace HookeRope.Bench
                 var end = new Float3(r * 0.5f + 1.8f, 2f, 0f);
                 var simulation = new RopeSimulation(settings, start, end, new RadiusSettings());
                 simulation.MeshSettings.RadialSegments = MeshSides;
+                simulation.MeshSettings.AdaptiveRings = adaptiveRings;
                 simulation.Rope.AddPin(0, start);
                 simulation.Rope.AddPin(segments, end);
                 world.EnableMesh(world.Add(simulation));

@@ -23,7 +23,15 @@ namespace HookeRope.Bench
             return (b - a) / units;
         }
 
-        private static long Collected(int ropes, int segments, int workers, int frames, Action<string> log)
+        private static long Collected(int ropes, int segments, int workers, int frames, Action<string> log) =>
+            Collected(new[] { "frames", ropes.ToString(CultureInfo.InvariantCulture), segments.ToString(CultureInfo.InvariantCulture),
+                workers.ToString(CultureInfo.InvariantCulture), frames.ToString(CultureInfo.InvariantCulture) }, log);
+
+        /// <summary>
+        /// Instructions callgrind collected (all threads) while this tool ran with <paramref name="toolArguments"/>
+        /// (tiered compilation off), or −1 when valgrind is missing or fails.
+        /// </summary>
+        public static long Collected(string[] toolArguments, Action<string> log)
         {
             string dll = typeof(Program).Assembly.Location;
             var info = new ProcessStartInfo("valgrind")
@@ -32,10 +40,9 @@ namespace HookeRope.Bench
                 RedirectStandardOutput = true,
                 UseShellExecute = false,
             };
-            foreach (string arg in new[] { "--tool=callgrind", "--callgrind-out-file=/dev/null", "dotnet", dll, "frames",
-                         ropes.ToString(CultureInfo.InvariantCulture), segments.ToString(CultureInfo.InvariantCulture),
-                         workers.ToString(CultureInfo.InvariantCulture), frames.ToString(CultureInfo.InvariantCulture) })
+            foreach (string arg in new[] { "--tool=callgrind", "--callgrind-out-file=/dev/null", "dotnet", dll })
                 info.ArgumentList.Add(arg);
+            foreach (string arg in toolArguments) info.ArgumentList.Add(arg);
             info.Environment["DOTNET_TieredCompilation"] = "0";
             try
             {
@@ -46,7 +53,7 @@ namespace HookeRope.Bench
                     process.WaitForExit();
                     Match m = Regex.Match(errors, @"Collected\s*:\s*(\d+)");
                     long collected = m.Success ? long.Parse(m.Groups[1].Value, CultureInfo.InvariantCulture) : -1;
-                    log?.Invoke($"callgrind {ropes}x{segments} w{workers} {frames} frames: {collected} instructions");
+                    log?.Invoke("callgrind " + string.Join(" ", toolArguments) + ": " + collected + " instructions");
                     return collected;
                 }
             }

@@ -7,7 +7,9 @@ using BenchmarkDotNet.Toolchains.InProcess.Emit;
 namespace HookeRope.Bench
 {
     /// <summary>
-    /// Entry point: <c>goal …</c> and <c>frames …</c> run <see cref="GoalCommand"/> (issue 18's table of many ropes);
+    /// Entry point: <c>goal …</c> and <c>frames …</c> run <see cref="GoalCommand"/> (issue 18's table of many ropes),
+    /// <c>mesh …</c> and <c>meshframes …</c> run <see cref="MeshBench"/> (the tube mesh alone), <c>collisions …</c> and
+    /// <c>collide …</c> <see cref="CollisionCommand"/> (the collision broad phase);
     /// anything else runs BenchmarkDotNet with a short in-process job so the whole suite runs in a few minutes.
     /// </summary>
     public static class Program
@@ -16,6 +18,10 @@ namespace HookeRope.Bench
         {
             if (args.Length > 0 && args[0] == "goal") return GoalCommand.Execute(args);
             if (args.Length == 5 && args[0] == "frames") return GoalCommand.Frames(args);
+            if (args.Length > 0 && args[0] == "mesh") return MeshBench.Execute(args);
+            if (args.Length >= 6 && args[0] == "meshframes") return MeshBench.Frames(args);
+            if (args.Length > 0 && args[0] == "collisions") return CollisionCommand.Execute(args);
+            if (args.Length >= 3 && args[0] == "collide") return CollisionCommand.Collide(args);
             var job = Job.Default
                 .WithToolchain(InProcessEmitToolchain.Instance)
                 .WithWarmupCount(2)

@@ -94,7 +94,7 @@ namespace HookeRope.Lab.Tests
                 Assert.That(s.BytesPerStep, Is.EqualTo(0), s.Segments + " segments: bytes allocated per step");
             }
             Assert.That(double.IsFinite(HookeRope.Lab.Bench.MicroBench.ScalingExponent(sizes)), Is.True);
-            Assert.That(HookeRope.Lab.Bench.MicroBench.Features(true).Count, Is.EqualTo(6));
+            Assert.That(HookeRope.Lab.Bench.MicroBench.Features(true).Count, Is.EqualTo(7));
         }
     }
 }

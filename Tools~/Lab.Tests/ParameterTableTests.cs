@@ -55,6 +55,16 @@ namespace HookeRope.Lab.Tests
             [RopeParameters.BreakRadiusFraction.Name] = Rope(RopeParameters.BreakRadiusFraction.Json, s => s.Rope.BreakRadiusFraction),
             [RopeParameters.RadialSegments.Name] = Rope(RopeParameters.RadialSegments.Json, s => s.Rope.RadialSegments),
             [RopeParameters.BurrSeed.Name] = Rope(RopeParameters.BurrSeed.Json, s => s.Rope.Seed),
+            [RopeParameters.YieldStrain.Name] = Rope(RopeParameters.YieldStrain.Json, s => s.Rope.YieldStrain),
+            [RopeParameters.HardeningModulus.Name] = Rope(RopeParameters.HardeningModulus.Json, s => s.Rope.HardeningModulus),
+            [RopeParameters.NeckingStrain.Name] = Rope(RopeParameters.NeckingStrain.Json, s => s.Rope.NeckingStrain),
+            [RopeParameters.UltimateStrain.Name] = Rope(RopeParameters.UltimateStrain.Json, s => s.Rope.UltimateStrain),
+            [RopeParameters.AbsorberForce.Name] = Rope(RopeParameters.AbsorberForce.Json, s => s.Rope.AbsorberForce),
+            [RopeParameters.AbsorberDeployment.Name] = Rope(RopeParameters.AbsorberDeployment.Json, s => s.Rope.AbsorberDeployment),
+            [RopeParameters.ViscousDrag.Name] = Drag(RopeParameters.ViscousDrag.Json, s => s.Drag.ViscousDrag),
+            [RopeParameters.DragCoefficient.Name] = Drag(RopeParameters.DragCoefficient.Json, s => s.Drag.DragCoefficient),
+            [RopeParameters.SkinFriction.Name] = Drag(RopeParameters.SkinFriction.Json, s => s.Drag.SkinFriction),
+            [RopeParameters.AirDensity.Name] = Drag(RopeParameters.AirDensity.Json, s => s.Drag.AirDensity),
         };
 
         /// <summary>Rows that are not a single number, with the default the spec reads as the row's number (enum value, bool 0/1).</summary>
@@ -69,10 +79,16 @@ namespace HookeRope.Lab.Tests
             [RopeParameters.Fracture.Name] = s => s.Rope.Fracture ? 1 : 0,
             [RopeParameters.SlackKeepsRestRadius.Name] = s => s.Rope.SlackKeepsRestRadius ? 1 : 0,
             [RopeParameters.Gravity.Name] = s => double.NaN,
+            [RopeParameters.MaterialModel.Name] = s => (int)(s.Rope.IsPlastic ? HookeRope.Solver.MaterialModel.ElasticPlastic : HookeRope.Solver.MaterialModel.Elastic),
+            [RopeParameters.EnergyAbsorber.Name] = s => s.Rope.EnergyAbsorber ? 1 : 0,
+            [RopeParameters.Wind.Name] = s => double.NaN,
         };
 
         static Field Rope(string json, Func<Scenario, double> read) =>
             new Field { Prefix = "{\"rope\":{\"" + json + "\":", Suffix = "}}", Path = "$.rope." + json, Read = read };
+
+        static Field Drag(string json, Func<Scenario, double> read) =>
+            new Field { Prefix = "{\"drag\":{\"" + json + "\":", Suffix = "}}", Path = "$.drag." + json, Read = read };
 
         static Field Solver(string json, Func<Scenario, double> read) =>
             new Field { Prefix = "{\"solver\":{\"" + json + "\":", Suffix = "}}", Path = "$.solver." + json, Read = read };
@@ -123,14 +139,14 @@ namespace HookeRope.Lab.Tests
                 if (!Numeric.TryGetValue(row.Name, out var field)) continue;
                 bool integer = row.Kind == ParameterKind.Int;
                 double low = row.MinExclusive ? (integer ? row.Min + 1 : NextUp(row.Min)) : row.Min;
-                double high = row.Max;
+                double high = row.MaxExclusive ? (integer ? row.Max - 1 : NextDown(row.Max)) : row.Max;
                 foreach (double value in new[] { low, high })
                 {
                     var s = ScenarioParser.Parse(field.Prefix + Text(value) + field.Suffix);
                     Assert.That(field.Read(s), Is.EqualTo(value), row.Name + " = " + Text(value));
                 }
                 double below = row.MinExclusive ? row.Min : integer ? row.Min - 1 : row.Min - Math.Max(Math.Abs(row.Min) * 1e-3, 1e-6);
-                double above = integer ? row.Max + 1 : row.Max + Math.Max(Math.Abs(row.Max) * 1e-3, 1e-6);
+                double above = row.MaxExclusive ? row.Max : integer ? row.Max + 1 : row.Max + Math.Max(Math.Abs(row.Max) * 1e-3, 1e-6);
                 foreach (double value in new[] { below, above })
                 {
                     var e = Assert.Throws<ScenarioException>(() => ScenarioParser.Parse(field.Prefix + Text(value) + field.Suffix), row.Name + " = " + Text(value));
@@ -149,6 +165,16 @@ namespace HookeRope.Lab.Tests
         }
 
         [Test]
+        public void WindComponentsFollowTheRowAndDefaultToCalm()
+        {
+            double max = RopeParameters.Wind.Max;
+            Assert.That(new Scenario().Drag.Wind, Is.EqualTo(HookeRope.Mathematics.Float3.Zero));
+            Assert.That(ScenarioParser.Parse("{\"drag\":{\"wind\":[" + Text(max) + ",0,0]}}").Drag.Wind.X, Is.EqualTo((float)max));
+            var e = Assert.Throws<ScenarioException>(() => ScenarioParser.Parse("{\"drag\":{\"wind\":[0,0," + Text(-max * 1.01) + "]}}"));
+            Assert.That(e.Path, Does.StartWith("$.drag." + RopeParameters.Wind.Json));
+        }
+
+        [Test]
         public void EveryJsonNameIsInLabMd()
         {
             var dir = new DirectoryInfo(TestContext.CurrentContext.TestDirectory);
@@ -159,5 +185,6 @@ namespace HookeRope.Lab.Tests
         }
 
         static double NextUp(double value) => value == 0 ? 1e-9 : value + Math.Abs(value) * 1e-9;
+        static double NextDown(double value) => value == 0 ? -1e-9 : value - Math.Abs(value) * 1e-9;
     }
 }

@@ -86,11 +86,22 @@ namespace HookeRope.Lab.Tests
         public void CatenarySagAndHorizontalTension() => AssertChecks(Run("catenary"), 2);
 
         [Test]
+        public void SwingSettleDecaysAtTheDragRateAndSettlesWhenTheFormulaSays()
+        {
+            // c = 0.5 N·s/m² on μ = 0.229 kg/m: decay rate c/(2μ) = 1.091 1/s (2 %), within 1 cm at (2μ/c)·ln(1 m/1 cm) = 4.22 s (5 %)
+            var r = Run("swing-settle");
+            foreach (var c in PhysicsChecks.Evaluate(r)) TestContext.WriteLine($"{c.Quantity}: {c.Measured:G5} {c.Unit} vs {c.Expected:G5} {c.Unit} ({c.Error * 100:G3} %)");
+            AssertChecks(r, 2);
+        }
+
+        [Test]
         public void EveryBuiltInScenarioHasAPhysicsTest()
         {
             var covered = new[] { "fall-arrest", "static-hang", "spring-oscillator", "heavy-mass-ratio", "steel-cable",
                 "poisson-sweep", "necking", "fracture", "collision-bend", "catenary",
-                "spring-amplitude", "slack-bounce", "steel-snatch" };   // the last three: DissipationScenarioTests
+                "spring-amplitude", "slack-bounce", "steel-snatch",   // these three: DissipationScenarioTests
+                "plastic-necking", "absorber-arrest",               // these two: MaterialLawScenarioTests
+                "swing-settle" };
             Assert.That(BuiltInScenarios.Names, Is.EquivalentTo(covered));
         }
     }

@@ -4,7 +4,9 @@ namespace HookeRope.Geometry
 {
     /// <summary>
     /// Parallel transport of a ring frame: the normal is rotated by the smallest rotation that takes the old
-    /// tangent to the new one, so the tube does not twist; a half-turn reversal keeps the normal.
+    /// tangent to the new one, so the tube does not twist; a half-turn reversal keeps the normal. The scalar forms
+    /// are what the mesh's per-ring loop calls (no vector temporaries, the same operations in the same order as the
+    /// <see cref="Float3"/> forms, which wrap them).
     /// </summary>
     internal static class FrameTransport
     {
@@ -14,14 +16,9 @@ namespace HookeRope.Geometry
         /// </summary>
         public static Float3 Transport(Float3 normal, Float3 fromTangent, Float3 toTangent)
         {
-            float c = Float3.Dot(fromTangent, toTangent);
-            Float3 moved = normal;
-            if (c > -0.9999f)
-            {
-                Float3 k = Float3.Cross(fromTangent, toTangent);
-                moved = normal * c + Float3.Cross(k, normal) + k * (Float3.Dot(k, normal) / (1f + c));
-            }
-            return Perpendicular(moved, toTangent);
+            float x = normal.X, y = normal.Y, z = normal.Z;
+            Transport(ref x, ref y, ref z, fromTangent.X, fromTangent.Y, fromTangent.Z, toTangent.X, toTangent.Y, toTangent.Z);
+            return new Float3(x, y, z);
         }
 
         /// <summary>
@@ -30,13 +27,55 @@ namespace HookeRope.Geometry
         /// </summary>
         public static Float3 Perpendicular(Float3 candidate, Float3 tangent)
         {
-            Float3 p = candidate - tangent * Float3.Dot(candidate, tangent);
-            float lengthSquared = p.LengthSquared;
-            if (lengthSquared > 1e-8f && float.IsFinite(lengthSquared)) return p * (1f / System.MathF.Sqrt(lengthSquared));
-            float ax = System.MathF.Abs(tangent.X), ay = System.MathF.Abs(tangent.Y), az = System.MathF.Abs(tangent.Z);
-            Float3 axis = ax <= ay && ax <= az ? new Float3(1f, 0f, 0f) : (ay <= az ? new Float3(0f, 1f, 0f) : new Float3(0f, 0f, 1f));
-            Float3 q = axis - tangent * Float3.Dot(axis, tangent);
-            return q.NormalizedOr(new Float3(1f, 0f, 0f));
+            float x = candidate.X, y = candidate.Y, z = candidate.Z;
+            Perpendicular(ref x, ref y, ref z, tangent.X, tangent.Y, tangent.Z);
+            return new Float3(x, y, z);
+        }
+
+        /// <summary>Scalar <see cref="Transport(Float3, Float3, Float3)"/>: (nx, ny, nz) is transported in place from tangent f to tangent t.</summary>
+        public static void Transport(ref float nx, ref float ny, ref float nz, float fx, float fy, float fz, float tx, float ty, float tz)
+        {
+            float c = fx * tx + fy * ty + fz * tz;
+            if (c > -0.9999f)
+            {
+                // k = f × t; n' = n·c + k × n + k·(k·n)/(1 + c)
+                float kx = fy * tz - fz * ty, ky = fz * tx - fx * tz, kz = fx * ty - fy * tx;
+                float s = (kx * nx + ky * ny + kz * nz) / (1f + c);
+                float mx = nx * c + (ky * nz - kz * ny) + kx * s;
+                float my = ny * c + (kz * nx - kx * nz) + ky * s;
+                float mz = nz * c + (kx * ny - ky * nx) + kz * s;
+                nx = mx; ny = my; nz = mz;
+            }
+            Perpendicular(ref nx, ref ny, ref nz, tx, ty, tz);
+        }
+
+        /// <summary>Scalar <see cref="Perpendicular(Float3, Float3)"/>: (x, y, z) made unit and perpendicular to unit tangent t in place.</summary>
+        public static void Perpendicular(ref float x, ref float y, ref float z, float tx, float ty, float tz)
+        {
+            float d = x * tx + y * ty + z * tz;
+            float px = x - tx * d, py = y - ty * d, pz = z - tz * d;
+            float lengthSquared = px * px + py * py + pz * pz;
+            if (lengthSquared > 1e-8f && float.IsFinite(lengthSquared))
+            {
+                float inverse = 1f / System.MathF.Sqrt(lengthSquared);
+                x = px * inverse; y = py * inverse; z = pz * inverse;
+                return;
+            }
+            float ax = System.MathF.Abs(tx), ay = System.MathF.Abs(ty), az = System.MathF.Abs(tz);
+            float qx = 0f, qy = 0f, qz = 0f;
+            if (ax <= ay && ax <= az) qx = 1f; else if (ay <= az) qy = 1f; else qz = 1f;
+            float e = qx * tx + qy * ty + qz * tz;
+            qx -= tx * e; qy -= ty * e; qz -= tz * e;
+            float q2 = qx * qx + qy * qy + qz * qz;
+            if (q2 > 1e-20f)
+            {
+                float inverse = 1f / System.MathF.Sqrt(q2);
+                x = qx * inverse; y = qy * inverse; z = qz * inverse;
+            }
+            else
+            {
+                x = 1f; y = 0f; z = 0f;
+            }
         }
     }
 }

@@ -4,8 +4,11 @@ namespace HookeRope.Geometry
 {
     /// <summary>
     /// Where the rings of a tube sit along the rope: segment j holds <c>RingsIn(j)</c> rings at fractions
-    /// t = i/RingsIn(j), i = 0 … RingsIn(j) − 1, and one last ring sits at the last particle (t = 1 of the
-    /// last segment). Ring k at particle j is <c>FirstRing(j)</c>. Immutable; allocated once.
+    /// t = i/RingsIn(j), i = 0 … RingsIn(j) − 1 (or given ones), and one last ring sits at the last particle (t = 1 of
+    /// the last segment). Ring k at particle j is <c>FirstRing(j)</c>. The layouts made by the constructors and factories
+    /// are fixed; the adaptive rings (<see cref="AdaptiveRings"/>) rewrite theirs in place before a build
+    /// (<see cref="Begin"/> … <see cref="End"/>), and <see cref="Version"/> counts the rewrites that moved a ring. Storage
+    /// grows only when a layout holds more rings than any before it.
     /// </summary>
     internal sealed class RingLayout
     {
@@ -13,8 +16,12 @@ namespace HookeRope.Geometry
         public const int MaxRingsPerSegment = 1024;
 
         private readonly int[] firstRing;
-        private readonly int[] ringSegment;
-        private readonly float[] ringFraction;
+        private int[] ringSegment;
+        private float[] ringFraction;
+        private int ringCount;
+        private int writeCursor;
+        private int writeSegment;
+        private bool writeChanged;
 
         /// <summary>Uniform layout: <paramref name="ringsPerSegment"/> (1 … 1024) rings in each of <paramref name="segmentCount"/> (≥ 1) segments.</summary>
         public RingLayout(int segmentCount, int ringsPerSegment)
@@ -68,13 +75,17 @@ namespace HookeRope.Geometry
             }
             ringSegment[total] = n - 1;
             ringFraction[total] = 1f;
+            ringCount = total + 1;
         }
 
         /// <summary>Number of segments.</summary>
         public int SegmentCount => firstRing.Length - 1;
 
         /// <summary>Number of rings of the intact rope (Σ RingsIn + 1).</summary>
-        public int RingCount => ringSegment.Length;
+        public int RingCount => ringCount;
+
+        /// <summary>Incremented by every rewrite (<see cref="End"/>) that moved, added or removed a ring.</summary>
+        public int Version { get; private set; }
 
         /// <summary>Index of the ring at particle <paramref name="particle"/> (0 … SegmentCount).</summary>
         public int FirstRing(int particle) => firstRing[particle];
@@ -83,10 +94,83 @@ namespace HookeRope.Geometry
         public int RingsIn(int segment) => firstRing[segment + 1] - firstRing[segment];
 
         /// <summary>Segment of each ring.</summary>
-        public ReadOnlySpan<int> RingSegments => ringSegment;
+        public ReadOnlySpan<int> RingSegments => new ReadOnlySpan<int>(ringSegment, 0, ringCount);
 
         /// <summary>Fraction t ∈ [0, 1] of each ring inside its segment.</summary>
-        public ReadOnlySpan<float> RingFractions => ringFraction;
+        public ReadOnlySpan<float> RingFractions => new ReadOnlySpan<float>(ringFraction, 0, ringCount);
+
+        /// <summary>
+        /// A layout of one ring per segment for <paramref name="segmentCount"/> (≥ 1) segments with room for
+        /// <paramref name="capacity"/> rings, to be rewritten in place (<see cref="Begin"/>) without allocating.
+        /// </summary>
+        internal static RingLayout Rewritable(int segmentCount, int capacity)
+        {
+            var layout = new RingLayout(segmentCount, 1);
+            if (capacity > layout.ringSegment.Length)
+            {
+                Array.Resize(ref layout.ringSegment, capacity);
+                Array.Resize(ref layout.ringFraction, capacity);
+            }
+            return layout;
+        }
+
+        /// <summary>
+        /// Starts a rewrite in place: add every segment's rings in segment order with <see cref="Add"/> or
+        /// <see cref="AddUniform"/> (each segment at least one, starting at t = 0, fractions increasing below 1; the
+        /// callers guarantee it), then <see cref="End"/>.
+        /// </summary>
+        internal void Begin()
+        {
+            writeCursor = 0;
+            writeSegment = -1;
+            writeChanged = false;
+        }
+
+        /// <summary>Appends a ring of segment <paramref name="segment"/> at fraction <paramref name="t"/> ∈ [0, 1).</summary>
+        internal void Add(int segment, float t)
+        {
+            while (writeSegment < segment)
+            {
+                writeSegment++;
+                firstRing[writeSegment] = writeCursor;
+            }
+            Put(writeCursor++, segment, t);
+        }
+
+        /// <summary>Appends <paramref name="count"/> (≥ 1) evenly spaced rings of <paramref name="segment"/>, t = i/count as the uniform layouts.</summary>
+        internal void AddUniform(int segment, int count)
+        {
+            for (int i = 0; i < count; i++) Add(segment, (float)i / count);
+        }
+
+        /// <summary>Ends a rewrite with the last ring on the last particle; <see cref="Version"/> moves when a ring did.</summary>
+        internal void End()
+        {
+            int n = SegmentCount;
+            while (writeSegment < n)
+            {
+                writeSegment++;
+                firstRing[writeSegment] = writeCursor;
+            }
+            Put(writeCursor++, n - 1, 1f);
+            if (writeCursor != ringCount) writeChanged = true;
+            ringCount = writeCursor;
+            if (writeChanged) Version++;
+        }
+
+        private void Put(int k, int segment, float t)
+        {
+            if (k >= ringSegment.Length)
+            {
+                int size = Math.Max(k + 1, 2 * ringSegment.Length);
+                Array.Resize(ref ringSegment, size);
+                Array.Resize(ref ringFraction, size);
+            }
+            if (k < ringCount && ringSegment[k] == segment && ringFraction[k] == t) return;
+            writeChanged = true;
+            ringSegment[k] = segment;
+            ringFraction[k] = t;
+        }
 
         /// <summary>
         /// A layout with <paramref name="ringsPerSegment"/> rings per segment, and more in the segments that overlap

@@ -1,20 +1,32 @@
 using System;
+using HookeRope.Fracture;
 using HookeRope.Radius;
 using HookeRope.Solver;
 
 namespace HookeRope.Geometry
 {
     /// <summary>
-    /// The tube mesh of a <see cref="RopeSimulation"/>: its ring layout (refined around the Zone-mode neck), the
-    /// builder and the ring-radius scratch. Allocates only when the topology settings, the neck mode, the defect or
-    /// the zone change (or the model is rebuilt); the fill itself is allocation-free.
+    /// The tube mesh of a <see cref="RopeSimulation"/>: its ring layout (adaptive by default: placed by need before each
+    /// fill, with the Zone neck's stations while it necks; else uniform, refined around the Zone-mode neck), the builder
+    /// and the ring radii. The ring radii are recomputed only when the layout, the radius model's profile
+    /// (<see cref="RadiusModel.RadiiVersion"/>) or the radius scale changed. Allocates only when the topology settings,
+    /// the neck mode, the defect or the zone change (or the model is rebuilt), or when an adaptive layout holds more rings
+    /// than any before it; the fill itself is allocation-free.
     /// </summary>
     internal sealed class RopeMesh
     {
         private readonly RopeSimulation simulation;
         private TubeMeshBuilder builder;
+        private DanglingEnds dangling;
         private float[] ringRadii = Array.Empty<float>();
+        private int ringCount;
+        private int radiiLayoutVersion = -1;
+        private int radiiModelVersion = -1;
+        private float radiiScale = float.NaN;
+        private RadiusModel radiiModel;
+        private int filledVertices = -1, filledIndices = -1;
         private int rings;
+        private bool adaptive;
         private bool caps;
         private bool burr;
         private bool zoneLayout;
@@ -39,7 +51,13 @@ namespace HookeRope.Geometry
         internal RingLayout Layout => Ensure().Layout;
 
         /// <summary>Radius at each ring in metres after the last fill.</summary>
-        internal ReadOnlySpan<float> RingRadii => ringRadii;
+        internal ReadOnlySpan<float> RingRadii => new ReadOnlySpan<float>(ringRadii, 0, ringCount);
+
+        /// <summary>Times the ring radii were computed (a fill whose layout, model profile and scale were unchanged skips it).</summary>
+        internal int RingRadiusFills { get; private set; }
+
+        /// <summary>The builder (made on first use), for the package's tests and tools.</summary>
+        internal TubeMeshBuilder Builder => Ensure();
 
         /// <summary>Drops the builder (the model or rest geometry changed): the next call rebuilds it.</summary>
         internal void Invalidate() => builder = null;
@@ -60,21 +78,65 @@ namespace HookeRope.Geometry
             TubeVertex[] vertices, int[] indices, float radiusScale, MeshFrame? frame)
         {
             TubeMeshBuilder b = Ensure();
-            ComputeRingRadii(b.Layout, radiusScale);
             Rope rope = simulation.Rope;
+            if (b.IsAdaptive)
+                b.PlanRings(x, y, z, rope.BrokenSegments, NeckActive(), simulation.RestRadius * radiusScale,
+                    vertices?.Length ?? 0, indices?.Length ?? 0);
+            ComputeRingRadii(b.Layout, radiusScale);
+            if (rope.BrokenSegmentCount > 0) ComputeDanglingEnds(rope, radiusScale);
             b.SetContactColliders(frame.HasValue ? rope : null, frame.GetValueOrDefault());
-            return b.BuildWithRingRadii(x, y, z, rope.RestLengths, ringRadii, rope.BrokenSegments, vertices, indices);
+            TubeMeshUpdate update = b.BuildWithRingRadii(x, y, z, rope.RestLengths, RingRadii, rope.BrokenSegments, vertices, indices);
+            // an adaptive budget that moved: the counts differ from the last fill's (re-query sizes, re-upload indices)
+            if (filledVertices >= 0 && (update.VertexCount != filledVertices || update.IndexCount != filledIndices)) TopologyVersion++;
+            filledVertices = update.VertexCount;
+            filledIndices = update.IndexCount;
+            return update;
         }
 
+        /// <summary>Each broken segment's halves: relaxed, half its rest length each, ending on the cut's radius (caller units).</summary>
+        private void ComputeDanglingEnds(Rope rope, float radiusScale)
+        {
+            RadiusModel model = simulation.RadiusModel;
+            bool modelled = model != null && model.IsActive;
+            float r = simulation.RestRadius;
+            ReadOnlySpan<bool> broken = rope.BrokenSegments;
+            ReadOnlySpan<float> rest = rope.RestLengths;
+            for (int j = 0; j < broken.Length; j++)
+            {
+                if (!broken[j]) continue;
+                float lower = modelled ? model.BrokenEndRadius(j, false) : r;
+                float upper = modelled ? model.BrokenEndRadius(j, true) : r;
+                dangling.Set(j, DanglingEnds.Cut * rest[j] * radiusScale, lower * radiusScale, upper * radiusScale);
+            }
+        }
+
+        /// <summary>True while the Zone neck is present (its stations are then drawn by an adaptive layout).</summary>
+        private bool NeckActive() => zoneLayout && simulation.RadiusModel != null && simulation.RadiusModel.NeckDepth > 0f;
+
+        /// <summary>The radius at every ring (m, times <paramref name="radiusScale"/>), skipped while the layout, the model's profile and the scale are unchanged.</summary>
         private void ComputeRingRadii(RingLayout layout, float radiusScale)
         {
             RadiusModel model = simulation.RadiusModel;
-            if (model != null && model.IsActive)
-                model.FillRadiiAt(layout.RingSegments, layout.RingFractions, ringRadii);
+            bool modelled = model != null && model.IsActive;
+            int count = layout.RingCount;
+            int modelVersion = modelled ? model.RadiiVersion : -2;
+            if (count == ringCount && layout.Version == radiiLayoutVersion && modelVersion == radiiModelVersion
+                && ReferenceEquals(model, radiiModel) && radiusScale.Equals(radiiScale))
+                return;
+            if (ringRadii.Length < count) ringRadii = new float[Math.Max(count, 2 * ringRadii.Length)];
+            RingRadiusFills++;
+            ringCount = count;
+            radiiLayoutVersion = layout.Version;
+            radiiModelVersion = modelVersion;
+            radiiModel = model;
+            radiiScale = radiusScale;
+            var radii = new Span<float>(ringRadii, 0, count);
+            if (modelled)
+                model.FillRadiiAt(layout.RingSegments, layout.RingFractions, radii);
             else
-                Array.Fill(ringRadii, simulation.RestRadius);
+                radii.Fill(simulation.RestRadius);
             if (radiusScale != 1f)
-                for (int k = 0; k < ringRadii.Length; k++) ringRadii[k] *= radiusScale;
+                for (int k = 0; k < count; k++) radii[k] *= radiusScale;
         }
 
         private TubeMeshBuilder Ensure()
@@ -87,6 +149,7 @@ namespace HookeRope.Geometry
             float zoneDiameters = r == null ? 0f : r.NeckZoneDiameters;
             if (builder != null
                 && builder.RadialSegments == s.RadialSegments
+                && adaptive == s.AdaptiveRings
                 && rings == s.RingsPerSegment
                 && caps == s.CapEnds
                 && burr == s.Burr.Enabled
@@ -97,6 +160,7 @@ namespace HookeRope.Geometry
                 && fibreDensity == s.Burr.FibreDensity)
                 return builder;
             rings = s.RingsPerSegment;
+            adaptive = s.AdaptiveRings;
             caps = s.CapEnds;
             burr = s.Burr.Enabled;
             zoneLayout = zoneNeck;
@@ -105,11 +169,28 @@ namespace HookeRope.Geometry
             restRadius = simulation.RestRadius;
             fibreDensity = s.Burr.FibreDensity;
             Rope rope = simulation.Rope;
-            RingLayout layout = zoneNeck
-                ? RingLayout.Adapted(rope.RestLengths, s.RingsPerSegment, model.DefectRestArc, model.NeckZoneRestLength, simulation.RestRadius, s.RadialSegments)
-                : new RingLayout(rope.SegmentCount, s.RingsPerSegment);
-            builder = new TubeMeshBuilder(s, layout, restRadius);
-            ringRadii = new float[layout.RingCount];
+            if (s.AdaptiveRings)
+            {
+                RingLayout stations = zoneNeck
+                    ? RingLayout.Adapted(rope.RestLengths, 1, model.DefectRestArc, model.NeckZoneRestLength, simulation.RestRadius, s.RadialSegments)
+                    : null;
+                builder = TubeMeshBuilder.Adaptive(s, rope.SegmentCount, restRadius, stations);
+                builder.PrimeRings(rope.PositionX, rope.PositionY, rope.PositionZ, rope.BrokenSegments, NeckActive(), simulation.RestRadius);
+            }
+            else
+            {
+                RingLayout layout = zoneNeck
+                    ? RingLayout.Adapted(rope.RestLengths, s.RingsPerSegment, model.DefectRestArc, model.NeckZoneRestLength, simulation.RestRadius, s.RadialSegments)
+                    : new RingLayout(rope.SegmentCount, s.RingsPerSegment);
+                builder = new TubeMeshBuilder(s, layout, restRadius);
+            }
+            dangling = new DanglingEnds(rope.SegmentCount);
+            builder.SetDanglingEnds(dangling);
+            ringRadii = new float[builder.MostRings];
+            ringCount = 0;
+            radiiLayoutVersion = -1;
+            filledVertices = -1;
+            filledIndices = -1;
             TopologyVersion++;
             return builder;
         }

@@ -8,36 +8,70 @@ namespace HookeRope.Geometry
     /// Builds the procedural tube mesh of a rope into caller-owned buffers: rings along a Catmull–Rom curve through
     /// the particles, oriented by parallel transport, normals tilted for a varying radius, v along the rest arc
     /// length, flat caps at intact ends, and at each broken end a cap plus seeded burr strands. Vertex positions are
-    /// relative to the first particle. The index buffer is rewritten only when the topology changes (first build,
-    /// a newly broken segment, another index array). Allocation-free after construction.
+    /// relative to the first particle. The rings sit where a <see cref="RingLayout"/> says: a fixed one, or one the
+    /// adaptive rings (<see cref="AdaptiveRings"/>) rewrite by need before each build (<see cref="PlanRings"/>).
+    /// <para>
+    /// Incremental: a build recomputes only what its inputs changed (compared bitwise with the last build's): nothing
+    /// when positions, radii, rest lengths, layout, settings, broken flags and buffers are all the same (the last
+    /// result is returned and no vertex is written); only the radius work (ring radii, slopes, the rings, caps and
+    /// strands whose radius or slope changed) when just the radii changed; the whole tube otherwise (and always while
+    /// colliders push the rings). The result is bit-identical to a full recompute (tested), provided the caller does
+    /// not write into the vertex buffer between builds (another buffer forces a full build). The index buffer is
+    /// rewritten only when the topology changes (first build, a newly broken segment, a piece's ring count, another
+    /// index array). Allocation-free after construction (the storage grows only when an adaptive layout holds more rings
+    /// than any before it).
+    /// </para>
     /// </summary>
-    internal sealed class TubeMeshBuilder
+    internal sealed partial class TubeMeshBuilder
     {
         private const float MaxSlope = 10f;
 
+        /// <summary>What a build recomputed.</summary>
+        internal enum BuildKind
+        {
+            /// <summary>Everything (centres, frames, radii, rings, caps, strands, bounds).</summary>
+            Full,
+            /// <summary>Only the radius work: positions were unchanged.</summary>
+            RadiiOnly,
+            /// <summary>Nothing: every input was unchanged, the last result was returned.</summary>
+            Skipped,
+        }
+
         private readonly TubeMeshSettings settings;
         private readonly RingLayout layout;
+        private readonly AdaptiveRings adaptive;
         private readonly int radial;
         private readonly bool capEnds;
         private readonly bool burrEnabled;
         private readonly int fibreCount;
         private readonly float[] cos;
         private readonly float[] sin;
-        private readonly float[] w0, w1, w2, w3;
-        private readonly Float3[] centers;
-        private readonly Float3[] tangents;
-        private readonly Float3[] normals;
-        private readonly float[] ringRadii;
-        private readonly float[] ringV;
-        private readonly float[] slopes;
+        private readonly float[] around;
         private readonly double[] restArc;
         private readonly float[] particleRadii;
+        private float[] segmentRingRadii = Array.Empty<float>();
         private readonly bool[] lastBroken;
+        private readonly int[] pieceRings;
+        private readonly int spareFirst;
+        private readonly int[] stations;
+        private DanglingEnds dangling;
+        private readonly float[] lastDangling;
+        private readonly float[] lastX, lastY, lastZ, lastRest;
+        private float[] lastRadii = Array.Empty<float>();
         private int[] lastIndices;
+        private TubeVertex[] lastVertices;
+        private int lastLayoutVersion = -1;
+        private int ringVLayoutVersion = -1;
+        private float lastVScale = float.NaN;
+        private BurrKey lastBurr;
+        private bool haveLast;
+        private TubeMeshUpdate lastUpdate;
+        private Bounds strandBounds;
         private Float3 frameOrigin;
         private HookeRope.Solver.Rope contactRope;
         private MeshFrame contactFrame;
         private bool topologyValid;
+        private bool lastContacts;
 
         /// <summary>Builder for <paramref name="segmentCount"/> segments (≥ 1) with settings.RingsPerSegment rings in each.</summary>
         public TubeMeshBuilder(TubeMeshSettings settings, int segmentCount)
@@ -50,46 +84,81 @@ namespace HookeRope.Geometry
         /// <paramref name="restRadius"/> (m; 0 = unknown), which sets the number of burr fibres at a broken end.
         /// </summary>
         internal TubeMeshBuilder(TubeMeshSettings settings, RingLayout layout, float restRadius = 0f)
+            : this(settings, layout, null, restRadius)
+        {
+        }
+
+        private TubeMeshBuilder(TubeMeshSettings settings, RingLayout layout, AdaptiveRings adaptive, float restRadius)
         {
             this.settings = settings ?? throw new ArgumentNullException(nameof(settings));
             this.layout = layout ?? throw new ArgumentNullException(nameof(layout));
+            this.adaptive = adaptive;
             radial = settings.RadialSegments;
             capEnds = settings.CapEnds;
             burrEnabled = settings.Burr.Enabled;
             fibreCount = settings.Burr.FibreCount(restRadius, radial);
             cos = new float[radial + 1];
             sin = new float[radial + 1];
+            around = new float[radial + 1];
             for (int i = 0; i <= radial; i++)
             {
                 double angle = 2.0 * Math.PI * i / radial;
                 cos[i] = i == radial ? 1f : (float)Math.Cos(angle);
                 sin[i] = i == radial ? 0f : (float)Math.Sin(angle);
+                around[i] = (float)i / radial;
             }
-            int rings = layout.RingCount;
-            w0 = new float[rings]; w1 = new float[rings]; w2 = new float[rings]; w3 = new float[rings];
-            ReadOnlySpan<float> fractions = layout.RingFractions;
-            for (int k = 0; k < rings; k++)
-            {
-                float t = fractions[k], t2 = t * t, t3 = t2 * t;
-                w0[k] = 0.5f * (-t + 2f * t2 - t3);
-                w1[k] = 0.5f * (2f - 5f * t2 + 3f * t3);
-                w2[k] = 0.5f * (t + 4f * t2 - 3f * t3);
-                w3[k] = 0.5f * (-t2 + t3);
-            }
-            centers = new Float3[rings];
-            tangents = new Float3[rings];
-            normals = new Float3[rings];
-            ringRadii = new float[rings];
-            ringV = new float[rings];
-            slopes = new float[rings];
             int n = layout.SegmentCount;
             restArc = new double[n + 1];
             particleRadii = new float[n + 1];
             lastBroken = new bool[n];
+            pieceRings = new int[n];
+            lastX = new float[n + 1];
+            lastY = new float[n + 1];
+            lastZ = new float[n + 1];
+            lastRest = new float[n];
+            AllocateParticleFrames(n);
+            // the rings of a broken end's dangling half go to spare slots after the layout's (one half at a time)
+            int spare = adaptive != null ? adaptive.MostRingsInOneSegment + 1 : DanglingEnds.MaxRingCount(layout);
+            spareFirst = adaptive != null ? adaptive.MostRings : layout.RingCount;
+            stations = new int[spare];
+            lastDangling = new float[3 * n];
+            EnsureRingStorage(spareFirst + spare);
         }
 
-        /// <summary>The ring layout (ring count and stations).</summary>
+        /// <summary>
+        /// An adaptive builder: rings placed by need (<see cref="AdaptiveRings"/>, tolerance from the side count) for a
+        /// rope of <paramref name="segmentCount"/> segments and rest radius <paramref name="restRadius"/> (m; 0 = unknown,
+        /// sets the burr fibres); <paramref name="neckStations"/> (null = none) holds a Zone neck's stations
+        /// (<see cref="RingLayout.Adapted"/> with one ring per segment), drawn while the neck is active. Call
+        /// <see cref="PlanRings"/> before each build.
+        /// </summary>
+        internal static TubeMeshBuilder Adaptive(TubeMeshSettings settings, int segmentCount, float restRadius, RingLayout neckStations)
+        {
+            if (settings == null) throw new ArgumentNullException(nameof(settings));
+            var rings = new AdaptiveRings(segmentCount, settings.RadialSegments, neckStations);
+            return new TubeMeshBuilder(settings, RingLayout.Rewritable(segmentCount, rings.MostRings), rings, restRadius);
+        }
+
+        /// <summary>The ring layout of the next build (for an adaptive builder, the one <see cref="PlanRings"/> last wrote).</summary>
         internal RingLayout Layout => layout;
+
+        /// <summary>Most rings <see cref="Layout"/> can hold without growing (an adaptive builder's storage is made for it).</summary>
+        internal int MostRings => adaptive?.MostRings ?? layout.RingCount;
+
+        /// <summary>True when the rings are placed by need before each build.</summary>
+        internal bool IsAdaptive => adaptive != null;
+
+        /// <summary>Adaptive builders: incremented whenever the counts the builder reports change (a topology change ahead); 0 otherwise.</summary>
+        internal int BudgetVersion => adaptive?.BudgetVersion ?? 0;
+
+        /// <summary>Adaptive builders: the tolerance of the drawn surface as a fraction of the drawn radius; 0 otherwise.</summary>
+        internal float ToleranceFraction => adaptive?.ToleranceFraction ?? 0f;
+
+        /// <summary>What the last build recomputed.</summary>
+        internal BuildKind LastBuild { get; private set; }
+
+        /// <summary>Tests only: every build recomputes everything (the reference the incremental builds are compared with).</summary>
+        internal bool AlwaysRebuild { get; set; }
 
         /// <summary>Number of rope segments.</summary>
         public int SegmentCount => layout.SegmentCount;
@@ -113,18 +182,73 @@ namespace HookeRope.Geometry
             contactFrame = frame;
         }
 
-        /// <summary>Vertices the mesh needs for these broken-segment flags (empty = intact rope).</summary>
+        /// <summary>
+        /// Draw each broken segment's two halves (null = none: the pieces end at the particles): every piece with a broken
+        /// end continues straight along its end tangent by the half's drawn length to the cut, with the half's rings, and
+        /// the cap and burr sit on the cut. Changes the vertex and index counts.
+        /// </summary>
+        internal void SetDanglingEnds(DanglingEnds ends)
+        {
+            if (ends != null && ends.SegmentCount != layout.SegmentCount)
+                throw new ArgumentException("ends must hold SegmentCount = " + layout.SegmentCount + " segments.", nameof(ends));
+            if (ReferenceEquals(ends, dangling)) return;
+            dangling = ends;
+            topologyValid = false;
+        }
+
+        /// <summary>
+        /// Vertices the mesh needs for these broken-segment flags (empty = intact rope). For an adaptive builder: what its
+        /// next build will use when the buffers hold it (the budgets may have grown or shrunk with the last build).
+        /// </summary>
         public int GetVertexCount(ReadOnlySpan<bool> brokenSegments)
         {
-            Count(brokenSegments, out int vertices, out _, out _);
+            Count(brokenSegments, true, out int vertices, out _, out _);
             return vertices;
         }
 
         /// <summary>Indices the mesh needs for these broken-segment flags (tube, caps and burr strands).</summary>
         public int GetIndexCount(ReadOnlySpan<bool> brokenSegments)
         {
-            Count(brokenSegments, out _, out int tube, out int burr);
+            Count(brokenSegments, true, out _, out int tube, out int burr);
             return tube + burr;
+        }
+
+        /// <summary>
+        /// Adaptive builders: sets the ring budgets to what these positions need (no hysteresis) and places the rings, so the
+        /// first build needs no catching up. <paramref name="radius"/> is the drawn radius (m, in the positions' frame)
+        /// the tolerance refers to; <paramref name="neckActive"/> draws the neck's stations.
+        /// </summary>
+        internal void PrimeRings(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z, ReadOnlySpan<bool> brokenSegments,
+            bool neckActive, float radius)
+        {
+            if (adaptive == null) return;
+            CheckPositions(x, y, z, brokenSegments);
+            adaptive.Prime(x, y, z, brokenSegments, neckActive, radius);
+            adaptive.Plan(x, y, z, brokenSegments, neckActive, radius, true, layout);
+            EnsureRingStorage(layout.RingCount);
+        }
+
+        /// <summary>
+        /// Adaptive builders: places this build's rings by need for positions <paramref name="x"/>, <paramref name="y"/>,
+        /// <paramref name="z"/> (m) and drawn radius <paramref name="radius"/> (m, in the positions' frame), taking the
+        /// budgets the counts reported when buffers of <paramref name="vertexCapacity"/> vertices and
+        /// <paramref name="indexCapacity"/> indices hold them (else the last build's). Call before filling the ring radii
+        /// for <see cref="Layout"/> and building; returns true when the layout changed. Fixed layouts: returns false.
+        /// </summary>
+        internal bool PlanRings(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z, ReadOnlySpan<bool> brokenSegments,
+            bool neckActive, float radius, int vertexCapacity, int indexCapacity)
+        {
+            if (adaptive == null) return false;
+            CheckPositions(x, y, z, brokenSegments);
+            bool takeNext = true;
+            if (adaptive.BudgetPending(brokenSegments))
+            {
+                Count(brokenSegments, true, out int vertices, out int tube, out int burr);
+                takeNext = vertices <= vertexCapacity && tube + burr <= indexCapacity;
+            }
+            bool changed = adaptive.Plan(x, y, z, brokenSegments, neckActive, radius, takeNext, layout);
+            EnsureRingStorage(layout.RingCount);
+            return changed;
         }
 
         /// <summary>
@@ -150,14 +274,16 @@ namespace HookeRope.Geometry
                 else r = segmentRadii[i < n ? i : n - 1];
                 particleRadii[i] = r;
             }
+            int rings = layout.RingCount;
+            if (segmentRingRadii.Length < rings) segmentRingRadii = new float[rings];
             ReadOnlySpan<int> segments = layout.RingSegments;
             ReadOnlySpan<float> fractions = layout.RingFractions;
-            for (int k = 0; k < ringRadii.Length; k++)
+            for (int k = 0; k < rings; k++)
             {
                 int j = segments[k];
-                ringRadii[k] = particleRadii[j] + (particleRadii[j + 1] - particleRadii[j]) * fractions[k];
+                segmentRingRadii[k] = particleRadii[j] + (particleRadii[j + 1] - particleRadii[j]) * fractions[k];
             }
-            return BuildWithRingRadii(x, y, z, restLengths, ringRadii, brokenSegments, vertices, indices);
+            return BuildWithRingRadii(x, y, z, restLengths, new ReadOnlySpan<float>(segmentRingRadii, 0, rings), brokenSegments, vertices, indices);
         }
 
         /// <summary>
@@ -171,83 +297,199 @@ namespace HookeRope.Geometry
             TubeVertex[] vertices, int[] indices)
         {
             int n = layout.SegmentCount;
-            if (x.Length != n + 1 || y.Length != n + 1 || z.Length != n + 1)
-                throw new ArgumentException("x, y and z must each hold SegmentCount + 1 = " + (n + 1) + " positions.", nameof(x));
+            CheckPositions(x, y, z, brokenSegments);
             if (restLengths.Length != n)
                 throw new ArgumentException("restLengths must hold SegmentCount = " + n + " values.", nameof(restLengths));
-            if (radii.Length != layout.RingCount)
-                throw new ArgumentException("radii must hold RingCount = " + layout.RingCount + " values.", nameof(radii));
-            bool hasBroken = brokenSegments.Length > 0;
-            if (hasBroken && brokenSegments.Length != n)
-                throw new ArgumentException("brokenSegments must be empty or hold SegmentCount = " + n + " flags.", nameof(brokenSegments));
+            int rings = layout.RingCount;
+            if (radii.Length != rings)
+                throw new ArgumentException("radii must hold RingCount = " + rings + " values.", nameof(radii));
             if (vertices == null) throw new ArgumentNullException(nameof(vertices));
             if (indices == null) throw new ArgumentNullException(nameof(indices));
-            Count(brokenSegments, out int vertexCount, out int tubeIndexCount, out int burrIndexCount);
+            Count(brokenSegments, false, out int vertexCount, out int tubeIndexCount, out int burrIndexCount);
             if (vertices.Length < vertexCount)
                 throw new ArgumentException("vertices must hold at least GetVertexCount = " + vertexCount + " vertices.", nameof(vertices));
             if (indices.Length < tubeIndexCount + burrIndexCount)
                 throw new ArgumentException("indices must hold at least GetIndexCount = " + (tubeIndexCount + burrIndexCount) + " indices.", nameof(indices));
+            EnsureRingStorage(rings);
 
-            bool topologyChanged = !topologyValid || !ReferenceEquals(indices, lastIndices);
-            for (int j = 0; j < n; j++)
-            {
-                bool b = hasBroken && brokenSegments[j];
-                if (b != lastBroken[j]) { topologyChanged = true; lastBroken[j] = b; }
-            }
-
-            double arc = 0.0;
-            restArc[0] = 0.0;
-            for (int j = 0; j < n; j++) { arc += restLengths[j]; restArc[j + 1] = arc; }
+            bool topologyChanged = TopologyMoved(brokenSegments, indices);
+            bool layoutMoved = layout.Version != lastLayoutVersion;
+            bool restMoved = !Same(restLengths, lastRest);
             float vScale = settings.VPerMetre;
-            ReadOnlySpan<int> ringSegments = layout.RingSegments;
-            ReadOnlySpan<float> ringFractions = layout.RingFractions;
-            for (int k = 0; k < ringV.Length; k++)
+            var burr = new BurrKey(settings.Burr);
+            bool contacts = contactRope != null && contactRope.ColliderCount > 0;
+            bool dangles = dangling != null && HasBroken(brokenSegments);
+            bool danglingMoved = dangles && DanglingMoved(brokenSegments);
+            bool full = AlwaysRebuild || !haveLast || topologyChanged || layoutMoved || restMoved || contacts || lastContacts || danglingMoved
+                        || !vScale.Equals(lastVScale) || !burr.Equals(lastBurr) || !ReferenceEquals(vertices, lastVertices);
+            bool positionsMoved = full || !Same(x, lastX) || !Same(y, lastY) || !Same(z, lastZ);
+            bool radiiMoved = full || !Same(radii, new ReadOnlySpan<float>(lastRadii, 0, rings));
+            if (!positionsMoved && !radiiMoved)
             {
-                int j = ringSegments[k];
-                double s = restArc[j] + (restArc[j + 1] - restArc[j]) * ringFractions[k];
-                ringV[k] = (float)(s * vScale);
-                float r = radii[k];
-                ringRadii[k] = float.IsFinite(r) && r > 1e-6f ? r : 1e-6f;
+                LastBuild = BuildKind.Skipped;
+                return Unchanged(lastUpdate);
+            }
+            // the dangling halves share the spare ring slots within a build: with them a change always rebuilds all
+            bool radiiOnly = !positionsMoved && !dangles && CentresKeep(radii, brokenSegments);
+            LastBuild = radiiOnly ? BuildKind.RadiiOnly : BuildKind.Full;
+
+            radii.CopyTo(lastRadii);
+            lastContacts = contacts;
+            if (!radiiOnly)
+            {
+                x.CopyTo(lastX); y.CopyTo(lastY); z.CopyTo(lastZ);
+                restLengths.CopyTo(lastRest);
+                if (layoutMoved || restMoved || !vScale.Equals(lastVScale) || ringVLayoutVersion != layout.Version) ComputeRingV(restLengths, vScale);
+                lastLayoutVersion = layout.Version;
+                lastVScale = vScale;
+                lastBurr = burr;
+                lastVertices = vertices;
+                // Geometry is computed relative to the first particle (precision far from the origin); the vertices get
+                // the origin back as they are written, so vertices and bounds are in the frame of the input positions.
+                Float3 origin = new Float3(x[0], y[0], z[0]);
+                if (!origin.IsFinite) origin = Float3.Zero;
+                frameOrigin = origin;
             }
 
-            // Geometry is computed relative to the first particle (precision far from the origin); SetVertex adds the
-            // origin back, so vertices and bounds are in the frame of the input positions.
-            Float3 origin = new Float3(x[0], y[0], z[0]);
-            if (!origin.IsFinite) origin = Float3.Zero;
-            frameOrigin = origin;
             var bounds = new Bounds(true);
+            bool rewriteStrands = !radiiOnly || StrandEndsMove(radii, brokenSegments);
+            if (rewriteStrands) strandBounds = new Bounds(true);
             int vertexBase = 0;
             int tubeCursor = 0;
             int burrCursor = tubeIndexCount;
             int segment = 0;
             while (NextPiece(brokenSegments, n, ref segment, out int a, out int b))
             {
-                BuildPiece(a, b, x, y, z, origin, vertices, indices, topologyChanged,
+                BuildPiece(a, b, x, y, z, radii, vertices, indices, topologyChanged, radiiOnly, rewriteStrands,
                     ref vertexBase, ref tubeCursor, ref burrCursor, ref bounds);
             }
+            bounds.Add(strandBounds);
 
             if (topologyChanged) { lastIndices = indices; topologyValid = true; }
+            haveLast = true;
             if (vertexCount == 0) bounds = new Bounds(false);
-            else { bounds.Min = bounds.Min + origin; bounds.Max = bounds.Max + origin; }
-            return new TubeMeshUpdate(vertexCount, tubeIndexCount + burrIndexCount, tubeIndexCount, topologyChanged,
+            else { bounds.Min = bounds.Min + frameOrigin; bounds.Max = bounds.Max + frameOrigin; }
+            lastUpdate = new TubeMeshUpdate(vertexCount, tubeIndexCount + burrIndexCount, tubeIndexCount, topologyChanged,
                 bounds.Min, bounds.Max);
+            return lastUpdate;
+        }
+
+        private static bool HasBroken(ReadOnlySpan<bool> brokenSegments)
+        {
+            for (int j = 0; j < brokenSegments.Length; j++) if (brokenSegments[j]) return true;
+            return false;
+        }
+
+        /// <summary>True when a broken segment's half length or cut radii changed since the last build (and records them).</summary>
+        private bool DanglingMoved(ReadOnlySpan<bool> brokenSegments)
+        {
+            bool moved = false;
+            for (int j = 0; j < brokenSegments.Length; j++)
+            {
+                if (!brokenSegments[j]) continue;
+                moved |= Record(3 * j, dangling.HalfLength(j)) | Record(3 * j + 1, dangling.CutRadius(j, false)) | Record(3 * j + 2, dangling.CutRadius(j, true));
+            }
+            return moved;
+        }
+
+        private bool Record(int slot, float value)
+        {
+            bool moved = BitConverter.SingleToInt32Bits(lastDangling[slot]) != BitConverter.SingleToInt32Bits(value);
+            lastDangling[slot] = value;
+            return moved;
+        }
+
+        private static TubeMeshUpdate Unchanged(TubeMeshUpdate last) =>
+            new TubeMeshUpdate(last.VertexCount, last.IndexCount, last.TubeIndexCount, false, last.BoundsMin, last.BoundsMax);
+
+        private void CheckPositions(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z, ReadOnlySpan<bool> brokenSegments)
+        {
+            int n = layout.SegmentCount;
+            if (x.Length != n + 1 || y.Length != n + 1 || z.Length != n + 1)
+                throw new ArgumentException("x, y and z must each hold SegmentCount + 1 = " + (n + 1) + " positions.", nameof(x));
+            if (brokenSegments.Length > 0 && brokenSegments.Length != n)
+                throw new ArgumentException("brokenSegments must be empty or hold SegmentCount = " + n + " flags.", nameof(brokenSegments));
+        }
+
+        /// <summary>True when the index buffer must be rewritten; records the broken flags and the piece ring counts.</summary>
+        private bool TopologyMoved(ReadOnlySpan<bool> brokenSegments, int[] indices)
+        {
+            int n = layout.SegmentCount;
+            bool hasBroken = brokenSegments.Length > 0;
+            bool changed = !topologyValid || !ReferenceEquals(indices, lastIndices);
+            for (int j = 0; j < n; j++)
+            {
+                bool b = hasBroken && brokenSegments[j];
+                if (b != lastBroken[j]) { changed = true; lastBroken[j] = b; }
+            }
+            int segment = 0;
+            while (NextPiece(brokenSegments, n, ref segment, out int a, out int end))
+            {
+                int rings = layout.FirstRing(end) - layout.FirstRing(a) + 1;
+                if (pieceRings[a] != rings) { changed = true; pieceRings[a] = rings; }
+            }
+            return changed;
         }
 
         /// <summary>
-        /// Finds the next intact piece at or after <paramref name="segment"/>: segments [a, b) with no break
-        /// among them (an empty span means nothing is broken). Advances <paramref name="segment"/> to b.
+        /// True when new <paramref name="radii"/> leave the ring centres as they are: the last full build pushed no ring
+        /// forward for being closer than 1e-3·r to the one before, and none would be with these radii.
         /// </summary>
-        private static bool NextPiece(ReadOnlySpan<bool> brokenSegments, int n, ref int segment, out int a, out int b)
+        private bool CentresKeep(ReadOnlySpan<float> radii, ReadOnlySpan<bool> brokenSegments)
         {
-            bool hasBroken = brokenSegments.Length > 0;
-            while (segment < n && hasBroken && brokenSegments[segment]) segment++;
-            a = segment;
-            while (segment < n && !(hasBroken && brokenSegments[segment])) segment++;
-            b = segment;
-            return a < n;
+            int n = layout.SegmentCount;
+            int segment = 0;
+            while (NextPiece(brokenSegments, n, ref segment, out int a, out int b))
+            {
+                int first = layout.FirstRing(a), last = layout.FirstRing(b);
+                for (int k = first + 1; k <= last; k++)
+                {
+                    float minimum = 1e-3f * Clamped(radii[k]) + 1e-7f;
+                    if (!(spacing2[k] >= minimum * minimum)) return false;
+                }
+            }
+            return true;
         }
 
-        private void Count(ReadOnlySpan<bool> brokenSegments, out int vertexCount, out int tubeIndexCount, out int burrIndexCount)
+        /// <summary>True when a broken end's ring radius changes (its cap and strands move).</summary>
+        private bool StrandEndsMove(ReadOnlySpan<float> radii, ReadOnlySpan<bool> brokenSegments)
+        {
+            if (!burrEnabled || brokenSegments.Length == 0) return false;
+            int n = layout.SegmentCount;
+            int segment = 0;
+            while (NextPiece(brokenSegments, n, ref segment, out int a, out int b))
+            {
+                int first = layout.FirstRing(a), last = layout.FirstRing(b);
+                if (a > 0 && BitConverter.SingleToInt32Bits(Clamped(radii[first])) != BitConverter.SingleToInt32Bits(ringRadii[first])) return true;
+                if (b < n && BitConverter.SingleToInt32Bits(Clamped(radii[last])) != BitConverter.SingleToInt32Bits(ringRadii[last])) return true;
+            }
+            return false;
+        }
+
+        private static float Clamped(float r) => float.IsFinite(r) && r > 1e-6f ? r : 1e-6f;
+
+        private void ComputeRingV(ReadOnlySpan<float> restLengths, float vScale)
+        {
+            int n = layout.SegmentCount;
+            double arc = 0.0;
+            restArc[0] = 0.0;
+            for (int j = 0; j < n; j++) { arc += restLengths[j]; restArc[j + 1] = arc; }
+            ReadOnlySpan<int> ringSegments = layout.RingSegments;
+            ReadOnlySpan<float> ringFractions = layout.RingFractions;
+            for (int k = 0; k < ringSegments.Length; k++)
+            {
+                int j = ringSegments[k];
+                double s = restArc[j] + (restArc[j + 1] - restArc[j]) * ringFractions[k];
+                ringV[k] = (float)(s * vScale);
+            }
+            ringVLayoutVersion = layout.Version;
+        }
+
+        private static bool NextPiece(ReadOnlySpan<bool> brokenSegments, int n, ref int segment, out int a, out int b) =>
+            RopePieces.Next(brokenSegments, n, ref segment, out a, out b);
+
+        /// <summary>Vertex and index counts: of the layout (<paramref name="reported"/> false) or of the next adaptive budgets.</summary>
+        private void Count(ReadOnlySpan<bool> brokenSegments, bool reported, out int vertexCount, out int tubeIndexCount, out int burrIndexCount)
         {
             int n = layout.SegmentCount;
             bool hasBroken = brokenSegments.Length > 0;
@@ -257,101 +499,146 @@ namespace HookeRope.Geometry
             int segment = 0;
             while (NextPiece(brokenSegments, n, ref segment, out int a, out int b))
             {
-                int rings = layout.FirstRing(b) - layout.FirstRing(a) + 1;
+                int rings = reported && adaptive != null
+                    ? adaptive.RingsOfPiece(a, brokenSegments)
+                    : layout.FirstRing(b) - layout.FirstRing(a) + 1;
                 vertexCount += rings * (radial + 1);
                 tubeIndexCount += (rings - 1) * radial * 6;
-                CountEnd(a > 0, ref vertexCount, ref tubeIndexCount, ref burrIndexCount);
-                CountEnd(b < n, ref vertexCount, ref tubeIndexCount, ref burrIndexCount);
+                CountEnd(a > 0, a > 0 ? DanglingRingCount(a - 1, true, reported) : 0, ref vertexCount, ref tubeIndexCount, ref burrIndexCount);
+                CountEnd(b < n, b < n ? DanglingRingCount(b, false, reported) : 0, ref vertexCount, ref tubeIndexCount, ref burrIndexCount);
             }
         }
 
-        private void CountEnd(bool brokenEnd, ref int vertexCount, ref int tubeIndexCount, ref int burrIndexCount)
+        /// <summary>
+        /// Rings the dangling half of broken segment j on the given side adds (0 without dangling ends): of the layout, or,
+        /// reported by an adaptive builder, of what its next layout holds there (the neck's stations or one ring).
+        /// </summary>
+        private int DanglingRingCount(int segment, bool upper, bool reported)
         {
+            if (dangling == null) return 0;
+            if (!reported || adaptive == null) return DanglingEnds.RingCount(layout, segment, upper);
+            return adaptive.KeepsNeckStations(segment) ? DanglingEnds.RingCount(adaptive.NeckStations, segment, upper) : 1;
+        }
+
+        private void CountEnd(bool brokenEnd, int danglingRings, ref int vertexCount, ref int tubeIndexCount, ref int burrIndexCount)
+        {
+            vertexCount += danglingRings * (radial + 1);
+            tubeIndexCount += danglingRings * radial * 6;
             if (brokenEnd || capEnds) { vertexCount += radial + 1; tubeIndexCount += radial * 3; }
             if (brokenEnd && burrEnabled) { vertexCount += fibreCount * 9; burrIndexCount += fibreCount * 9; }
         }
 
         private void BuildPiece(int a, int b, ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
-            Float3 origin, TubeVertex[] vertices, int[] indices, bool writeIndices,
+            ReadOnlySpan<float> radii, TubeVertex[] vertices, int[] indices, bool writeIndices, bool radiiOnly, bool rewriteStrands,
             ref int vertexBase, ref int tubeCursor, ref int burrCursor, ref Bounds bounds)
         {
             int n = layout.SegmentCount;
             int first = layout.FirstRing(a);
             int last = layout.FirstRing(b);
-            ComputeCenters(a, b, first, last, x, y, z, origin);
-            if (contactRope != null && contactRope.ColliderCount > 0) PushCentersOutOfColliders(first, last);
-            ComputeFrames(first, last);
-            ComputeSlopes(first, last);
+            // which rings must be written: all of them after new positions, the changed ones after new radii only
+            if (radiiOnly)
+            {
+                UpdateRadii(first, last, radii);
+            }
+            else
+            {
+                for (int k = first; k <= last; k++) { ringRadii[k] = Clamped(radii[k]); dirty[k] = true; }
+                ComputeCenters(a, b, first, last, x, y, z);
+                if (contactRope != null && contactRope.ColliderCount > 0) PushCentersOutOfColliders(first, last);
+                ComputeFrames(a, b, first, last);
+                ComputeSlopes(first, last);
+            }
 
             bool startBroken = a > 0, endBroken = b < n;
-            if (startBroken || capEnds) WriteCap(first, false, vertices, indices, writeIndices, ref vertexBase, ref tubeCursor, ref bounds);
-            if (startBroken && burrEnabled) WriteStrands(first, false, 2 * (a - 1) + 1, vertices, indices, writeIndices, ref vertexBase, ref burrCursor, ref bounds);
-
             int stride = radial + 1;
+            // a broken start: the dangling upper half of segment a − 1 (spare slots, tip last), drawn from its tip inward
+            int startRings = startBroken && dangling != null ? PlaceDanglingHalf(a - 1, true, first) : 0;
+            int startTip = startRings > 0 ? spareFirst + startRings - 1 : first;
+            bool startDirty = startRings > 0 || dirty[first];
+            if (startBroken || capEnds) WriteCap(startTip, false, vertices, indices, writeIndices, startDirty, ref vertexBase, ref tubeCursor, ref bounds);
+            if (startBroken && burrEnabled) WriteStrands(startTip, false, 2 * (a - 1) + 1, vertices, indices, writeIndices, rewriteStrands, ref vertexBase, ref burrCursor);
+            for (int q = startRings - 1; q >= 0; q--)
+            {
+                WriteRing(spareFirst + q, vertices.AsSpan(vertexBase, stride));
+                AddRingBounds(spareFirst + q, ref bounds);
+                WriteStrip(vertexBase, vertexBase + stride, indices, writeIndices, ref tubeCursor);
+                vertexBase += stride;
+            }
+
             for (int k = first; k <= last; k++)
             {
                 int ringBase = vertexBase + (k - first) * stride;
-                WriteRing(k, vertices, ringBase, ref bounds);
-                if (writeIndices && k < last)
-                {
-                    for (int i = 0; i < radial; i++)
-                    {
-                        int a0 = ringBase + i, a1 = a0 + 1, b0 = a0 + stride, b1 = b0 + 1;
-                        indices[tubeCursor++] = a0; indices[tubeCursor++] = a1; indices[tubeCursor++] = b0;
-                        indices[tubeCursor++] = a1; indices[tubeCursor++] = b1; indices[tubeCursor++] = b0;
-                    }
-                }
-                else if (k < last)
-                {
-                    tubeCursor += radial * 6;
-                }
+                if (dirty[k]) WriteRing(k, vertices.AsSpan(ringBase, stride));
+                AddRingBounds(k, ref bounds);
+                if (k < last) WriteStrip(ringBase, ringBase + stride, indices, writeIndices, ref tubeCursor);
             }
             vertexBase += (last - first + 1) * stride;
 
-            if (endBroken || capEnds) WriteCap(last, true, vertices, indices, writeIndices, ref vertexBase, ref tubeCursor, ref bounds);
-            if (endBroken && burrEnabled) WriteStrands(last, true, 2 * b, vertices, indices, writeIndices, ref vertexBase, ref burrCursor, ref bounds);
+            // a broken end: the dangling lower half of segment b, from the last ring out to its tip
+            int endRings = endBroken && dangling != null ? PlaceDanglingHalf(b, false, last) : 0;
+            for (int q = 0; q < endRings; q++)
+            {
+                WriteStrip(vertexBase - stride, vertexBase, indices, writeIndices, ref tubeCursor);
+                WriteRing(spareFirst + q, vertices.AsSpan(vertexBase, stride));
+                AddRingBounds(spareFirst + q, ref bounds);
+                vertexBase += stride;
+            }
+            int endTip = endRings > 0 ? spareFirst + endRings - 1 : last;
+            bool endDirty = endRings > 0 || dirty[last];
+            if (endBroken || capEnds) WriteCap(endTip, true, vertices, indices, writeIndices, endDirty, ref vertexBase, ref tubeCursor, ref bounds);
+            if (endBroken && burrEnabled) WriteStrands(endTip, true, 2 * b, vertices, indices, writeIndices, rewriteStrands, ref vertexBase, ref burrCursor);
         }
 
-        private void ComputeCenters(int a, int b, int first, int last, ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z, Float3 origin)
+        /// <summary>Two triangles per radial step between the rings whose first vertices are baseA and baseB (B further along v).</summary>
+        private void WriteStrip(int baseA, int baseB, int[] indices, bool writeIndices, ref int tubeCursor)
         {
-            ReadOnlySpan<int> ringSegments = layout.RingSegments;
-            ReadOnlySpan<float> ringFractions = layout.RingFractions;
-            Float3 fallbackDirection = (Particle(b, x, y, z, origin) - Particle(a, x, y, z, origin)).NormalizedOr(new Float3(1f, 0f, 0f));
-            if (!fallbackDirection.IsFinite) fallbackDirection = new Float3(1f, 0f, 0f);
-            for (int k = first; k <= last; k++)
+            if (!writeIndices) { tubeCursor += radial * 6; return; }
+            for (int i = 0; i < radial; i++)
             {
-                int j = ringSegments[k];
-                float t = ringFractions[k];
-                Float3 c;
-                if (k == last)
-                {
-                    c = Particle(b, x, y, z, origin);
-                }
-                else if (t == 0f)
-                {
-                    c = Particle(j, x, y, z, origin);
-                }
-                else
-                {
-                    Float3 p1 = Particle(j, x, y, z, origin);
-                    Float3 p2 = Particle(j + 1, x, y, z, origin);
-                    Float3 p0 = j - 1 >= a ? Particle(j - 1, x, y, z, origin) : p1 * 2f - p2;
-                    Float3 p3 = j + 2 <= b ? Particle(j + 2, x, y, z, origin) : p2 * 2f - p1;
-                    c = p0 * w0[k] + p1 * w1[k] + p2 * w2[k] + p3 * w3[k];
-                }
-                if (!c.IsFinite) c = k > first ? centers[k - 1] : Float3.Zero;
-                if (k > first)
-                {
-                    Float3 previous = centers[k - 1];
-                    float minimum = 1e-3f * ringRadii[k] + 1e-7f;
-                    if ((c - previous).LengthSquared < minimum * minimum)
-                    {
-                        Float3 direction = k > first + 1 ? (previous - centers[k - 2]).NormalizedOr(fallbackDirection) : fallbackDirection;
-                        c = previous + direction * minimum;
-                    }
-                }
-                centers[k] = c;
+                int a0 = baseA + i, a1 = a0 + 1, b0 = baseB + i, b1 = b0 + 1;
+                indices[tubeCursor++] = a0; indices[tubeCursor++] = a1; indices[tubeCursor++] = b0;
+                indices[tubeCursor++] = a1; indices[tubeCursor++] = b1; indices[tubeCursor++] = b0;
             }
+        }
+
+        /// <summary>
+        /// Places the rings of a dangling half of broken segment <paramref name="segment"/> (upper: the half on particle
+        /// segment + 1, joined to the piece's first ring; else on particle segment, joined to its last ring) in the spare
+        /// slots, from the joint ring <paramref name="joint"/> out to the cut: straight along the joint's tangent (outward),
+        /// with its frame, by each station's share of the half's drawn length; radii from the layout rings and the cut
+        /// radius; v on the rest arc. Returns the number of rings (the last is the cut).
+        /// </summary>
+        private int PlaceDanglingHalf(int segment, bool upper, int joint)
+        {
+            int count = DanglingEnds.Stations(layout, segment, upper, stations);
+            Float3 c = centers[joint], t = tangents[joint];
+            Float3 outward = upper ? -t : t;
+            float half = dangling.HalfLength(segment);
+            float cutV = (float)((restArc[segment] + (restArc[segment + 1] - restArc[segment]) * DanglingEnds.Cut) * settings.VPerMetre);
+            ReadOnlySpan<float> fractions = layout.RingFractions;
+            for (int q = 0; q < count; q++)
+            {
+                int k = stations[q], slot = spareFirst + q;
+                float fraction = k >= 0 ? fractions[k] : DanglingEnds.Cut;
+                float r = k >= 0 ? lastRadii[k] : dangling.CutRadius(segment, upper);
+                centers[slot] = c + outward * (half * DanglingEnds.ShareOfHalf(fraction, upper));
+                tangents[slot] = t;
+                normals[slot] = normals[joint];
+                ringRadii[slot] = Clamped(r);
+                ringV[slot] = k >= 0 ? ringV[k] : cutV;
+            }
+            if (contactRope != null && contactRope.ColliderCount > 0) PushCentersOutOfColliders(spareFirst, spareFirst + count - 1);
+            // dr/ds along the straight half (the joint ring keeps the slope its piece gave it)
+            for (int q = 0; q < count; q++)
+            {
+                int slot = spareFirst + q;
+                int behind = q > 0 ? slot - 1 : joint, ahead = q < count - 1 ? slot + 1 : slot;
+                float distance = (centers[ahead] - centers[behind]).Length;
+                float slope = distance > 1e-12f ? (ringRadii[ahead] - ringRadii[behind]) / distance : 0f;
+                if (upper) slope = -slope;
+                slopes[slot] = slope < -MaxSlope ? -MaxSlope : (slope > MaxSlope ? MaxSlope : slope);
+            }
+            return count;
         }
 
         private void PushCentersOutOfColliders(int first, int last)
@@ -380,86 +667,21 @@ namespace HookeRope.Geometry
             }
         }
 
-        private void ComputeFrames(int first, int last)
-        {
-            Float3 previousTangent = (centers[last] - centers[first]).NormalizedOr(new Float3(1f, 0f, 0f));
-            for (int k = first; k <= last; k++)
-            {
-                Float3 ahead = k < last ? centers[k + 1] : centers[k];
-                Float3 behind = k > first ? centers[k - 1] : centers[k];
-                Float3 t = (ahead - behind).NormalizedOr(Float3.Zero);
-                if (t.LengthSquared == 0f && k < last) t = (centers[k + 1] - centers[k]).NormalizedOr(Float3.Zero);
-                if (t.LengthSquared == 0f && k > first) t = (centers[k] - centers[k - 1]).NormalizedOr(Float3.Zero);
-                if (t.LengthSquared == 0f) t = previousTangent;
-                tangents[k] = t;
-                if (k == first)
-                {
-                    normals[k] = FrameTransport.Perpendicular(normals[k], t);
-                }
-                else
-                {
-                    normals[k] = FrameTransport.Transport(normals[k - 1], tangents[k - 1], t);
-                }
-                previousTangent = t;
-            }
-        }
-
-        private void ComputeSlopes(int first, int last)
-        {
-            for (int k = first; k <= last; k++)
-            {
-                int ahead = k < last ? k + 1 : k;
-                int behind = k > first ? k - 1 : k;
-                float distance = (centers[ahead] - centers[behind]).Length;
-                float slope = distance > 1e-12f ? (ringRadii[ahead] - ringRadii[behind]) / distance : 0f;
-                if (!(slope >= -MaxSlope)) slope = -MaxSlope;
-                if (slope > MaxSlope) slope = MaxSlope;
-                slopes[k] = slope;
-            }
-        }
-
-        private void WriteRing(int k, TubeVertex[] vertices, int ringBase, ref Bounds bounds)
-        {
-            Float3 c = centers[k], t = tangents[k], nrm = normals[k];
-            Float3 bin = Float3.Cross(t, nrm);
-            float r = ringRadii[k];
-            float slope = slopes[k];
-            float inverse = 1f / MathF.Sqrt(1f + slope * slope);
-            float v = ringV[k];
-            for (int i = 0; i <= radial; i++)
-            {
-                Float3 radialDirection = nrm * cos[i] + bin * sin[i];
-                Float3 around = bin * cos[i] - nrm * sin[i];
-                Float3 p = c + radialDirection * r;
-                Float3 normal = (radialDirection - t * slope) * inverse;
-                ref TubeVertex vertex = ref vertices[ringBase + i];
-                vertex.PX = p.X + frameOrigin.X; vertex.PY = p.Y + frameOrigin.Y; vertex.PZ = p.Z + frameOrigin.Z;
-                vertex.NX = normal.X; vertex.NY = normal.Y; vertex.NZ = normal.Z;
-                vertex.TX = around.X; vertex.TY = around.Y; vertex.TZ = around.Z; vertex.TW = 1f;
-                vertex.U = (float)i / radial;
-                vertex.V = v;
-            }
-            // The ring lies on the circle of radius r around c in the plane normal to t: per axis c ± r·sqrt(1 − t²).
-            float ex = r * MathF.Sqrt(MathF.Max(0f, 1f - t.X * t.X)) * 1.000001f;
-            float ey = r * MathF.Sqrt(MathF.Max(0f, 1f - t.Y * t.Y)) * 1.000001f;
-            float ez = r * MathF.Sqrt(MathF.Max(0f, 1f - t.Z * t.Z)) * 1.000001f;
-            bounds.Add(new Float3(c.X - ex, c.Y - ey, c.Z - ez));
-            bounds.Add(new Float3(c.X + ex, c.Y + ey, c.Z + ez));
-        }
-
-        private void WriteCap(int k, bool atEnd, TubeVertex[] vertices, int[] indices, bool writeIndices,
+        private void WriteCap(int k, bool atEnd, TubeVertex[] vertices, int[] indices, bool writeIndices, bool rewrite,
             ref int vertexBase, ref int tubeCursor, ref Bounds bounds)
         {
             Float3 c = centers[k], t = tangents[k], nrm = normals[k];
             Float3 bin = Float3.Cross(t, nrm);
             Float3 outward = atEnd ? t : -t;
             float r = ringRadii[k];
-            SetVertex(vertices, vertexBase, c, outward, nrm, 0.5f, 0.5f);
+            if (rewrite) SetVertex(vertices, vertexBase, c, outward, nrm, 0.5f, 0.5f);
             bounds.Add(c);
             for (int i = 0; i < radial; i++)
             {
-                Float3 p = c + (nrm * cos[i] + bin * sin[i]) * r;
-                SetVertex(vertices, vertexBase + 1 + i, p, outward, nrm, 0.5f + 0.5f * cos[i], 0.5f + 0.5f * sin[i]);
+                // the rim is the ring's own vertex i (same expression, so the cap and the tube share exact positions)
+                float dx = nrm.X * cos[i] + bin.X * sin[i], dy = nrm.Y * cos[i] + bin.Y * sin[i], dz = nrm.Z * cos[i] + bin.Z * sin[i];
+                var p = new Float3(c.X + dx * r, c.Y + dy * r, c.Z + dz * r);
+                if (rewrite) SetVertex(vertices, vertexBase + 1 + i, p, outward, nrm, 0.5f + 0.5f * cos[i], 0.5f + 0.5f * sin[i]);
                 bounds.Add(p);
             }
             if (writeIndices)
@@ -480,44 +702,47 @@ namespace HookeRope.Geometry
             vertexBase += radial + 1;
         }
 
-        private void WriteStrands(int k, bool atEnd, int endKey, TubeVertex[] vertices, int[] indices, bool writeIndices,
-            ref int vertexBase, ref int burrCursor, ref Bounds bounds)
+        private void WriteStrands(int k, bool atEnd, int endKey, TubeVertex[] vertices, int[] indices, bool writeIndices, bool rewrite,
+            ref int vertexBase, ref int burrCursor)
         {
-            BurrSettings burr = settings.Burr;
-            Float3 c = centers[k], t = tangents[k], nrm = normals[k];
-            Float3 bin = Float3.Cross(t, nrm);
-            Float3 outward = atEnd ? t : -t;
-            float r = ringRadii[k];
-            // Triangular bases of circumradius ≈ sqrt(π/N)·r: together 1.3× the cut's area, so the fibres hide the cap.
-            float baseRadius = r * MathF.Sqrt(MathF.PI / fibreCount);
-            float reach = MathF.Max(0f, r - 0.5f * baseRadius);
-            (int Step, int Offset) shuffle = BurrStrand.ShuffleOf(burr.Seed, endKey, fibreCount);
-            for (int f = 0; f < fibreCount; f++)
+            if (rewrite)
             {
-                BurrStrand fibre = BurrStrand.Draw(burr, endKey, f, fibreCount, shuffle);
-                float ca = MathF.Cos(fibre.Angle), sa = MathF.Sin(fibre.Angle);
-                Float3 radialDirection = nrm * ca + bin * sa;
-                Float3 around = bin * ca - nrm * sa;
-                Float3 centre = c + radialDirection * (fibre.Radial * reach);
-                Float3 b0 = centre + Corner(nrm, bin, fibre.BaseTurn) * baseRadius;
-                Float3 b1 = centre + Corner(nrm, bin, fibre.BaseTurn + 2.0943951f) * baseRadius;
-                Float3 b2 = centre + Corner(nrm, bin, fibre.BaseTurn + 4.1887902f) * baseRadius;
-                if (!atEnd) { Float3 swap = b0; b0 = b1; b1 = swap; }
-                Float3 side = radialDirection * MathF.Cos(fibre.Twist) + around * MathF.Sin(fibre.Twist);
-                Float3 direction = outward * MathF.Cos(fibre.Tilt) + side * MathF.Sin(fibre.Tilt);
-                Float3 tip = centre + direction * (fibre.Length * 2f * r);
-                int v = vertexBase + f * 9;
-                WriteStrandFace(vertices, v, b0, b1, tip, outward, ref bounds);
-                WriteStrandFace(vertices, v + 3, b1, b2, tip, outward, ref bounds);
-                WriteStrandFace(vertices, v + 6, b2, b0, tip, outward, ref bounds);
-                if (writeIndices)
+                BurrSettings burr = settings.Burr;
+                Float3 c = centers[k], t = tangents[k], nrm = normals[k];
+                Float3 bin = Float3.Cross(t, nrm);
+                Float3 outward = atEnd ? t : -t;
+                float r = ringRadii[k];
+                // Triangular bases of circumradius ≈ sqrt(π/N)·r: together 1.3× the cut's area, so the fibres hide the cap.
+                float baseRadius = r * MathF.Sqrt(MathF.PI / fibreCount);
+                float reach = MathF.Max(0f, r - 0.5f * baseRadius);
+                (int Step, int Offset) shuffle = BurrStrand.ShuffleOf(burr.Seed, endKey, fibreCount);
+                for (int f = 0; f < fibreCount; f++)
                 {
-                    for (int q = 0; q < 9; q++) indices[burrCursor++] = v + q;
+                    BurrStrand fibre = BurrStrand.Draw(burr, endKey, f, fibreCount, shuffle);
+                    float ca = MathF.Cos(fibre.Angle), sa = MathF.Sin(fibre.Angle);
+                    Float3 radialDirection = nrm * ca + bin * sa;
+                    Float3 aroundDirection = bin * ca - nrm * sa;
+                    Float3 centre = c + radialDirection * (fibre.Radial * reach);
+                    Float3 b0 = centre + Corner(nrm, bin, fibre.BaseTurn) * baseRadius;
+                    Float3 b1 = centre + Corner(nrm, bin, fibre.BaseTurn + 2.0943951f) * baseRadius;
+                    Float3 b2 = centre + Corner(nrm, bin, fibre.BaseTurn + 4.1887902f) * baseRadius;
+                    if (!atEnd) { Float3 swap = b0; b0 = b1; b1 = swap; }
+                    Float3 side = radialDirection * MathF.Cos(fibre.Twist) + aroundDirection * MathF.Sin(fibre.Twist);
+                    Float3 direction = outward * MathF.Cos(fibre.Tilt) + side * MathF.Sin(fibre.Tilt);
+                    Float3 tip = centre + direction * (fibre.Length * 2f * r);
+                    int v = vertexBase + f * 9;
+                    WriteStrandFace(vertices, v, b0, b1, tip, outward, ref strandBounds);
+                    WriteStrandFace(vertices, v + 3, b1, b2, tip, outward, ref strandBounds);
+                    WriteStrandFace(vertices, v + 6, b2, b0, tip, outward, ref strandBounds);
                 }
-                else
-                {
-                    burrCursor += 9;
-                }
+            }
+            if (writeIndices)
+            {
+                for (int q = 0; q < fibreCount * 9; q++) indices[burrCursor++] = vertexBase + q;
+            }
+            else
+            {
+                burrCursor += fibreCount * 9;
             }
             vertexBase += fibreCount * 9;
         }
@@ -545,8 +770,28 @@ namespace HookeRope.Geometry
             vertex.U = u; vertex.V = v;
         }
 
-        private static Float3 Particle(int i, ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z, Float3 origin) =>
-            new Float3(x[i] - origin.X, y[i] - origin.Y, z[i] - origin.Z);
+        private static bool Same(ReadOnlySpan<float> now, ReadOnlySpan<float> before) => RopePieces.SameBits(now, before);
+
+        /// <summary>The burr values read at every build (the rest of <see cref="BurrSettings"/> is topology).</summary>
+        private readonly struct BurrKey : IEquatable<BurrKey>
+        {
+            private readonly uint seed;
+            private readonly float length, spread, splay;
+
+            public BurrKey(BurrSettings burr)
+            {
+                seed = burr.Seed;
+                length = burr.FibreLength;
+                spread = burr.FibreLengthSpread;
+                splay = burr.Spread;
+            }
+
+            public bool Equals(BurrKey other) => seed == other.seed && length.Equals(other.length) && spread.Equals(other.spread) && splay.Equals(other.splay);
+
+            public override bool Equals(object obj) => obj is BurrKey other && Equals(other);
+
+            public override int GetHashCode() => (int)seed;
+        }
 
         private struct Bounds
         {
@@ -564,6 +809,13 @@ namespace HookeRope.Geometry
             {
                 Min = new Float3(MathF.Min(Min.X, p.X), MathF.Min(Min.Y, p.Y), MathF.Min(Min.Z, p.Z));
                 Max = new Float3(MathF.Max(Max.X, p.X), MathF.Max(Max.Y, p.Y), MathF.Max(Max.Z, p.Z));
+            }
+
+            public void Add(Bounds other)
+            {
+                if (other.Min.X > other.Max.X) return;
+                Add(other.Min);
+                Add(other.Max);
             }
         }
     }

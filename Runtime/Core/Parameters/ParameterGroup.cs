@@ -19,5 +19,7 @@ namespace HookeRope
         Fracture,
         /// <summary>The procedural tube mesh and its material.</summary>
         Mesh,
+        /// <summary>Viscous and air drag, air density and wind.</summary>
+        Drag,
     }
 }

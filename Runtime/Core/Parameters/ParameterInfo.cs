@@ -11,7 +11,7 @@ namespace HookeRope
     {
         internal ParameterInfo(string name, string label, string unit, ParameterGroup group, ParameterKind kind,
             double min, double max, double defaultValue, string tooltip, string json, bool inInspector,
-            bool minExclusive = false, bool allowsPositiveInfinity = false, float[] defaultComponents = null)
+            bool minExclusive = false, bool allowsPositiveInfinity = false, float[] defaultComponents = null, bool maxExclusive = false)
         {
             Name = name;
             Label = label;
@@ -25,6 +25,7 @@ namespace HookeRope
             Json = json;
             InInspector = inInspector;
             MinExclusive = minExclusive;
+            MaxExclusive = maxExclusive;
             AllowsPositiveInfinity = allowsPositiveInfinity;
             DefaultComponents = defaultComponents ?? Array.Empty<float>();
         }
@@ -47,7 +48,7 @@ namespace HookeRope
         /// <summary>Lower bound in <see cref="Unit"/> (exclusive when <see cref="MinExclusive"/>); per component for vectors and colours.</summary>
         public double Min { get; }
 
-        /// <summary>Upper bound in <see cref="Unit"/> (inclusive); per component for vectors and colours.</summary>
+        /// <summary>Upper bound in <see cref="Unit"/> (exclusive when <see cref="MaxExclusive"/>); per component for vectors and colours.</summary>
         public double Max { get; }
 
         /// <summary>Default value in <see cref="Unit"/> (the component and prefab value); NaN for vectors and colours.</summary>
@@ -68,10 +69,13 @@ namespace HookeRope
         /// <summary>True when <see cref="Min"/> itself is not allowed (the range is (Min, Max]).</summary>
         public bool MinExclusive { get; }
 
+        /// <summary>True when <see cref="Max"/> itself is not allowed (the range is [Min, Max) or (Min, Max)).</summary>
+        public bool MaxExclusive { get; }
+
         /// <summary>True when +∞ is accepted by <see cref="RopeParameters.Check(float, ParameterInfo)"/> (inextensible); the inspector range stays finite.</summary>
         public bool AllowsPositiveInfinity { get; }
 
-        /// <summary>The range as text, e.g. "[0.01, 10000] m" or "(0, 1] m".</summary>
+        /// <summary>The range as text, e.g. "[0.01, 10000] m", "(0, 1] m" or "(0, 1)".</summary>
         public string RangeText => RopeParameters.FormatRange(this);
 
         /// <inheritdoc />

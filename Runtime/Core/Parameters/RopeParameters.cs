@@ -5,6 +5,7 @@ using ConstraintSolverKind = HookeRope.Solver.ConstraintSolverKind;
 using NeckModeKind = HookeRope.Radius.NeckMode;
 using TensionModelKind = HookeRope.Solver.TensionModel;
 using TimeIntegratorKind = HookeRope.Solver.TimeIntegrator;
+using MaterialModelKind = HookeRope.Solver.MaterialModel;
 
 namespace HookeRope
 {
@@ -183,6 +184,194 @@ namespace HookeRope
             public const float Default = 0.002f;
             /// <summary>The table row.</summary>
             public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Material, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
+        }
+
+        // ---- Material law (issue 15): plasticity, necking, energy absorber ----------------------------------
+
+        /// <summary>The constitutive law of the segments: elastic, or elastic–plastic with necking.</summary>
+        public static class MaterialModel
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(MaterialModel);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Material model";
+            /// <summary>Unit (none).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name (elastic or elastic-plastic).</summary>
+            public const string Json = "materialModel";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Elastic: the force follows the stretch at any strain (bungee, fitness cord). Elastic-Plastic: yields at the yield strain, keeps a permanent set, necks at the necking strain and softens to zero force at the ultimate strain, where it breaks (lanyard, cable under overload).";
+            /// <summary>Default.</summary>
+            public const MaterialModelKind Default = MaterialModelKind.Elastic;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Material, ParameterKind.Enum, (int)MaterialModelKind.Elastic, (int)MaterialModelKind.ElasticPlastic, (int)Default, Tooltip, Json, true);
+        }
+
+        /// <summary>Elastic strain at yield ε_y (dimensionless); the yield force is E·A·ε_y.</summary>
+        public static class YieldStrain
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(YieldStrain);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Yield strain";
+            /// <summary>Unit (dimensionless).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "yieldStrain";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Elastic-Plastic: strain l/L − 1 (dimensionless) at which the rope yields; the yield force is E·A·ε_y (N). At most the necking strain, below the ultimate strain. Polyamide ≈ 0.1, steel ≈ 0.002.";
+            /// <summary>Exclusive lower bound.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound.</summary>
+            public const float Max = 1000f;
+            /// <summary>Default.</summary>
+            public const float Default = 0.1f;
+            /// <summary>The lower bound is exclusive.</summary>
+            public const bool MinExclusive = true;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Material, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true, minExclusive: true);
+        }
+
+        /// <summary>Hardening modulus H in newtons: force gained per unit plastic strain (0 = a plateau).</summary>
+        public static class HardeningModulus
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(HardeningModulus);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Hardening modulus";
+            /// <summary>Unit.</summary>
+            public const string Unit = "N";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "hardeningModulus";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Elastic-Plastic: force gained per unit plastic strain after yield, H (N); 0 = a plateau (the force stops growing). Must not be negative: softening is the neck's.";
+            /// <summary>Lower bound in N.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound in N.</summary>
+            public const float Max = 1e12f;
+            /// <summary>Default in N.</summary>
+            public const float Default = 5000f;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Material, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
+        }
+
+        /// <summary>Strain at which the neck forms (the plastic strain localises at the defect; the force peaks there).</summary>
+        public static class NeckingStrain
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(NeckingStrain);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Necking strain";
+            /// <summary>Unit (dimensionless).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "neckingStrain";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Elastic-Plastic: strain l/L − 1 (dimensionless) on the hardening curve at which the neck forms at the defect and softens (the force peaks here). In [yield strain, ultimate strain).";
+            /// <summary>Exclusive lower bound.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound.</summary>
+            public const float Max = 1000f;
+            /// <summary>Default.</summary>
+            public const float Default = 0.45f;
+            /// <summary>The lower bound is exclusive.</summary>
+            public const bool MinExclusive = true;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Material, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true, minExclusive: true);
+        }
+
+        /// <summary>Ultimate strain ε_u of the neck segment (elongation at break): its force has fallen to zero.</summary>
+        public static class UltimateStrain
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(UltimateStrain);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Ultimate strain";
+            /// <summary>Unit (dimensionless).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "ultimateStrain";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Elastic-Plastic: strain l/L − 1 (dimensionless) of the neck segment at which its force has fallen to zero and the rope breaks (elongation at break). Above the necking strain.";
+            /// <summary>Exclusive lower bound.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound.</summary>
+            public const float Max = 1000f;
+            /// <summary>Default.</summary>
+            public const float Default = 0.6f;
+            /// <summary>The lower bound is exclusive.</summary>
+            public const bool MinExclusive = true;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Material, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true, minExclusive: true);
+        }
+
+        /// <summary>An energy absorber (tear webbing) in series with the rope's last segment.</summary>
+        public static class EnergyAbsorber
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(EnergyAbsorber);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Energy absorber";
+            /// <summary>Unit (none).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "energyAbsorber";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "An energy absorber (tear webbing) at the end of the rope, in series with its elasticity: it deploys at the plateau force until its deployment length is used, then the webbing's elasticity takes over. EN 355: at most 6 kN with 100 kg.";
+            /// <summary>Default.</summary>
+            public const bool Default = false;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Material, ParameterKind.Bool, 0, 1, 0, Tooltip, Json, true);
+        }
+
+        /// <summary>Plateau (deployment) force F_p of the energy absorber in newtons.</summary>
+        public static class AbsorberForce
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(AbsorberForce);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Absorber plateau force";
+            /// <summary>Unit.</summary>
+            public const string Unit = "N";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "absorberForce";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Energy absorber: force (N) at which it tears open and deploys; the arrest force stays at this plateau while it deploys. Typical EN 355 absorbers ≈ 4000 N.";
+            /// <summary>Exclusive lower bound in N.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound in N.</summary>
+            public const float Max = 1e7f;
+            /// <summary>Default in N.</summary>
+            public const float Default = 4000f;
+            /// <summary>The lower bound is exclusive.</summary>
+            public const bool MinExclusive = true;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Material, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true, minExclusive: true);
+        }
+
+        /// <summary>Largest deployment (tear-out length) of the energy absorber in metres.</summary>
+        public static class AbsorberDeployment
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(AbsorberDeployment);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Absorber deployment length";
+            /// <summary>Unit.</summary>
+            public const string Unit = "m";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "absorberDeployment";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Energy absorber: length (m) it can deploy; once used up, the webbing's elasticity takes over and the force rises again. EN 355 absorbers deploy up to ≈ 1.75 m.";
+            /// <summary>Exclusive lower bound in m.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound in m.</summary>
+            public const float Max = 100f;
+            /// <summary>Default in m.</summary>
+            public const float Default = 1.75f;
+            /// <summary>The lower bound is exclusive.</summary>
+            public const bool MinExclusive = true;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Material, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true, minExclusive: true);
         }
 
         // ---- Geometry ---------------------------------------------------------------------------------------
@@ -438,6 +627,127 @@ namespace HookeRope
             public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Collisions, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
         }
 
+        // ---- Drag -------------------------------------------------------------------------------------------
+
+        /// <summary>Viscous drag coefficient c in N·s/m²: a force −c·(v − wind) per metre of rope.</summary>
+        public static class ViscousDrag
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(ViscousDrag);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Viscous drag";
+            /// <summary>Unit.</summary>
+            public const string Unit = "N·s/m²";
+            /// <summary>Lab JSON name (in the drag object).</summary>
+            public const string Json = "viscousDrag";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Viscous drag per metre of rope (N·s/m²): a force −c·v per metre on the rope's velocity relative to the air. A swing decays as exp(−c·t/(2μ)), μ = mass per metre; a rope falls at most at μ·g/c. 0 = off (costs nothing).";
+            /// <summary>Lower bound in N·s/m².</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound in N·s/m².</summary>
+            public const float Max = 1e4f;
+            /// <summary>Default in N·s/m² (off).</summary>
+            public const float Default = 0f;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Drag, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
+        }
+
+        /// <summary>Drag coefficient C_d of the quadratic air drag across the rope (dimensionless).</summary>
+        public static class DragCoefficient
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(DragCoefficient);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Drag coefficient";
+            /// <summary>Unit (dimensionless).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name (in the drag object).</summary>
+            public const string Json = "dragCoefficient";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Drag coefficient C_d of the air drag across the rope (dimensionless): ½·ρ·C_d·2R·|v⊥|·v⊥ per metre on the velocity across the rope relative to the air. About 1.0–1.2 for a rope in air. 0 = off.";
+            /// <summary>Lower bound.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound.</summary>
+            public const float Max = 10f;
+            /// <summary>Default (off).</summary>
+            public const float Default = 0f;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Drag, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
+        }
+
+        /// <summary>Skin-friction coefficient C_f of the axial air drag along the rope (dimensionless).</summary>
+        public static class SkinFriction
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(SkinFriction);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Skin friction coefficient";
+            /// <summary>Unit (dimensionless).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name (in the drag object).</summary>
+            public const string Json = "skinFriction";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Skin-friction coefficient C_f of the air drag along the rope (dimensionless): ½·ρ·C_f·2πR·|v∥|·v∥ per metre on the velocity along the rope relative to the air. About 0.01; small beside the drag across. 0 = off.";
+            /// <summary>Lower bound.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound.</summary>
+            public const float Max = 1f;
+            /// <summary>Default (off).</summary>
+            public const float Default = 0f;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Drag, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
+        }
+
+        /// <summary>Density ρ of the air (or fluid) the rope moves through, in kg/m³.</summary>
+        public static class AirDensity
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(AirDensity);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Air density";
+            /// <summary>Unit.</summary>
+            public const string Unit = "kg/m³";
+            /// <summary>Lab JSON name (in the drag object).</summary>
+            public const string Json = "airDensity";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Density ρ of the air the rope moves through (kg/m³): 1.2 at sea level, 1000 for water. Scales the drag across the rope (C_d) and the skin friction (C_f).";
+            /// <summary>Lower bound in kg/m³.</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound in kg/m³.</summary>
+            public const float Max = 1e4f;
+            /// <summary>Default in kg/m³ (air at sea level, 20 °C).</summary>
+            public const float Default = 1.2f;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Drag, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
+        }
+
+        /// <summary>Velocity of the air (wind) in m/s, world coordinates; each component finite.</summary>
+        public static class Wind
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(Wind);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Wind";
+            /// <summary>Unit.</summary>
+            public const string Unit = "m/s";
+            /// <summary>Lab JSON name (in the drag object).</summary>
+            public const string Json = "wind";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Velocity of the air in world coordinates (m/s). The drag acts on the rope's velocity relative to it; no drag coefficient, no effect.";
+            /// <summary>Lower bound of each component in m/s.</summary>
+            public const float Min = -1000f;
+            /// <summary>Upper bound of each component in m/s.</summary>
+            public const float Max = 1000f;
+            /// <summary>Default x component in m/s.</summary>
+            public const float DefaultX = 0f;
+            /// <summary>Default y component in m/s.</summary>
+            public const float DefaultY = 0f;
+            /// <summary>Default z component in m/s.</summary>
+            public const float DefaultZ = 0f;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Drag, ParameterKind.Vector, Min, Max, double.NaN, Tooltip, Json, true, defaultComponents: new[] { DefaultX, DefaultY, DefaultZ });
+        }
+
         // ---- Radius -----------------------------------------------------------------------------------------
 
         /// <summary>Poisson thinning on: the radius follows the strain (eq. 16).</summary>
@@ -532,15 +842,20 @@ namespace HookeRope
             /// <summary>Lab JSON name.</summary>
             public const string Json = "defectPosition";
             /// <summary>Inspector tooltip.</summary>
-            public const string Tooltip = "Where the material defect sits, as a fraction of the rest length from the start (0–1). The neck and the break form there.";
-            /// <summary>Lower bound.</summary>
+            public const string Tooltip = "Where the material defect sits, as a fraction of the rest length from the start, strictly between 0 and 1 (the ends are attachments, not material). The neck and the break form there.";
+            /// <summary>Lower bound (exclusive).</summary>
             public const float Min = 0f;
-            /// <summary>Upper bound.</summary>
+            /// <summary>The lower bound is excluded.</summary>
+            public const bool MinExclusive = true;
+            /// <summary>Upper bound (exclusive).</summary>
             public const float Max = 1f;
+            /// <summary>The upper bound is excluded.</summary>
+            public const bool MaxExclusive = true;
             /// <summary>Default (the middle).</summary>
             public const float Default = 0.5f;
             /// <summary>The table row.</summary>
-            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Radius, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Radius, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true,
+                minExclusive: MinExclusive, maxExclusive: MaxExclusive);
         }
 
         /// <summary>Zone mode: rest length of the neck zone in rope diameters 2R (dimensionless).</summary>
@@ -727,6 +1042,25 @@ namespace HookeRope
             public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Mesh, ParameterKind.Int, Min, Max, Default, Tooltip, Json, false);
         }
 
+        /// <summary>Rings placed by need instead of RingsPerSegment in every segment (core only).</summary>
+        public static class AdaptiveRings
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(AdaptiveRings);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Adaptive rings";
+            /// <summary>Unit (none).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name (none).</summary>
+            public const string Json = null;
+            /// <summary>Tooltip.</summary>
+            public const string Tooltip = "Place the tube's rings by need: one per segment where the rope is straight, more where it bends, the neck's stations while it necks, so the drawn surface stays within the polygon's own error of the smooth tube. Off: RingsPerSegment rings in every segment.";
+            /// <summary>Default.</summary>
+            public const bool Default = true;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Mesh, ParameterKind.Bool, 0, 1, 1, Tooltip, Json, false);
+        }
+
         /// <summary>Texture v per metre of rest arc length in 1/m (core only).</summary>
         public static class VPerMetre
         {
@@ -848,13 +1182,15 @@ namespace HookeRope
         public static IReadOnlyList<ParameterInfo> All { get; } = new[]
         {
             StiffnessInput.Row, YoungsModulus.Row, AxialStiffness.Row, Density.Row, LinearDensity.Row, PoissonRatio.Row, Damping.Row,
+            MaterialModel.Row, YieldStrain.Row, HardeningModulus.Row, NeckingStrain.Row, UltimateStrain.Row, EnergyAbsorber.Row, AbsorberForce.Row, AbsorberDeployment.Row,
             RestLength.Row, Radius.Row, SegmentCount.Row,
             Solver.Row, Substeps.Row, Iterations.Row, TensionModel.Row, Integrator.Row, Gravity.Row,
             AttachmentCompliance.Row,
             Friction.Row,
+            ViscousDrag.Row, DragCoefficient.Row, SkinFriction.Row, AirDensity.Row, Wind.Row,
             PoissonThinning.Row, Necking.Row, NeckMode.Row, NeckRadiusFraction.Row, DefectPosition.Row, NeckZoneDiameters.Row, NeckGrowthStrain.Row, SlackKeepsRestRadius.Row,
             Fracture.Row, BreakStrain.Row, BreakRadiusFraction.Row,
-            RadialSegments.Row, RingsPerSegment.Row, VPerMetre.Row, CapEnds.Row, BurrSeed.Row, BurrTexture.Row, Color.Row,
+            RadialSegments.Row, RingsPerSegment.Row, AdaptiveRings.Row, VPerMetre.Row, CapEnds.Row, BurrSeed.Row, BurrTexture.Row, Color.Row,
         };
 
         /// <summary>The row named <paramref name="name"/> (ordinal), or null.</summary>
@@ -872,7 +1208,7 @@ namespace HookeRope
             if (row == null) throw new ArgumentNullException(nameof(row));
             if (double.IsNaN(value)) return false;
             if (double.IsPositiveInfinity(value)) return row.AllowsPositiveInfinity;
-            return (row.MinExclusive ? value > row.Min : value >= row.Min) && value <= row.Max;
+            return (row.MinExclusive ? value > row.Min : value >= row.Min) && (row.MaxExclusive ? value < row.Max : value <= row.Max);
         }
 
         /// <summary>
@@ -894,7 +1230,7 @@ namespace HookeRope
 
         /// <summary>
         /// Clamps <paramref name="value"/> into the row's finite range for the inspector: above Max (or +∞) becomes Max,
-        /// below Min becomes Min, and NaN or a value at or below an exclusive Min becomes the row's Default. Returns the
+        /// below Min becomes Min, and NaN or a value at or beyond an exclusive bound becomes the row's Default. Returns the
         /// message to log when it had to change the value (naming the label, range and unit), else null.
         /// </summary>
         public static string Clamp(ref float value, ParameterInfo row)
@@ -902,7 +1238,7 @@ namespace HookeRope
             if (row == null) throw new ArgumentNullException(nameof(row));
             float before = value;
             if (float.IsNaN(value)) value = (float)row.Default;
-            else if (value > row.Max) value = (float)row.Max;
+            else if (row.MaxExclusive ? value >= row.Max : value > row.Max) value = row.MaxExclusive ? (float)row.Default : (float)row.Max;
             else if (row.MinExclusive ? value <= row.Min : value < row.Min) value = row.MinExclusive ? (float)row.Default : (float)row.Min;
             if (before.Equals(value)) return null;
             return Message(row, Format(before), Format(value));
@@ -913,7 +1249,7 @@ namespace HookeRope
         {
             if (row == null) throw new ArgumentNullException(nameof(row));
             int before = value;
-            if (value > row.Max) value = (int)row.Max;
+            if (row.MaxExclusive ? value >= row.Max : value > row.Max) value = row.MaxExclusive ? (int)row.Default : (int)row.Max;
             else if (row.MinExclusive ? value <= row.Min : value < row.Min) value = row.MinExclusive ? (int)row.Default : (int)row.Min;
             if (before == value) return null;
             return Message(row, before.ToString(CultureInfo.InvariantCulture), value.ToString(CultureInfo.InvariantCulture));
@@ -924,7 +1260,7 @@ namespace HookeRope
             string min = row.Kind == ParameterKind.Int ? ((long)row.Min).ToString(CultureInfo.InvariantCulture) : Format((float)row.Min);
             string max = row.Kind == ParameterKind.Int ? ((long)row.Max).ToString(CultureInfo.InvariantCulture) : Format((float)row.Max);
             if (row.AllowsPositiveInfinity) max += " or +inf";
-            return (row.MinExclusive ? "(" : "[") + min + ", " + max + "]" + Suffix(row.Unit);
+            return (row.MinExclusive ? "(" : "[") + min + ", " + max + (row.MaxExclusive ? ")" : "]") + Suffix(row.Unit);
         }
 
         static ArgumentOutOfRangeException OutOfRange(ParameterInfo row, object value) =>

@@ -15,6 +15,7 @@ namespace HookeRope.Radius
         private readonly float[] restArc;
         private readonly float[] currentArc;
         private readonly float[] segmentStretch;
+        private readonly bool[] segmentBroken;
         private readonly float restRadius;
         private int defectSegment;
         private float defectT;
@@ -29,6 +30,9 @@ namespace HookeRope.Radius
         private float minRadius;
         private BreakReason breakReason;
         private bool broken;
+        private bool materialNeck;
+        private float materialSoftening = -1f;
+        private float materialUltimateStrain = float.PositiveInfinity;
 
         /// <summary>
         /// Creates the model for a rope with rest radius <paramref name="restRadius"/> (m, finite, &gt; 0) and the
@@ -45,6 +49,7 @@ namespace HookeRope.Radius
             this.restRadius = restRadius;
             segmentRadii = new float[n];
             segmentStretch = new float[n];
+            segmentBroken = new bool[n];
             baseParticleRadii = new float[n + 1];
             particleRadii = new float[n + 1];
             restArc = new float[n + 1];
@@ -123,6 +128,12 @@ namespace HookeRope.Radius
         public bool IsActive => Settings.AnyEnabled;
 
         /// <summary>
+        /// Incremented by every <see cref="Update"/> or <see cref="MarkBroken"/> that changed what <see cref="RadiusAt"/>
+        /// returns (compared bitwise): the mesh skips its ring-radius work while it stays the same.
+        /// </summary>
+        internal int RadiiVersion { get; private set; }
+
+        /// <summary>
         /// Recomputes radii from the current segment lengths (m) and the broken flags (null/empty = none broken),
         /// then the break decision. Spans must hold <see cref="SegmentCount"/> values. Allocation-free; does
         /// nothing when every part is off. Non-finite lengths count as unstretched.
@@ -139,23 +150,29 @@ namespace HookeRope.Radius
             RadiusSettings s = Settings;
             double nu = s.PoissonRatio;
             bool slack = s.SlackKeepsRestRadius;
+            var before = new ProfileKey(this);
+            bool profileMoved = false;
+            bool paperProfile = s.Necking && s.NeckMode == NeckMode.Paper; // the only profile that reads the current arc
             double arc = 0.0;
             for (int j = 0; j < n; j++)
             {
                 float rest = restArc[j + 1] - restArc[j];
                 float current = currentLengths[j];
                 bool isBroken = hasBroken && brokenSegments[j];
+                segmentBroken[j] = isBroken;
                 if (isBroken || !float.IsFinite(current)) current = rest;
                 segmentStretch[j] = current / rest;
                 arc += current;
+                profileMoved |= paperProfile && currentArc[j + 1] != (float)arc;
                 currentArc[j + 1] = (float)arc;
                 segmentRadii[j] = s.PoissonThinning && !isBroken
                     ? (float)(restRadius * PoissonRadius.Ratio(rest, current, nu, slack))
                     : restRadius;
             }
-            SmoothToParticles(hasBroken ? brokenSegments : default);
+            profileMoved |= SmoothToParticles(hasBroken ? brokenSegments : default);
             LocateDefect();
             UpdateNeck();
+            if (profileMoved || !before.Equals(new ProfileKey(this))) RadiiVersion++;
             float smallest = float.PositiveInfinity;
             for (int i = 0; i <= n; i++)
             {
@@ -171,14 +188,39 @@ namespace HookeRope.Radius
 
         /// <summary>
         /// Radius in metres at fraction <paramref name="t"/> ∈ [0, 1] (clamped) of segment <paramref name="segment"/>
-        /// (0 … SegmentCount − 1): the particle radii interpolated linearly, times the neck profile where it applies.
+        /// (0 … SegmentCount − 1): the particle radii interpolated linearly, times the neck profile where it applies. A
+        /// broken segment parted at its middle: t ≤ ½ takes the radius of particle <paramref name="segment"/>, t &gt; ½ that
+        /// of particle segment + 1 (each dangling half keeps the radius of the end it hangs from).
         /// </summary>
         public float RadiusAt(int segment, float t)
         {
             if ((uint)segment >= (uint)segmentRadii.Length)
                 throw new ArgumentOutOfRangeException(nameof(segment), segment, "segment must be in [0, SegmentCount - 1].");
             if (t < 0f) t = 0f; else if (t > 1f) t = 1f;
-            float baseRadius = baseParticleRadii[segment] + (baseParticleRadii[segment + 1] - baseParticleRadii[segment]) * t;
+            // a broken segment parted at its middle: each half keeps the radius of the end it hangs from
+            float baseRadius = segmentBroken[segment]
+                ? baseParticleRadii[t <= 0.5f ? segment : segment + 1]
+                : baseParticleRadii[segment] + (baseParticleRadii[segment + 1] - baseParticleRadii[segment]) * t;
+            return WithNeck(segment, t, baseRadius);
+        }
+
+        /// <summary>
+        /// Radius in metres of the cut end of broken segment <paramref name="segment"/> on the side of particle
+        /// <paramref name="segment"/> (<paramref name="upperSide"/> false) or particle segment + 1 (true): that end's own
+        /// radius times the frozen neck at the middle of the segment, where the rope parted. Both ends share the neck, so
+        /// they differ only by the Poisson radius of the pieces they end. For an intact segment: the radius at its middle.
+        /// </summary>
+        public float BrokenEndRadius(int segment, bool upperSide)
+        {
+            if ((uint)segment >= (uint)segmentRadii.Length)
+                throw new ArgumentOutOfRangeException(nameof(segment), segment, "segment must be in [0, SegmentCount - 1].");
+            if (!segmentBroken[segment]) return RadiusAt(segment, 0.5f);
+            return WithNeck(segment, 0.5f, baseParticleRadii[upperSide ? segment + 1 : segment]);
+        }
+
+        /// <summary>The radius (m) at fraction t of a segment whose Poisson radius there is <paramref name="baseRadius"/> (m), neck applied.</summary>
+        private float WithNeck(int segment, float t, float baseRadius)
+        {
             if (neckDepth <= 0f) return baseRadius;
             if (Settings.NeckMode == NeckMode.Zone)
             {
@@ -205,22 +247,45 @@ namespace HookeRope.Radius
             for (int k = 0; k < ringSegments.Length; k++) radii[k] = RadiusAt(ringSegments[k], ringFractions[k]);
         }
 
+        /// <summary>True when the neck follows the rope's elastic–plastic material (<see cref="FollowMaterial"/>) instead of the radius threshold.</summary>
+        public bool FollowsMaterial => materialNeck;
+
+        /// <summary>
+        /// The elastic–plastic material drives the neck (issue 15; call before <see cref="Update"/>): with
+        /// <paramref name="plastic"/> the neck forms when the material's plastic strain localises at the defect, i.e. when
+        /// <paramref name="softening"/> (the neck segment's softening progress, 0 at onset … 1 at the ultimate strain; &lt; 0
+        /// before onset) reaches 0, instead of at <see cref="RadiusSettings.NeckRadiusFraction"/>. In Zone mode the waist's
+        /// area follows the force the neck still carries: ρ² = 1 − s (the neck's true stress stays at its onset value while the
+        /// engineering stress falls). The break is at <paramref name="ultimateStrain"/> (the defect segment's strain) instead of
+        /// <see cref="RadiusSettings.BreakStrain"/>, or earlier when the waist falls below
+        /// <see cref="RadiusSettings.BreakRadiusFraction"/>·R. <paramref name="plastic"/> false restores the elastic-rope rules.
+        /// </summary>
+        public void FollowMaterial(bool plastic, float softening, float ultimateStrain)
+        {
+            materialNeck = plastic;
+            materialSoftening = plastic ? softening : -1f;
+            materialUltimateStrain = plastic ? ultimateStrain : float.PositiveInfinity;
+        }
+
         /// <summary>
         /// Tells the model that the host broke the rope: the neck is frozen at its present depth (Zone) or
         /// dropped (Paper), the break decision resets to None and no further break is asked for.
         /// </summary>
         public void MarkBroken()
         {
+            RadiiVersion++;
             broken = true;
             breakReason = BreakReason.None;
             paperNecking = false;
             if (Settings.NeckMode == NeckMode.Paper) neckDepth = 0f;
         }
 
-        private void SmoothToParticles(ReadOnlySpan<bool> brokenSegments)
+        /// <summary>Particle radii from the segment radii; returns true when one changed (bitwise).</summary>
+        private bool SmoothToParticles(ReadOnlySpan<bool> brokenSegments)
         {
             int n = segmentRadii.Length;
             bool any = brokenSegments.Length > 0;
+            bool moved = false;
             for (int i = 0; i <= n; i++)
             {
                 bool left = i > 0 && !(any && brokenSegments[i - 1]);
@@ -230,8 +295,42 @@ namespace HookeRope.Radius
                 else if (left) r = segmentRadii[i - 1];
                 else if (right) r = segmentRadii[i];
                 else r = restRadius;
+                moved |= BitConverter.SingleToInt32Bits(baseParticleRadii[i]) != BitConverter.SingleToInt32Bits(r);
                 baseParticleRadii[i] = r;
             }
+            return moved;
+        }
+
+        /// <summary>The scalars <see cref="RadiusAt"/> reads besides the particle radii and arcs.</summary>
+        private readonly struct ProfileKey : IEquatable<ProfileKey>
+        {
+            private readonly int defectSegment;
+            private readonly float defectArc, neckDepth, zoneWaistSquared, paperWaist, paperAxisSquared, paperCenter;
+            private readonly bool paperNecking;
+
+            public ProfileKey(RadiusModel model)
+            {
+                defectSegment = model.defectSegment;
+                defectArc = model.defectArc;
+                neckDepth = model.neckDepth;
+                zoneWaistSquared = model.zoneWaistSquared;
+                paperWaist = model.paperWaist;
+                paperAxisSquared = model.paperAxisSquared;
+                paperCenter = model.paperCenter;
+                paperNecking = model.paperNecking;
+            }
+
+            public bool Equals(ProfileKey o) =>
+                defectSegment == o.defectSegment && paperNecking == o.paperNecking && Bits(defectArc) == Bits(o.defectArc)
+                && Bits(neckDepth) == Bits(o.neckDepth) && Bits(zoneWaistSquared) == Bits(o.zoneWaistSquared)
+                && Bits(paperWaist) == Bits(o.paperWaist) && Bits(paperAxisSquared) == Bits(o.paperAxisSquared)
+                && Bits(paperCenter) == Bits(o.paperCenter);
+
+            public override bool Equals(object obj) => obj is ProfileKey other && Equals(other);
+
+            public override int GetHashCode() => defectSegment;
+
+            private static int Bits(float value) => BitConverter.SingleToInt32Bits(value);
         }
 
         private void LocateDefect()
@@ -263,6 +362,19 @@ namespace HookeRope.Radius
             double strain = segmentStretch[defectSegment] - 1.0;
             double onset = PoissonRadius.StrainAtRatio(s.NeckRadiusFraction, s.PoissonRatio);
             float rMin = s.NeckRadiusFraction * restRadius;
+            if (materialNeck)
+            {
+                // the plastic material: onset where its strain localises, the waist's area following the neck's force
+                if (materialSoftening < 0f) { neckDepth = 0f; paperNecking = false; zoneWaistSquared = 1f; return; }
+                if (s.NeckMode == NeckMode.Zone)
+                {
+                    neckDepth = materialSoftening;
+                    zoneWaistSquared = 1f - materialSoftening;
+                    paperNecking = false;
+                    return;
+                }
+                onset = double.NegativeInfinity;
+            }
             if (s.NeckMode == NeckMode.Zone)
             {
                 double depth = (strain - onset) / s.NeckGrowthStrain;
@@ -285,7 +397,8 @@ namespace HookeRope.Radius
 
         /// <summary>
         /// The one fracture criterion: with <see cref="RadiusSettings.Fracture"/> on, the defect segment breaks when
-        /// its strain reaches <see cref="RadiusSettings.BreakStrain"/>, or, only with <see cref="RadiusSettings.Necking"/>
+        /// its strain reaches <see cref="RadiusSettings.BreakStrain"/> (the material's ultimate strain when the neck
+        /// <see cref="FollowsMaterial"/>), or, only with <see cref="RadiusSettings.Necking"/>
         /// on, when the neck radius falls below <see cref="RadiusSettings.BreakRadiusFraction"/>·R.
         /// </summary>
         private void DecideBreak()
@@ -293,7 +406,8 @@ namespace HookeRope.Radius
             RadiusSettings s = Settings;
             breakReason = BreakReason.None;
             if (!s.Fracture || broken) return;
-            if (segmentStretch[defectSegment] - 1f >= s.BreakStrain) breakReason = BreakReason.Strain;
+            float breakStrain = materialNeck ? materialUltimateStrain : s.BreakStrain;
+            if (segmentStretch[defectSegment] - 1f >= breakStrain) breakReason = BreakReason.Strain;
             else if (s.Necking && neckRadius < s.BreakRadiusFraction * restRadius) breakReason = BreakReason.NeckRadius;
         }
     }

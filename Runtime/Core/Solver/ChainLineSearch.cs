@@ -106,9 +106,10 @@ namespace HookeRope.Solver
         private static void Before(ChainState c, int j, out double dx, out double dy, out double dz, out double ux, out double uy, out double uz)
         {
             ux = c.MotionX[j + 1] - c.MotionX[j]; uy = c.MotionY[j + 1] - c.MotionY[j]; uz = c.MotionZ[j + 1] - c.MotionZ[j];
-            dx = ((double)c.PrevX[j + 1] + c.DX[j + 1]) - ((double)c.PrevX[j] + c.DX[j]) - ux;
-            dy = ((double)c.PrevY[j + 1] + c.DY[j + 1]) - ((double)c.PrevY[j] + c.DY[j]) - uy;
-            dz = ((double)c.PrevZ[j + 1] + c.DZ[j + 1]) - ((double)c.PrevZ[j] + c.DZ[j]) - uz;
+            // the live segment Prev + Low + D (as ChainState.Direction forms it) less the iteration's change
+            dx = ((double)c.PrevX[j + 1] - c.PrevX[j]) + (((double)c.LowX[j + 1] - c.LowX[j]) + ((double)c.DX[j + 1] - c.DX[j])) - ux;
+            dy = ((double)c.PrevY[j + 1] - c.PrevY[j]) + (((double)c.LowY[j + 1] - c.LowY[j]) + ((double)c.DY[j + 1] - c.DY[j])) - uy;
+            dz = ((double)c.PrevZ[j + 1] - c.PrevZ[j]) + (((double)c.LowZ[j + 1] - c.LowZ[j]) + ((double)c.DZ[j + 1] - c.DZ[j])) - uz;
         }
 
         /// <summary>The accumulated pull Λ_i − Λ_{i−1} on particle i before the iteration (N·s²).</summary>

@@ -17,7 +17,12 @@ namespace HookeRope.Solver
         public readonly float[] PrevX, PrevY, PrevZ;
         // positions at the start of the last host step (or where the host last placed them), for interpolation
         public readonly float[] StepStartX, StepStartY, StepStartZ;
-        // displacement over the current substep: live position = Prev + D. Kept separately so that
+        // the part of each position below float resolution (m): the particle is at X + Low, |Low| ≤ half an ulp of X
+        // (the live position in a substep is Prev + Low + D). Without it every commit rounded the position to float and a
+        // displacement below half an ulp of it was lost: a steel cable's load, 10 m down, could not settle closer than the
+        // solve's damping-amplified dead band (up to 0.3 % of its stretch). Zero where the host places a particle.
+        public readonly float[] LowX, LowY, LowZ;
+        // displacement over the current substep: live position = Prev + Low + D. Kept separately so that
         // velocities D/h keep full float precision however small h is.
         public readonly float[] DX, DY, DZ;
         public readonly float[] VelX, VelY, VelZ;
@@ -73,6 +78,9 @@ namespace HookeRope.Solver
         public int[] ContactList;                       // particles with ContactCollider ≥ 0, first ContactCount entries
         public int ContactCount;
 
+        // plastic state of the segments (issue 15; null for an elastic rope without an energy absorber: no work, no memory)
+        public SegmentPlasticity Plasticity;
+
         public ChainState(int segmentCount)
         {
             SegmentCount = segmentCount;
@@ -81,6 +89,7 @@ namespace HookeRope.Solver
             X = new float[n]; Y = new float[n]; Z = new float[n];
             PrevX = new float[n]; PrevY = new float[n]; PrevZ = new float[n];
             StepStartX = new float[n]; StepStartY = new float[n]; StepStartZ = new float[n];
+            LowX = new float[n]; LowY = new float[n]; LowZ = new float[n];
             DX = new float[n]; DY = new float[n]; DZ = new float[n];
             VelX = new float[n]; VelY = new float[n]; VelZ = new float[n];
             Mass = new float[n]; InverseMass = new float[n]; LoadMass = new float[n];
@@ -101,6 +110,10 @@ namespace HookeRope.Solver
             PrevVelX = new float[n]; PrevVelY = new float[n]; PrevVelZ = new float[n];
             PredictedDX = new float[n]; PredictedDY = new float[n]; PredictedDZ = new float[n];
         }
+
+        /// <summary>The rest length the segment's force is measured from (m): its plastic rest length L_p, or L for an elastic rope.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public double CurrentRest(int j) => Plasticity != null ? Plasticity.Rest(j) : RestLength[j];
 
         /// <summary>Allocates the contact arrays once (when the first collider is added; never in a step).</summary>
         public void EnsureContacts()
@@ -134,30 +147,49 @@ namespace HookeRope.Solver
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static double LimitToPulling(double lambda, double d, bool tensionOnly) => tensionOnly && lambda + d > 0.0 ? -lambda : d;
 
+        /// <summary>Places particle i at (x, y, z) (rope-local m) now, as the start and the end of the step, with no sub-float remainder.</summary>
+        public void Place(int i, float x, float y, float z)
+        {
+            X[i] = PrevX[i] = StepStartX[i] = x;
+            Y[i] = PrevY[i] = StepStartY[i] = y;
+            Z[i] = PrevZ[i] = StepStartZ[i] = z;
+            LowX[i] = 0f; LowY[i] = 0f; LowZ[i] = 0f;
+        }
+
         /// <summary>
-        /// Length (m) of segment j from the live positions Prev + D, and its unit direction into (nx, ny, nz), which it also
-        /// stores as the segment's last valid direction; when the ends coincide (or the length is not finite) the last valid
-        /// direction is kept and a non-finite length reads 0. (ddx, ddy, ddz) is the segment's change over the substep,
-        /// D_{j+1} − D_j (m), which the damping term needs.
+        /// Length (m) of segment j from the live positions Prev + Low + D, and its unit direction into (nx, ny, nz), which it
+        /// also stores (in float) as the segment's last valid direction; when the ends coincide (or the length is not finite)
+        /// the last valid direction is kept and a non-finite length reads 0. (ddx, ddy, ddz) is the segment's change over the
+        /// substep, D_{j+1} − D_j (m), which the damping term needs. Formed in double from the exact positions: a segment's
+        /// stretch is resolved far below the float resolution of its ends' coordinates (1e-6 m at 10 m, 1e-3 m at 10 km) and
+        /// of its own length (1.5e-8 m at 0.125 m, which an inextensible rope's tension felt as ±0.5 % noise).
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public float Direction(int j, out float nx, out float ny, out float nz, out float ddx, out float ddy, out float ddz)
+        public double Direction(int j, out double nx, out double ny, out double nz, out float ddx, out float ddy, out float ddz)
         {
             ddx = DX[j + 1] - DX[j]; ddy = DY[j + 1] - DY[j]; ddz = DZ[j + 1] - DZ[j];
-            float ex = (PrevX[j + 1] - PrevX[j]) + ddx, ey = (PrevY[j + 1] - PrevY[j]) + ddy, ez = (PrevZ[j + 1] - PrevZ[j]) + ddz;
-            float len = MathF.Sqrt(ex * ex + ey * ey + ez * ez);
-            if (len > 1e-12f && len <= float.MaxValue)
+            double ex = ((double)PrevX[j + 1] - PrevX[j]) + (((double)LowX[j + 1] - LowX[j]) + ddx);
+            double ey = ((double)PrevY[j + 1] - PrevY[j]) + (((double)LowY[j + 1] - LowY[j]) + ddy);
+            double ez = ((double)PrevZ[j + 1] - PrevZ[j]) + (((double)LowZ[j + 1] - LowZ[j]) + ddz);
+            double len = Math.Sqrt(ex * ex + ey * ey + ez * ez);
+            if (len > 1e-12 && len <= float.MaxValue)
             {
-                float inv = 1f / len;
+                double inv = 1.0 / len;
                 nx = ex * inv; ny = ey * inv; nz = ez * inv;
-                DirX[j] = nx; DirY[j] = ny; DirZ[j] = nz;
+                DirX[j] = (float)nx; DirY[j] = (float)ny; DirZ[j] = (float)nz;
+                return len;
             }
-            else
-            {
-                nx = DirX[j]; ny = DirY[j]; nz = DirZ[j];
-                if (!(len <= float.MaxValue)) len = 0f;
-            }
-            return len;
+            nx = DirX[j]; ny = DirY[j]; nz = DirZ[j];
+            return len <= float.MaxValue ? len : 0.0;
+        }
+
+        /// <summary>Vector (m, double) of segment j between the committed positions X + Low of its ends.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public void Span(int j, out double ex, out double ey, out double ez)
+        {
+            ex = ((double)X[j + 1] - X[j]) + ((double)LowX[j + 1] - LowX[j]);
+            ey = ((double)Y[j + 1] - Y[j]) + ((double)LowY[j + 1] - LowY[j]);
+            ez = ((double)Z[j + 1] - Z[j]) + ((double)LowZ[j + 1] - LowZ[j]);
         }
     }
 }

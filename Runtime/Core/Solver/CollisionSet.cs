@@ -5,17 +5,37 @@ namespace HookeRope.Solver
 {
     /// <summary>
     /// The colliders of one rope in the rope-local frame, with the pose at the start and end of the
-    /// current host step (positions are interpolated linearly, rotations by nlerp, across substeps).
+    /// current host step (positions are interpolated linearly, rotations by nlerp, across substeps: <see cref="ColliderPoses"/>).
     /// Particles are pushed out along the surface normal to their collision radius; friction removes
     /// tangential motion relative to the collider up to μ times the push depth (position-based Coulomb).
+    /// A broad phase (<see cref="CollisionBroadPhase"/> over <see cref="ParticleBlocks"/>) limits that work to the colliders
+    /// within reach of the rope and the blocks of particles within reach of each, with the brute-force pass's result to the bit.
     /// </summary>
     internal sealed class CollisionSet
     {
+        /// <summary>Contact detection margin as a fraction of the particle radius: a particle this close to a surface counts as touching it.</summary>
+        public const float ContactMarginFraction = 0.1f;
+
         private ColliderShape[] shapes = new ColliderShape[0];
-        private Float3[] startPosition = new Float3[0], endPosition = new Float3[0], position = new Float3[0], velocity = new Float3[0];
-        private Quat[] startRotation = new Quat[0], endRotation = new Quat[0], rotation = new Quat[0];
+        private readonly ColliderPoses poses = new ColliderPoses();
+        private readonly CollisionBroadPhase broad = new CollisionBroadPhase();
+        private readonly ParticleBlocks blocks = new ParticleBlocks();
+        private bool[] nearRope = new bool[0], candidate = new bool[0];
+        private double[] candidateReach = new double[0]; // the block's reach of each candidate collider (see CollisionBroadPhase.Reach)
+        private int[] boundSubstep = new int[0]; // the substep whose bound the broad phase holds for each collider
+        private int substep;                     // serial number of the current substep
+        private bool swept;                      // the broad phase holds every collider's bound over this host step
 
         public int Count { get; private set; }
+
+        /// <summary>Uses the brute-force pass (every dynamic particle against every collider) instead of the broad phase: the reference the broad phase is tested against.</summary>
+        internal bool BruteForce { get; set; }
+
+        /// <summary>The particle blocks of the broad phase (tests switch their vector scan off).</summary>
+        internal ParticleBlocks Blocks => blocks;
+
+        /// <summary>Particle–collider pairs the narrow phase has evaluated so far (tests check that the broad phase spares the rest).</summary>
+        internal long PairsResolved { get; private set; }
 
         public int Add(in ColliderShape shape, Float3 localPosition)
         {
@@ -23,19 +43,18 @@ namespace HookeRope.Solver
             {
                 int size = ArrayGrowth.NextCapacity(Count);
                 Array.Resize(ref shapes, size);
-                Array.Resize(ref startPosition, size);
-                Array.Resize(ref endPosition, size);
-                Array.Resize(ref position, size);
-                Array.Resize(ref velocity, size);
-                Array.Resize(ref startRotation, size);
-                Array.Resize(ref endRotation, size);
-                Array.Resize(ref rotation, size);
+                poses.Resize(size);
+                Array.Resize(ref nearRope, size);
+                Array.Resize(ref candidate, size);
+                Array.Resize(ref candidateReach, size);
+                Array.Resize(ref boundSubstep, size);
             }
             int i = Count++;
             shapes[i] = shape;
-            startPosition[i] = endPosition[i] = position[i] = localPosition;
-            startRotation[i] = endRotation[i] = rotation[i] = shape.Rotation;
-            velocity[i] = Float3.Zero;
+            poses.Place(i, localPosition, shape.Rotation);
+            boundSubstep[i] = substep - 1;
+            swept = false;
+            blocks.RadiiChanged();
             return i;
         }
 
@@ -48,16 +67,12 @@ namespace HookeRope.Solver
             if (tail > 0)
             {
                 Array.Copy(shapes, i + 1, shapes, i, tail);
-                Array.Copy(startPosition, i + 1, startPosition, i, tail);
-                Array.Copy(endPosition, i + 1, endPosition, i, tail);
-                Array.Copy(position, i + 1, position, i, tail);
-                Array.Copy(velocity, i + 1, velocity, i, tail);
-                Array.Copy(startRotation, i + 1, startRotation, i, tail);
-                Array.Copy(endRotation, i + 1, endRotation, i, tail);
-                Array.Copy(rotation, i + 1, rotation, i, tail);
+                Array.Copy(boundSubstep, i + 1, boundSubstep, i, tail);
             }
+            poses.RemoveAt(i, Count);
             Count--;
             shapes[Count] = default;
+            swept = false;
         }
 
         /// <summary>Removes every collider (the arrays are kept for reuse).</summary>
@@ -69,34 +84,31 @@ namespace HookeRope.Solver
 
         public void SetPose(int i, Float3 localPosition, Quat newRotation)
         {
-            endPosition[i] = localPosition;
-            endRotation[i] = newRotation.Normalized();
+            poses.SetEnd(i, localPosition, newRotation.Normalized());
+            swept = false;
         }
 
-        /// <summary>Pose at fraction t ∈ (0, 1] of the host step of length dt (s).</summary>
+        /// <summary>Pose at fraction t ∈ (0, 1] of the host step of length dt (s) (worked out for the colliders that need it).</summary>
         public void PrepareSubstep(float t, float dt)
         {
-            for (int i = 0; i < Count; i++)
-            {
-                position[i] = Float3.Lerp(startPosition[i], endPosition[i], t);
-                rotation[i] = t >= 1f ? endRotation[i] : Quat.Nlerp(startRotation[i], endRotation[i], t);
-                velocity[i] = (endPosition[i] - startPosition[i]) / dt;
-            }
+            poses.BeginSubstep(t, dt);
+            substep++;
+        }
+
+        /// <summary>Makes room in the broad phase for a chain of <paramref name="particles"/> (when a collider is added; never in a step).</summary>
+        public void Reserve(int particles)
+        {
+            blocks.Reserve(particles);
+            broad.Reserve(shapes.Length);
         }
 
         /// <summary>Makes the end pose of this host step the start pose of the next.</summary>
         public void EndStep()
         {
-            for (int i = 0; i < Count; i++)
-            {
-                startPosition[i] = endPosition[i];
-                startRotation[i] = endRotation[i];
-                velocity[i] = Float3.Zero;
-            }
+            poses.EndStep(Count);
+            blocks.RadiiChanged();
+            swept = false;
         }
-
-        /// <summary>Contact detection margin as a fraction of the particle radius: a particle this close to a surface counts as touching it.</summary>
-        public const float ContactMarginFraction = 0.1f;
 
         /// <summary>
         /// Pushes every dynamic particle out of every collider (substep h in s). What else the pass does depends on where
@@ -106,63 +118,191 @@ namespace HookeRope.Solver
         /// iteration it applies Coulomb friction instead, limited by μ times the particle's whole normal correction in
         /// this substep (<see cref="ChainState.ContactLoad"/>: pushes plus the normal motion the chain solve's
         /// tangent-plane mass withheld).
+        /// <para>The broad phase bounds the particles (<see cref="ParticleBlocks.Scan"/>), rules out the colliders whose path
+        /// over the host step is out of reach of the whole rope, works out the substep pose and bound of the others, and
+        /// passes to the narrow phase only the blocks of particles within reach of one of them. The result is the
+        /// brute-force pass's (<see cref="BruteForce"/>) to the bit.</para>
         /// </summary>
         public void Project(ChainState c, float h, ContactPass pass)
         {
             bool friction = pass == ContactPass.LastIteration;
             bool detect = pass != ContactPass.LastIteration;
-            bool startOfSubstep = pass == ContactPass.StartOfSubstep;
-            int n = c.ParticleCount;
             float[] load = c.ContactLoad;
             if (detect) c.ClearContacts();
-            for (int i = 0; i < n; i++)
+            if (BruteForce)
+            {
+                ProjectEveryPair(c, h, pass == ContactPass.StartOfSubstep, detect, friction, load);
+                return;
+            }
+            if (pass == ContactPass.StartOfSubstep) Array.Clear(load, 0, c.ParticleCount);
+            blocks.Scan(c);
+            if (!NearColliders(blocks.Rope)) return;
+            for (int b = 0; b < blocks.BlockCount; b++)
+            {
+                ParticleBox box = blocks.Block(b);
+                bool blockNear = false;
+                for (int k = 0; k < Count; k++)
+                {
+                    candidate[k] = false;
+                    if (!nearRope[k]) continue;
+                    candidateReach[k] = broad.Reach(k, box, false);
+                    candidate[k] = broad.Within(k, box, candidateReach[k], false);
+                    blockNear |= candidate[k];
+                }
+                if (blockNear) ProjectBlock(c, b, h, detect, friction, load);
+            }
+        }
+
+        /// <summary>
+        /// Marks the colliders within reach of the rope's box (<see cref="nearRope"/>) and works out their pose and bound for the
+        /// substep. Returns whether there is any.
+        /// </summary>
+        private bool NearColliders(in ParticleBox rope)
+        {
+            broad.Reserve(Count);
+            if (!swept)
+            {
+                for (int k = 0; k < Count; k++)
+                    broad.SetSweep(k, shapes[k], poses.StartPosition(k), poses.EndPosition(k), poses.StartRotation(k), poses.EndRotation(k));
+                swept = true;
+            }
+            bool any = false;
+            for (int k = 0; k < Count; k++)
+            {
+                nearRope[k] = broad.Near(k, rope, true);
+                if (!nearRope[k]) continue;
+                BoundSubstep(k);
+                nearRope[k] = broad.Near(k, rope, false);
+                any |= nearRope[k];
+            }
+            return any;
+        }
+
+        /// <summary>Works out collider k's pose in this substep and gives the broad phase its bound, once per substep.</summary>
+        private void BoundSubstep(int k)
+        {
+            poses.Ensure(k);
+            if (boundSubstep[k] == substep) return;
+            broad.SetPose(k, shapes[k], poses.Position(k), poses.Rotation(k));
+            boundSubstep[k] = substep;
+        }
+
+        /// <summary>The box of particle i's live position and radius r (m).</summary>
+        private static ParticleBox Here(ChainState c, int i, float r) => ParticleBox.Point(c.PrevX[i] + c.DX[i], c.PrevY[i] + c.DY[i], c.PrevZ[i] + c.DZ[i], r);
+
+        /// <summary>The narrow phase for the dynamic particles of block b within reach of a collider within reach of the block (<see cref="candidate"/>).</summary>
+        private void ProjectBlock(ChainState c, int b, float h, bool detect, bool friction, float[] load)
+        {
+            int end = Math.Min(c.ParticleCount, (b + 1) * ParticleBlocks.BlockSize);
+            for (int i = b * ParticleBlocks.BlockSize; i < end; i++)
+            {
+                if (c.InverseMass[i] == 0f) continue;
+                float r = c.Radius[i];
+                var best = new ClosestContact(ContactMarginFraction * r);
+                bool moved = false;
+                for (int k = 0; k < Count; k++)
+                {
+                    if (moved)
+                    {
+                        // a particle this pass has moved (push, friction) may have come within reach of any later collider
+                        if (!broad.Near(k, Here(c, i, r), true)) continue;
+                        BoundSubstep(k);
+                        if (!broad.Near(k, Here(c, i, r), false)) continue;
+                    }
+                    else if (!candidate[k] || !broad.Within(k, Here(c, i, r), candidateReach[k], false))
+                    {
+                        // the block's reach holds for each of its particles
+                        continue;
+                    }
+                    moved |= Resolve(c, i, k, r, h, detect, friction, load, ref best);
+                }
+                if (detect) best.Record(c, i);
+            }
+        }
+
+        /// <summary>Every dynamic particle against every collider: what <see cref="Project"/> does, without the broad phase.</summary>
+        private void ProjectEveryPair(ChainState c, float h, bool startOfSubstep, bool detect, bool friction, float[] load)
+        {
+            for (int k = 0; k < Count; k++) poses.Ensure(k);
+            for (int i = 0; i < c.ParticleCount; i++)
             {
                 if (startOfSubstep) load[i] = 0f;
                 if (c.InverseMass[i] == 0f) continue;
                 float r = c.Radius[i];
-                float bestGap = ContactMarginFraction * r;
-                int best = -1;
-                Float3 bestNormal = Float3.Zero;
-                for (int k = 0; k < Count; k++)
+                var best = new ClosestContact(ContactMarginFraction * r);
+                for (int k = 0; k < Count; k++) Resolve(c, i, k, r, h, detect, friction, load, ref best);
+                if (detect) best.Record(c, i);
+            }
+        }
+
+        /// <summary>
+        /// Particle i (radius r, m) against collider k: pushes it out, offers the surface as its contact when detecting, and
+        /// applies friction on the last iteration. Returns true when it wrote the particle's displacement.
+        /// </summary>
+        private bool Resolve(ChainState c, int i, int k, float r, float h, bool detect, bool friction, float[] load, ref ClosestContact best)
+        {
+            PairsResolved++;
+            var d = new Float3(c.DX[i], c.DY[i], c.DZ[i]);
+            var x = new Float3(c.PrevX[i], c.PrevY[i], c.PrevZ[i]) + d;
+            float distance = SignedDistance(k, x, out Float3 normal);
+            float push = r - distance;
+            if (detect) best.Offer(k, push > 0f ? 0f : -push, normal);
+            bool touching = push > 0f;
+            if (touching)
+            {
+                d += normal * push;
+                load[i] += push;
+            }
+            else if (!friction || c.ContactCollider[i] != k || -push > ContactMarginFraction * r)
+            {
+                return false;
+            }
+            // friction also acts where the chain solve held the particle on the surface (no push left)
+            if (friction && shapes[k].Friction > 0f)
+            {
+                Float3 moved = d - poses.Velocity(k) * h;
+                Float3 tangent = moved - normal * Float3.Dot(moved, normal);
+                float slide = tangent.Length;
+                float limit = shapes[k].Friction * load[i];
+                if (slide > 0f) d -= slide <= limit ? tangent : tangent * (limit / slide);
+            }
+            c.DX[i] = d.X; c.DY[i] = d.Y; c.DZ[i] = d.Z;
+            return true;
+        }
+
+        /// <summary>The closest surface offered to one particle in a detecting pass (gap in m, within the contact margin).</summary>
+        private struct ClosestContact
+        {
+            private float gap;
+            private int collider;
+            private Float3 normal;
+
+            public ClosestContact(float margin)
+            {
+                gap = margin;
+                collider = -1;
+                normal = Float3.Zero;
+            }
+
+            public void Offer(int k, float candidateGap, Float3 candidateNormal)
+            {
+                if (candidateGap <= gap && (collider < 0 || candidateGap < gap))
                 {
-                    var d = new Float3(c.DX[i], c.DY[i], c.DZ[i]);
-                    var x = new Float3(c.PrevX[i], c.PrevY[i], c.PrevZ[i]) + d;
-                    float distance = SignedDistance(k, x, out Float3 normal);
-                    float push = r - distance;
-                    if (detect)
-                    {
-                        float gap = push > 0f ? 0f : -push;
-                        if (gap <= bestGap && (best < 0 || gap < bestGap)) { bestGap = gap; best = k; bestNormal = normal; }
-                    }
-                    bool touching = push > 0f;
-                    if (touching)
-                    {
-                        d += normal * push;
-                        load[i] += push;
-                    }
-                    else if (!friction || c.ContactCollider[i] != k || -push > ContactMarginFraction * r)
-                    {
-                        continue;
-                    }
-                    // friction also acts where the chain solve held the particle on the surface (no push left)
-                    if (friction && shapes[k].Friction > 0f)
-                    {
-                        Float3 moved = d - velocity[k] * h;
-                        Float3 tangent = moved - normal * Float3.Dot(moved, normal);
-                        float slide = tangent.Length;
-                        float limit = shapes[k].Friction * load[i];
-                        if (slide > 0f) d -= slide <= limit ? tangent : tangent * (limit / slide);
-                    }
-                    c.DX[i] = d.X; c.DY[i] = d.Y; c.DZ[i] = d.Z;
+                    gap = candidateGap;
+                    collider = k;
+                    normal = candidateNormal;
                 }
-                if (best >= 0 && float.IsFinite(bestNormal.X + bestNormal.Y + bestNormal.Z))
-                {
-                    c.ContactCollider[i] = best;
-                    c.ContactActive[i] = true;
-                    c.ContactNX[i] = bestNormal.X; c.ContactNY[i] = bestNormal.Y; c.ContactNZ[i] = bestNormal.Z;
-                    c.ContactGap[i] = bestGap;
-                    c.ContactList[c.ContactCount++] = i;
-                }
+            }
+
+            /// <summary>Makes the closest surface, if any (with a finite normal), particle i's contact.</summary>
+            public void Record(ChainState c, int i)
+            {
+                if (collider < 0 || !float.IsFinite(normal.X + normal.Y + normal.Z)) return;
+                c.ContactCollider[i] = collider;
+                c.ContactActive[i] = true;
+                c.ContactNX[i] = normal.X; c.ContactNY[i] = normal.Y; c.ContactNZ[i] = normal.Z;
+                c.ContactGap[i] = gap;
+                c.ContactList[c.ContactCount++] = i;
             }
         }
 
@@ -170,8 +310,8 @@ namespace HookeRope.Solver
         public float SignedDistance(int k, Float3 x, out Float3 normal)
         {
             ref readonly ColliderShape shape = ref shapes[k];
-            Float3 centre = position[k];
-            Quat q = rotation[k];
+            Float3 centre = poses.Position(k);
+            Quat q = poses.Rotation(k);
             switch (shape.Kind)
             {
                 case ColliderKind.Plane:

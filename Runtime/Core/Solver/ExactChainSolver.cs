@@ -75,7 +75,8 @@ namespace HookeRope.Solver
                 if (shortened) ChainLineSearch.Shorten(c, step);
                 unconverged = true;
             }
-            return EstimateTooLow(c, invH2) || unconverged;
+            bool branches = c.Plasticity != null && c.Plasticity.UpdateBranches(c, invH2);
+            return EstimateTooLow(c, invH2) || unconverged || branches;
         }
 
         private static void ClearForces(ChainState c)
@@ -101,25 +102,27 @@ namespace HookeRope.Solver
             double[] axial = c.AxialCompliance, transverse = c.TransverseCompliance, estimate = c.EstimatedTension;
             bool[] broken = c.Broken, active = c.Active, assembled = c.Assembled;
             c.RigidInSolve = false;
+            SegmentPlasticity plastic = c.Plasticity;
             for (int j = 0; j < s; j++)
             {
                 assembled[j] = false;
                 if (broken[j]) { active[j] = false; continue; }
-                float len = c.Direction(j, out float fnx, out float fny, out float fnz, out float ddx, out float ddy, out float ddz);
-                length[j] = len;
-                double nx = fnx, ny = fny, nz = fnz;
+                double len = c.Direction(j, out double nx, out double ny, out double nz, out float ddx, out float ddy, out float ddz);
+                length[j] = (float)len;
                 double alpha = compliance[j];
                 double mobility = (double)w[j] + w[j + 1];
                 if (mobility == 0.0 && alpha == 0.0) { active[j] = false; continue; }
                 if (alpha == 0.0) c.RigidInSolve = true;
                 double g = alpha > 0.0 ? gammaAll : 0.0;
-                double restEffective = rest[j], alphaTilde = alpha * invH2;
+                double restJ = plastic == null ? rest[j] : plastic.Rest(j); // a plastic segment's force is measured from L_p
+                double restEffective = restJ, alphaTilde = alpha * invH2;
                 if (g > 0.0)
                 {
                     double rate = nx * ddx + ny * ddy + nz * ddz; // the substep's stretch along n, m
-                    restEffective = (rest[j] + g * (len - rate)) / (1.0 + g);
+                    restEffective = (restJ + g * (len - rate)) / (1.0 + g);
                     alphaTilde /= 1.0 + g;
                 }
+                if (plastic != null && plastic.IsYielding(j)) plastic.FlowRow(j, invH2, ref restEffective, ref alphaTilde);
                 double magnitude = Math.Sqrt(fx[j] * fx[j] + fy[j] * fy[j] + fz[j] * fz[j]);
                 double ex = nx, ey = ny, ez = nz, signed = 0.0;
                 if (magnitude > 0.0)
@@ -333,9 +336,9 @@ namespace HookeRope.Solver
         /// <summary>How much longer (m) released segment j now is than its effective rest length (≤ 0: not stretched).</summary>
         private static double StretchBeyondRest(ChainState c, int j)
         {
-            double dx = ((double)c.PrevX[j + 1] + c.DX[j + 1]) - ((double)c.PrevX[j] + c.DX[j]);
-            double dy = ((double)c.PrevY[j + 1] + c.DY[j + 1]) - ((double)c.PrevY[j] + c.DY[j]);
-            double dz = ((double)c.PrevZ[j + 1] + c.DZ[j + 1]) - ((double)c.PrevZ[j] + c.DZ[j]);
+            double dx = ((double)c.PrevX[j + 1] - c.PrevX[j]) + (((double)c.LowX[j + 1] - c.LowX[j]) + ((double)c.DX[j + 1] - c.DX[j]));
+            double dy = ((double)c.PrevY[j + 1] - c.PrevY[j]) + (((double)c.LowY[j + 1] - c.LowY[j]) + ((double)c.DY[j + 1] - c.DY[j]));
+            double dz = ((double)c.PrevZ[j + 1] - c.PrevZ[j]) + (((double)c.LowZ[j + 1] - c.LowZ[j]) + ((double)c.DZ[j + 1] - c.DZ[j]));
             return Math.Sqrt(dx * dx + dy * dy + dz * dz) - c.EffectiveRest[j];
         }
 

@@ -22,6 +22,7 @@ namespace HookeRope.Solver
             Debug.Assert(w.Length == s + 1 && dx.Length == s + 1 && dy.Length == s + 1 && dz.Length == s + 1
                 && rest.Length == s && compliance.Length == s && broken.Length == s && lambda.Length == s, "ChainState arrays sized from SegmentCount");
             bool contacts = c.ContactCount > 0;
+            SegmentPlasticity plastic = c.Plasticity;
             float wa = w[0];
             for (int j = 0; j < s; j++)
             {
@@ -30,11 +31,14 @@ namespace HookeRope.Solver
                 double alpha = compliance[j];
                 double wSum = (double)wa + wb;
                 if (wSum == 0.0 && alpha == 0.0) { wa = wb; continue; }
-                float len = c.Direction(j, out float nx, out float ny, out float nz, out float ddx, out float ddy, out float ddz);
+                double len = c.Direction(j, out double ex, out double ey, out double ez, out float ddx, out float ddy, out float ddz);
+                float nx = (float)ex, ny = (float)ey, nz = (float)ez;
                 double alphaTilde = alpha * invH2;
                 double g = alpha > 0.0 ? gamma : 0.0;
                 double rel = g > 0.0 ? nx * ddx + ny * ddy + nz * ddz : 0.0;
-                double numerator = -((double)len - rest[j]) - alphaTilde * lambda[j] - g * rel;
+                double restJ = plastic == null ? rest[j] : plastic.Rest(j); // a plastic segment's force is measured from L_p
+                double numerator = -((double)len - restJ) - alphaTilde * lambda[j] - g * rel;
+                if (plastic != null) plastic.ChooseBranch(j, lambda[j], g, wSum, invH2, ref numerator, ref alphaTilde);
                 if (contacts && (c.ContactActive[j] || c.ContactActive[j + 1]))
                 {
                     ProjectWithContacts(c, j, nx, ny, nz, numerator, g, alphaTilde, tensionOnly);

@@ -31,6 +31,9 @@ namespace HookeRope.Solver
         /// <summary>Number of colliders added so far.</summary>
         public int ColliderCount => colliders.Count;
 
+        /// <summary>The colliders (tests and the bench compare the broad phase with the brute-force pass through it).</summary>
+        internal CollisionSet Collisions => colliders;
+
         /// <summary>
         /// Pins a particle to a kinematic target (world m) that the host moves with <see cref="SetPinTarget"/>
         /// (an XR hand, an anchor). compliance (m/N, finite, ≥ 0): 0 = rigid — the particle becomes kinematic
@@ -66,9 +69,7 @@ namespace HookeRope.Solver
             pinBroken[p] = false;
             if (compliance == 0f)
             {
-                chain.X[particle] = chain.PrevX[particle] = chain.StepStartX[particle] = local.X;
-                chain.Y[particle] = chain.PrevY[particle] = chain.StepStartY[particle] = local.Y;
-                chain.Z[particle] = chain.PrevZ[particle] = chain.StepStartZ[particle] = local.Z;
+                chain.Place(particle, local.X, local.Y, local.Z);
                 chain.VelX[particle] = chain.VelY[particle] = chain.VelZ[particle] = 0f;
                 RefreshKinematic();
                 RefreshLengths();
@@ -280,7 +281,9 @@ namespace HookeRope.Solver
         {
             if (shape.Rotation.LengthSquared == 0f) throw new ArgumentException("shape must be built with ColliderShape.Plane/Sphere/Capsule/Box", nameof(shape));
             chain.EnsureContacts();
-            return colliders.Add(shape, shape.Position - Origin);
+            int index = colliders.Add(shape, shape.Position - Origin);
+            colliders.Reserve(chain.ParticleCount);
+            return index;
         }
 
         /// <summary>
@@ -334,7 +337,8 @@ namespace HookeRope.Solver
             {
                 if (pinBroken[p] || pinCompliance[p] == 0f) continue;
                 int i = pinParticle[p];
-                double dx = chain.X[i] - pinEnd[p].X, dy = chain.Y[i] - pinEnd[p].Y, dz = chain.Z[i] - pinEnd[p].Z;
+                double dx = (double)chain.X[i] - pinEnd[p].X + chain.LowX[i], dy = (double)chain.Y[i] - pinEnd[p].Y + chain.LowY[i];
+                double dz = (double)chain.Z[i] - pinEnd[p].Z + chain.LowZ[i];
                 e += 0.5 * (dx * dx + dy * dy + dz * dz) / pinCompliance[p];
             }
             return e;

@@ -33,15 +33,15 @@ namespace HookeRope.Solver
             for (int j = 0; j < chain.SegmentCount; j++)
             {
                 if (chain.Broken[j] || chain.Compliance[j] == 0f) continue;
-                double dx = (double)x[j + 1] - x[j], dy = (double)y[j + 1] - y[j], dz = (double)z[j + 1] - z[j];
-                double c = Math.Sqrt(dx * dx + dy * dy + dz * dz) - chain.RestLength[j];
+                chain.Span(j, out double dx, out double dy, out double dz);
+                double c = Math.Sqrt(dx * dx + dy * dy + dz * dz) - chain.CurrentRest(j);
                 Accumulate(tensionOnly ? c : Math.Abs(c), eps, chain.Compliance[j], ref lower, ref upper);
             }
             for (int p = 0; p < pinCount; p++)
             {
                 if (pinBroken[p] || pinCompliance[p] == 0f) continue;
                 int i = pinParticle[p];
-                double dx = (double)x[i] - pinEnd[p].X, dy = (double)y[i] - pinEnd[p].Y, dz = (double)z[i] - pinEnd[p].Z;
+                double dx = ((double)x[i] + chain.LowX[i]) - pinEnd[p].X, dy = ((double)y[i] + chain.LowY[i]) - pinEnd[p].Y, dz = ((double)z[i] + chain.LowZ[i]) - pinEnd[p].Z;
                 Accumulate(Math.Sqrt(dx * dx + dy * dy + dz * dz), eps, pinCompliance[p], ref lower, ref upper);
             }
         }

@@ -18,19 +18,29 @@ namespace HookeRope.Solver
         private bool historyValid;
         private double historyStep;
         /// <summary>
-        /// Strain (dimensionless) of the prediction beyond which a substep counts as violent (a teleported anchor, a rope
-        /// released far stretched): the history restarts and the next substep is backward Euler. A linearisation that far
-        /// from the solution makes the solve's displacement a poor force estimate, and BDF2 carries it into two velocities.
+        /// Change of strain (dimensionless) within one substep beyond which the substep counts as violent (a teleported
+        /// anchor, a rope released far stretched): the history restarts and the next substep is backward Euler. A
+        /// linearisation that far from where the substep started makes the solve's displacement a poor force estimate, and
+        /// BDF2 would carry it into two velocities. A rope that is merely stretched far (a soft lanyard at 100 % strain
+        /// during an arrest) changes its strain smoothly and keeps the second-order scheme.
         /// </summary>
         public const float ViolentStrain = 0.5f;
 
-        /// <summary>True when some intact segment's predicted length (the solve's linearisation point) exceeds (1 + <see cref="ViolentStrain"/>)·L.</summary>
+        /// <summary>
+        /// True when some intact segment's length at the solve's linearisation point differs from its length at the start
+        /// of the substep by more than <see cref="ViolentStrain"/>·L.
+        /// </summary>
         private bool Violent()
         {
-            float[] length = chain.Length, rest = chain.RestLength;
+            float[] length = chain.Length, rest = chain.RestLength, x = chain.PrevX, y = chain.PrevY, z = chain.PrevZ;
             bool[] broken = chain.Broken;
             for (int j = 0; j < chain.SegmentCount; j++)
-                if (!broken[j] && length[j] > (1f + ViolentStrain) * rest[j]) return true;
+            {
+                if (broken[j]) continue;
+                float dx = x[j + 1] - x[j], dy = y[j + 1] - y[j], dz = z[j + 1] - z[j];
+                float start = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
+                if (MathF.Abs(length[j] - start) > ViolentStrain * rest[j]) return true;
+            }
             return false;
         }
 

@@ -10,7 +10,7 @@ namespace HookeRope.Solver
 
         /// <summary>
         /// Advances the rope by one host step (s, in (0, 1]): <see cref="RopeSettings.Substeps"/> substeps of
-        /// h = Δt/substeps, each in four phases: predict (gravity, rigid pins), collide (push out, detect contacts),
+        /// h = Δt/substeps, each in four phases: predict (gravity, drag, rigid pins), collide (push out, detect contacts),
         /// solve (<see cref="RopeSettings.Iterations"/> constraint iterations: chain, compliant pins, colliders) and
         /// finish (velocities, tensions, pin forces and pin breaks). The positions at the start of the step are kept for
         /// <see cref="Interpolate"/>. Allocation-free.
@@ -48,17 +48,23 @@ namespace HookeRope.Solver
             reportIterations = 0; reportViolent = 0; reportShortened = 0; reportUnconverged = 0;
             TimeIntegrator integrator = settings.Integrator;
             bool secondOrder = integrator != TimeIntegrator.BackwardEuler;
+            bool drag = settings.HasDrag, viscousDrag = drag && settings.ViscousDrag > 0f;
+            if (drag) PrepareDrag();
             for (int k = 0; k < substeps; k++)
             {
                 float t = (float)(k + 1) / substeps;
                 TimeIntegrator scheme = SubstepScheme(integrator, hd);
                 double hEff = EffectiveStep(scheme, hd);
                 PredictPhase(t, hostDeltaTime, secondOrder, scheme, h, hd, g);
+                if (drag) PredictDrag(secondOrder, scheme == TimeIntegrator.Bdf2, h, hd, hEff, g);
                 // push the prediction out of the colliders and find the contacts the chain solve folds in
                 CollidePhase(h, ContactPass.StartOfSubstep);
+                if (viscousDrag) FoldViscousDrag(hEff);
                 bool violentSolve = SolvePhase(h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder);
+                if (viscousDrag) UnfoldViscousDrag();
                 if (secondOrder) UpdateVelocitiesSecondOrder(scheme, hd, violentSolve || Violent());
                 else UpdateVelocities(h);
+                if (drag) AccumulateDragWork();
                 FinishPhase(hd, hEff, g, k == 0);
                 if (loadCount > 0) TrackLoadPeaks(1f / h, g);
             }
@@ -166,11 +172,13 @@ namespace HookeRope.Solver
             return violentSubstep;
         }
 
-        /// <summary>Phase 4 (after the velocities): time, tensions T = −λ/h_eff², pin forces (and pin breaks). The segment lengths are refreshed once, after the last substep.</summary>
+        /// <summary>Phase 4 (after the velocities): time, tensions T = −λ/h_eff², the plastic return mapping, pin forces (and pin breaks). The segment lengths are refreshed once, after the last substep.</summary>
         private void FinishPhase(double hd, double hEff, Float3 g, bool firstSubstep)
         {
             time += hd;
             UpdateTensions(hEff, firstSubstep);
+            // the return mapping of the plastic segments on the committed positions (γ = β/h: the solve's damping fold)
+            if (chain.Plasticity != null) chain.Plasticity.ReturnMap(chain, settings.Damping / hd);
             if (pinCount > 0) UpdatePinForces(hEff, g);
         }
 
@@ -214,9 +222,9 @@ namespace HookeRope.Solver
                 if (pinBroken[p] || pinCompliance[p] != 0f) continue;
                 int i = pinParticle[p];
                 Float3 target = PinTarget(p, t);
-                chain.DX[i] = target.X - chain.PrevX[i];
-                chain.DY[i] = target.Y - chain.PrevY[i];
-                chain.DZ[i] = target.Z - chain.PrevZ[i];
+                chain.DX[i] = (float)((double)target.X - chain.PrevX[i] - chain.LowX[i]);
+                chain.DY[i] = (float)((double)target.Y - chain.PrevY[i] - chain.LowY[i]);
+                chain.DZ[i] = (float)((double)target.Z - chain.PrevZ[i] - chain.LowZ[i]);
             }
         }
 
@@ -267,7 +275,7 @@ namespace HookeRope.Solver
                 if (pinBroken[p] || pinCompliance[p] == 0f) continue;
                 int i = pinParticle[p];
                 if (chain.Kinematic[i]) continue;
-                chain.InverseMass[i] = 1f / chain.Mass[i];
+                chain.InverseMass[i] = SolveInverseMass(i);
                 double alphaTilde = pinCompliance[p] * invH2;
                 Float3 target = PinTarget(p, t);
                 int b = 3 * p;
@@ -282,12 +290,12 @@ namespace HookeRope.Solver
         /// <summary>Target (rope-local m) of pin p at substep fraction t of the host step.</summary>
         private Float3 PinTarget(int p, float t) => Float3.Lerp(pinStart[p], pinEnd[p], t);
 
-        /// <summary>Pin constraint C = x_i − target (m, double) from particle i's live position Prev + D.</summary>
+        /// <summary>Pin constraint C = x_i − target (m, double) from particle i's live position Prev + Low + D.</summary>
         private void PinOffset(int i, Float3 target, out double cx, out double cy, out double cz)
         {
-            cx = (double)chain.PrevX[i] - target.X + chain.DX[i];
-            cy = (double)chain.PrevY[i] - target.Y + chain.DY[i];
-            cz = (double)chain.PrevZ[i] - target.Z + chain.DZ[i];
+            cx = (double)chain.PrevX[i] - target.X + chain.LowX[i] + chain.DX[i];
+            cy = (double)chain.PrevY[i] - target.Y + chain.LowY[i] + chain.DY[i];
+            cz = (double)chain.PrevZ[i] - target.Z + chain.LowZ[i] + chain.DZ[i];
         }
 
         private void UpdateVelocities(float h)
@@ -299,18 +307,21 @@ namespace HookeRope.Solver
         }
 
         /// <summary>
-        /// Ends particle i's substep at x = x_prev + d with velocity (ux, uy, uz) m/s. Never lets a non-finite value into the
-        /// state: then the particle falls back to its last good position, at rest, with no displacement.
+        /// Ends particle i's substep at x = x_prev + Low + d with velocity (ux, uy, uz) m/s. The sum is formed in double and
+        /// split into the float position and its new remainder Low, so no part of d is rounded away. Never lets a non-finite value into
+        /// the state: then the particle falls back to its last good position, at rest, with no displacement.
         /// </summary>
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         private void CommitParticle(int i, float ux, float uy, float uz)
         {
             float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
-            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
-            float nx = px[i] + dx[i], ny = py[i] + dy[i], nz = pz[i] + dz[i];
+            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ, lx = chain.LowX, ly = chain.LowY, lz = chain.LowZ;
+            double ex = (double)px[i] + lx[i] + dx[i], ey = (double)py[i] + ly[i] + dy[i], ez = (double)pz[i] + lz[i] + dz[i];
+            float nx = (float)ex, ny = (float)ey, nz = (float)ez;
             if (float.IsFinite(ux + uy + uz) && float.IsFinite(nx + ny + nz))
             {
                 x[i] = nx; y[i] = ny; z[i] = nz;
+                lx[i] = (float)(ex - nx); ly[i] = (float)(ey - ny); lz[i] = (float)(ez - nz);
                 chain.VelX[i] = ux; chain.VelY[i] = uy; chain.VelZ[i] = uz;
             }
             else
@@ -404,7 +415,7 @@ namespace HookeRope.Solver
             {
                 if (chain.Broken[j]) continue;
                 double rest = chain.RestLength[j];
-                double c = chain.Length[j] - rest;
+                double c = chain.Length[j] - chain.CurrentRest(j);
                 double tension = chain.Tension[j];
                 if (tensionOnly && tension <= 0.0 && c <= 0.0) continue; // slack: no constraint to meet
                 double error = Math.Abs(c - chain.Compliance[j] * tension) / rest;

@@ -43,9 +43,7 @@ namespace HookeRope.Solver
             for (int i = 0; i <= s; i++)
             {
                 Float3 p = span * ((float)i / s);
-                chain.X[i] = chain.PrevX[i] = chain.StepStartX[i] = p.X;
-                chain.Y[i] = chain.PrevY[i] = chain.StepStartY[i] = p.Y;
-                chain.Z[i] = chain.PrevZ[i] = chain.StepStartZ[i] = p.Z;
+                chain.Place(i, p.X, p.Y, p.Z);
             }
             for (int j = 0; j < s; j++) { chain.DirX[j] = dir.X; chain.DirY[j] = dir.Y; chain.DirZ[j] = dir.Z; }
             ApplySettings();
@@ -76,7 +74,7 @@ namespace HookeRope.Solver
         /// <summary>Rest length of each segment in metres.</summary>
         public ReadOnlySpan<float> RestLengths => chain.RestLength;
 
-        /// <summary>Current length of each segment in metres (after the last step).</summary>
+        /// <summary>Current length of each segment in metres (after the last step), from the exact positions (float + remainder): resolved far below the float step of the coordinates.</summary>
         public ReadOnlySpan<float> SegmentLengths => chain.Length;
 
         /// <summary>Tension of each segment in newtons over the last substep, ≥ 0 = pulling (T = −λ/h²).</summary>
@@ -151,9 +149,7 @@ namespace HookeRope.Solver
             CheckParticle(particle);
             CheckFinite(position, nameof(position), "a finite position in metres");
             Float3 local = position - Origin;
-            chain.X[particle] = chain.PrevX[particle] = chain.StepStartX[particle] = local.X;
-            chain.Y[particle] = chain.PrevY[particle] = chain.StepStartY[particle] = local.Y;
-            chain.Z[particle] = chain.PrevZ[particle] = chain.StepStartZ[particle] = local.Z;
+            chain.Place(particle, local.X, local.Y, local.Z);
             RefreshLengths();
         }
 
@@ -189,12 +185,21 @@ namespace HookeRope.Solver
             return chain.Broken[segment];
         }
 
-        /// <summary>Breaks a segment now (no-op if already broken) and raises <see cref="Broken"/>.</summary>
+        /// <summary>
+        /// Breaks a segment now (no-op if already broken) and raises <see cref="Broken"/>. The rope parts at the segment's
+        /// middle: each side keeps half of its rest length and of its mass (the lumped μ·L/2 its particle already carries),
+        /// so no rest length and no mass vanish (the mesh draws each half as a relaxed dangling end). The elastic energy the
+        /// segment stored, ½·C²/α (J), is released into the recoil: the two end particles are pushed apart along the
+        /// segment with equal and opposite impulses whose kinetic energy is exactly that energy (a kinematic end counts as
+        /// infinitely heavy; both kinematic: the anchors take it), capped where the last step's substep is too coarse to
+        /// carry it without folding the slack end (see <see cref="RopeBreakEvent.RecoilEnergy"/>). Allocation-free.
+        /// </summary>
         public void BreakSegment(int segment)
         {
             CheckSegment(segment);
             if (chain.Broken[segment]) return;
             float tension = chain.Tension[segment];
+            double recoil = ReleaseRecoil(segment, out double stored);
             chain.Broken[segment] = true;
             chain.BrokenCount++;
             chain.Lambda[segment] = 0.0;
@@ -203,7 +208,7 @@ namespace HookeRope.Solver
                 0.5f * (chain.X[segment] + chain.X[segment + 1]),
                 0.5f * (chain.Y[segment] + chain.Y[segment + 1]),
                 0.5f * (chain.Z[segment] + chain.Z[segment + 1]));
-            Broken?.Invoke(new RopeBreakEvent(time, Origin + midpoint, segment, tension));
+            Broken?.Invoke(new RopeBreakEvent(time, Origin + midpoint, segment, tension, stored, recoil));
         }
 
         /// <summary>Raised when a segment breaks (<see cref="BreakSegment"/>: a cut, or the fracture decision of <see cref="RopeSimulation"/>): time s, position m, segment, tension N just before.</summary>
@@ -231,6 +236,7 @@ namespace HookeRope.Solver
                 appliedRadius = settings.Radius;
                 for (int i = 0; i <= s; i++) chain.Radius[i] = appliedRadius;
             }
+            ApplyPlasticity();
             appliedVersion = settings.Version;
             RefreshLengths();
         }
@@ -259,11 +265,12 @@ namespace HookeRope.Solver
             double e = 0.0;
             Float3 g = settings.Gravity;
             for (int i = 0; i < chain.ParticleCount; i++)
-                e -= chain.Mass[i] * ((double)g.X * chain.X[i] + (double)g.Y * chain.Y[i] + (double)g.Z * chain.Z[i]);
+                e -= chain.Mass[i] * ((double)g.X * ((double)chain.X[i] + chain.LowX[i]) + (double)g.Y * ((double)chain.Y[i] + chain.LowY[i])
+                    + (double)g.Z * ((double)chain.Z[i] + chain.LowZ[i]));
             return e;
         }
 
-        /// <summary>Elastic energy Σ½C²/α in joules over the loaded segments (stretched ones for a tension-only rope) and compliant pins.</summary>
+        /// <summary>Elastic energy Σ½C²/α in joules (C = l − L_p: measured from the plastic rest length) over the loaded segments (stretched ones for a tension-only rope) and compliant pins.</summary>
         public double ElasticEnergy()
         {
             double e = 0.0;
@@ -271,8 +278,8 @@ namespace HookeRope.Solver
             for (int j = 0; j < chain.SegmentCount; j++)
             {
                 if (chain.Broken[j] || chain.Compliance[j] == 0f) continue;
-                double dx = (double)chain.X[j + 1] - chain.X[j], dy = (double)chain.Y[j + 1] - chain.Y[j], dz = (double)chain.Z[j + 1] - chain.Z[j];
-                double c = Math.Sqrt(dx * dx + dy * dy + dz * dz) - chain.RestLength[j];
+                chain.Span(j, out double dx, out double dy, out double dz);
+                double c = Math.Sqrt(dx * dx + dy * dy + dz * dz) - chain.CurrentRest(j);
                 if (tensionOnly && c < 0.0) continue;
                 e += 0.5 * c * c / chain.Compliance[j];
             }
@@ -294,8 +301,8 @@ namespace HookeRope.Solver
         {
             for (int j = 0; j < chain.SegmentCount; j++)
             {
-                float dx = chain.X[j + 1] - chain.X[j], dy = chain.Y[j + 1] - chain.Y[j], dz = chain.Z[j + 1] - chain.Z[j];
-                chain.Length[j] = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
+                chain.Span(j, out double dx, out double dy, out double dz);
+                chain.Length[j] = (float)Math.Sqrt(dx * dx + dy * dy + dz * dz);
             }
         }
 

@@ -27,6 +27,11 @@ namespace HookeRope.Solver
         private ConstraintSolverKind solver = RopeParameters.Solver.Default;
         private TensionModel tension = RopeParameters.TensionModel.Default;
         private TimeIntegrator integrator = DefaultIntegrator;
+        private float viscousDrag = RopeParameters.ViscousDrag.Default;
+        private float dragCoefficient = RopeParameters.DragCoefficient.Default;
+        private float skinFriction = RopeParameters.SkinFriction.Default;
+        private float airDensity = RopeParameters.AirDensity.Default;
+        private Float3 wind = new Float3(RopeParameters.Wind.DefaultX, RopeParameters.Wind.DefaultY, RopeParameters.Wind.DefaultZ);
 
         /// <summary>Default of <see cref="Integrator"/>.</summary>
         public const TimeIntegrator DefaultIntegrator = TimeIntegrator.Bdf2;
@@ -109,6 +114,49 @@ namespace HookeRope.Solver
             set { CheckChoice((int)value, (int)TimeIntegrator.BackwardEuler, (int)TimeIntegrator.Bdf2, nameof(Integrator)); integrator = value; Version++; }
         }
 
+        /// <summary>
+        /// Viscous drag coefficient c in N·s/m², in [0, 1e4] (<see cref="RopeParameters.ViscousDrag"/>): a force −c·(v − <see cref="Wind"/>)
+        /// per metre of rope, applied implicitly (it never adds energy). A uniform rope's swing decays as exp(−c·t/(2μ)) and it
+        /// falls at most at μ·g/c (μ = <see cref="LinearDensity"/>). Default 0 (off).
+        /// </summary>
+        public float ViscousDrag { get => viscousDrag; set => Set(ref viscousDrag, value, RopeParameters.ViscousDrag.Row); }
+
+        /// <summary>
+        /// Drag coefficient C_d (dimensionless), in [0, 10] (<see cref="RopeParameters.DragCoefficient"/>) of the quadratic air drag
+        /// across the rope: ½·ρ·C_d·2R·|v⊥|·v⊥ per metre, v⊥ the velocity across the rope relative to the air (ρ =
+        /// <see cref="AirDensity"/>, R = <see cref="Radius"/>). About 1.0–1.2 for a rope in air. Default 0 (off).
+        /// </summary>
+        public float DragCoefficient { get => dragCoefficient; set => Set(ref dragCoefficient, value, RopeParameters.DragCoefficient.Row); }
+
+        /// <summary>
+        /// Skin-friction coefficient C_f (dimensionless), in [0, 1] (<see cref="RopeParameters.SkinFriction"/>) of the axial air drag
+        /// along the rope: ½·ρ·C_f·2πR·|v∥|·v∥ per metre, v∥ the velocity along the rope relative to the air. About 0.01. Default 0 (off).
+        /// </summary>
+        public float SkinFriction { get => skinFriction; set => Set(ref skinFriction, value, RopeParameters.SkinFriction.Row); }
+
+        /// <summary>Density ρ of the air (or fluid) in kg/m³, in [0, 1e4] (<see cref="RopeParameters.AirDensity"/>). Scales C_d and C_f. Default 1.2 kg/m³.</summary>
+        public float AirDensity { get => airDensity; set => Set(ref airDensity, value, RopeParameters.AirDensity.Row); }
+
+        /// <summary>
+        /// Velocity of the air in m/s (world axes; the rope-local frame is the world frame shifted, so a velocity is the same in
+        /// both), each component in [−1000, 1000] (<see cref="RopeParameters.Wind"/>); a non-finite component throws. The drag acts
+        /// on the rope's velocity relative to it; without drag it has no effect. Default (0, 0, 0).
+        /// </summary>
+        public Float3 Wind
+        {
+            get => wind;
+            set
+            {
+                ParameterInfo row = RopeParameters.Wind.Row;
+                RopeParameters.Check(value.X, row); RopeParameters.Check(value.Y, row); RopeParameters.Check(value.Z, row);
+                wind = value;
+                Version++;
+            }
+        }
+
+        /// <summary>True when some drag acts (c &gt; 0, or ρ &gt; 0 with C_d or C_f &gt; 0). False costs nothing per step.</summary>
+        public bool HasDrag => viscousDrag > 0f || (airDensity > 0f && (dragCoefficient > 0f || skinFriction > 0f));
+
         /// <summary>A copy with the same values (version 0).</summary>
         public RopeSettings Clone()
         {
@@ -148,5 +196,159 @@ namespace HookeRope.Solver
             if (value != first && value != second)
                 throw new ArgumentOutOfRangeException(name, value, name + " must be one of its named values (" + first + " or " + second + ")");
         }
+
+        // ---- Material law (issue 15): plasticity, necking, energy absorber ----------------------------------------------
+
+        private MaterialModel materialModel = RopeParameters.MaterialModel.Default;
+        private float yieldStrain = RopeParameters.YieldStrain.Default;
+        private float hardeningModulus = RopeParameters.HardeningModulus.Default;
+        private float neckingStrain = RopeParameters.NeckingStrain.Default;
+        private float ultimateStrain = RopeParameters.UltimateStrain.Default;
+        private bool energyAbsorber = RopeParameters.EnergyAbsorber.Default;
+        private float absorberForce = RopeParameters.AbsorberForce.Default;
+        private float absorberDeployment = RopeParameters.AbsorberDeployment.Default;
+
+        /// <summary>
+        /// The segments' constitutive law (<see cref="RopeParameters.MaterialModel"/>): <see cref="Solver.MaterialModel.Elastic"/>
+        /// (default) or <see cref="Solver.MaterialModel.ElasticPlastic"/>. Switching to elastic–plastic checks
+        /// <see cref="YieldStrain"/> ≤ <see cref="NeckingStrain"/> &lt; <see cref="UltimateStrain"/> and throws an
+        /// <see cref="ArgumentException"/> naming the first value out of order; switching back to elastic forgets the
+        /// permanent set.
+        /// </summary>
+        public MaterialModel MaterialModel
+        {
+            get => materialModel;
+            set
+            {
+                CheckChoice((int)value, (int)MaterialModel.Elastic, (int)MaterialModel.ElasticPlastic, nameof(MaterialModel));
+                if (value == MaterialModel.ElasticPlastic) CheckPlasticOrder(yieldStrain, neckingStrain, ultimateStrain);
+                materialModel = value;
+                Version++;
+            }
+        }
+
+        /// <summary>
+        /// Elastic–plastic: elastic strain at yield ε_y (dimensionless), in (0, 1000] (<see cref="RopeParameters.YieldStrain"/>)
+        /// and, with the plastic material, at most <see cref="NeckingStrain"/> and below <see cref="UltimateStrain"/>. The yield
+        /// force is E·A·ε_y (<see cref="YieldForce"/>). Default 0.1.
+        /// </summary>
+        public float YieldStrain
+        {
+            get => yieldStrain;
+            set => SetPlastic(ref yieldStrain, value, RopeParameters.YieldStrain.Row, value, neckingStrain, ultimateStrain);
+        }
+
+        /// <summary>Yield force E·A·ε_y in newtons (+∞ for an inextensible rope, which never yields).</summary>
+        public float YieldForce => AxialStiffness * yieldStrain;
+
+        /// <summary>
+        /// Elastic–plastic: hardening modulus H in newtons, in [0, 1e12] (<see cref="RopeParameters.HardeningModulus"/>): the
+        /// force grows by H per unit plastic strain after yield; 0 = a plateau. Negative values throw (softening is the
+        /// neck's). Default 5000 N.
+        /// </summary>
+        public float HardeningModulus { get => hardeningModulus; set => Set(ref hardeningModulus, value, RopeParameters.HardeningModulus.Row); }
+
+        /// <summary>
+        /// Elastic–plastic: strain on the hardening curve at which the neck forms at the defect segment (dimensionless), in
+        /// (0, 1000] (<see cref="RopeParameters.NeckingStrain"/>) and, with the plastic material, in
+        /// [<see cref="YieldStrain"/>, <see cref="UltimateStrain"/>). The rope's force peaks there. Default 0.45.
+        /// </summary>
+        public float NeckingStrain
+        {
+            get => neckingStrain;
+            set => SetPlastic(ref neckingStrain, value, RopeParameters.NeckingStrain.Row, yieldStrain, value, ultimateStrain);
+        }
+
+        /// <summary>
+        /// Elastic–plastic: strain of the neck segment at which its force has fallen to zero and the rope breaks (elongation at
+        /// break, dimensionless), in (0, 1000] (<see cref="RopeParameters.UltimateStrain"/>) and, with the plastic material,
+        /// above <see cref="NeckingStrain"/>. Default 0.6.
+        /// </summary>
+        public float UltimateStrain
+        {
+            get => ultimateStrain;
+            set => SetPlastic(ref ultimateStrain, value, RopeParameters.UltimateStrain.Row, yieldStrain, neckingStrain, value);
+        }
+
+        /// <summary>
+        /// Sets the whole plastic law at once (strains dimensionless, <paramref name="hardening"/> in N), checking each against
+        /// its table range and their order ε_y ≤ ε_n &lt; ε_u, and switches <see cref="MaterialModel"/> to elastic–plastic.
+        /// Nothing changes when a value is rejected.
+        /// </summary>
+        public void SetPlasticity(float yield, float hardening, float necking, float ultimate)
+        {
+            RopeParameters.Check(yield, RopeParameters.YieldStrain.Row);
+            RopeParameters.Check(hardening, RopeParameters.HardeningModulus.Row);
+            RopeParameters.Check(necking, RopeParameters.NeckingStrain.Row);
+            RopeParameters.Check(ultimate, RopeParameters.UltimateStrain.Row);
+            CheckPlasticOrder(yield, necking, ultimate);
+            yieldStrain = yield;
+            hardeningModulus = hardening;
+            neckingStrain = necking;
+            ultimateStrain = ultimate;
+            materialModel = MaterialModel.ElasticPlastic;
+            Version++;
+        }
+
+        /// <summary>An energy absorber in series with the last segment (<see cref="RopeParameters.EnergyAbsorber"/>). Default false.</summary>
+        public bool EnergyAbsorber
+        {
+            get => energyAbsorber;
+            set { energyAbsorber = value; Version++; }
+        }
+
+        /// <summary>Plateau force F_p of the energy absorber in newtons, in (0, 1e7] (<see cref="RopeParameters.AbsorberForce"/>); ≤ 0 throws. Default 4000 N.</summary>
+        public float AbsorberForce { get => absorberForce; set => Set(ref absorberForce, value, RopeParameters.AbsorberForce.Row); }
+
+        /// <summary>Largest deployment of the energy absorber in metres, in (0, 100] (<see cref="RopeParameters.AbsorberDeployment"/>). Default 1.75 m.</summary>
+        public float AbsorberDeployment { get => absorberDeployment; set => Set(ref absorberDeployment, value, RopeParameters.AbsorberDeployment.Row); }
+
+        /// <summary>
+        /// The energy-absorber preset: turns the absorber on with the plateau force <paramref name="plateauForce"/> (N, in
+        /// (0, 1e7]) and the deployment length <paramref name="deploymentLength"/> (m, in (0, 100]); defaults are a typical
+        /// EN 355 absorber (4 kN, 1.75 m). Nothing changes when a value is rejected.
+        /// </summary>
+        public void UseEnergyAbsorber(float plateauForce = RopeParameters.AbsorberForce.Default, float deploymentLength = RopeParameters.AbsorberDeployment.Default)
+        {
+            RopeParameters.Check(plateauForce, RopeParameters.AbsorberForce.Row);
+            RopeParameters.Check(deploymentLength, RopeParameters.AbsorberDeployment.Row);
+            absorberForce = plateauForce;
+            absorberDeployment = deploymentLength;
+            energyAbsorber = true;
+            Version++;
+        }
+
+        /// <summary>True when the segments need the plastic state: the elastic–plastic material or an energy absorber.</summary>
+        internal bool HasPlasticity => materialModel == MaterialModel.ElasticPlastic || energyAbsorber;
+
+        /// <summary>A strain of the plastic law: the table check, then (plastic material only) the order ε_y ≤ ε_n &lt; ε_u with the new value.</summary>
+        private void SetPlastic(ref float field, float value, ParameterInfo row, float yield, float necking, float ultimate)
+        {
+            RopeParameters.Check(value, row);
+            if (materialModel == MaterialModel.ElasticPlastic) CheckPlasticOrder(yield, necking, ultimate, row.Name);
+            field = value;
+            Version++;
+        }
+
+        /// <summary>
+        /// Throws an <see cref="ArgumentOutOfRangeException"/> when ε_y ≤ ε_n &lt; ε_u does not hold, naming
+        /// <paramref name="setting"/> (the parameter being set; null: the first one out of order) and its valid range given the others.
+        /// </summary>
+        private static void CheckPlasticOrder(float yield, float necking, float ultimate, string setting = null)
+        {
+            bool yieldOk = yield <= necking && yield < ultimate, neckOk = necking >= yield && necking < ultimate, ultimateOk = ultimate > necking && ultimate > yield;
+            if (yieldOk && neckOk && ultimateOk) return;
+            string name = setting ?? (!yieldOk ? nameof(YieldStrain) : !neckOk ? nameof(NeckingStrain) : nameof(UltimateStrain));
+            if (name == nameof(YieldStrain))
+                throw new ArgumentOutOfRangeException(name, yield, "YieldStrain must be in (0, NeckingStrain = " + Text(necking)
+                    + "] and below UltimateStrain = " + Text(ultimate) + " (the rope yields before it necks, and before the ultimate (break) strain).");
+            if (name == nameof(NeckingStrain))
+                throw new ArgumentOutOfRangeException(name, necking, "NeckingStrain must be in [YieldStrain = " + Text(yield)
+                    + ", UltimateStrain = " + Text(ultimate) + ") (the neck forms on the plastic branch, before the break).");
+            throw new ArgumentOutOfRangeException(name, ultimate, "UltimateStrain must be in (max(YieldStrain, NeckingStrain) = " + Text(Math.Max(yield, necking))
+                + ", 1000] (the neck softens from the necking strain to zero force at the ultimate (break) strain).");
+        }
+
+        private static string Text(float value) => value.ToString(System.Globalization.CultureInfo.InvariantCulture);
     }
 }

@@ -8,8 +8,8 @@ namespace HookeRope.World
     /// (<see cref="RopeWorld.FillMeshes"/>, <see cref="RopeWorld.StepAndFillMeshes"/>) and the host uploads them
     /// afterwards on its own thread (copy-out). Positions come either from the rope itself (rope-local frame, the
     /// default) or from caller-owned arrays written before the pass (copy-in, e.g. interpolated and in a renderer's
-    /// local frame, see <see cref="UseCallerPositions(float[], float[], float[], float)"/>). The buffers grow when the topology needs more (a break),
-    /// so a pass allocates only then.
+    /// local frame, see <see cref="UseCallerPositions(float[], float[], float[], float)"/>). The buffers grow when the topology needs more (a break,
+    /// or a rope bending more than it ever did needs more rings), to twice what it needs, so a pass allocates only then and rarely.
     /// </summary>
     public sealed class RopeMeshSlot
     {
@@ -88,8 +88,9 @@ namespace HookeRope.World
         internal void Fill(RopeSimulation simulation)
         {
             int vertexCount = simulation.GetVertexCount(), indexCount = simulation.GetIndexCount();
-            if (Vertices.Length < vertexCount) Vertices = new TubeVertex[vertexCount];
-            if (Indices.Length < indexCount) Indices = new int[indexCount];
+            // room to spare: an adaptive ring budget grows in steps as the rope bends more, and each growth here would allocate
+            if (Vertices.Length < vertexCount) Vertices = new TubeVertex[Math.Max(vertexCount, 2 * Vertices.Length)];
+            if (Indices.Length < indexCount) Indices = new int[Math.Max(indexCount, 2 * Indices.Length)];
             Update = callerX == null ? simulation.FillMesh(Vertices, Indices)
                 : hasFrame ? simulation.FillMesh(callerX, callerY, callerZ, Vertices, Indices, radiusScale, frame)
                 : simulation.FillMesh(callerX, callerY, callerZ, Vertices, Indices, radiusScale);

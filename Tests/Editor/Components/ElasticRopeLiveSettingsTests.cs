@@ -45,6 +45,28 @@ namespace HookeRope.Tests.Components
         }
 
         [Test]
+        public void DragChangeKeepsTheCoreRopeAndReachesItsSettingsWithTheWindInWorldAxes()
+        {
+            var rope = HangingRope();
+            rope.Simulate(0.02f);
+            var core = rope.Simulation.Rope;
+            Assert.That(core.Settings.HasDrag, Is.False, "drag is off by default");
+            rope.ViscousDrag = 0.4f;
+            rope.DragCoefficient = 1.1f;
+            rope.SkinFriction = 0.01f;
+            rope.AirDensity = 1.25f;
+            rope.Wind = new Vector3(3f, 0f, -2f);
+            rope.Simulate(0.02f);
+            Assert.That(rope.Simulation.Rope, Is.SameAs(core));
+            Assert.That(core.Settings.ViscousDrag, Is.EqualTo(0.4f));
+            Assert.That(core.Settings.DragCoefficient, Is.EqualTo(1.1f));
+            Assert.That(core.Settings.SkinFriction, Is.EqualTo(0.01f));
+            Assert.That(core.Settings.AirDensity, Is.EqualTo(1.25f));
+            Assert.That(core.Settings.Wind, Is.EqualTo(new HookeRope.Mathematics.Float3(3f, 0f, -2f)), "the core frame is the world shifted, not turned");
+            Assert.That(core.DragWork, Is.Not.EqualTo(0.0), "the air works on the rope");
+        }
+
+        [Test]
         public void NewSegmentCountRebuildsAtTheNextStep()
         {
             var rope = HangingRope();
@@ -60,6 +82,10 @@ namespace HookeRope.Tests.Components
         [TestCase("Density")]
         [TestCase("PoissonRatio")]
         [TestCase("Substeps")]
+        [TestCase("ViscousDrag")]
+        [TestCase("DragCoefficient")]
+        [TestCase("AirDensity")]
+        [TestCase("Wind")]
         public void OutOfRangeValueThrowsNamingTheParameter(string parameter)
         {
             var rope = HangingRope();
@@ -70,6 +96,10 @@ namespace HookeRope.Tests.Components
                 case "Radius": set = () => rope.Radius = 0f; break;
                 case "Density": set = () => rope.Density = float.NaN; break;
                 case "PoissonRatio": set = () => rope.PoissonRatio = 0.7f; break;
+                case "ViscousDrag": set = () => rope.ViscousDrag = -0.5f; break;
+                case "DragCoefficient": set = () => rope.DragCoefficient = -1f; break;
+                case "AirDensity": set = () => rope.AirDensity = float.NaN; break;
+                case "Wind": set = () => rope.Wind = new Vector3(0f, float.PositiveInfinity, 0f); break;
                 default: set = () => rope.Substeps = 0; break;
             }
             var e = Assert.Throws<ArgumentOutOfRangeException>(set);
@@ -164,11 +194,24 @@ namespace HookeRope.Tests.Components
         [TestCase("m_TensionModel", 1, true)]
         [TestCase("m_Integrator", 1 - (int)RopeParameters.Integrator.Default, true)]   // the other integrator
         [TestCase("m_Gravity", -5f, true)]
+        [TestCase("m_ViscousDrag", 0.3f, true)]
+        [TestCase("m_DragCoefficient", 1.2f, true)]
+        [TestCase("m_SkinFriction", 0.01f, true)]
+        [TestCase("m_AirDensity", 1000f, true)]
+        [TestCase("m_Wind", 4f, true)]
         [TestCase("m_NeckMode", 1, true)]
         [TestCase("m_NeckRadiusFraction", 0.6f, true)]
         [TestCase("m_DefectPosition", 0.3f, true)]
         [TestCase("m_BreakStrain", 0.5f, true)]
         [TestCase("m_BreakRadiusFraction", 0.2f, true)]
+        [TestCase("m_MaterialModel", 1, true)]
+        [TestCase("m_YieldStrain", 0.05f, true)]
+        [TestCase("m_HardeningModulus", 0f, true)]
+        [TestCase("m_NeckingStrain", 0.3f, true)]
+        [TestCase("m_UltimateStrain", 0.8f, true)]
+        [TestCase("m_EnergyAbsorber", 1, true)]
+        [TestCase("m_AbsorberForce", 3000f, true)]
+        [TestCase("m_AbsorberDeployment", 1f, true)]
         [TestCase("m_SegmentCount", 20, false)]
         [TestCase("m_RadiusModel", 1, false)]
         [TestCase("m_Necking", 1, false)]
@@ -198,6 +241,7 @@ namespace HookeRope.Tests.Components
                 case "m_End.m_Point": property.objectReferenceValue = _scene.Point("Hand", new Vector3(0.5f, 3f, 0f)); break;
                 case "m_End.m_Body": property.objectReferenceValue = _scene.Body("Load", new Vector3(0f, 2f, 0f), 80f); break;
                 case "m_Gravity": property.vector3Value = new Vector3(0f, value, 0f); break;
+                case "m_Wind": property.vector3Value = new Vector3(value, 0f, 0f); break;
                 case "m_CollisionLayers": property.intValue = (int)value; break;
                 case "m_Colliders":
                 case "m_Planes":

@@ -141,7 +141,9 @@ namespace HookeRope.Tests.Components
             if (row.Kind == ParameterKind.Int) property.intValue = (int)Math.Min(10.0 * row.Max, int.MaxValue);
             else property.floatValue = 10f * (float)row.Max;
             so.ApplyModifiedPropertiesWithoutUndo();
-            Assert.That(Number(field.GetValue(component)), Is.EqualTo(row.Kind == ParameterKind.Int ? row.Max : (float)row.Max), name + ": 10·Max → Max");
+            // an exclusive maximum (the defect position's open (0, 1)) resets to the default, like an exclusive minimum
+            double clamped = row.MaxExclusive ? row.Default : row.Max;
+            Assert.That(Number(field.GetValue(component)), Is.EqualTo(row.Kind == ParameterKind.Int ? clamped : (float)clamped), name + ": 10·Max → Max (exclusive: Default)");
 
             if (row.Kind != ParameterKind.Float) return;
             so.Update();
@@ -177,6 +179,24 @@ namespace HookeRope.Tests.Components
             Assert.That(rope.Gravity, Is.EqualTo(new Vector3((float)row.Max, (float)row.Min, 0f)));
         }
 
+        [Test]
+        public void WindSetterAndOnValidateUseTheRowsComponentRangeAndResetNaN()
+        {
+            var row = RopeParameters.Wind.Row;
+            var rope = (ElasticRope)Fresh(typeof(ElasticRope));
+            var e = Assert.Throws<ArgumentOutOfRangeException>(() => rope.Wind = new Vector3(0f, 0f, 10f * (float)row.Max));
+            Assert.That(e.ParamName, Is.EqualTo("Wind"));
+            Assert.That(e.Message, Does.Contain(row.RangeText));
+            var so = new SerializedObject(rope);
+            so.FindProperty("m_Wind").vector3Value = new Vector3(10f * (float)row.Max, 10f * (float)row.Min, 3f);
+            so.ApplyModifiedPropertiesWithoutUndo();
+            Assert.That(rope.Wind, Is.EqualTo(new Vector3((float)row.Max, (float)row.Min, 3f)));
+            so.Update();
+            so.FindProperty("m_Wind").vector3Value = new Vector3(float.NaN, 1f, 0f);
+            so.ApplyModifiedPropertiesWithoutUndo();
+            Assert.That(rope.Wind, Is.EqualTo(Vector3.zero), "a non-finite wind resets to calm");
+        }
+
         /// <summary>
         /// Every numeric serialized field (float, int, Vector3) of both components carries Unity's [Min] or [Range], so
         /// the Inspector clamps a typed value quietly; the attribute's arguments are the row's Min (and Max) constants.
@@ -202,7 +222,7 @@ namespace HookeRope.Tests.Components
                     Assert.That(Convert.ToDouble(range.ConstructorArguments[1].Value), Is.EqualTo((double)(float)row.Max), where + " maximum");
                 checkedFields++;
             }
-            Assert.That(checkedFields, Is.EqualTo(18), "numeric serialized fields of ElasticRope (17) and RopeMeshRenderer (1)");
+            Assert.That(checkedFields, Is.EqualTo(29), "numeric serialized fields of ElasticRope (28: 6 of the material law and 5 of the drag, issue 15) and RopeMeshRenderer (1)");
         }
 
         static IEnumerable<string> InspectorRowNames() => InspectorRows.Select(r => r.Name);

@@ -41,7 +41,7 @@ namespace HookeRope.Tests.Components
 
             var rows = RopeReadoutTable.Build(new[] { shortRope, longRope, unbuilt });
             Assert.That(rows.Count, Is.EqualTo(RopeReadoutTable.RowCount));
-            Assert.That(rows.Count, Is.EqualTo(11));
+            Assert.That(rows.Count, Is.EqualTo(13));
             Assert.That(rows[0].Label, Is.EqualTo(RopeReadoutTable.NameLabel));
             Assert.That(rows[0].Values, Is.EqualTo(new[] { "Short", "Long", "Unbuilt" }));
             foreach (var row in rows)

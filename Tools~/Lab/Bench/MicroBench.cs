@@ -96,12 +96,26 @@ namespace HookeRope.Lab.Bench
 
                 result.BytesPerStep = BytesPerStep(exactSetup, dt, 200);
 
-                // the real pipeline: RopeSimulation.FillMesh (ring radii from the model, 8 sides from the scenario)
+                // the real pipeline: RopeSimulation.FillMesh (ring radii from the model, 8 sides from the scenario). A fill
+                // of unchanged input is skipped, so two poses and two radius scales alternate: every timed fill rebuilds all.
                 var sim = exactSetup.Simulation;
-                var vertices = new TubeVertex[sim.GetVertexCount()];
-                var indices = new int[sim.GetIndexCount()];
-                int count = sim.FillMesh(vertices, indices).VertexCount;
-                double meshNs = TimeNs(() => sim.FillMesh(vertices, indices),
+                var rope = sim.Rope;
+                int particles = rope.ParticleCount;
+                var poses = new float[2][][];
+                for (int p = 0; p < 2; p++)
+                {
+                    poses[p] = new[] { rope.PositionX.ToArray(), rope.PositionY.ToArray(), rope.PositionZ.ToArray() };
+                    for (int i = 0; i < particles; i++) poses[p][2][i] += 1e-4f * p * MathF.Sin(0.3f * i);
+                }
+                var vertices = new TubeVertex[2 * sim.GetVertexCount()];
+                var indices = new int[2 * sim.GetIndexCount()];
+                int count = sim.FillMesh(poses[0][0], poses[0][1], poses[0][2], vertices, indices).VertexCount;
+                int fill = 0;
+                double meshNs = TimeNs(() =>
+                    {
+                        int p = fill++ & 1;
+                        count = sim.FillMesh(poses[p][0], poses[p][1], poses[p][2], vertices, indices, p == 0 ? 1f : 0.999f).VertexCount;
+                    },
                     Math.Max(20, (int)((quick ? 2e5 : 2e6) / Math.Max(count, 1))));
                 result.NsPerVertex = meshNs / Math.Max(count, 1);
                 list.Add(result);
@@ -167,6 +181,13 @@ namespace HookeRope.Lab.Bench
             collider.Rope.AddCollider(ColliderShape.Plane(new Float3(0f, -100f, 0f), new Float3(0f, 1f, 0f)));
             names.Add("collisions on (one plane, never touched)");
             actions.Add(() => collider.Rope.Step(dt));
+
+            var farColliders = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), false);
+            farColliders.Rope.AddCollider(ColliderShape.Plane(new Float3(0f, -100f, 0f), new Float3(0f, 1f, 0f)));
+            for (int k = 0; k < 9; k++)
+                farColliders.Rope.AddCollider(ColliderShape.Sphere(new Float3(20f * MathF.Cos(0.7f * k), -5f, 20f * MathF.Sin(0.7f * k)), 1f));
+            names.Add("collisions on (ten colliders out of reach: a plane, nine spheres)");
+            actions.Add(() => farColliders.Rope.Step(dt));
 
             var radiusOff = ScenarioRunner.Build(Hanging(n, SolverMethod.ExactChain, 4, 1), true);
             radiusOff.Simulation.RadiusSettings.PoissonThinning = false;

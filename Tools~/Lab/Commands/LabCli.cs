@@ -102,11 +102,11 @@ namespace HookeRope.Lab.Commands
             var figuresOut = OutOption();
             var figureSet = new Argument<string>("set")
             {
-                Description = "harness: the manual's harness-rig figures; paper: the seed paper's Figs. 5–9a with captions and the burr texture; all: both.",
+                Description = "harness: the manual's harness-rig figures; paper: the seed paper's Figs. 5–9a with captions and the burr texture; folds: the slack folds after a break (a known mesh problem); all: every set.",
                 Arity = ArgumentArity.ZeroOrOne,
                 DefaultValueFactory = _ => FiguresCommand.Harness,
             };
-            figureSet.AcceptOnlyFromAmong(FiguresCommand.Harness, FiguresCommand.Paper, FiguresCommand.All);
+            figureSet.AcceptOnlyFromAmong(FiguresCommand.Harness, FiguresCommand.Paper, FiguresCommand.Folds, FiguresCommand.All);
             var figures = new Command("figures", "Render figures from the core's mesh of real simulations as PNG (harness rig, or the paper's Figs. 5–9a); the committed copies: --out \"Documentation~/images\".")
             {
                 figureSet, figuresOut,

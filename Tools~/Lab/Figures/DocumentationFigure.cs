@@ -34,6 +34,8 @@ namespace HookeRope.Lab.Figures
         public string Caption;
         /// <summary>The detail's own triangles (a panel of a multi-panel figure), or null for the figure's scene.</summary>
         public FigureScene Scene;
+        /// <summary>Drawn at this many figure pixels per rendered pixel (nearest neighbour; 1 = as rendered).</summary>
+        public int Magnify = 1;
     }
 
     /// <summary>What writing a figure produced.</summary>

@@ -40,20 +40,37 @@ namespace HookeRope.Lab.Figures
         /// material: a copy of the tube material with the burr texture; null draws the strands untextured). Each
         /// triangle's normal is the mean of its three vertex normals. Returns what the core wrote.
         /// </summary>
-        public TubeMeshUpdate AddRope(RopeSimulation simulation, uint color, Float3 offset = default, FigureTexture burrTexture = null)
+        public TubeMeshUpdate AddRope(RopeSimulation simulation, uint color, Float3 offset = default, FigureTexture burrTexture = null) =>
+            AddRope(simulation, color, offset, burrTexture, Float3.Zero, color);
+
+        /// <summary>
+        /// <see cref="AddRope(RopeSimulation, uint, Float3, FigureTexture)"/> as a GPU with back-face culling draws it for a
+        /// camera on the side of <paramref name="towardCamera"/> (unit): a triangle whose winding (Cross(b − a, c − a), the
+        /// core's front face) faces away from the camera is left out, and tube triangles wound against their own vertex
+        /// normals (<see cref="WindingCensus.IsInverted"/>) are drawn in <paramref name="invertedColor"/>, lit from their
+        /// vertex normals as a GPU lights them.
+        /// </summary>
+        public TubeMeshUpdate AddRopeCulled(RopeSimulation simulation, uint color, Float3 towardCamera, uint invertedColor, Float3 offset = default,
+            FigureTexture burrTexture = null) =>
+            AddRope(simulation, color, offset, burrTexture, towardCamera, invertedColor);
+
+        TubeMeshUpdate AddRope(RopeSimulation simulation, uint color, Float3 offset, FigureTexture burrTexture, Float3 cullToward, uint invertedColor)
         {
             var vertices = new TubeVertex[simulation.GetVertexCount()];
             var indices = new int[simulation.GetIndexCount()];
             var update = simulation.FillMesh(vertices, indices);
             var origin = simulation.Rope.Origin + offset;
+            bool cull = cullToward.LengthSquared > 0f;
             for (int i = 0; i + 2 < update.IndexCount; i += 3)
             {
                 var a = vertices[indices[i]];
                 var b = vertices[indices[i + 1]];
                 var c = vertices[indices[i + 2]];
                 var normal = new Float3(a.NX + b.NX + c.NX, a.NY + b.NY + c.NY, a.NZ + b.NZ + c.NZ);
+                if (cull && Float3.Dot(Float3.Cross(Position(b) - Position(a), Position(c) - Position(a)), cullToward) <= 0f) continue;
                 if (i < update.TubeIndexCount)
-                    Add(new SceneTriangle(Position(a) + origin, Position(b) + origin, Position(c) + origin, normal, color, SurfaceKind.Rope));
+                    Add(new SceneTriangle(Position(a) + origin, Position(b) + origin, Position(c) + origin, normal,
+                        cull && WindingCensus.IsInverted(a, b, c, out _, out _) ? invertedColor : color, SurfaceKind.Rope));
                 else
                 {
                     Add(new SceneTriangle(Position(a) + origin, Position(b) + origin, Position(c) + origin, normal, color, SurfaceKind.Burr,

@@ -7,12 +7,16 @@ namespace HookeRope.Lab.Figures
 {
     /// <summary>
     /// Renders a <see cref="DocumentationFigure"/>: the depth-buffered rasterizer at <see cref="Supersampling"/>× the
-    /// resolution, box-filtered down (smooth edges), then the annotations with SkiaSharp, written as PNG.
+    /// resolution, box-filtered down (smooth edges), then the annotations with SkiaSharp, written as PNG. Textures are read
+    /// once per final pixel at its mip level, as a GPU with multisampling does.
     /// </summary>
     public static class FigureWriter
     {
         /// <summary>Samples per pixel along each axis.</summary>
         public const int Supersampling = 3;
+
+        /// <summary>log2(<see cref="Supersampling"/>): the rasterizer's level-of-detail bias, so textures are filtered per final pixel.</summary>
+        public static readonly float SupersamplingLodBias = MathF.Log2(Supersampling);
 
         /// <summary>Background colour 0xRRGGBB.</summary>
         public const uint Background = 0xF4F5F7;
@@ -22,7 +26,7 @@ namespace HookeRope.Lab.Figures
         {
             var view = figure.View;
             var fine = view.Scaled(Supersampling);
-            var raster = new ZBufferRasterizer(fine, Background);
+            var raster = new ZBufferRasterizer(fine, Background) { LodBias = SupersamplingLodBias, ShadingRate = Supersampling };
             raster.Draw(figure.Scene.Triangles);
             var stats = new FigureStats
             {
@@ -56,12 +60,15 @@ namespace HookeRope.Lab.Figures
         /// <summary>Renders an inset or panel (its own scene, else <paramref name="scene"/>; its own camera) and draws it framed at its position.</summary>
         static void DrawInset(SKCanvas canvas, FigureInset inset, FigureScene scene, SKFont font)
         {
-            var raster = new ZBufferRasterizer(inset.View.Scaled(Supersampling), Background);
+            var raster = new ZBufferRasterizer(inset.View.Scaled(Supersampling), Background) { LodBias = SupersamplingLodBias, ShadingRate = Supersampling };
             raster.Draw((inset.Scene ?? scene).Triangles);
             using (var detail = Downsample(raster.Color, inset.View.Width, inset.View.Height, Supersampling))
             {
-                var frame = SKRect.Create(inset.Position.X, inset.Position.Y, inset.View.Width, inset.View.Height);
-                canvas.DrawBitmap(detail, frame);
+                int magnify = Math.Max(1, inset.Magnify);
+                var frame = SKRect.Create(inset.Position.X, inset.Position.Y, inset.View.Width * magnify, inset.View.Height * magnify);
+                // a magnified detail shows its pixels as blocks (nearest neighbour), as a headset's pixels are seen
+                using (var image = SKImage.FromBitmap(detail))
+                    canvas.DrawImage(image, frame, new SKSamplingOptions(SKFilterMode.Nearest, SKMipmapMode.None));
                 using (var border = new SKPaint { Color = FigureAnnotation.Ink, IsAntialias = true, Style = SKPaintStyle.Stroke, StrokeWidth = 1.5f })
                     canvas.DrawRect(frame, border);
                 if (!string.IsNullOrEmpty(inset.Caption))
@@ -73,7 +80,7 @@ namespace HookeRope.Lab.Figures
         }
 
         /// <summary>Averages <paramref name="factor"/>² samples per pixel into an opaque RGBA bitmap.</summary>
-        static SKBitmap Downsample(uint[] color, int width, int height, int factor)
+        internal static SKBitmap Downsample(uint[] color, int width, int height, int factor)
         {
             int fineWidth = width * factor;
             var rgba = new byte[width * height * 4];

@@ -19,6 +19,18 @@ namespace HookeRope.Lab.Figures
         readonly float[] depth;
         readonly Float3 light;
 
+        /// <summary>
+        /// Added to each textured triangle's level of detail (log2 of texels per sample): log2 of the caller's supersampling,
+        /// so the mip level is the one a GPU picks for the final pixel (multisampling shades once per pixel). 0 by default.
+        /// </summary>
+        public float LodBias { get; set; }
+
+        /// <summary>
+        /// Samples per side of the block a texture is read once for (1 = every sample; the caller's supersampling = once per
+        /// final pixel, as a GPU with multisampling shades: coverage per sample, texture at the pixel centre).
+        /// </summary>
+        public int ShadingRate { get; set; } = 1;
+
         /// <summary>Visible colour per pixel, 0xRRGGBB, row-major from the top-left.</summary>
         public uint[] Color { get; }
 
@@ -84,6 +96,14 @@ namespace HookeRope.Lab.Figures
             uint shaded = Tint(t.Color, lit, 1f, 1f, 1f);
             var texture = t.Texture;
             float inverse = 1f / area;
+            // affine uv (orthographic): one level of detail per triangle, log2 of texels per pixel
+            float lod = 0f;
+            if (texture != null && texture.Levels > 1)
+            {
+                float uvArea = Math.Abs((t.UB - t.UA) * (t.VC - t.VA) - (t.VB - t.VA) * (t.UC - t.UA));
+                float ratio = texture.TexelArea(uvArea) / Math.Abs(area);
+                lod = ratio > 0f ? 0.5f * MathF.Log2(ratio) + LodBias : 0f;
+            }
             for (int y = y0; y <= y1; y++)
             {
                 float py = y + 0.5f;
@@ -102,7 +122,16 @@ namespace HookeRope.Lab.Figures
                     if (texture == null) Color[i] = shaded;
                     else
                     {
-                        var (tr, tg, tb) = texture.Sample(wa * t.UA + wb * t.UB + wc * t.UC, wa * t.VA + wb * t.VB + wc * t.VC);
+                        float sa = wa, sb = wb, sc = wc;
+                        if (ShadingRate > 1)
+                        {
+                            // the texture is read at the centre of the final pixel (barycentrics extrapolated there if need be)
+                            float qx = (x / ShadingRate) * ShadingRate + 0.5f * ShadingRate, qy = (y / ShadingRate) * ShadingRate + 0.5f * ShadingRate;
+                            sa = ((bx - qx) * (cy - qy) - (by - qy) * (cx - qx)) * inverse;
+                            sb = ((cx - qx) * (ay - qy) - (cy - qy) * (ax - qx)) * inverse;
+                            sc = 1f - sa - sb;
+                        }
+                        var (tr, tg, tb) = texture.Sample(sa * t.UA + sb * t.UB + sc * t.UC, sa * t.VA + sb * t.VB + sc * t.VC, lod);
                         Color[i] = Tint(t.Color, lit, tr, tg, tb);
                     }
                     Kind[i] = t.Kind;

@@ -1,15 +1,38 @@
 using System.Numerics;
+using HookeRope.Lab.Figures;
 using HookeRope.Lab.Simulation;
 using SharpGLTF.Memory;
 using SharpGLTF.Schema2;
 
 namespace HookeRope.Lab.Output
 {
-    /// <summary>Writes a captured tube mesh as a binary glTF (.glb) with SharpGLTF.Core (no Toolkit).</summary>
+    /// <summary>
+    /// Writes a captured tube mesh as a binary glTF (.glb) with SharpGLTF.Core (no Toolkit): primitive 0 the tube and caps
+    /// with the material "rope" (a colour, no texture), primitive 1 (when a broken end has burr strands) with the material
+    /// "burr fibres", the package's burr material: the rope's colour times the package's burr texture
+    /// (<see cref="BurrTexturePng"/>, embedded in the .glb's binary chunk as a PNG) as its base-colour texture, sampled
+    /// with repeat wrap and trilinear mipmap filtering (the viewer builds the mip chain, as glTF carries level 0 only),
+    /// opaque (the texture's alpha triangles are not a cut-out, as in the package). Texture coordinates are flipped to
+    /// glTF's convention (origin at the image's top-left: v_glTF = 1 − v), so the strands' base (v = 1) reads the
+    /// texture's top row, where the triangles are wide, and their tips (v = 0) the bottom. Tangents are copied as the core
+    /// writes them (no normal map is exported; a viewer that normal-maps the mesh should regenerate them from these uvs).
+    /// </summary>
     public static class GltfExport
     {
         /// <summary>Floats per interleaved vertex: position 3, normal 3, tangent 4, uv 2.</summary>
         public const int Stride = 12;
+
+        /// <summary>Name of the tube and caps' material.</summary>
+        public const string TubeMaterialName = "rope";
+
+        /// <summary>Name of the burr strands' material.</summary>
+        public const string StrandMaterialName = "burr fibres";
+
+        /// <summary>Name of the embedded burr image.</summary>
+        public const string BurrImageName = "burr texture";
+
+        /// <summary>Base colour factor of both materials (linear RGBA): the rope's colour, which the strands' texture tints.</summary>
+        public static readonly Vector4 RopeColour = new Vector4(0.85f, 0.55f, 0.1f, 1f);
 
         /// <summary>Writes <paramref name="mesh"/> to <paramref name="path"/> (.glb).</summary>
         public static void Write(MeshSnapshot mesh, string name, string path)
@@ -38,7 +61,7 @@ namespace HookeRope.Lab.Output
                 tangents[4 * i + 2] = t.Z;
                 tangents[4 * i + 3] = v[o + 9] < 0 ? -1f : 1f;
                 uvs[2 * i] = v[o + 10];
-                uvs[2 * i + 1] = v[o + 11];
+                uvs[2 * i + 1] = 1f - v[o + 11];
             }
             var model = ModelRoot.CreateModel();
             var gltfMesh = model.CreateMesh(name);
@@ -48,24 +71,30 @@ namespace HookeRope.Lab.Output
             var uv = Vertices(model, uvs, count, DimensionType.VEC2);
             int tube = mesh.TubeIndexCount > 0 && mesh.TubeIndexCount <= mesh.Indices.Length ? mesh.TubeIndexCount : mesh.Indices.Length;
             // Submesh 0: tube and caps; submesh 1: the burr fibres, with their own material (issue 17).
-            AddPrimitive(model, gltfMesh, mesh.Indices, 0, tube, NewMaterial(model, "rope", new Vector4(0.85f, 0.55f, 0.1f, 1f)), position, normal, tangent, uv);
+            AddPrimitive(model, gltfMesh, mesh.Indices, 0, tube, NewMaterial(model, TubeMaterialName), position, normal, tangent, uv);
             if (tube < mesh.Indices.Length)
-                AddPrimitive(model, gltfMesh, mesh.Indices, tube, mesh.Indices.Length - tube,
-                    NewMaterial(model, "burr fibres", new Vector4(0.84f, 0.78f, 0.63f, 1f)), position, normal, tangent, uv);
+                AddPrimitive(model, gltfMesh, mesh.Indices, tube, mesh.Indices.Length - tube, StrandMaterial(model), position, normal, tangent, uv);
             model.UseScene("rope").CreateNode(name).Mesh = gltfMesh;
             model.SaveGLB(path);
         }
 
-        static Material NewMaterial(ModelRoot model, string name, Vector4 colour)
+        static Material NewMaterial(ModelRoot model, string name)
         {
             var material = model.CreateMaterial(name);
             material.InitializePBRMetallicRoughness();
-            var baseColor = material.FindChannel("BaseColor");
-            if (baseColor.HasValue)
-            {
-                var channel = baseColor.Value;
-                channel.Color = colour;
-            }
+            var channel = material.FindChannel("BaseColor").Value;
+            channel.Color = RopeColour;
+            return material;
+        }
+
+        /// <summary>The package's burr material: the rope's colour, with the burr texture (PNG, in the binary chunk) on TEXCOORD_0.</summary>
+        static Material StrandMaterial(ModelRoot model)
+        {
+            var material = NewMaterial(model, StrandMaterialName);
+            var image = model.UseImage(new MemoryImage(BurrTexturePng.Encode()));
+            image.Name = BurrImageName;
+            material.FindChannel("BaseColor").Value.SetTexture(0, image, null, TextureWrapMode.REPEAT, TextureWrapMode.REPEAT,
+                TextureMipMapFilter.LINEAR_MIPMAP_LINEAR, TextureInterpolationFilter.LINEAR);
             return material;
         }
 

@@ -35,6 +35,7 @@ namespace HookeRope.Lab.Output
             }
             Save(Force(r, verdict, checks), "-force", 1000, 560);
             if (r.Scenario.IsFallArrest && !double.IsNaN(r.TautTime)) Save(Displacement(r, verdict), "-displacement", 1000, 560);
+            if (HasMaterialLaw(r)) Save(ForceElongation(r), "-force-elongation", 1000, 560);
             if (RadiusChanges(r))
             {
                 Save(DefectRadius(r), "-neck", 1000, 500);
@@ -55,6 +56,76 @@ namespace HookeRope.Lab.Output
                 if (max - min > (1 - RadiusChangeFraction) * r.Scenario.Rope.Radius) return true;
             }
             return false;
+        }
+
+        /// <summary>True when the rope has a material law beyond Hooke's (issue 15): the elastic–plastic material or an energy absorber.</summary>
+        public static bool HasMaterialLaw(RunResult r) => r.Scenario.Rope.IsPlastic || r.Scenario.Rope.EnergyAbsorber;
+
+        /// <summary>
+        /// Force against elongation (issue 15): the anchor force (first segment) against the rope's elongation at every sample,
+        /// the material law's quasi-static curve (<see cref="HookeRope.Solver.ForceElongationCurve"/>) dashed, and for a plastic
+        /// rope the neck onset and the break, for an absorber its plateau and EN 355's 6 kN. Samples after a break are left out
+        /// (the pieces' elongation is not the rope's).
+        /// </summary>
+        public static Plot ForceElongation(RunResult r)
+        {
+            var rope = r.Scenario.Rope;
+            var curve = HookeRope.Solver.ForceElongationCurve.Of(Simulation.ScenarioRunner.Settings(r.Scenario), rope.IsPlastic ? 1.0 : 0.5);
+            int n = 0;   // the intact samples: after a break the elongation is that of the pieces
+            while (n < r.Samples.Count && !r.Samples[n].Broken) n++;
+            double peak = 0;
+            for (int i = 0; i < n; i++) peak = Math.Max(peak, r.Samples[i].TopTension);
+            bool kilo = Math.Max(peak, curve.PeakForce) >= 1000;
+            double scale = kilo ? 1e-3 : 1;
+            var e = new double[n];
+            var f = new double[n];
+            double longest = 0;
+            for (int i = 0; i < n; i++)
+            {
+                e[i] = r.Samples[i].Elongation;
+                f[i] = r.Samples[i].TopTension * scale;
+                longest = Math.Max(longest, e[i]);
+            }
+            var plot = new Plot();
+            var simulated = plot.Add.ScatterLine(e, f);
+            simulated.LegendText = "simulated: anchor force against the rope's elongation";
+            simulated.LineWidth = 2;
+            var ce = new double[curve.Count];
+            var cf = new double[curve.Count];
+            for (int i = 0; i < curve.Count; i++)
+            {
+                ce[i] = curve.Elongation[i];
+                cf[i] = curve.Force[i] * scale;
+            }
+            string unit = kilo ? "kN" : "N";
+            var law = plot.Add.ScatterLine(ce, cf);
+            law.LegendText = rope.IsPlastic
+                ? $"material law, slow pull: yield {Num(curve.Force[1] * scale)} {unit}, neck onset {Num(curve.PeakForce * scale)} {unit}, zero force at {Num(curve.BreakElongation)} m"
+                : $"material law, slow pull: plateau {Num(rope.AbsorberForce * scale)} {unit} over {Num(rope.AbsorberDeployment)} m";
+            law.LinePattern = LinePattern.Dashed;
+            law.LineWidth = 1.5f;
+            law.Color = Colors.Green;
+            double right = Math.Max(longest, double.IsNaN(curve.BreakElongation) ? longest : curve.BreakElongation);
+            double high = peak;
+            for (int i = 0; i < curve.Count; i++) if (curve.Elongation[i] <= right) high = Math.Max(high, curve.Force[i]);
+            high *= scale;
+            if (!double.IsNaN(r.BreakTime))
+            {
+                var at = plot.Add.VerticalLine(n > 0 ? e[n - 1] : 0, 1.5f, Colors.Red, LinePattern.Dotted);
+                at.LegendText = $"break at {Num(r.BreakTime)} s (tension {SummaryView.Force(r.BreakTension)})";
+            }
+            if (rope.EnergyAbsorber)
+            {
+                var en = plot.Add.HorizontalLine(En355Limit * scale, 1.5f, Colors.Orange, LinePattern.Dashed);
+                en.LegendText = "6 kN: EN 355 energy absorber";
+                high = Math.Max(high, En355Limit * scale);
+            }
+            plot.Title($"{r.Scenario.Name}: force against elongation (peak {SummaryView.Force(peak)})");
+            plot.XLabel("elongation of the rope (m)");
+            plot.YLabel(kilo ? "force (kN)" : "force (N)");
+            plot.Axes.SetLimits(0, Math.Max(right, 1e-3) * 1.05, 0, Math.Max(high, 1e-3) * 1.12);
+            plot.ShowLegend(Alignment.UpperRight);
+            return plot;
         }
 
         /// <summary>True when the smallest recorded radius fell below <see cref="RadiusChangeFraction"/>·R.</summary>

@@ -12,6 +12,19 @@ namespace HookeRope.Lab.Output
     {
         static readonly CultureInfo Invariant = CultureInfo.InvariantCulture;
 
+        /// <summary>" · drag …" naming the drag terms that act and the wind, or "" without drag.</summary>
+        static string DragText(DragSpec d)
+        {
+            if (!d.Acts) return "";
+            var parts = new List<string>();
+            if (d.ViscousDrag > 0) parts.Add(string.Format(Invariant, "c {0:G4} N·s/m²", d.ViscousDrag));
+            if (d.AirDensity > 0 && d.DragCoefficient > 0) parts.Add(string.Format(Invariant, "C_d {0:G4}", d.DragCoefficient));
+            if (d.AirDensity > 0 && d.SkinFriction > 0) parts.Add(string.Format(Invariant, "C_f {0:G4}", d.SkinFriction));
+            if (d.AirDensity > 0 && (d.DragCoefficient > 0 || d.SkinFriction > 0)) parts.Add(string.Format(Invariant, "ρ {0:G4} kg/m³", d.AirDensity));
+            if (d.Blows) parts.Add(string.Format(Invariant, "wind [{0:G4}, {1:G4}, {2:G4}] m/s", d.Wind.X, d.Wind.Y, d.Wind.Z));
+            return " · drag " + string.Join(", ", parts);
+        }
+
         /// <summary>Prints the summary of <paramref name="result"/> and the files written.</summary>
         public static void Print(IAnsiConsole console, RunResult result, ConvergenceVerdict verdict, IList<CheckResult> checks, IList<string> files)
         {
@@ -23,7 +36,7 @@ namespace HookeRope.Lab.Output
                 s.Solver.Method == SolverMethod.ExactChain ? "exact chain" : "Gauss–Seidel", s.Rope.Segments,
                 Force(s.Rope.ResolvedAxialStiffness), Num(s.Rope.ResolvedLinearDensity), s.Solver.Substeps, s.Solver.Iterations,
                 s.HostStep * 1000, s.Duration, s.Solver.Substeps == 1 ? "" : "s", s.Solver.Iterations == 1 ? "" : "s",
-                s.Solver.Integrator == HookeRope.Solver.TimeIntegrator.Bdf2 ? "BDF2" : "backward Euler")));
+                s.Solver.Integrator == HookeRope.Solver.TimeIntegrator.Bdf2 ? "BDF2" : "backward Euler") + DragText(s.Drag)));
 
             console.MarkupLine(VerdictLine(verdict));
             bool limits = verdict.Converged && s.IsFallArrest;

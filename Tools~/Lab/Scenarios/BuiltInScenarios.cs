@@ -16,6 +16,7 @@ namespace HookeRope.Lab.Scenarios
             "fall-arrest", "static-hang", "spring-oscillator", "heavy-mass-ratio", "steel-cable",
             "poisson-sweep", "necking", "fracture", "collision-bend", "catenary",
             "spring-amplitude", "slack-bounce", "steel-snatch",
+            "plastic-necking", "absorber-arrest", "swing-settle",
         };
 
         /// <summary>True when <paramref name="name"/> is a built-in scenario.</summary>

@@ -64,20 +64,20 @@ namespace HookeRope.Lab.Scenarios
             return Has(name) ? new JsonFields(Get(name), Child(name)) : null;
         }
 
-        public double Number(string name, double fallback, double min, double max, bool minExclusive = false) =>
-            OptionalNumber(name, min, max, minExclusive) ?? fallback;
+        public double Number(string name, double fallback, double min, double max, bool minExclusive = false, bool maxExclusive = false) =>
+            OptionalNumber(name, min, max, minExclusive, maxExclusive) ?? fallback;
 
-        public double? OptionalNumber(string name, double min, double max, bool minExclusive = false)
+        public double? OptionalNumber(string name, double min, double max, bool minExclusive = false, bool maxExclusive = false)
         {
             if (!Has(name)) return null;
-            return ReadNumber(Get(name), Child(name), min, max, minExclusive);
+            return ReadNumber(Get(name), Child(name), min, max, minExclusive, maxExclusive);
         }
 
         /// <summary>The number of the table row's JSON field, range-checked against the row (its unit); <paramref name="fallback"/> when absent.</summary>
-        public double Parameter(ParameterInfo row, double fallback) => Number(row.Json, fallback, row.Min, row.Max, row.MinExclusive);
+        public double Parameter(ParameterInfo row, double fallback) => Number(row.Json, fallback, row.Min, row.Max, row.MinExclusive, row.MaxExclusive);
 
         /// <summary>The row's number when given, else null (range-checked against the row).</summary>
-        public double? OptionalParameter(ParameterInfo row) => OptionalNumber(row.Json, row.Min, row.Max, row.MinExclusive);
+        public double? OptionalParameter(ParameterInfo row) => OptionalNumber(row.Json, row.Min, row.Max, row.MinExclusive, row.MaxExclusive);
 
         /// <summary>The integer of the table row's JSON field, range-checked against the row; <paramref name="fallback"/> when absent.</summary>
         public int Parameter(ParameterInfo row, int fallback) => Integer(row.Json, fallback, (int)row.Min, (int)row.Max);
@@ -152,14 +152,15 @@ namespace HookeRope.Lab.Scenarios
             return list;
         }
 
-        public static double ReadNumber(JsonElement value, string path, double min, double max, bool minExclusive)
+        public static double ReadNumber(JsonElement value, string path, double min, double max, bool minExclusive, bool maxExclusive = false)
         {
             if (value.ValueKind != JsonValueKind.Number)
                 throw new ScenarioException(path, "expected a number, got " + Describe(value));
             double number = value.GetDouble();
             bool tooLow = minExclusive ? number <= min : number < min;
-            if (!double.IsFinite(number) || tooLow || number > max)
-                throw new ScenarioException(path, $"{Format(number)} is out of range {(minExclusive ? "(" : "[")}{Format(min)}, {Format(max)}]");
+            bool tooHigh = maxExclusive ? number >= max : number > max;
+            if (!double.IsFinite(number) || tooLow || tooHigh)
+                throw new ScenarioException(path, $"{Format(number)} is out of range {(minExclusive ? "(" : "[")}{Format(min)}, {Format(max)}{(maxExclusive ? ")" : "]")}");
             return number;
         }
 

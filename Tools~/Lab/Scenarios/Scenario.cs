@@ -20,6 +20,8 @@ namespace HookeRope.Lab.Scenarios
         public SolverSpec Solver = new SolverSpec();
         /// <summary>Rope material and discretisation.</summary>
         public RopeSpec Rope = new RopeSpec();
+        /// <summary>Drag of the air (or fluid) on the rope, and the wind.</summary>
+        public DragSpec Drag = new DragSpec();
         /// <summary>What holds particle 0.</summary>
         public AttachmentSpec Start = AttachmentSpec.FixedAt(Float3.Zero);
         /// <summary>What holds the last particle.</summary>
@@ -125,6 +127,25 @@ namespace HookeRope.Lab.Scenarios
         public int RadialSegments = RopeParameters.RadialSegments.Default;
         /// <summary>Seed of the random parts (burr strands of broken ends).</summary>
         public int Seed = RopeParameters.BurrSeed.Default;
+        /// <summary>Material law (issue 15): "elastic" or "elastic-plastic".</summary>
+        public string MaterialModel = RopeParameters.MaterialModel.Default == HookeRope.Solver.MaterialModel.ElasticPlastic ? "elastic-plastic" : "elastic";
+        /// <summary>Elastic–plastic: yield strain ε_y (the yield force is E·A·ε_y).</summary>
+        public double YieldStrain = RopeParameters.YieldStrain.Default;
+        /// <summary>Elastic–plastic: hardening modulus H in N (0 = a plateau).</summary>
+        public double HardeningModulus = RopeParameters.HardeningModulus.Default;
+        /// <summary>Elastic–plastic: strain at which the neck forms at the defect.</summary>
+        public double NeckingStrain = RopeParameters.NeckingStrain.Default;
+        /// <summary>Elastic–plastic: strain of the neck at which its force is zero and the rope breaks.</summary>
+        public double UltimateStrain = RopeParameters.UltimateStrain.Default;
+        /// <summary>An energy absorber in series with the last segment (the end).</summary>
+        public bool EnergyAbsorber = RopeParameters.EnergyAbsorber.Default;
+        /// <summary>Energy absorber: plateau force F_p in N.</summary>
+        public double AbsorberForce = RopeParameters.AbsorberForce.Default;
+        /// <summary>Energy absorber: largest deployment in m.</summary>
+        public double AbsorberDeployment = RopeParameters.AbsorberDeployment.Default;
+
+        /// <summary>True with the elastic–plastic material.</summary>
+        public bool IsPlastic => MaterialModel == "elastic-plastic";
 
         /// <summary>Cross-section area πR² in m².</summary>
         public double Area => System.Math.PI * Radius * Radius;
@@ -134,6 +155,27 @@ namespace HookeRope.Lab.Scenarios
         public double ResolvedLinearDensity => LinearDensity ?? (Density ?? DefaultDensity) * Area;
         /// <summary>Total rope mass in kg.</summary>
         public double Mass => ResolvedLinearDensity * RestLength;
+    }
+
+    /// <summary>drag {…} block. Defaults are the parameter table's (<see cref="RopeParameters"/>): no drag, air at 1.2 kg/m³, no wind.</summary>
+    public sealed class DragSpec
+    {
+        /// <summary>Viscous drag c per metre of rope in N·s/m².</summary>
+        public double ViscousDrag = RopeParameters.ViscousDrag.Default;
+        /// <summary>Drag coefficient C_d across the rope.</summary>
+        public double DragCoefficient = RopeParameters.DragCoefficient.Default;
+        /// <summary>Skin-friction coefficient C_f along the rope.</summary>
+        public double SkinFriction = RopeParameters.SkinFriction.Default;
+        /// <summary>Air (fluid) density in kg/m³.</summary>
+        public double AirDensity = RopeParameters.AirDensity.Default;
+        /// <summary>Air velocity in m/s.</summary>
+        public Float3 Wind = new Float3(RopeParameters.Wind.DefaultX, RopeParameters.Wind.DefaultY, RopeParameters.Wind.DefaultZ);
+
+        /// <summary>True when some drag acts (as <see cref="HookeRope.Solver.RopeSettings.HasDrag"/>).</summary>
+        public bool Acts => ViscousDrag > 0 || (AirDensity > 0 && (DragCoefficient > 0 || SkinFriction > 0));
+
+        /// <summary>True when a wind blows through drag that acts: the air then does work on the rope.</summary>
+        public bool Blows => Acts && (Wind.X != 0 || Wind.Y != 0 || Wind.Z != 0);
     }
 
     /// <summary>How an end of the rope is held.</summary>
@@ -268,7 +310,7 @@ namespace HookeRope.Lab.Scenarios
     /// <summary>What the built-in scenario checks (read by tests and the summary). Optional in user files.</summary>
     public sealed class ExpectationSpec
     {
-        /// <summary>Analytic check: "none", "fall-arrest", "static-hang", "period", "catenary", "poisson", "neck", "fracture", "collision", "amplitude", "rebound", "snatch".</summary>
+        /// <summary>Analytic check: "none", "fall-arrest", "static-hang", "period", "catenary", "poisson", "neck", "fracture", "collision", "amplitude", "rebound", "snatch", "absorber", "plastic", "settle".</summary>
         public string Check = "none";
     }
 }

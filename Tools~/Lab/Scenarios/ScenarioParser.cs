@@ -79,6 +79,8 @@ namespace HookeRope.Lab.Scenarios
             if (solver != null) ReadSolver(solver, s.Solver);
             var rope = root.Object("rope");
             if (rope != null) ReadRope(rope, s.Rope);
+            var drag = root.Object("drag");
+            if (drag != null) ReadDrag(drag, s.Drag);
             s.Start = ReadAttachment(root.Object("start"), s.Start);
             s.End = ReadAttachment(root.Object("end"), s.End);
             var initial = root.Object("initial");
@@ -96,7 +98,7 @@ namespace HookeRope.Lab.Scenarios
             if (expect != null)
             {
                 s.Expect.Check = expect.Choice("check", "none", "none", "fall-arrest", "static-hang", "period",
-                    "catenary", "poisson", "neck", "fracture", "collision", "amplitude", "rebound", "snatch");
+                    "catenary", "poisson", "neck", "fracture", "collision", "amplitude", "rebound", "snatch", "absorber", "plastic", "settle");
                 expect.RejectUnknown();
             }
             root.RejectUnknown();
@@ -145,6 +147,37 @@ namespace HookeRope.Lab.Scenarios
             r.SlackKeepsRestRadius = f.Parameter(RopeParameters.SlackKeepsRestRadius.Row, r.SlackKeepsRestRadius);
             r.RadialSegments = f.Parameter(RopeParameters.RadialSegments.Row, r.RadialSegments);
             r.Seed = f.Parameter(RopeParameters.BurrSeed.Row, r.Seed);
+            ReadMaterialLaw(f, r);
+            f.RejectUnknown();
+        }
+
+        /// <summary>The material law (issue 15): model, plastic law, energy absorber; with the plastic material the strains in order.</summary>
+        static void ReadMaterialLaw(JsonFields f, RopeSpec r)
+        {
+            r.MaterialModel = f.Choice(RopeParameters.MaterialModel.Json, r.MaterialModel, "elastic", "elastic-plastic");
+            r.YieldStrain = f.Parameter(RopeParameters.YieldStrain.Row, r.YieldStrain);
+            r.HardeningModulus = f.Parameter(RopeParameters.HardeningModulus.Row, r.HardeningModulus);
+            r.NeckingStrain = f.Parameter(RopeParameters.NeckingStrain.Row, r.NeckingStrain);
+            r.UltimateStrain = f.Parameter(RopeParameters.UltimateStrain.Row, r.UltimateStrain);
+            r.EnergyAbsorber = f.Parameter(RopeParameters.EnergyAbsorber.Row, r.EnergyAbsorber);
+            r.AbsorberForce = f.Parameter(RopeParameters.AbsorberForce.Row, r.AbsorberForce);
+            r.AbsorberDeployment = f.Parameter(RopeParameters.AbsorberDeployment.Row, r.AbsorberDeployment);
+            if (!r.IsPlastic) return;
+            if (!(r.YieldStrain < r.UltimateStrain))
+                throw new ScenarioException(f.Child(RopeParameters.YieldStrain.Json),
+                    $"must be below ultimateStrain ({JsonFields.Format(r.UltimateStrain)}): the rope yields before its break strain");
+            if (!(r.NeckingStrain >= r.YieldStrain && r.NeckingStrain < r.UltimateStrain))
+                throw new ScenarioException(f.Child(RopeParameters.NeckingStrain.Json),
+                    $"must be in [yieldStrain, ultimateStrain) = [{JsonFields.Format(r.YieldStrain)}, {JsonFields.Format(r.UltimateStrain)})");
+        }
+
+        static void ReadDrag(JsonFields f, DragSpec d)
+        {
+            d.ViscousDrag = f.Parameter(RopeParameters.ViscousDrag.Row, d.ViscousDrag);
+            d.DragCoefficient = f.Parameter(RopeParameters.DragCoefficient.Row, d.DragCoefficient);
+            d.SkinFriction = f.Parameter(RopeParameters.SkinFriction.Row, d.SkinFriction);
+            d.AirDensity = f.Parameter(RopeParameters.AirDensity.Row, d.AirDensity);
+            d.Wind = f.Vector(RopeParameters.Wind.Json, d.Wind, RopeParameters.Wind.Max);
             f.RejectUnknown();
         }
 

@@ -71,9 +71,9 @@ namespace HookeRope.Lab.Simulation
         public static bool Exploded(Scenario s, RunResult r) =>
             r.MaxExtent > ExplosionLengths * s.Rope.RestLength * (1 + s.Initial.Stretch) + 10;
 
-        /// <summary>True when something moves an anchor or adds energy during the run (keyframes or timed events): the energy criterion does not apply.</summary>
+        /// <summary>True when something moves an anchor or adds energy during the run (keyframes, timed events, a wind through drag): the energy criterion does not apply.</summary>
         public static bool Driven(Scenario s) =>
-            s.Start.Kind == AttachmentKind.Keyframes || s.End.Kind == AttachmentKind.Keyframes || s.Events.Count > 0;
+            s.Start.Kind == AttachmentKind.Keyframes || s.End.Kind == AttachmentKind.Keyframes || s.Events.Count > 0 || s.Drag.Blows;
 
         /// <summary>Judges a run.</summary>
         public static ConvergenceVerdict Judge(RunResult r)
@@ -123,7 +123,7 @@ namespace HookeRope.Lab.Simulation
             return v.Set(Convergence.Converged,
                 string.Format(Invariant, "strain error ≤ {0:P0} on {1:P0} of the host steps (max {2:G3}), {3}",
                     UnconvergedStrainError, 1 - v.UnconvergedFraction, r.MaxResidual,
-                    Driven(s) ? "energy not judged (driven anchors or events do work)" : "energy not created"), "");
+                    Driven(s) ? "energy not judged (driven anchors, events or wind do work)" : "energy not created"), "");
         }
 
         static readonly CultureInfo Invariant = CultureInfo.InvariantCulture;

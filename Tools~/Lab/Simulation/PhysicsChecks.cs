@@ -181,6 +181,9 @@ namespace HookeRope.Lab.Simulation
                 case "snatch":
                     AddSnatchChecks(r, list, load, g, ea / length);
                     break;
+                case "settle":
+                    AddSettleChecks(r, list);
+                    break;
                 case "catenary":
                 {
                     var start = ScenarioGeometry.StartPosition(s);
@@ -232,6 +235,12 @@ namespace HookeRope.Lab.Simulation
                     });
                     break;
                 }
+                case "absorber":
+                    AddAbsorberChecks(r, list, load, g, ea / length);
+                    break;
+                case "plastic":
+                    AddPlasticChecks(r, list);
+                    break;
                 case "fracture":
                     list.Add(new CheckResult
                     {
@@ -270,6 +279,74 @@ namespace HookeRope.Lab.Simulation
                 }
             }
             return list;
+        }
+
+        /// <summary>
+        /// A uniform rope released from a fixed start and swinging under viscous drag c (N·s/m²): every mode decays as
+        /// exp(−c·t/(2μ)) (the drag per unit mass c/μ is the same everywhere). The decay rate of the centre of mass's swing (the
+        /// least-squares slope of ln|peak| over its peaks) against c/(2μ) (2 %), and the time after which no particle is 1 cm
+        /// or more from the vertical through the start against (2μ/c)·ln(A₀/1 cm), A₀ the farthest particle at release (5 %).
+        /// </summary>
+        static void AddSettleChecks(RunResult r, List<CheckResult> list)
+        {
+            var s = r.Scenario;
+            double mu = s.Rope.ResolvedLinearDensity, c = s.Drag.ViscousDrag, rate = c / (2 * mu);
+            list.Add(new CheckResult
+            {
+                Quantity = "swing decay rate", Unit = "1/s", Tolerance = 0.02, Expected = rate,
+                Measured = r.SwingSeries == null ? double.NaN : DecayRate(r.SwingSeries, r.HostStep), Formula = "c/(2μ): amplitude ∝ exp(−c·t/(2μ))",
+            });
+            double a0 = ReleaseReach(s), settled = double.NaN;
+            if (r.OffVerticalSeries != null && r.OffVerticalSeries.Length > 0 && r.OffVerticalSeries[r.OffVerticalSeries.Length - 1] < SettleDistance)
+            {
+                settled = 0;
+                for (int k = 0; k < r.OffVerticalSeries.Length; k++)
+                    if (r.OffVerticalSeries[k] >= SettleDistance) settled = (k + 1) * r.HostStep;
+            }
+            list.Add(new CheckResult
+            {
+                Quantity = "settled within 1 cm of the vertical at", Unit = "s", Tolerance = 0.05, Measured = settled,
+                Expected = Math.Log(a0 / SettleDistance) / rate, Formula = "(2μ/c)·ln(A₀/1 cm), A₀ = " + JsonFields.Format(a0) + " m at release",
+            });
+        }
+
+        /// <summary>How close to the vertical (m) a settled swing stays.</summary>
+        public const double SettleDistance = 0.01;
+
+        /// <summary>The farthest horizontal distance (m) of a particle from the vertical through the start in the scenario's initial shape.</summary>
+        static double ReleaseReach(Scenario s)
+        {
+            var down = ScenarioGeometry.DownDirection(s.Gravity);
+            var start = ScenarioGeometry.StartPosition(s);
+            var positions = new Float3[s.Rope.Segments + 1];
+            ScenarioGeometry.InitialPositions(s, positions);
+            double farthest = 0;
+            foreach (var p in positions)
+            {
+                var d = p - start;
+                farthest = Math.Max(farthest, (d - down * Float3.Dot(d, down)).Length);
+            }
+            return farthest;
+        }
+
+        /// <summary>
+        /// −(least-squares slope of ln|x| over the local maxima of |x|) in 1/s, samples <paramref name="dt"/> s apart (index k at
+        /// (k + 1)·dt), over the maxima above 1e-4 of the largest (below, float32 positions round the swing); NaN with fewer than 3.
+        /// </summary>
+        public static double DecayRate(double[] x, double dt)
+        {
+            double st = 0, sy = 0, stt = 0, sty = 0, largest = 0;
+            foreach (double v in x) largest = Math.Max(largest, Math.Abs(v));
+            int peaks = 0;
+            for (int k = 1; k + 1 < x.Length; k++)
+            {
+                double a = Math.Abs(x[k]);
+                if (!(a > Math.Abs(x[k - 1]) && a >= Math.Abs(x[k + 1]) && a > 1e-4 * largest)) continue;
+                double t = (k + 1) * dt, y = Math.Log(a);
+                st += t; sy += y; stt += t * t; sty += t * y;
+                peaks++;
+            }
+            return peaks < 3 ? double.NaN : -(peaks * sty - st * sy) / (peaks * stt - st * st);
         }
 
         /// <summary>Periods between the first and the last whole period a run of <paramref name="duration"/> s holds (the analytic period), at least 1.</summary>
@@ -373,6 +450,87 @@ namespace HookeRope.Lab.Simulation
                     Tolerance = 1e-6 * Math.Abs(r.InitialEnergy), Measured = Math.Max(0, r.MaxEnergy - r.InitialEnergy),
                     Formula = "energy never rises (1e-6 of |E₀|)",
                 });
+        }
+
+        /// <summary>
+        /// Deployment x_d (m) of an energy absorber of plateau <paramref name="plateau"/> (N) in series with a massless lanyard of
+        /// stiffness <paramref name="stiffness"/> (N/m) arresting <paramref name="mass"/> (kg) after a free fall of
+        /// <paramref name="fallHeight"/> (m): M·g·(h + x_e + x_d) = F_p·x_d + F_p²/(2k), x_e = F_p/k.
+        /// </summary>
+        public static double AbsorberDeployment(double mass, double g, double stiffness, double fallHeight, double plateau)
+        {
+            double w = mass * g;
+            return (w * (fallHeight + plateau / stiffness) - plateau * plateau / (2 * stiffness)) / (plateau - w);
+        }
+
+        /// <summary>
+        /// A fall arrested by an energy absorber (issue 15): the largest substep force on the load against the plateau, the
+        /// deployment against the energy balance (while it fits in the absorber's length), the plastic work against F_p·x_d,
+        /// and the EN 355 verdict (≤ 6 kN).
+        /// </summary>
+        static void AddAbsorberChecks(RunResult r, List<CheckResult> list, double load, double g, double stiffness)
+        {
+            var rope = r.Scenario.Rope;
+            double h = r.Scenario.Initial.FallHeight ?? rope.RestLength;
+            double deployment = AbsorberDeployment(load, g, stiffness, h, rope.AbsorberForce);
+            list.Add(new CheckResult
+            {
+                Quantity = "peak force on the load (substep max)", Unit = "N", Tolerance = 0.02, Measured = r.PeakLoadForce,
+                Expected = rope.AbsorberForce, Formula = "the absorber's plateau F_p",
+            });
+            list.Add(new CheckResult
+            {
+                Quantity = "absorber deployment", Unit = "m", Tolerance = 0.02, Measured = r.AbsorberDeployment,
+                Expected = Math.Min(deployment, rope.AbsorberDeployment),
+                Formula = deployment <= rope.AbsorberDeployment ? "M·g·(h + x_e + x_d) = F_p·x_d + F_p²/(2k), x_e = F_p/k" : "used up: its deployment length",
+            });
+            list.Add(new CheckResult
+            {
+                Quantity = "plastic work", Unit = "J", Tolerance = 0.005, Measured = r.PlasticWork,
+                Expected = rope.AbsorberForce * r.AbsorberDeployment, Formula = "F_p·x_d (the plateau's work)",
+            });
+            list.Add(new CheckResult
+            {
+                Quantity = "peak force over EN 355's 6 kN", Unit = "N", Absolute = true, Tolerance = 0, Expected = 0,
+                Measured = Math.Max(0, r.PeakLoadForce - HookeRope.FallArrestLimits.En355), Formula = "EN 355: at most 6 kN with 100 kg",
+            });
+        }
+
+        /// <summary>
+        /// A plastic rope pulled slowly to its break (issue 15): the peak force against the neck onset F_n of the quasi-static
+        /// curve and the elongation there, the largest departure of the sampled force from that curve up to the peak, and the
+        /// force left when it broke (the neck softens the rope's force away before the break).
+        /// </summary>
+        static void AddPlasticChecks(RunResult r, List<CheckResult> list)
+        {
+            var curve = HookeRope.Solver.ForceElongationCurve.Of(ScenarioRunner.Settings(r.Scenario), 1.0);
+            int peak = 0;
+            for (int i = 1; i < r.Samples.Count; i++) if (r.Samples[i].TopTension > r.Samples[peak].TopTension) peak = i;
+            double onsetForce = curve.PeakForce, onsetElongation = double.NaN, worst = 0;
+            for (int i = 0; i < curve.Count; i++) if (curve.Force[i] == onsetForce) { onsetElongation = curve.Elongation[i]; break; }
+            for (int i = 0; i <= peak && i < r.Samples.Count; i++)
+                worst = Math.Max(worst, Math.Abs(r.Samples[i].TopTension - curve.ForceAt(r.Samples[i].Elongation)));
+            bool any = r.Samples.Count > 0;
+            list.Add(new CheckResult
+            {
+                Quantity = "peak force (neck onset)", Unit = "N", Tolerance = 0.01, Measured = any ? r.Samples[peak].TopTension : double.NaN,
+                Expected = onsetForce, Formula = "F_n = E·A·ε_y + H·ε_pn, ε_pn = (ε_n − ε_y)/(1 + H/(E·A))",
+            });
+            list.Add(new CheckResult
+            {
+                Quantity = "elongation at the peak", Unit = "m", Tolerance = 0.02, Measured = any ? r.Samples[peak].Elongation : double.NaN,
+                Expected = onsetElongation, Formula = "ε_n·L (the necking strain)",
+            });
+            list.Add(new CheckResult
+            {
+                Quantity = "largest force off the quasi-static curve before the peak", Unit = "N", Absolute = true, Tolerance = 0.01 * onsetForce,
+                Expected = 0, Measured = any ? worst : double.NaN, Formula = "elastic, then hardening at H (1 % of F_n)",
+            });
+            list.Add(new CheckResult
+            {
+                Quantity = "tension when it broke", Unit = "N", Absolute = true, Tolerance = 0.1 * onsetForce, Expected = 0,
+                Measured = double.IsNaN(r.BreakTime) ? double.NaN : r.BreakTension, Formula = "the neck softened the force (< 10 % of F_n)",
+            });
         }
 
         /// <summary>Number of trailing samples spanning a whole number of periods, at most <paramref name="limit"/>.</summary>

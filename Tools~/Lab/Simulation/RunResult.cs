@@ -133,10 +133,21 @@ namespace HookeRope.Lab.Simulation
         public double[] PeakTopTensionSeries;
         /// <summary>True when the run evaluated the energy every host step (<see cref="RunOptions.TrackEnergy"/>): <see cref="InitialEnergy"/> and <see cref="MaxEnergy"/> are measured.</summary>
         public bool EnergyTracked;
+        /// <summary>Energy absorber deployment at the end of the run (m; 0 without one).</summary>
+        public double AbsorberDeployment;
+        /// <summary>Permanent set at the end of the run (m): Σ (L_p − L) over the intact segments, absorber included.</summary>
+        public double PlasticElongation;
+        /// <summary>Plastic work at the end of the run (J).</summary>
+        public double PlasticWork;
         /// <summary>Solver residual (strain error, dimensionless) after each host step.</summary>
         public float[] ResidualSeries;
         /// <summary>Elongation after each host step, m.</summary>
         public double[] ElongationSeries;
+        /// <summary>
+        /// "settle" runs only (else null): after each host step, the horizontal offset (m) of the rope's centre of mass from the
+        /// vertical through the start, signed along its initial direction, and the largest horizontal distance of a particle from it.
+        /// </summary>
+        public double[] SwingSeries, OffVerticalSeries;
         /// <summary>Host step in s (series index k is time (k + 1)·HostStep).</summary>
         public double HostStep;
         /// <summary>Final force of the rope on the start and end loads in N (zero without a load).</summary>

@@ -48,6 +48,19 @@ namespace HookeRope.Lab.Simulation
             settings.Solver = s.Solver.Method == SolverMethod.GaussSeidel ? ConstraintSolverKind.GaussSeidel : ConstraintSolverKind.ExactChain;
             settings.Tension = s.Solver.TensionOnly ? TensionModel.TensionOnly : TensionModel.Bilateral;
             settings.Integrator = s.Solver.Integrator;
+            settings.YieldStrain = (float)r.YieldStrain;
+            settings.HardeningModulus = (float)r.HardeningModulus;
+            settings.NeckingStrain = (float)r.NeckingStrain;
+            settings.UltimateStrain = (float)r.UltimateStrain;
+            if (r.IsPlastic) settings.SetPlasticity((float)r.YieldStrain, (float)r.HardeningModulus, (float)r.NeckingStrain, (float)r.UltimateStrain);
+            settings.AbsorberForce = (float)r.AbsorberForce;
+            settings.AbsorberDeployment = (float)r.AbsorberDeployment;
+            settings.EnergyAbsorber = r.EnergyAbsorber;
+            settings.ViscousDrag = (float)s.Drag.ViscousDrag;
+            settings.DragCoefficient = (float)s.Drag.DragCoefficient;
+            settings.SkinFriction = (float)s.Drag.SkinFriction;
+            settings.AirDensity = (float)s.Drag.AirDensity;
+            settings.Wind = s.Drag.Wind;
             return settings;
         }
 
@@ -167,6 +180,15 @@ namespace HookeRope.Lab.Simulation
             result.TopTensionSeries = new double[steps];
             result.PeakTopTensionSeries = new double[steps];
             result.ResidualSeries = new float[steps];
+            bool swing = s.Expect.Check == "settle";
+            var swingOrigin = ScenarioGeometry.StartPosition(s);
+            Float3 swingAlong = default;
+            if (swing)
+            {
+                result.SwingSeries = new double[steps];
+                result.OffVerticalSeries = new double[steps];
+                swingAlong = Swing(rope, swingOrigin, down, default, out _, out _);
+            }
             double sampleInterval = s.Outputs.SampleRate > 0 ? 1.0 / s.Outputs.SampleRate : 0;
             double nextSample = 0;
             int nextProfile = 0, nextMesh = 0;
@@ -213,11 +235,18 @@ namespace HookeRope.Lab.Simulation
                 }
                 double elongation = readouts.Elongation;
                 if (elongation > result.MaxElongation) result.MaxElongation = elongation;
+                result.AbsorberDeployment = readouts.AbsorberDeployment;
+                result.PlasticElongation = readouts.PlasticElongation;
+                result.PlasticWork = readouts.PlasticWork;
                 double drop = Float3.Dot(load - releasePosition, down);
                 result.LoadDrop[k] = drop;
                 result.ElongationSeries[k] = elongation;
                 result.TopTensionSeries[k] = top;
                 result.PeakTopTensionSeries[k] = rope.BrokenSegments[0] ? 0.0 : rope.PeakTensions[0];
+                if (swing)
+                {
+                    Swing(rope, swingOrigin, down, swingAlong, out result.SwingSeries[k], out result.OffVerticalSeries[k]);
+                }
                 if (drop > lowest) lowest = drop;
                 if (double.IsNaN(tautDrop) && bottom > Math.Max(0.1 * weight, 1e-6) && k > 0)
                 {
@@ -277,11 +306,39 @@ namespace HookeRope.Lab.Simulation
                 Array.Resize(ref result.TopTensionSeries, result.Steps);
                 Array.Resize(ref result.PeakTopTensionSeries, result.Steps);
                 Array.Resize(ref result.ResidualSeries, result.Steps);
+                if (swing)
+                {
+                    Array.Resize(ref result.SwingSeries, result.Steps);
+                    Array.Resize(ref result.OffVerticalSeries, result.Steps);
+                }
             }
             result.TotalDrop = lowest;
             result.ArrestDistance = double.IsNaN(tautDrop) ? 0 : lowest - tautDrop;
             Final(setup, result);
             return result;
+        }
+
+        /// <summary>
+        /// The swing of a rope hanging from <paramref name="origin"/> (m; <paramref name="down"/> the unit vector along gravity):
+        /// the horizontal offset of its centre of mass, signed along <paramref name="along"/> (m), and the largest horizontal
+        /// distance of a particle (m). Returns the unit direction of the centre of mass's horizontal offset (for the first call).
+        /// </summary>
+        static Float3 Swing(Rope rope, Float3 origin, Float3 down, Float3 along, out double offset, out double farthest)
+        {
+            double mass = 0, cx = 0, cy = 0, cz = 0;
+            farthest = 0;
+            for (int i = 0; i < rope.ParticleCount; i++)
+            {
+                var r = rope.GetPosition(i) - origin;
+                var horizontal = r - down * Float3.Dot(r, down);
+                farthest = Math.Max(farthest, horizontal.Length);
+                double m = rope.GetParticleMass(i);
+                mass += m;
+                cx += m * horizontal.X; cy += m * horizontal.Y; cz += m * horizontal.Z;
+            }
+            var centre = new Float3((float)(cx / mass), (float)(cy / mass), (float)(cz / mass));
+            offset = Float3.Dot(centre, along);
+            return centre.NormalizedOr(new Float3(1f, 0f, 0f));
         }
 
         /// <summary>Updates the energy maxima of <paramref name="result"/> (J) for the second half of the run when <paramref name="late"/>, else the first.</summary>

@@ -18,6 +18,8 @@ namespace HookeRope.Tests.Lint
             // Solver
             "HookeRope.Solver.Rope", "HookeRope.Solver.RopeSettings", "HookeRope.Solver.StepReport", "HookeRope.Solver.RopeBreakEvent",
             "HookeRope.Solver.ColliderShape", "HookeRope.Solver.ColliderKind", "HookeRope.Solver.ConstraintSolverKind", "HookeRope.Solver.TensionModel", "HookeRope.Solver.TimeIntegrator",
+            // Material law (issue 15): the model, its quasi-static curve (inspector preview, lab plot), the fall-arrest limits the read-outs judge by
+            "HookeRope.Solver.MaterialModel", "HookeRope.Solver.ForceElongationCurve", "HookeRope.FallArrestLimits",
             // Radius model (read-only queries) and its analytic formulas
             "HookeRope.Radius.RadiusSettings", "HookeRope.Radius.RadiusModel", "HookeRope.Radius.NeckMode", "HookeRope.Radius.BreakReason",
             "HookeRope.Radius.PoissonRadius", "HookeRope.Radius.NeckHyperbola",

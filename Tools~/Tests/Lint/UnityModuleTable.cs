@@ -90,7 +90,7 @@ namespace HookeRope.Tests.Lint
                 "HeaderAttribute", "HelpURLAttribute", "HideFlags", "LayerMask", "LogType", "Material", "Mesh",
                 "MeshFilter", "MeshRenderer", "MeshTopology", "MinAttribute", "MissingReferenceException",
                 "MonoBehaviour", "Object", "PrimitiveType", "PropertyAttribute", "QualitySettings", "Quaternion",
-                "RangeAttribute", "Renderer", "RequireComponent", "ScriptableObject", "SerializeField", "Shader",
+                "RangeAttribute", "Rect", "Renderer", "RequireComponent", "ScriptableObject", "SerializeField", "Shader",
                 "Texture", "Texture2D", "TextureFormat", "TextureWrapMode", "Time", "TooltipAttribute", "Transform",
                 "UnityException", "Vector3", "WaitForFixedUpdate", "YieldInstruction");
             Add(CoreModule, "UnityEngine.Events",
@@ -114,7 +114,7 @@ namespace HookeRope.Tests.Lint
             Add(AudioModule, "UnityEngine", "AudioListener", "AudioSource");
 
             // UnityEngine.IMGUIModule (com.unity.modules.imgui).
-            Add(ImguiModule, "UnityEngine", "GUI", "GUIContent", "GUILayout", "GUILayoutOption", "GUIStyle");
+            Add(ImguiModule, "UnityEngine", "GUI", "GUIContent", "GUILayout", "GUILayoutOption", "GUILayoutUtility", "GUIStyle");
 
             // UnityEditor.CoreModule: "Implemented in: UnityEditor.CoreModule".
             Add(EditorCoreModule, "UnityEditor",

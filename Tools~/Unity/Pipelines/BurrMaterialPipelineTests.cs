@@ -1,3 +1,4 @@
+using System;
 using NUnit.Framework;
 using UnityEngine;
 using UnityEngine.Rendering;
@@ -38,6 +39,28 @@ namespace HookeRope.StandIn.Pipelines
             Assert.That(burr.shaderKeywords, Is.Empty);
             Assert.That(burr.renderQueue, Is.EqualTo(2000));
             Assert.That(burr.GetColor("_BaseColor").g, Is.EqualTo(0.5f).Within(1e-6f), "the rope's colour");
+        }
+
+        [Test]
+        public void BurrTextureUploadsTheCoresMipChain()
+        {
+            // issue 17 item 3: 256 × 64 with all 9 levels, each the core's 2 × 2 box average (SetPixelData per level from
+            // its offset in one array, Apply(updateMipmaps: false) so Unity's own filter does not replace them), trilinear
+            var texture = RopeDefaultMaterial.CreateBurrTexture();
+            var chain = new byte[HookeRope.Fracture.BurrTextureGenerator.MipChainByteCount(256, 64)];
+            HookeRope.Fracture.BurrTextureGenerator.GenerateMipChain(256, 64, 16, 1u, 214, 200, 160, chain);
+            Assert.That(texture.mipmapCount, Is.EqualTo(9));
+            Assert.That(texture.filterMode, Is.EqualTo(FilterMode.Trilinear));
+            Assert.That(texture.LastApplyUpdatedMipmaps, Is.False);
+            Assert.That(texture.isReadable, Is.False);
+            for (int level = 0; level < 9; level++)
+            {
+                int offset = HookeRope.Fracture.BurrTextureGenerator.MipOffset(256, 64, level);
+                int bytes = Math.Max(1, 256 >> level) * Math.Max(1, 64 >> level) * 4;
+                Assert.That(texture.Uploaded[level].Length, Is.EqualTo(bytes), "level " + level);
+                Assert.That(texture.Uploaded[level].AsSpan().SequenceEqual(chain.AsSpan(offset, bytes)), Is.True, "level " + level);
+            }
+            UnityEngine.Object.DestroyImmediate(texture);
         }
 
         [TestCase(true)]

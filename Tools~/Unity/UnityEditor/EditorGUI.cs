@@ -17,5 +17,8 @@ namespace UnityEditor
 
         /// <summary>Ends a disabled group started with BeginDisabledGroup.</summary>
         public static void EndDisabledGroup() => throw StandInError.Unsupported("EditorGUI.EndDisabledGroup (IMGUI)");
+
+        /// <summary>Draws a filled rectangle of color at the specified position and size within the current editor window.</summary>
+        public static void DrawRect(UnityEngine.Rect rect, UnityEngine.Color color) => throw StandInError.Unsupported("EditorGUI.DrawRect (IMGUI)");
     }
 }

@@ -41,6 +41,7 @@ namespace HookeRope.Tests.Core.Parameters
                 Assert.That(Const(t, "Json"), Is.EqualTo(row.Json), t.Name);
                 Assert.That(Const(t, "Tooltip"), Is.EqualTo(row.Tooltip), t.Name);
                 Assert.That(Const(t, "MinExclusive") ?? false, Is.EqualTo(row.MinExclusive), t.Name);
+                Assert.That(Const(t, "MaxExclusive") ?? false, Is.EqualTo(row.MaxExclusive), t.Name);
                 var min = Const(t, "Min");
                 if (min != null) Assert.That(Convert.ToDouble(min), Is.EqualTo(row.Min), t.Name + ".Min");
                 var max = Const(t, "Max");
@@ -117,11 +118,13 @@ namespace HookeRope.Tests.Core.Parameters
                 if (row.Kind == ParameterKind.Float)
                 {
                     float low = row.MinExclusive ? NextUp((float)row.Min) : (float)row.Min;
+                    float high = row.MaxExclusive ? NextDown((float)row.Max) : (float)row.Max;
                     Assert.That(RopeParameters.Check(low, row), Is.EqualTo(low), row.Name);
-                    Assert.That(RopeParameters.Check((float)row.Max, row), Is.EqualTo((float)row.Max), row.Name);
+                    Assert.That(RopeParameters.Check(high, row), Is.EqualTo(high), row.Name);
                     float below = row.MinExclusive ? (float)row.Min : NextDown((float)row.Min);
+                    float above = row.MaxExclusive ? (float)row.Max : NextUp((float)row.Max);
                     AssertThrowsNaming(() => RopeParameters.Check(below, row), row);
-                    AssertThrowsNaming(() => RopeParameters.Check(NextUp((float)row.Max), row), row);
+                    AssertThrowsNaming(() => RopeParameters.Check(above, row), row);
                     AssertThrowsNaming(() => RopeParameters.Check(float.NaN, row), row);
                     if (row.AllowsPositiveInfinity) Assert.That(RopeParameters.Check(float.PositiveInfinity, row), Is.EqualTo(float.PositiveInfinity), row.Name);
                     else AssertThrowsNaming(() => RopeParameters.Check(float.PositiveInfinity, row), row);
@@ -174,6 +177,16 @@ namespace HookeRope.Tests.Core.Parameters
 
             float inside = 0.5f;
             Assert.That(RopeParameters.Clamp(ref inside, RopeParameters.DefectPosition.Row), Is.Null);
+            // issue 17: the defect lies strictly inside the rope, (0, 1); either end resets to the middle
+            float atEnd = 1f, atStart = 0f;
+            Assert.That(RopeParameters.Clamp(ref atEnd, RopeParameters.DefectPosition.Row), Is.EqualTo("Defect position = 1 is outside (0, 1); clamped to 0.5."));
+            Assert.That(RopeParameters.Clamp(ref atStart, RopeParameters.DefectPosition.Row), Is.EqualTo("Defect position = 0 is outside (0, 1); clamped to 0.5."));
+            Assert.That(atEnd, Is.EqualTo(0.5f));
+            var defect = Assert.Throws<ArgumentOutOfRangeException>(() => new HookeRope.Radius.RadiusSettings { DefectPosition = 1f });
+            Assert.That(defect.ParamName, Is.EqualTo("DefectPosition"));
+            Assert.That(defect.Message, Does.Contain("DefectPosition must be in (0, 1)."));
+            Assert.Throws<ArgumentOutOfRangeException>(() => new HookeRope.Radius.RadiusSettings { DefectPosition = 0f });
+            Assert.That(new HookeRope.Radius.RadiusSettings { DefectPosition = 0.999f }.DefectPosition, Is.EqualTo(0.999f));
 
             int segments = 0;
             Assert.That(RopeParameters.Clamp(ref segments, RopeParameters.SegmentCount.Row), Is.EqualTo("Segment count = 0 is outside [1, 10000]; clamped to 1."));
@@ -203,9 +216,9 @@ namespace HookeRope.Tests.Core.Parameters
                     float low = row.MinExclusive ? NextUp((float)row.Min) : (float)row.Min;
                     property.SetValue(settings, low);
                     Assert.That(property.GetValue(settings), Is.EqualTo(low), row.Name);
-                    property.SetValue(settings, (float)row.Max);
+                    property.SetValue(settings, row.MaxExclusive ? NextDown((float)row.Max) : (float)row.Max);
                     AssertSetterThrows(settings, property, row.MinExclusive ? (float)row.Min : NextDown((float)row.Min), row);
-                    AssertSetterThrows(settings, property, NextUp((float)row.Max), row);
+                    AssertSetterThrows(settings, property, row.MaxExclusive ? (float)row.Max : NextUp((float)row.Max), row);
                     checkedRows++;
                 }
                 else if (row.Kind == ParameterKind.Int && property.PropertyType == typeof(int))
@@ -217,7 +230,7 @@ namespace HookeRope.Tests.Core.Parameters
                     checkedRows++;
                 }
             }
-            Assert.That(checkedRows, Is.EqualTo(18), "RopeSettings: L, n, R, E, ρ, β, substeps, iterations; RadiusSettings: ν, r_min, defect, zone, growth, break strain, break radius; TubeMeshSettings: radial, rings, v per metre");
+            Assert.That(checkedRows, Is.EqualTo(28), "RopeSettings: L, n, R, E, ρ, β, substeps, iterations, yield, hardening, necking and ultimate strains, absorber force and deployment, c, C_d, C_f, ρ_air; RadiusSettings: ν, r_min, defect, zone, growth, break strain, break radius; TubeMeshSettings: radial, rings, v per metre");
         }
 
         [Test]
@@ -233,7 +246,7 @@ namespace HookeRope.Tests.Core.Parameters
                 Assert.That(actual, IsDerived(row) ? Is.EqualTo(row.Default).Within(1e-3).Percent : Is.EqualTo(row.Default), settings.GetType().Name + "." + row.Name);
                 checkedRows++;
             }
-            Assert.That(checkedRows, Is.EqualTo(28), "RopeSettings 12 rows (gravity is a vector), RadiusSettings 12, TubeMeshSettings 4");
+            Assert.That(checkedRows, Is.EqualTo(41), "RopeSettings 24 rows (gravity and wind are vectors; 8 of the material law and 4 of the drag, issue 15), RadiusSettings 12, TubeMeshSettings 5");
         }
 
         static bool IsDerived(ParameterInfo row) => row == RopeParameters.AxialStiffness.Row || row == RopeParameters.LinearDensity.Row;

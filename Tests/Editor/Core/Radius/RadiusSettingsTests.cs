@@ -33,7 +33,7 @@ namespace HookeRope.Tests.Core.Radius
         public void OtherParametersNameThemselvesAndTheirRange()
         {
             var s = new RadiusSettings { PoissonRatio = 0.5f, NeckRadiusFraction = 0.8f, BreakStrain = 1000f };
-            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.DefectPosition = 1.5f).Message, Does.Contain("DefectPosition").And.Contain("[0, 1]"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.DefectPosition = 1.5f).Message, Does.Contain("DefectPosition").And.Contain("(0, 1)"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.NeckZoneDiameters = 0.1f).Message, Does.Contain("NeckZoneDiameters").And.Contain("[0.5, 1000]"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.NeckGrowthStrain = 0f).Message, Does.Contain("NeckGrowthStrain").And.Contain("(0, 100]"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.BreakRadiusFraction = 1f).Message, Does.Contain("BreakRadiusFraction").And.Contain("[0, 0.99]"));

@@ -7,14 +7,7 @@ namespace HookeRope.Tests.Solver
 {
     public sealed class CollisionTests
     {
-        private const float RopeRadius = 0.01f;
-
-        private static Rope LooseRope(float length, int segments, Float3 start, Float3 end)
-        {
-            var settings = RopeTestKit.Legacy(length: length, segments: segments, radius: RopeRadius);
-            settings.YoungsModulus = 1e9f;
-            return new Rope(settings, start, end);
-        }
+        private const float RopeRadius = CollisionScenes.RopeRadius;
 
         /// <summary>Deepest particle penetration into collider 0, in metres (≤ 0 = none), and the deepest segment-midpoint one.</summary>
         private static double Deepest(Rope rope, out double midpoint)
@@ -49,9 +42,7 @@ namespace HookeRope.Tests.Solver
         [Test]
         public void RopeDrapedOverASphereDoesNotPenetrate()
         {
-            const float SphereRadius = 0.5f;
-            var rope = LooseRope(2f, 64, new Float3(-1f, SphereRadius + RopeRadius + 0.001f, 0f), new Float3(1f, SphereRadius + RopeRadius + 0.001f, 0f));
-            rope.AddCollider(ColliderShape.Sphere(Float3.Zero, SphereRadius, 0.5f));
+            var rope = CollisionScenes.SphereDrape();
             double worst = Settle(rope, 180);
             Deepest(rope, out double midpoint);
             TestContext.WriteLine($"sphere: deepest particle penetration {worst:E3} m ({worst / RopeRadius * 100:F3} % of r), segment midpoints {midpoint:E3} m");
@@ -64,10 +55,7 @@ namespace HookeRope.Tests.Solver
         [Test]
         public void RopeOverABoxEdgeDoesNotPenetrateAndFrictionHoldsIt()
         {
-            // box top at y = 0, edge at x = 0.5; 1 m of rope on top, 0.5 m over the edge
-            var box = ColliderShape.Box(new Float3(0f, -0.5f, 0f), Quat.Identity, new Float3(0.5f, 0.5f, 0.5f), 1f);
-            var rope = LooseRope(1.5f, 60, new Float3(-0.5f, RopeRadius + 0.001f, 0f), new Float3(1f, RopeRadius + 0.001f, 0f));
-            rope.AddCollider(box);
+            var rope = CollisionScenes.BoxEdge();
             double worst = Settle(rope, 180);
             Deepest(rope, out double midpoint);
             TestContext.WriteLine($"box edge: deepest particle penetration {worst:E3} m ({worst / RopeRadius * 100:F3} % of r), segment midpoints {midpoint:E3} m");
@@ -79,10 +67,7 @@ namespace HookeRope.Tests.Solver
         [Test]
         public void RotatedBoxUsesItsRotation()
         {
-            // a box rotated 45° about Z presents a corner upwards at height h·√2
-            var box = ColliderShape.Box(Float3.Zero, Quat.FromAxisAngle(new Float3(0f, 0f, 1f), MathF.PI / 4f), new Float3(0.5f, 0.5f, 0.5f), 0.8f);
-            var rope = LooseRope(1f, 20, new Float3(-0.5f, 1f, 0f), new Float3(0.5f, 1f, 0f));
-            rope.AddCollider(box);
+            var rope = CollisionScenes.RotatedBox();
             Assert.That(rope.ColliderDistance(0, new Float3(0f, 1f, 0f)), Is.EqualTo(1.0 - 0.5 * Math.Sqrt(2.0)).Within(1e-5));
             double worst = Settle(rope, 120);
             Assert.That(worst, Is.LessThan(0.01 * RopeRadius));
@@ -92,8 +77,7 @@ namespace HookeRope.Tests.Solver
         [Test]
         public void RopeRestsOnAPlaneAtItsRadius()
         {
-            var rope = LooseRope(1f, 10, new Float3(0f, 0.5f, 0f), new Float3(1f, 0.5f, 0f));
-            rope.AddCollider(ColliderShape.Plane(Float3.Zero, new Float3(0f, 1f, 0f), 0.3f));
+            var rope = CollisionScenes.PlaneRest();
             Settle(rope, 90);
             for (int i = 0; i < rope.ParticleCount; i++)
                 Assert.That(rope.GetPosition(i).Y, Is.EqualTo(RopeRadius).Within(1e-5));
@@ -102,10 +86,7 @@ namespace HookeRope.Tests.Solver
         [Test]
         public void RopeOverACapsuleHangsOnItsRoundSurface()
         {
-            // horizontal capsule along Z (rotation maps Y to Z), radius 0.2
-            var capsule = ColliderShape.Capsule(Float3.Zero, Quat.FromAxisAngle(new Float3(1f, 0f, 0f), MathF.PI / 2f), 0.2f, 1f, 0.5f);
-            var rope = LooseRope(1f, 40, new Float3(-0.5f, 0.25f, 0f), new Float3(0.5f, 0.25f, 0f));
-            rope.AddCollider(capsule);
+            var rope = CollisionScenes.CapsuleHang();
             double worst = Settle(rope, 120);
             Assert.That(worst, Is.LessThan(0.01 * RopeRadius));
             Assert.That(rope.GetPosition(20).Y, Is.EqualTo(0.2f + RopeRadius).Within(0.001f));
@@ -115,12 +96,10 @@ namespace HookeRope.Tests.Solver
         public void MovingSpherePushesTheRopeAlong()
         {
             // a hanging rope; a sphere sweeps through its lower half in +X and carries it along
-            var settings = RopeTestKit.Legacy(length: 1f, segments: 20, radius: RopeRadius);
-            var rope = RopeTestKit.Hanging(settings, 0f, out _);
-            int sphere = rope.AddCollider(ColliderShape.Sphere(new Float3(-0.3f, -0.8f, 0f), 0.1f));
-            for (int i = 0; i < 45; i++)
+            var rope = CollisionScenes.MovingSphere();
+            for (int i = 0; i < CollisionScenes.MovingSphereSteps; i++)
             {
-                rope.SetColliderPose(sphere, new Float3(-0.3f + 0.6f * (i + 1) / 45f, -0.8f, 0f), Quat.Identity);
+                CollisionScenes.MoveSphere(rope, i);
                 rope.Step(RopeTestKit.HostStep);
                 Assert.That(Deepest(rope, out _), Is.LessThan(0.01 * RopeRadius));
             }
@@ -134,22 +113,13 @@ namespace HookeRope.Tests.Solver
         /// </summary>
         private static void PullOverBar(int substeps, int iterations, out double expected, out double path, out Rope rope, out int left, out int right)
         {
-            const float BarRadius = 0.1f, CordRadius = 0.005f, Length = 1.2f;
-            var settings = RopeTestKit.Legacy(length: Length, segments: 80, radius: CordRadius, substeps: substeps, iterations: iterations);
-            settings.AxialStiffness = 200f;
-            settings.LinearDensity = 0.05f;
-            settings.Gravity = Float3.Zero;
-            Float3 a0 = new Float3(-0.5f, 0.2f, 0f), b0 = new Float3(0.5f, 0.2f, 0f);
-            rope = new Rope(settings, a0, b0);
-            left = rope.AddPin(0, a0);
-            right = rope.AddPin(rope.ParticleCount - 1, b0);
-            rope.AddCollider(ColliderShape.Capsule(Float3.Zero, Quat.FromAxisAngle(new Float3(1f, 0f, 0f), MathF.PI / 2f), BarRadius, 0.5f));
-            const float Drop = 0.6f;
-            for (int k = 1; k <= 180; k++)
+            const float BarRadius = CollisionScenes.BarRadius, CordRadius = CollisionScenes.CordRadius, Length = CollisionScenes.CordLength;
+            rope = CollisionScenes.BarPull(substeps, iterations);
+            left = 0;
+            right = 1;
+            for (int k = 0; k < CollisionScenes.BarPullSteps; k++)
             {
-                float f = Math.Min(k / 90f, 1f); // ends pulled down 0.6 m in 1 s, then held for 1 s
-                rope.SetPinTarget(left, new Float3(-0.5f, 0.2f - Drop * f, 0f));
-                rope.SetPinTarget(right, new Float3(0.5f, 0.2f - Drop * f, 0f));
+                CollisionScenes.PullDown(rope, k);
                 rope.Step(RopeTestKit.HostStep);
             }
             // tangent + arc + tangent from A = (−0.5, −0.4) to B = (0.5, −0.4) around the bar's centre
@@ -193,11 +163,8 @@ namespace HookeRope.Tests.Solver
         /// <summary>A free rope resting on a floor plane (y = 0) for 1 s, with a sphere far away as a second collider.</summary>
         private static Rope RopeOnTheFloor(out float restingY)
         {
-            var settings = RopeTestKit.Legacy(length: 1f, segments: 16, radius: RopeRadius, damping: 0.01f);
-            var rope = new Rope(settings, new Float3(-0.5f, RopeRadius, 0f), new Float3(0.5f, RopeRadius, 0f));
-            rope.AddCollider(ColliderShape.Plane(Float3.Zero, new Float3(0f, 1f, 0f)));
-            rope.AddCollider(ColliderShape.Sphere(new Float3(0f, 0f, 10f), 1f));
-            for (int k = 0; k < 90; k++) rope.Step(RopeTestKit.HostStep);
+            var rope = CollisionScenes.FloorWithFarSphere();
+            for (int k = 0; k < CollisionScenes.FloorSteps; k++) rope.Step(RopeTestKit.HostStep);
             restingY = CentreY(rope);
             return rope;
         }

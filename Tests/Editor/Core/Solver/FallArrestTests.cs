@@ -21,12 +21,13 @@ namespace HookeRope.Tests.Solver
             for (int i = 0; i < 90 * 2; i++)
             {
                 rope.Step(RopeTestKit.HostStep);
-                peak = Math.Max(peak, rope.GetLoadForce(load).Length);
+                peak = Math.Max(peak, rope.GetLoadPeakForce(load)); // the largest substep force: read inside the step
             }
             double mg = Mass * RopeTestKit.G;
             double expected = mg + Math.Sqrt(mg * mg + 2.0 * mg * stiffness * freeFall);
             TestContext.WriteLine($"peak {peak:G6} N vs {expected:G6} N ({(peak / expected - 1) * 100:F3} %)");
-            Assert.That(peak, Is.EqualTo(expected).Within(2).Percent);
+            // issue 14: within 0.3 % at the defaults (BDF2, 8 substeps of 1/90 s; measured −0.024 % and −0.060 %)
+            Assert.That(peak, Is.EqualTo(expected).Within(0.3).Percent);
         }
     }
 }

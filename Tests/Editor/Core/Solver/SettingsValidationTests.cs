@@ -27,6 +27,16 @@ namespace HookeRope.Tests.Solver
             yield return Case(s => s.Damping = -0.1f, RopeParameters.Damping.Row, "Damping negative");
             yield return Case(s => s.Damping = float.NaN, RopeParameters.Damping.Row, "Damping NaN");
             yield return Case(s => s.Gravity = new Float3(0f, float.NaN, 0f), RopeParameters.Gravity.Row, "Gravity NaN");
+            yield return Case(s => s.ViscousDrag = -0.1f, RopeParameters.ViscousDrag.Row, "ViscousDrag negative");
+            yield return Case(s => s.ViscousDrag = float.NaN, RopeParameters.ViscousDrag.Row, "ViscousDrag NaN");
+            yield return Case(s => s.ViscousDrag = float.PositiveInfinity, RopeParameters.ViscousDrag.Row, "ViscousDrag infinite");
+            yield return Case(s => s.DragCoefficient = -1f, RopeParameters.DragCoefficient.Row, "DragCoefficient negative");
+            yield return Case(s => s.DragCoefficient = float.NaN, RopeParameters.DragCoefficient.Row, "DragCoefficient NaN");
+            yield return Case(s => s.SkinFriction = -0.01f, RopeParameters.SkinFriction.Row, "SkinFriction negative");
+            yield return Case(s => s.AirDensity = -1.2f, RopeParameters.AirDensity.Row, "AirDensity negative");
+            yield return Case(s => s.AirDensity = float.PositiveInfinity, RopeParameters.AirDensity.Row, "AirDensity infinite");
+            yield return Case(s => s.Wind = new Float3(float.NaN, 0f, 0f), RopeParameters.Wind.Row, "Wind NaN");
+            yield return Case(s => s.Wind = new Float3(0f, 0f, float.NegativeInfinity), RopeParameters.Wind.Row, "Wind infinite");
             yield return Case(s => s.Substeps = 0, RopeParameters.Substeps.Row, "Substeps zero");
             yield return Case(s => s.Iterations = 1001, RopeParameters.Iterations.Row, "Iterations too many");
             yield return new TestCaseData(new Action<RopeSettings>(s => s.Solver = (ConstraintSolverKind)7), "Solver", "named values").SetName("Solver undefined");

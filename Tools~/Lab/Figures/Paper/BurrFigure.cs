@@ -6,8 +6,8 @@ namespace HookeRope.Lab.Figures.Paper
 {
     /// <summary>
     /// Fig. 7, burred ends: the built-in "fracture" cord pulled until it breaks, with 8, 16 and 32 radial segments,
-    /// the broken end of the fixed piece seen obliquely in one panel each: the core's burr strands with the package's
-    /// burr texture.
+    /// the two broken ends seen obliquely in one panel each: both pieces keep their half of the neck and end at its waist
+    /// in the core's burr strands, with the package's burr texture.
     /// </summary>
     public static class BurrFigure
     {
@@ -30,12 +30,8 @@ namespace HookeRope.Lab.Figures.Paper
             return run;
         }
 
-        /// <summary>The end of the fixed piece at the first broken segment (m).</summary>
-        public static Float3 BrokenEnd(FigureRun run)
-        {
-            int j = run.FirstBrokenSegment();
-            return j >= 0 ? run.Setup.Rope.GetPosition(j) : run.DefectPosition();
-        }
+        /// <summary>Where the rope parted: between the two broken ends (m), else the defect.</summary>
+        public static Float3 BrokenEnd(FigureRun run) => SequenceFigure.BreakCentre(run);
 
         /// <summary>The figure: three panels; Numbers hold per panel the burr triangles drawn and the core's burr index count / 3.</summary>
         public static DocumentationFigure Build(float scale = 1f)
@@ -60,8 +56,8 @@ namespace HookeRope.Lab.Figures.Paper
                 figure.Numbers[F("panel {0} core burr indices / 3", k)] = update.BurrIndexCount / 3;
                 figure.Numbers[F("panel {0} break time (s)", k)] = run.Time;
             }
-            Caption(figure, "Fig. 7  Burred ends (fracture scenario, R = 10 mm, break strain 0.5), the fixed piece's broken end at the step of the break\n" +
-                            "with 8, 16, 32 radial segments: the core's burr strands, tinted by the package's burr texture (256 × 64, 16 triangles).");
+            Caption(figure, "Fig. 7  Burred ends (fracture scenario, R = 10 mm, break strain 0.5) at the step of the break, 8/16/32 radial segments:\n" +
+                            "both pieces keep half the neck and end at its waist in the core's burr strands, with the mipmapped burr texture.");
             return figure;
         }
     }

@@ -25,16 +25,16 @@ namespace HookeRope.Lab.Figures.Paper
         /// <summary>Colliders and props (0xRRGGBB).</summary>
         public const uint PropColor = 0x8C939C;
 
-        /// <summary>File names, in figure order (5, 6, 7, 8, 9a).</summary>
+        /// <summary>File names, in figure order (5, 6, 7, 7b, 8, 9a).</summary>
         public static readonly string[] FileNames =
         {
-            PoissonSweepFigure.FileName, NeckFigure.FileName, BurrFigure.FileName, SequenceFigure.FileName, CollisionBendFigure.FileName,
+            PoissonSweepFigure.FileName, NeckFigure.FileName, BurrFigure.FileName, HeadsetBurrFigure.FileName, SequenceFigure.FileName, CollisionBendFigure.FileName,
         };
 
-        /// <summary>All five figures at <paramref name="scale"/> × their committed size (1 = committed; tests use less).</summary>
+        /// <summary>All six figures at <paramref name="scale"/> × their committed size (1 = committed; tests use less).</summary>
         public static List<DocumentationFigure> All(float scale = 1f) => new List<DocumentationFigure>
         {
-            PoissonSweepFigure.Build(scale), NeckFigure.Build(scale), BurrFigure.Build(scale), SequenceFigure.Build(scale), CollisionBendFigure.Build(scale),
+            PoissonSweepFigure.Build(scale), NeckFigure.Build(scale), BurrFigure.Build(scale), HeadsetBurrFigure.Build(scale), SequenceFigure.Build(scale), CollisionBendFigure.Build(scale),
         };
 
         /// <summary>A built-in scenario with the figures' tube resolution.</summary>

@@ -1,0 +1,275 @@
+using System;
+using HookeRope.Mathematics;
+
+namespace HookeRope.Geometry
+{
+    /// <summary>
+    /// The per-ring work of <see cref="TubeMeshBuilder"/>: ring centres on the Catmull–Rom curve, parallel-transported
+    /// frames, radius slopes, and the ring kernel that writes a ring's vertices. Written as scalar loops over the ring
+    /// arrays (no vector temporaries), so the cost does not depend on what a JIT or an ahead-of-time compiler inlines:
+    /// per vertex the kernel does 15 multiplications, 15 additions and 12 stores, with the cosines, sines and u of the
+    /// sides taken from tables made once per builder and everything per ring (binormal, tilt, offsets) hoisted.
+    /// </summary>
+    internal sealed partial class TubeMeshBuilder
+    {
+        private Float3[] centers = Array.Empty<Float3>();
+        private Float3[] tangents = Array.Empty<Float3>();
+        private Float3[] normals = Array.Empty<Float3>();
+        private float[] ringRadii = Array.Empty<float>();
+        private float[] ringV = Array.Empty<float>();
+        private float[] slopes = Array.Empty<float>();
+        private float[] slopeDistance = Array.Empty<float>();
+        private float[] spacing2 = Array.Empty<float>();
+        private bool[] dirty = Array.Empty<bool>();
+        private Float3[] particleNormal;
+        private Float3[] particleTangent;
+        private bool[] particleFrameValid;
+
+        private void AllocateParticleFrames(int segmentCount)
+        {
+            particleNormal = new Float3[segmentCount + 1];
+            particleTangent = new Float3[segmentCount + 1];
+            particleFrameValid = new bool[segmentCount + 1];
+        }
+
+        /// <summary>Grows the per-ring arrays to hold <paramref name="rings"/> rings (keeps their contents).</summary>
+        private void EnsureRingStorage(int rings)
+        {
+            if (centers.Length >= rings) return;
+            int size = Math.Max(rings, 2 * centers.Length);
+            Array.Resize(ref centers, size);
+            Array.Resize(ref tangents, size);
+            Array.Resize(ref normals, size);
+            Array.Resize(ref ringRadii, size);
+            Array.Resize(ref ringV, size);
+            Array.Resize(ref slopes, size);
+            Array.Resize(ref slopeDistance, size);
+            Array.Resize(ref spacing2, size);
+            Array.Resize(ref dirty, size);
+            Array.Resize(ref lastRadii, size);
+        }
+
+        private void ComputeCenters(int a, int b, int first, int last, ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z)
+        {
+            ReadOnlySpan<int> ringSegments = layout.RingSegments;
+            ReadOnlySpan<float> ringFractions = layout.RingFractions;
+            float ox = frameOrigin.X, oy = frameOrigin.Y, oz = frameOrigin.Z;
+            // fallback direction of the piece: first particle to last
+            float fx = (x[b] - ox) - (x[a] - ox), fy = (y[b] - oy) - (y[a] - oy), fz = (z[b] - oz) - (z[a] - oz);
+            if (!Normalize(ref fx, ref fy, ref fz) || !(float.IsFinite(fx) && float.IsFinite(fy) && float.IsFinite(fz))) { fx = 1f; fy = 0f; fz = 0f; }
+            for (int k = first; k <= last; k++)
+            {
+                int j = ringSegments[k];
+                float t = ringFractions[k];
+                float cx, cy, cz;
+                if (k == last)
+                {
+                    cx = x[b] - ox; cy = y[b] - oy; cz = z[b] - oz;
+                }
+                else if (t == 0f)
+                {
+                    cx = x[j] - ox; cy = y[j] - oy; cz = z[j] - oz;
+                }
+                else
+                {
+                    RopePieces.ControlPoints(j, a, b, x, y, z, ox, oy, oz, out float p0x, out float p0y, out float p0z,
+                        out float p1x, out float p1y, out float p1z, out float p2x, out float p2y, out float p2z, out float p3x, out float p3y, out float p3z);
+                    // uniform Catmull–Rom weights of t, as RingLayout stores the fraction
+                    float t2 = t * t, t3 = t2 * t;
+                    float w0 = 0.5f * (-t + 2f * t2 - t3);
+                    float w1 = 0.5f * (2f - 5f * t2 + 3f * t3);
+                    float w2 = 0.5f * (t + 4f * t2 - 3f * t3);
+                    float w3 = 0.5f * (-t2 + t3);
+                    cx = p0x * w0 + p1x * w1 + p2x * w2 + p3x * w3;
+                    cy = p0y * w0 + p1y * w1 + p2y * w2 + p3y * w3;
+                    cz = p0z * w0 + p1z * w1 + p2z * w2 + p3z * w3;
+                }
+                if (!(float.IsFinite(cx) && float.IsFinite(cy) && float.IsFinite(cz)))
+                {
+                    Float3 previous = k > first ? centers[k - 1] : Float3.Zero;
+                    cx = previous.X; cy = previous.Y; cz = previous.Z;
+                }
+                spacing2[k] = float.PositiveInfinity;
+                if (k > first)
+                {
+                    // a ring closer than 1e-3·r to the previous one is pushed forward (no zero-area triangles)
+                    Float3 previous = centers[k - 1];
+                    float dx = cx - previous.X, dy = cy - previous.Y, dz = cz - previous.Z;
+                    float minimum = 1e-3f * ringRadii[k] + 1e-7f;
+                    float gap2 = dx * dx + dy * dy + dz * dz;
+                    spacing2[k] = gap2;
+                    if (gap2 < minimum * minimum)
+                    {
+                        spacing2[k] = float.NaN; // the centre now depends on the radius: no radius-only rebuild
+                        float ux = fx, uy = fy, uz = fz;
+                        if (k > first + 1)
+                        {
+                            Float3 before = centers[k - 2];
+                            ux = previous.X - before.X; uy = previous.Y - before.Y; uz = previous.Z - before.Z;
+                            if (!Normalize(ref ux, ref uy, ref uz)) { ux = fx; uy = fy; uz = fz; }
+                        }
+                        cx = previous.X + ux * minimum; cy = previous.Y + uy * minimum; cz = previous.Z + uz * minimum;
+                    }
+                }
+                centers[k] = new Float3(cx, cy, cz);
+            }
+        }
+
+        /// <summary>
+        /// Tangents (central differences of the centres) and normals by parallel transport from the piece's first ring,
+        /// whose normal is the last build's normal at that particle, re-projected only when its tangent changed (so the
+        /// tube does not spin between frames, and the same input gives the same bits).
+        /// </summary>
+        private void ComputeFrames(int a, int b, int first, int last)
+        {
+            Float3 span = centers[last] - centers[first];
+            float px = span.X, py = span.Y, pz = span.Z;
+            if (!Normalize(ref px, ref py, ref pz)) { px = 1f; py = 0f; pz = 0f; }
+            float nx = 0f, ny = 0f, nz = 0f, qx = 0f, qy = 0f, qz = 0f;
+            for (int k = first; k <= last; k++)
+            {
+                Float3 ahead = k < last ? centers[k + 1] : centers[k];
+                Float3 behind = k > first ? centers[k - 1] : centers[k];
+                float tx = ahead.X - behind.X, ty = ahead.Y - behind.Y, tz = ahead.Z - behind.Z;
+                bool found = Normalize(ref tx, ref ty, ref tz);
+                if (!found && k < last)
+                {
+                    Float3 d = centers[k + 1] - centers[k];
+                    tx = d.X; ty = d.Y; tz = d.Z;
+                    found = Normalize(ref tx, ref ty, ref tz);
+                }
+                if (!found && k > first)
+                {
+                    Float3 d = centers[k] - centers[k - 1];
+                    tx = d.X; ty = d.Y; tz = d.Z;
+                    found = Normalize(ref tx, ref ty, ref tz);
+                }
+                if (!found) { tx = px; ty = py; tz = pz; }
+                var tangent = new Float3(tx, ty, tz);
+                if (k == first)
+                {
+                    Float3 seed = particleNormal[a];
+                    nx = seed.X; ny = seed.Y; nz = seed.Z;
+                    if (!(particleFrameValid[a] && particleTangent[a].Equals(tangent)))
+                        FrameTransport.Perpendicular(ref nx, ref ny, ref nz, tx, ty, tz);
+                }
+                else
+                {
+                    FrameTransport.Transport(ref nx, ref ny, ref nz, qx, qy, qz, tx, ty, tz);
+                }
+                tangents[k] = tangent;
+                normals[k] = new Float3(nx, ny, nz);
+                qx = tx; qy = ty; qz = tz;
+                px = tx; py = ty; pz = tz;
+            }
+            for (int j = a; j <= b; j++)
+            {
+                int k = layout.FirstRing(j);
+                particleNormal[j] = normals[k];
+                particleTangent[j] = tangents[k];
+                particleFrameValid[j] = true;
+            }
+        }
+
+        private void ComputeSlopes(int first, int last)
+        {
+            for (int k = first; k <= last; k++)
+            {
+                int ahead = k < last ? k + 1 : k;
+                int behind = k > first ? k - 1 : k;
+                Float3 ca = centers[ahead], cb = centers[behind];
+                float dx = ca.X - cb.X, dy = ca.Y - cb.Y, dz = ca.Z - cb.Z;
+                slopeDistance[k] = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
+                slopes[k] = Slope(ringRadii[ahead], ringRadii[behind], slopeDistance[k]);
+            }
+        }
+
+        /// <summary>dr/ds between two rings <paramref name="distance"/> apart, clamped to ±10 (NaN counts as −10).</summary>
+        private static float Slope(float ahead, float behind, float distance)
+        {
+            float slope = distance > 1e-12f ? (ahead - behind) / distance : 0f;
+            if (!(slope >= -MaxSlope)) slope = -MaxSlope;
+            if (slope > MaxSlope) slope = MaxSlope;
+            return slope;
+        }
+
+        /// <summary>
+        /// The radius work alone (positions unchanged): new ring radii, slopes from the kept ring distances, and a ring
+        /// marked for rewriting only when its radius or slope changed.
+        /// </summary>
+        private void UpdateRadii(int first, int last, ReadOnlySpan<float> radii)
+        {
+            for (int k = first; k <= last; k++)
+            {
+                float r = Clamped(radii[k]);
+                dirty[k] = BitConverter.SingleToInt32Bits(r) != BitConverter.SingleToInt32Bits(ringRadii[k]);
+                ringRadii[k] = r;
+            }
+            for (int k = first; k <= last; k++)
+            {
+                int ahead = k < last ? k + 1 : k;
+                int behind = k > first ? k - 1 : k;
+                float slope = Slope(ringRadii[ahead], ringRadii[behind], slopeDistance[k]);
+                if (BitConverter.SingleToInt32Bits(slope) != BitConverter.SingleToInt32Bits(slopes[k])) { slopes[k] = slope; dirty[k] = true; }
+            }
+        }
+
+        /// <summary>The ring kernel: writes ring <paramref name="k"/>'s radial + 1 vertices (seam duplicated) into <paramref name="ring"/>.</summary>
+        private void WriteRing(int k, Span<TubeVertex> ring)
+        {
+            Float3 c = centers[k], t = tangents[k], nrm = normals[k];
+            float nx = nrm.X, ny = nrm.Y, nz = nrm.Z;
+            // binormal = t × n
+            float bx = t.Y * nz - t.Z * ny, by = t.Z * nx - t.X * nz, bz = t.X * ny - t.Y * nx;
+            float r = ringRadii[k];
+            float slope = slopes[k];
+            float inverse = 1f / MathF.Sqrt(1f + slope * slope);
+            // the normal tilts for a varying radius: (e_r − slope·t)/sqrt(1 + slope²)
+            float sx = t.X * slope, sy = t.Y * slope, sz = t.Z * slope;
+            float cx = c.X, cy = c.Y, cz = c.Z;
+            float ox = frameOrigin.X, oy = frameOrigin.Y, oz = frameOrigin.Z;
+            float v = ringV[k];
+            ReadOnlySpan<float> cs = cos, sn = sin, us = around;
+            for (int i = 0; i < ring.Length; i++)
+            {
+                float ci = cs[i], si = sn[i];
+                float dx = nx * ci + bx * si, dy = ny * ci + by * si, dz = nz * ci + bz * si;
+                ref TubeVertex vertex = ref ring[i];
+                vertex.PX = (cx + dx * r) + ox;
+                vertex.PY = (cy + dy * r) + oy;
+                vertex.PZ = (cz + dz * r) + oz;
+                vertex.NX = (dx - sx) * inverse;
+                vertex.NY = (dy - sy) * inverse;
+                vertex.NZ = (dz - sz) * inverse;
+                vertex.TX = bx * ci - nx * si;
+                vertex.TY = by * ci - ny * si;
+                vertex.TZ = bz * ci - nz * si;
+                vertex.TW = 1f;
+                vertex.U = us[i];
+                vertex.V = v;
+            }
+        }
+
+        /// <summary>The ring lies on the circle of radius r around c in the plane normal to t: per axis c ± r·sqrt(1 − t²).</summary>
+        private void AddRingBounds(int k, ref Bounds bounds)
+        {
+            Float3 c = centers[k], t = tangents[k];
+            float r = ringRadii[k];
+            float ex = r * MathF.Sqrt(MathF.Max(0f, 1f - t.X * t.X)) * 1.000001f;
+            float ey = r * MathF.Sqrt(MathF.Max(0f, 1f - t.Y * t.Y)) * 1.000001f;
+            float ez = r * MathF.Sqrt(MathF.Max(0f, 1f - t.Z * t.Z)) * 1.000001f;
+            bounds.Add(new Float3(c.X - ex, c.Y - ey, c.Z - ez));
+            bounds.Add(new Float3(c.X + ex, c.Y + ey, c.Z + ez));
+        }
+
+        /// <summary>(x, y, z) scaled to unit length and true, or unchanged and false when its length² is not above 1e-20 (as Float3.NormalizedOr).</summary>
+        private static bool Normalize(ref float x, ref float y, ref float z)
+        {
+            float lengthSquared = x * x + y * y + z * z;
+            if (!(lengthSquared > 1e-20f)) return false;
+            float inverse = 1f / MathF.Sqrt(lengthSquared);
+            x *= inverse; y *= inverse; z *= inverse;
+            return true;
+        }
+    }
+}
