@@ -22,6 +22,10 @@ namespace HookeRope.Lab.Stability
         public double ReachBound;
         /// <summary>Largest particle speed at the end, m/s.</summary>
         public double FinalSpeed;
+        /// <summary>A teleport case: how far its load is at the end from its hanging point under the new anchor, m.</summary>
+        public double HangingOffset;
+        /// <summary>A teleport case: how far its load may be from its hanging point, m (<see cref="GridSweep.HangingTolerance"/>).</summary>
+        public double HangingBound;
         /// <summary>Kinetic energy at the end, J.</summary>
         public double FinalKinetic;
         /// <summary>Energy the run lost from the ceiling to the end (drag, damping, the integrator), J.</summary>
@@ -37,33 +41,58 @@ namespace HookeRope.Lab.Stability
         /// <summary>Substeps that ended unconverged at their iteration limit (<see cref="HookeRope.Solver.StepReport.UnconvergedSubsteps"/>).</summary>
         public long UnconvergedSubsteps;
 
-        /// <summary>Relative part of the round-off allowance on the energy: 1e-4 of |ceiling|.</summary>
-        public const double RelativeAllowance = 1e-4;
-        /// <summary>Absolute part of the round-off allowance on the energy, J.</summary>
-        public const double AbsoluteAllowance = 1e-6;
-        /// <summary>A damped case is at rest when its final kinetic energy is below this fraction of the energy it dissipated (plus <see cref="AbsoluteAllowance"/>).</summary>
+        /// <summary>
+        /// The round-off allowance on the energy accumulated up to the end, J: <see cref="RoundOffPerSubstep"/> × (K + |G| +
+        /// U) after every substep (U: the elastic energy's upper bound within round-off). A gain is checked against the
+        /// allowance accumulated up to the step it is seen in.
+        /// </summary>
+        public double RoundOff;
+        /// <summary>Largest excess of the energy gain over the allowance accumulated so far, J (≤ 0: no gain beyond round-off).</summary>
+        public double Excess = double.NegativeInfinity;
+
+        /// <summary>
+        /// Worst-case round-off of the energy per substep, as a fraction of the energy the state carries (2⁻²²): every
+        /// substep stores each particle's displacement and velocity in float32, each rounded by at most half an ulp (2⁻²⁴
+        /// relative), and BDF2's velocity (3·d_{n+1} − d_n)/(2h) doubles the displacement's share: four half-ulps. The
+        /// bound adds up linearly over the substeps (no cancellation assumed); positions themselves carry sub-float
+        /// remainders, and the elastic energy's own round-off (the solve's floor of 4 ulps of the rope's size on each length)
+        /// is taken out by the bounds the energy is read with (<see cref="HookeRope.Solver.Rope.ElasticEnergyBounds"/>).
+        /// </summary>
+        public const double RoundOffPerSubstep = 1.0 / 4194304.0;
+
+        /// <summary>A damped case is at rest when its final kinetic energy is below this fraction of the energy it dissipated.</summary>
         public const double RestFraction = 1e-6;
 
-        /// <summary>The energy the case may gain by round-off, J: <see cref="RelativeAllowance"/> × |ceiling| + <see cref="AbsoluteAllowance"/>.</summary>
-        public double Allowance => RelativeAllowance * System.Math.Abs(Ceiling) + AbsoluteAllowance;
+        /// <summary>The energy the case may gain by round-off, J (<see cref="RoundOff"/>).</summary>
+        public double Allowance => RoundOff;
 
-        /// <summary>Energy gained beyond round-off.</summary>
-        public bool GainedEnergy => !(EnergyGain <= Allowance);
+        /// <summary>Energy gained beyond round-off: at some step the total energy rose above the ceiling by more than the allowance accumulated so far.</summary>
+        public bool GainedEnergy => !(Excess <= 0.0);
 
         /// <summary>The rope is not back under its anchor at the end (a teleport case that did not recover, or a runaway).</summary>
         public bool Escaped => !(Reach < ReachBound);
 
+        /// <summary>A teleport case whose load is not back near its hanging point under the new anchor at the end.</summary>
+        public bool NotRecovered => Case.Teleport && !(HangingOffset <= HangingBound);
+
         /// <summary>A damped case still moves at the end: kinetic energy above <see cref="RestFraction"/> of what it dissipated.</summary>
-        public bool Unsettled => Case.Damped && !(FinalKinetic <= RestFraction * System.Math.Max(Dissipated, 0.0) + AbsoluteAllowance);
+        public bool Unsettled => Case.Damped && !(FinalKinetic <= RestFraction * System.Math.Max(Dissipated, 0.0));
 
         /// <summary>Non-finite, energy gain, escape, or (damped) not at rest.</summary>
-        public bool Failed => !Finite || GainedEnergy || Escaped || Unsettled;
+        public bool Failed => !Finite || GainedEnergy || Escaped || NotRecovered || Unsettled;
+
+        /// <summary>The documented domain limit the failure falls under (<see cref="GridLimits"/>), or null.</summary>
+        public string Limit => GridLimits.Explain(this);
+
+        /// <summary>Failed, and under no documented domain limit: what makes <c>stability --full</c> exit 1.</summary>
+        public bool Undocumented => Failed && Limit == null;
 
         /// <summary>Why it failed (empty when it did not).</summary>
         public string Reason =>
             !Finite ? "non-finite" :
-            GainedEnergy ? $"energy gain {EnergyGain:G3} J > {Allowance:G3} J (motion alone {MotionGain:G3} J)" :
+            GainedEnergy ? $"energy gain {EnergyGain:G3} J, {Excess:G3} J beyond the round-off bound (motion alone {MotionGain:G3} J)" :
             Escaped ? $"reach {Reach:G4} m > {ReachBound:G4} m" :
+            NotRecovered ? $"load {HangingOffset:G3} m from its hanging point (> {HangingBound:G3} m) {Case.Duration - 0.5:G3} s after the jump" :
             Unsettled ? $"not at rest: kinetic {FinalKinetic:G3} J > {RestFraction:G1} × {Dissipated:G3} J dissipated" : "";
     }
 }

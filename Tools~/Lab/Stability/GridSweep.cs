@@ -28,6 +28,27 @@ namespace HookeRope.Lab.Stability
         /// <summary>XPBD damping β (s) of the damped cases (settle and teleport).</summary>
         public const float RecoveryDamping = 0.05f;
 
+        /// <summary>Coulomb friction coefficient μ of the sphere in the <see cref="GridFamily.Friction"/> cases (elsewhere the sphere is frictionless).</summary>
+        public const float SphereFriction = 0.3f;
+
+        /// <summary>
+        /// The rope's own viscous drag c (N·s/m²) in the teleport cases: what brings a rope dragged 1 km back to rest under
+        /// its new anchor (the rope's drag acts per metre of rope, on the load only through the rope).
+        /// </summary>
+        public const float TeleportViscousDrag = 0.5f;
+
+        /// <summary>The rope's own quadratic air drag coefficient C_d in the teleport cases (air 1.2 kg/m³).</summary>
+        public const float TeleportDragCoefficient = 1.2f;
+
+        /// <summary>Simulated time of a teleport case, s: the anchor jumps at 0.5 s.</summary>
+        public const double TeleportDuration = 40.0;
+
+        /// <summary>
+        /// Where the load of a teleport case must be at the end (39.5 s after the jump), m: within 0.1·L + the static
+        /// elongation of its hanging point L + static elongation below the anchor.
+        /// </summary>
+        public const double HangingTolerance = 0.1;
+
         /// <summary>Time constants of the slowest mode a settle case runs for: its energy falls as exp(−k·t), e⁻²⁵ ≈ 10⁻¹¹.</summary>
         public const double SettleTimeConstants = 25.0;
 
@@ -70,6 +91,22 @@ namespace HookeRope.Lab.Stability
                                     YoungsModulus = e, MassRatio = ratio, HostStep = 1.0 / 90, Segments = 10000, Stretch = 1.0,
                                     Integrator = integrator, Tension = tension, Duration = 0.25,
                                 });
+            // the collider with Coulomb friction: E × mass ratio × host step × both integrators × both tension models, 16
+            // segments laid at rest length (the CI subset: 1/90 s, the extreme E and ratios)
+            foreach (double e in moduli)
+                foreach (double ratio in ratios)
+                    foreach (double dt in full ? steps : new[] { 1.0 / 90 })
+                        foreach (var integrator in integrators)
+                            foreach (var tension in tensions)
+                            {
+                                if (!full && tension == TensionModel.Bilateral) continue;
+                                list.Add(new GridCase
+                                {
+                                    YoungsModulus = e, MassRatio = ratio, HostStep = dt, Segments = 16, Stretch = 1.0,
+                                    Integrator = integrator, Tension = tension, Collider = true, Friction = SphereFriction,
+                                    Family = GridFamily.Friction, Duration = duration,
+                                });
+                            }
             foreach (double e in moduli)
                 foreach (double ratio in ratios)
                     foreach (int n in full ? segments : new[] { 16 })
@@ -96,9 +133,9 @@ namespace HookeRope.Lab.Stability
                             var c = new GridCase
                             {
                                 YoungsModulus = e, MassRatio = 100.0, HostStep = 1.0 / 90, Segments = 16, Stretch = 1.0,
-                                Integrator = integrator, Tension = tension, Collider = collider, Family = GridFamily.Teleport, Duration = 20.0,
+                                Integrator = integrator, Tension = tension, Collider = collider, Family = GridFamily.Teleport, Duration = TeleportDuration,
+                                ViscousDrag = TeleportViscousDrag, DragCoefficient = TeleportDragCoefficient, Damping = RecoveryDamping,
                             };
-                            Damp(c);
                             list.Add(c);
                         }
             return list;
@@ -149,6 +186,8 @@ namespace HookeRope.Lab.Stability
                 YoungsModulus = (float)c.YoungsModulus,
                 Density = 1140f,
                 Damping = c.Damping,
+                ViscousDrag = c.ViscousDrag,
+                DragCoefficient = c.DragCoefficient,
                 Gravity = new Float3(0f, -9.81f, 0f),
                 Substeps = 8,
                 Iterations = 1,
@@ -166,7 +205,7 @@ namespace HookeRope.Lab.Stability
                 rope.AddLoad(rope.ParticleCount - 1, (float)(particle * c.MassRatio));
             }
             // on the vertical below the anchor, where the swinging rope comes to hang: it wraps the sphere
-            if (c.Collider) rope.AddCollider(ColliderShape.Sphere(new Float3(0f, -0.6f * (float)length, 0f), 0.1f * (float)length, 0.3f));
+            if (c.Collider) rope.AddCollider(ColliderShape.Sphere(new Float3(0f, -0.6f * (float)length, 0f), 0.1f * (float)length, c.Friction));
             return rope;
         }
 
@@ -193,8 +232,11 @@ namespace HookeRope.Lab.Stability
                 motion = rope.KineticEnergy() + rope.GravitationalEnergy();
                 if (!double.IsFinite(motion) || !AllFinite(rope)) { o.Finite = false; break; }
                 if (s == teleportStep) o.Ceiling = Math.Max(o.Ceiling, Energy(rope, upper: true));
-                total = Energy(rope, upper: false);
+                rope.ElasticEnergyBounds(out double lower, out double upper);
+                total = motion + lower;
+                o.RoundOff += report.Substeps * GridOutcome.RoundOffPerSubstep * (rope.KineticEnergy() + Math.Abs(rope.GravitationalEnergy()) + upper);
                 o.EnergyGain = Math.Max(o.EnergyGain, total - o.Ceiling);
+                o.Excess = Math.Max(o.Excess, total - o.Ceiling - o.RoundOff);
                 o.MotionGain = Math.Max(o.MotionGain, motion - o.Ceiling);
             }
             Float3 anchor = rope.GetPinTarget(0);
@@ -204,6 +246,14 @@ namespace HookeRope.Lab.Stability
                 o.FinalSpeed = Math.Max(o.FinalSpeed, rope.GetVelocity(i).Length);
             }
             o.FinalKinetic = rope.KineticEnergy();
+            if (c.Teleport)
+            {
+                double elongation = StaticElongation(rope, c);
+                Float3 load = rope.GetPosition(rope.ParticleCount - 1);
+                var hanging = new Float3(anchor.X, anchor.Y - (float)(c.RestLength + elongation), anchor.Z);
+                o.HangingOffset = (load - hanging).Length;
+                o.HangingBound = HangingTolerance * c.RestLength + elongation;
+            }
             o.Dissipated = o.Ceiling - total;
             o.ReachBound = 1.1 * Math.Max(c.RestLength * c.Stretch, c.RestLength + 2.0 * StaticElongation(rope, c));
             return o;

@@ -46,16 +46,20 @@ namespace HookeRope.Tests.Solver
             var rope = new Rope(RopeTestKit.Legacy(youngsModulus: 1e6f), Float3.Zero, new Float3(0f, -1f, 0f));
             rope.AddPin(0, new Float3(0.1f, 0f, 0f), compliance: 1e-3f);
             rope.ElasticEnergyBounds(out double lower, out double upper);
-            Assert.That(lower, Is.EqualTo(5.0).Within(1e-3).Percent);
-            Assert.That(upper, Is.EqualTo(5.0).Within(1e-3).Percent);
+            // ε = 8·2⁻²³·1 m = 9.5e-7 m on 0.1 m: each bound within 2ε/0.1 = 0.0019 % of 5 J
+            Assert.That(lower, Is.EqualTo(5.0).Within(0.003).Percent);
+            Assert.That(upper, Is.EqualTo(5.0).Within(0.003).Percent);
+            Assert.That(lower, Is.LessThan(rope.ElasticEnergy()));
+            Assert.That(upper, Is.GreaterThan(rope.ElasticEnergy()));
         }
 
         [Test]
-        public void SteelRoundOffIsNotReadAsEnergy()
+        public void BoundsBracketASteelRopesSolvedEnergy()
         {
-            // a 1 m steel rope (E 200 GPa, R 5 mm, 256 segments, α = 2.5e-10 m/N) hanging still with 1 kg: its true elastic
-            // energy Σ ½·α·T_j² is a few µJ (stretch 2.5 nm per segment), an order of magnitude below what ½C²/α reads from
-            // float32 positions (an ulp is 60 nm at 1 m; ½·(60 nm)²/α = 7 µJ per segment)
+            // a 1 m steel rope (E 200 GPa, R 5 mm, 256 segments, α = 2.5e-10 m/N) hanging still with 1 kg: since the
+            // positions carry sub-float remainders, Σ ½C²/α from the positions equals Σ ½·α·T_j² from the solved tensions
+            // (a few µJ: 2.5 nm per segment); the bounds bracket both, the upper one by Σ ½(|C| + ε)²/α with ε = 8 ulps of
+            // 1 m (9.5e-7 m, ½ε²/α = 1.8 mJ per segment: the slack the sweep's energy ceiling has for this rope)
             var settings = RopeTestKit.Legacy(segments: 256, youngsModulus: 2e11f, damping: 0.01f);
             var rope = RopeTestKit.Hanging(settings, 1f, out _);
             for (int i = 0; i < 180; i++) rope.Step(RopeTestKit.HostStep);
@@ -63,9 +67,11 @@ namespace HookeRope.Tests.Solver
             for (int j = 0; j < rope.SegmentCount; j++) solved += 0.5 * alpha * rope.Tensions[j] * rope.Tensions[j];
             rope.ElasticEnergyBounds(out double lower, out double upper);
             TestContext.WriteLine($"Σ½αT² {solved:G4} J, Σ½C²/α {rope.ElasticEnergy():G4} J, bounds [{lower:G4}, {upper:G4}] J");
-            Assert.That(rope.ElasticEnergy(), Is.GreaterThan(10.0 * solved), "the naive sum is round-off");
+            Assert.That(rope.ElasticEnergy(), Is.EqualTo(solved).Within(1).Percent, "the positions resolve the stretch");
             Assert.That(lower, Is.LessThanOrEqualTo(solved));
             Assert.That(upper, Is.GreaterThanOrEqualTo(solved));
+            double eps = Rope.RoundOffUlps / 8388608.0 * 1.0;
+            Assert.That(upper, Is.LessThan(256 * 0.5 * (eps + 1e-8) * (eps + 1e-8) / alpha * 1.1));
         }
     }
 }
