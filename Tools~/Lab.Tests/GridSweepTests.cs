@@ -17,7 +17,7 @@ namespace HookeRope.Lab.Tests
         public void CiSubsetStaysFiniteAndFailsOnlyWithinDocumentedLimits()
         {
             var cases = GridSweep.Cases(false);
-            Assert.That(cases.Count, Is.EqualTo(106));
+            Assert.That(cases.Count, Is.EqualTo(114));
             var outcomes = GridSweep.RunAll(cases);
             int limited = 0;
             foreach (var o in outcomes)
