@@ -52,7 +52,7 @@ namespace HookeRope.Solver
         public readonly double[] PivotInverse, ReducedX, ReducedY, ReducedZ;
         public readonly double[] AxialCompliance, TransverseCompliance, EstimatedTension;
         public readonly bool[] Active;
-        // the convergence test and line search of the exact solve (see ExactChainSolver.Check, ChainLineSearch): each
+        // the convergence test and line search of the exact solve (see ExactChainSolver.Apply and Mismatched, ChainLineSearch): each
         // segment's effective rest length L' (m, damping folded in) and whether it was assembled this iteration (not broken,
         // not an invalid row), and the iteration's motion of each particle (m)
         public readonly double[] EffectiveRest;
