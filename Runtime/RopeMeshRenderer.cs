@@ -18,9 +18,13 @@ namespace HookeRope
     /// headsets see smooth motion at any physics rate) into its one position buffer, in this GameObject's local
     /// space, lets the core build the tube (<see cref="RopeSimulation.FillMesh(System.ReadOnlySpan{float}, System.ReadOnlySpan{float}, System.ReadOnlySpan{float}, TubeVertex[], int[], float, MeshFrame)"/>,
     /// told where that space sits relative to the rope's colliders, so the tube is drawn outside a collider it wraps)
-    /// and only uploads it. The mesh is dynamic (MarkDynamic), its vertex layout is set once per topology, vertices
-    /// are uploaded with SetVertexBufferData from a preallocated array (no GC per frame), indices only when the
-    /// topology changes (new segment count, a break, a new ring budget of the adaptive rings), and the bounds are set explicitly before each vertex upload.
+    /// and only uploads it. The mesh is dynamic (MarkDynamic); its vertex and index buffers are sized once for the most
+    /// the tube can need (<see cref="RopeSimulation.GetVertexCapacity"/>, <see cref="RopeSimulation.GetIndexCapacity"/>:
+    /// the adaptive rings' ring budget) and again only when that changes (new segment count or sides, a break), so
+    /// <see cref="UnityEngine.Mesh.vertexCount"/> is that capacity and the sub-meshes name the vertices in use
+    /// (firstVertex 0, vertexCount = the tube's). Vertices are uploaded with SetVertexBufferData from a preallocated
+    /// array of that capacity (no GC per frame), indices and sub-meshes only when the topology changes (also a new ring
+    /// budget of the adaptive rings, which steps within the buffers), and the bounds are set explicitly before each vertex upload.
     /// One mesh per frame serves both eyes in single-pass instanced stereo. Keep this GameObject's scale uniform.
     /// <para>
     /// Edit mode ([ExecuteAlways]): without entering Play, every editor update draws the rope without simulating it,
@@ -76,7 +80,7 @@ namespace HookeRope
         TubeVertex[] _vertices = Array.Empty<TubeVertex>();
         int[] _indices = Array.Empty<int>();
         RopeSimulation _uploaded;
-        int _uploadedTopology = -1, _vertexCount, _indexCount;
+        int _uploadedTopology = -1, _vertexCount, _indexCount, _vertexCapacity = -1, _indexCapacity = -1;
         Material _generatedMaterial;
         Material _generatedBurrMaterial;
         Texture2D _generatedTexture;
@@ -153,6 +157,8 @@ namespace HookeRope
             _generatedTexture = null;
             _uploaded = null;
             _uploadedTopology = -1;
+            _vertexCapacity = -1;
+            _indexCapacity = -1;
         }
 
         /// <summary>
@@ -162,15 +168,16 @@ namespace HookeRope
         /// or the static-sag preview; see the class remarks; this path allocates a detached core simulation).
         /// Returns false when nothing was drawn (no rope, or in Play before the build) or when the mesh kept its last
         /// frame because this object's scale cannot be inverted or a position was not finite (one warning per cause,
-        /// Documentation~/index.md, "Bad input"). Allocation-free unless the topology grew.
+        /// Documentation~/index.md, "Bad input"). Allocation-free after the first frame, whatever ring budget the adaptive
+        /// rings choose; a break (or a new segment count or side count) sizes the buffers again, once.
         /// </summary>
         public bool Render(float alpha)
         {
             if (!Prepare(alpha, out var simulation, out var origin)) return false;
-            int vertexCount = simulation.GetVertexCount(), indexCount = simulation.GetIndexCount();
-            // room to spare: the core's adaptive ring budget grows in steps as the rope bends more (each growth here allocates)
-            if (_vertices.Length < vertexCount) _vertices = new TubeVertex[Math.Max(vertexCount, 2 * _vertices.Length)];
-            if (_indices.Length < indexCount) _indices = new int[Math.Max(indexCount, 2 * _indices.Length)];
+            // made once for the ring budget's most (constant until a break): the adaptive budgets step within it
+            int vertexCapacity = simulation.GetVertexCapacity(), indexCapacity = simulation.GetIndexCapacity();
+            if (_vertices.Length < vertexCapacity) _vertices = new TubeVertex[vertexCapacity];
+            if (_indices.Length < indexCapacity) _indices = new int[indexCapacity];
             var update = simulation.FillMesh(_x, _y, _z, _vertices, _indices, RadiusScale(), LocalFrameInRope(origin));
             Upload(simulation, update, _vertices, _indices);
             return true;
@@ -229,8 +236,9 @@ namespace HookeRope
 
         /// <summary>
         /// Uploads a filled tube (<paramref name="update"/> over <paramref name="vertices"/> and
-        /// <paramref name="indices"/>, from this renderer's buffers or its world mesh slot): index buffer and sub-meshes
-        /// only when the topology or the source changed, then the bounds, then the vertices.
+        /// <paramref name="indices"/>, from this renderer's buffers or its world mesh slot): the buffer sizes only when the
+        /// capacity changed, the indices and sub-meshes only when the topology or the source changed, then the bounds,
+        /// then the vertices in use.
         /// </summary>
         void Upload(RopeSimulation simulation, TubeMeshUpdate update, TubeVertex[] vertices, int[] indices)
         {
@@ -241,18 +249,33 @@ namespace HookeRope
                 _uploadedTopology = simulation.MeshTopologyVersion;
                 _vertexCount = update.VertexCount;
                 _indexCount = update.IndexCount;
-                _mesh.SetVertexBufferParams(update.VertexCount, s_Layout);
-                _mesh.SetIndexBufferParams(update.IndexCount, IndexFormat.UInt32);
+                // the buffers hold the most the tube can need: a new ring budget steps within them (no reallocation)
+                int vertexCapacity = Math.Max(simulation.GetVertexCapacity(), update.VertexCount);
+                int indexCapacity = Math.Max(simulation.GetIndexCapacity(), update.IndexCount);
+                if (vertexCapacity != _vertexCapacity)
+                {
+                    _vertexCapacity = vertexCapacity;
+                    _mesh.SetVertexBufferParams(vertexCapacity, s_Layout);
+                }
+                if (indexCapacity != _indexCapacity)
+                {
+                    _indexCapacity = indexCapacity;
+                    _mesh.SetIndexBufferParams(indexCapacity, IndexFormat.UInt32);
+                }
                 _mesh.SetIndexBufferData(indices, 0, 0, update.IndexCount, FrameFlags);
                 _mesh.subMeshCount = 2;
-                _mesh.SetSubMesh(0, new SubMeshDescriptor(0, update.TubeIndexCount, MeshTopology.Triangles), FrameFlags);
-                _mesh.SetSubMesh(1, new SubMeshDescriptor(update.TubeIndexCount, update.IndexCount - update.TubeIndexCount, MeshTopology.Triangles), FrameFlags);
+                _mesh.SetSubMesh(0, InUse(0, update.TubeIndexCount, update.VertexCount), FrameFlags);
+                _mesh.SetSubMesh(1, InUse(update.TubeIndexCount, update.IndexCount - update.TubeIndexCount, update.VertexCount), FrameFlags);
             }
             // Bounds first, so the renderer notification of the vertex upload already sees this frame's bounds.
             Vector3 min = update.BoundsMin.ToVector3(), max = update.BoundsMax.ToVector3();
             _mesh.bounds = new Bounds((min + max) * 0.5f, max - min);
             _mesh.SetVertexBufferData(vertices, 0, 0, update.VertexCount, 0, FrameFlags);
         }
+
+        /// <summary>A triangle sub-mesh of <paramref name="indexCount"/> indices from <paramref name="indexStart"/> over the first <paramref name="vertexCount"/> vertices (the rest of the buffer is spare capacity).</summary>
+        static SubMeshDescriptor InUse(int indexStart, int indexCount, int vertexCount) =>
+            new SubMeshDescriptor(indexStart, indexCount, MeshTopology.Triangles) { firstVertex = 0, vertexCount = vertexCount };
 
         /// <summary>The rope's interpolated particle positions in this GameObject's local space (m), into the one position buffer.</summary>
         void InterpolateIntoLocalSpace(Rope rope, float alpha, Vector3 simulationOrigin, bool alignEnds)

@@ -149,6 +149,17 @@ namespace HookeRope
         public int GetIndexCount() => mesh.GetIndexCount();
 
         /// <summary>
+        /// Most vertices the mesh can need until a segment breaks or the mesh topology settings change: with adaptive rings,
+        /// every piece at its ring budget's cap (<c>MaxMeanRingsPerSegment</c> = 8 rings per segment on average, plus a Zone
+        /// neck's stations; Documentation~/radius-and-mesh.md, "Ring budget"), else <see cref="GetVertexCount"/>. Buffers
+        /// of this size, made once, take every ring budget the rope's motion asks for: no fill reallocates them.
+        /// </summary>
+        public int GetVertexCapacity() => mesh.GetVertexCapacity();
+
+        /// <summary>Most indices the mesh can need until a segment breaks or the mesh topology settings change (see <see cref="GetVertexCapacity"/>).</summary>
+        public int GetIndexCapacity() => mesh.GetIndexCapacity();
+
+        /// <summary>
         /// The one mesh path. Fills caller-owned buffers (at least <see cref="GetVertexCount"/> and
         /// <see cref="GetIndexCount"/> long) with the tube mesh through the particle positions
         /// <paramref name="x"/>, <paramref name="y"/>, <paramref name="z"/> (m, ParticleCount each) given in the

@@ -15,11 +15,27 @@ namespace HookeRope.Geometry
     /// largest such demand of those builds;
     /// the extra rings of a step go where the need is largest. A change takes effect at the next build whose buffers hold it, so callers that query the
     /// counts before every fill (RopeMeshRenderer, RopeWorld) see it one build later. Allocation-free after construction.
+    /// <para>
+    /// The ring budget (issue 18, "0 bytes per update"): a piece's budget never exceeds its cap, <see cref="MaxMeanRingsPerSegment"/>
+    /// rings per segment plus the neck's stations in the segments that hold them (<see cref="CapOfPiece"/>), so the whole
+    /// rope never holds more than <see cref="MostRings"/> = Σ caps + 1 rings, whatever the breaks: storage made for that
+    /// once, at creation, never grows. When a piece's demand exceeds its cap (a whipping rope), the budget stays at the cap
+    /// and the rings are redistributed within it by need (every need scaled by one common factor, at least one ring per
+    /// segment, at most <see cref="MaxRingsPerSegment"/>), never allocated: the drawn surface then exceeds the tolerance
+    /// where it bends most, evenly along the piece. A piece whose demand fits its cap gets exactly the budget it got before
+    /// the cap (the step ladder below the cap is unchanged), so taut and gently curved ropes draw the same bits.
+    /// </para>
     /// </summary>
     internal sealed class AdaptiveRings
     {
         /// <summary>Largest number of rings the adaptive placement puts in one segment.</summary>
         public const int MaxRingsPerSegment = 16;
+
+        /// <summary>
+        /// Most rings per segment, on average over an unbroken piece, that the adaptive placement draws outside the neck's
+        /// stations: the ring budget's cap (a 64-segment rope holds at most 64 × 8 + 1 = 513 rings).
+        /// </summary>
+        public const int MaxMeanRingsPerSegment = 8;
 
         /// <summary>Builds in a row with a surplus beyond the hysteresis band before a budget shrinks (1 s at 90 Hz).</summary>
         public const int CalmBuilds = 90;
@@ -27,6 +43,8 @@ namespace HookeRope.Geometry
         private readonly int n;
         private readonly RingLayout zone;
         private readonly float tolerance;
+        private readonly int meanCap;
+        private readonly int[] capBefore;
         private readonly float[] need;
         private readonly int[] counts;
         private readonly int[] budget;
@@ -47,7 +65,18 @@ namespace HookeRope.Geometry
         /// ring per segment): its segments with more than one ring are drawn with exactly those rings while the neck is active.
         /// </summary>
         public AdaptiveRings(int segmentCount, int radialSegments, RingLayout neckStations)
+            : this(segmentCount, radialSegments, neckStations, MaxMeanRingsPerSegment)
         {
+        }
+
+        /// <summary>
+        /// Placement as above with a ring budget of <paramref name="meanRingsPerSegment"/> rings per segment on average
+        /// (1 … <see cref="MaxRingsPerSegment"/>; the package uses <see cref="MaxMeanRingsPerSegment"/>, the tests compare
+        /// with <see cref="MaxRingsPerSegment"/>, which never caps: the placement as it was before the budget).
+        /// </summary>
+        internal AdaptiveRings(int segmentCount, int radialSegments, RingLayout neckStations, int meanRingsPerSegment)
+        {
+            Require.InRange(meanRingsPerSegment, 1, MaxRingsPerSegment, nameof(meanRingsPerSegment));
             if (segmentCount < 1)
                 throw new ArgumentOutOfRangeException(nameof(segmentCount), segmentCount, "segmentCount must be in [1, +inf).");
             if (neckStations != null && neckStations.SegmentCount != segmentCount)
@@ -55,6 +84,10 @@ namespace HookeRope.Geometry
             n = segmentCount;
             zone = neckStations;
             tolerance = RingNeed.Tolerance(radialSegments);
+            meanCap = meanRingsPerSegment;
+            capBefore = new int[n + 1];
+            for (int j = 0; j < n; j++)
+                capBefore[j + 1] = capBefore[j] + meanCap + (zone != null && zone.RingsIn(j) > 1 ? zone.RingsIn(j) : 0);
             need = new float[n];
             counts = new int[n];
             budget = new int[n];
@@ -71,17 +104,26 @@ namespace HookeRope.Geometry
             next[0] = n;
         }
 
-        /// <summary>Most rings a layout of this placement can hold (every segment at its cap, the neck's stations beyond it), so storage made for it never grows.</summary>
-        public int MostRings
-        {
-            get
-            {
-                int most = n * MaxRingsPerSegment + 1;
-                if (zone != null)
-                    for (int j = 0; j < n; j++) most += Math.Max(0, zone.RingsIn(j) - MaxRingsPerSegment);
-                return most;
-            }
-        }
+        /// <summary>
+        /// Most rings a layout of this placement can hold, intact or broken: the sum of the caps of every segment
+        /// (<see cref="CapOfPiece"/> of the whole rope) + the end ring, so storage made for it never grows.
+        /// </summary>
+        public int MostRings => capBefore[n] + 1;
+
+        /// <summary>Mean rings per segment the budget allows (<see cref="MaxMeanRingsPerSegment"/> unless a test asked otherwise).</summary>
+        public int MeanRingsPerSegmentCap => meanCap;
+
+        /// <summary>
+        /// Most rings the segments [a, b) of one unbroken piece may hold: <see cref="MeanRingsPerSegmentCap"/> per segment
+        /// plus the neck's stations in each segment that holds more than one. A piece's budget never exceeds it.
+        /// </summary>
+        public int CapOfPiece(int a, int b) => capBefore[b] - capBefore[a];
+
+        /// <summary>
+        /// True when the cap limited the last plan's budget of some piece: the budget step that holds its demand is above its
+        /// cap, so the piece keeps the cap and its rings are redistributed within it (false: every budget is as without the cap).
+        /// </summary>
+        public bool BudgetHit { get; private set; }
 
         /// <summary>The neck's stations (null = none): a broken segment keeps them (<see cref="KeepsNeckStations"/>).</summary>
         public RingLayout NeckStations => zone;
@@ -127,7 +169,7 @@ namespace HookeRope.Geometry
             while (NextPiece(brokenSegments, ref segment, out int a, out int b))
             {
                 int demand = Demand(a, b, zoneActive && zone != null, 1f);
-                int target = Target(demand, b - a);
+                int target = Target(demand, a, b);
                 if (next[a] != target || budget[a] != target) BudgetVersion++;
                 next[a] = target;
                 budget[a] = target;
@@ -187,20 +229,22 @@ namespace HookeRope.Geometry
         private void UpdateNextBudgets(ReadOnlySpan<bool> brokenSegments, bool zoneActive)
         {
             int segment = 0;
+            BudgetHit = false;
             while (NextPiece(brokenSegments, ref segment, out int a, out int b))
             {
                 int segments = b - a;
                 bool withZone = zoneActive && zone != null;
                 int demand = Demand(a, b, withZone, 1f);
+                if (Step(demand, segments) > CapOfPiece(a, b)) BudgetHit = true;
                 int current = budget[a];
                 int wanted = next[a];
                 int comfortable = demand > current ? 0 : Demand(a, b, withZone, ShrinkMargin);
-                if (demand > current) { wanted = Target(demand, segments); calm[a] = 0; }
+                if (demand > current) { wanted = Target(demand, a, b); calm[a] = 0; }
                 else if (comfortable <= ShrinkBelow(current, segments))
                 {
                     // shrink to what the whole calm spell needed (with the margin), not to this build's demand
                     calmPeak[a] = calm[a] == 0 ? comfortable : Math.Max(calmPeak[a], comfortable);
-                    if (++calm[a] >= CalmBuilds) { wanted = Target(calmPeak[a], segments); calm[a] = 0; }
+                    if (++calm[a] >= CalmBuilds) { wanted = Target(calmPeak[a], a, b); calm[a] = 0; }
                 }
                 else calm[a] = 0;
                 if (wanted != next[a]) { next[a] = wanted; BudgetVersion++; }
@@ -210,8 +254,14 @@ namespace HookeRope.Geometry
         /// <summary>Ring budgets per segment of a piece, as multiples of one ring per segment: a budget is one of these.</summary>
         private static readonly float[] Steps = { 1f, 1.25f, 1.5f, 2f, 2.5f, 3f, 4f, 5f, 6f, 8f, 10f, 12f, MaxRingsPerSegment };
 
+        /// <summary>
+        /// The smallest budget step of piece [a, b) that holds <paramref name="demand"/> rings, or the piece's cap
+        /// (<see cref="CapOfPiece"/>) when that step is above it.
+        /// </summary>
+        private int Target(int demand, int a, int b) => Math.Min(Step(demand, b - a), CapOfPiece(a, b));
+
         /// <summary>The smallest budget step of a piece of <paramref name="segments"/> segments that holds <paramref name="demand"/> rings.</summary>
-        private static int Target(int demand, int segments)
+        private static int Step(int demand, int segments)
         {
             for (int i = 0; i < Steps.Length; i++)
             {
@@ -378,6 +428,8 @@ namespace HookeRope.Geometry
             {
                 int rings = 0;
                 for (int j = a; j < b; j++) rings += counts[j];
+                // a new piece may have held more than its own cap of its old piece's rings: it keeps at most its cap
+                rings = Math.Min(rings, CapOfPiece(a, b));
                 budget[a] = rings;
                 next[a] = rings;
                 calm[a] = 0;

@@ -10,8 +10,8 @@ namespace HookeRope.Geometry
     /// fill, with the Zone neck's stations while it necks; else uniform, refined around the Zone-mode neck), the builder
     /// and the ring radii. The ring radii are recomputed only when the layout, the radius model's profile
     /// (<see cref="RadiusModel.RadiiVersion"/>) or the radius scale changed. Allocates only when the topology settings,
-    /// the neck mode, the defect or the zone change (or the model is rebuilt), or when an adaptive layout holds more rings
-    /// than any before it; the fill itself is allocation-free.
+    /// the neck mode, the defect or the zone change (or the model is rebuilt): the ring storage is made for the ring
+    /// budget's most rings (<see cref="AdaptiveRings.MostRings"/>) with the builder; the fill itself is allocation-free.
     /// </summary>
     internal sealed class RopeMesh
     {
@@ -68,6 +68,10 @@ namespace HookeRope.Geometry
         internal int GetVertexCount() => Ensure().GetVertexCount(simulation.Rope.BrokenSegments);
 
         internal int GetIndexCount() => Ensure().GetIndexCount(simulation.Rope.BrokenSegments);
+
+        internal int GetVertexCapacity() => Ensure().GetVertexCapacity(simulation.Rope.BrokenSegments);
+
+        internal int GetIndexCapacity() => Ensure().GetIndexCapacity(simulation.Rope.BrokenSegments);
 
         /// <summary>
         /// Fills the mesh from positions in the caller's frame; ring radii are multiplied by <paramref name="radiusScale"/>.

@@ -47,6 +47,7 @@ namespace HookeRope.Geometry
             Array.Resize(ref spacing2, size);
             Array.Resize(ref dirty, size);
             Array.Resize(ref lastRadii, size);
+            EnsureFoldStorage(size);
         }
 
         private void ComputeCenters(int a, int b, int first, int last, ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z)
@@ -57,6 +58,9 @@ namespace HookeRope.Geometry
             // fallback direction of the piece: first particle to last
             float fx = (x[b] - ox) - (x[a] - ox), fy = (y[b] - oy) - (y[a] - oy), fz = (z[b] - oz) - (z[a] - oz);
             if (!Normalize(ref fx, ref fy, ref fz) || !(float.IsFinite(fx) && float.IsFinite(fy) && float.IsFinite(fz))) { fx = 1f; fy = 0f; fz = 0f; }
+            // the control points of the segment the rings are in (the rings of a segment are consecutive)
+            int held = -1;
+            float p0x = 0f, p0y = 0f, p0z = 0f, p1x = 0f, p1y = 0f, p1z = 0f, p2x = 0f, p2y = 0f, p2z = 0f, p3x = 0f, p3y = 0f, p3z = 0f;
             for (int k = first; k <= last; k++)
             {
                 int j = ringSegments[k];
@@ -72,9 +76,14 @@ namespace HookeRope.Geometry
                 }
                 else
                 {
-                    RopePieces.ControlPoints(j, a, b, x, y, z, ox, oy, oz, out float p0x, out float p0y, out float p0z,
-                        out float p1x, out float p1y, out float p1z, out float p2x, out float p2y, out float p2z, out float p3x, out float p3y, out float p3z);
-                    // uniform Catmull–Rom weights of t, as RingLayout stores the fraction
+                    if (j != held)
+                    {
+                        RopePieces.ControlPoints(j, a, b, x, y, z, ox, oy, oz, out p0x, out p0y, out p0z,
+                            out p1x, out p1y, out p1z, out p2x, out p2y, out p2z, out p3x, out p3y, out p3z);
+                        held = j;
+                    }
+                    // uniform Catmull–Rom weights of t, as RingLayout stores the fraction (the Hermite cubic with the
+                    // limited tangents, RopePieces.ControlPoints)
                     float t2 = t * t, t3 = t2 * t;
                     float w0 = 0.5f * (-t + 2f * t2 - t3);
                     float w1 = 0.5f * (2f - 5f * t2 + 3f * t3);
@@ -92,10 +101,10 @@ namespace HookeRope.Geometry
                 spacing2[k] = float.PositiveInfinity;
                 if (k > first)
                 {
-                    // a ring closer than 1e-3·r to the previous one is pushed forward (no zero-area triangles)
+                    // a ring closer than PushDistance·r to the previous one is pushed forward (no zero-area triangles)
                     Float3 previous = centers[k - 1];
                     float dx = cx - previous.X, dy = cy - previous.Y, dz = cz - previous.Z;
-                    float minimum = 1e-3f * ringRadii[k] + 1e-7f;
+                    float minimum = PushDistance * ringRadii[k] + 1e-7f;
                     float gap2 = dx * dx + dy * dy + dz * dz;
                     spacing2[k] = gap2;
                     if (gap2 < minimum * minimum)
@@ -145,6 +154,8 @@ namespace HookeRope.Geometry
                     found = Normalize(ref tx, ref ty, ref tz);
                 }
                 if (!found) { tx = px; ty = py; tz = pz; }
+                if (k == first) foldTip[k] = false;
+                else { foldTip[k] = false; if (!ClearOfFold(k, tx, ty, tz)) RepairFold(k, ref tx, ref ty, ref tz); }
                 var tangent = new Float3(tx, ty, tz);
                 if (k == first)
                 {
@@ -180,7 +191,7 @@ namespace HookeRope.Geometry
                 Float3 ca = centers[ahead], cb = centers[behind];
                 float dx = ca.X - cb.X, dy = ca.Y - cb.Y, dz = ca.Z - cb.Z;
                 slopeDistance[k] = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
-                slopes[k] = Slope(ringRadii[ahead], ringRadii[behind], slopeDistance[k]);
+                slopes[k] = foldTip[k] ? 0f : Slope(ringRadii[ahead], ringRadii[behind], slopeDistance[k]);
             }
         }
 
@@ -194,14 +205,15 @@ namespace HookeRope.Geometry
         }
 
         /// <summary>
-        /// The radius work alone (positions unchanged): new ring radii, slopes from the kept ring distances, and a ring
-        /// marked for rewriting only when its radius or slope changed.
+        /// The radius work alone (positions unchanged): new drawn radii (the kept ring limits applied), slopes from the kept
+        /// ring distances, and a ring marked for rewriting only when its drawn radius or slope changed.
         /// </summary>
         private void UpdateRadii(int first, int last, ReadOnlySpan<float> radii)
         {
+            LimitRadii(first, last, radii);
             for (int k = first; k <= last; k++)
             {
-                float r = Clamped(radii[k]);
+                float r = drawnRadii[k];
                 dirty[k] = BitConverter.SingleToInt32Bits(r) != BitConverter.SingleToInt32Bits(ringRadii[k]);
                 ringRadii[k] = r;
             }
@@ -209,9 +221,12 @@ namespace HookeRope.Geometry
             {
                 int ahead = k < last ? k + 1 : k;
                 int behind = k > first ? k - 1 : k;
-                float slope = Slope(ringRadii[ahead], ringRadii[behind], slopeDistance[k]);
+                float slope = foldTip[k] ? 0f : Slope(ringRadii[ahead], ringRadii[behind], slopeDistance[k]);
                 if (BitConverter.SingleToInt32Bits(slope) != BitConverter.SingleToInt32Bits(slopes[k])) { slopes[k] = slope; dirty[k] = true; }
             }
+            // normals drawn from the strips depend on the neighbours' radii too
+            if (MarkStripNormals(first, last))
+                for (int k = first; k <= last; k++) dirty[k] = true;
         }
 
         /// <summary>The ring kernel: writes ring <paramref name="k"/>'s radial + 1 vertices (seam duplicated) into <paramref name="ring"/>.</summary>

@@ -18,13 +18,21 @@ namespace HookeRope.Geometry
     /// colliders push the rings). The result is bit-identical to a full recompute (tested), provided the caller does
     /// not write into the vertex buffer between builds (another buffer forces a full build). The index buffer is
     /// rewritten only when the topology changes (first build, a newly broken segment, a piece's ring count, another
-    /// index array). Allocation-free after construction (the storage grows only when an adaptive layout holds more rings
-    /// than any before it).
+    /// index array). Allocation-free after construction: an adaptive builder's ring storage is made at construction for
+    /// the most rings its ring budget allows (<see cref="AdaptiveRings.MostRings"/>), and buffers of
+    /// <see cref="GetVertexCapacity"/> and <see cref="GetIndexCapacity"/> take every budget until a segment breaks.
     /// </para>
     /// </summary>
     internal sealed partial class TubeMeshBuilder
     {
         private const float MaxSlope = 10f;
+
+        /// <summary>
+        /// Least distance between consecutive ring centres, as a fraction of the ring radius: a ring closer to the one before
+        /// (coincident particles, a segment squeezed to a point) is pushed forward by it, so no triangle has zero area. Equal to
+        /// <see cref="FoldRadius"/>, so that a fold tip next to such rings still keeps its triangles ≥ 1e-6 r² at 64 sides.
+        /// </summary>
+        internal const float PushDistance = FoldRadius;
 
         /// <summary>What a build recomputed.</summary>
         internal enum BuildKind
@@ -130,12 +138,15 @@ namespace HookeRope.Geometry
         /// rope of <paramref name="segmentCount"/> segments and rest radius <paramref name="restRadius"/> (m; 0 = unknown,
         /// sets the burr fibres); <paramref name="neckStations"/> (null = none) holds a Zone neck's stations
         /// (<see cref="RingLayout.Adapted"/> with one ring per segment), drawn while the neck is active. Call
-        /// <see cref="PlanRings"/> before each build.
+        /// <see cref="PlanRings"/> before each build. <paramref name="meanRingsPerSegment"/> is the ring budget's cap
+        /// (<see cref="AdaptiveRings.MaxMeanRingsPerSegment"/>; the tests pass <see cref="AdaptiveRings.MaxRingsPerSegment"/>
+        /// for the placement without a budget).
         /// </summary>
-        internal static TubeMeshBuilder Adaptive(TubeMeshSettings settings, int segmentCount, float restRadius, RingLayout neckStations)
+        internal static TubeMeshBuilder Adaptive(TubeMeshSettings settings, int segmentCount, float restRadius, RingLayout neckStations,
+            int meanRingsPerSegment = AdaptiveRings.MaxMeanRingsPerSegment)
         {
             if (settings == null) throw new ArgumentNullException(nameof(settings));
-            var rings = new AdaptiveRings(segmentCount, settings.RadialSegments, neckStations);
+            var rings = new AdaptiveRings(segmentCount, settings.RadialSegments, neckStations, meanRingsPerSegment);
             return new TubeMeshBuilder(settings, RingLayout.Rewritable(segmentCount, rings.MostRings), rings, restRadius);
         }
 
@@ -150,6 +161,9 @@ namespace HookeRope.Geometry
 
         /// <summary>Adaptive builders: incremented whenever the counts the builder reports change (a topology change ahead); 0 otherwise.</summary>
         internal int BudgetVersion => adaptive?.BudgetVersion ?? 0;
+
+        /// <summary>Adaptive builders: true when the ring budget's cap limited a piece's budget in the last <see cref="PlanRings"/> (<see cref="AdaptiveRings.BudgetHit"/>); false otherwise.</summary>
+        internal bool BudgetHit => adaptive?.BudgetHit ?? false;
 
         /// <summary>Adaptive builders: the tolerance of the drawn surface as a fraction of the drawn radius; 0 otherwise.</summary>
         internal float ToleranceFraction => adaptive?.ToleranceFraction ?? 0f;
@@ -202,14 +216,32 @@ namespace HookeRope.Geometry
         /// </summary>
         public int GetVertexCount(ReadOnlySpan<bool> brokenSegments)
         {
-            Count(brokenSegments, true, out int vertices, out _, out _);
+            Count(brokenSegments, Counted.Reported, out int vertices, out _, out _);
             return vertices;
         }
 
         /// <summary>Indices the mesh needs for these broken-segment flags (tube, caps and burr strands).</summary>
         public int GetIndexCount(ReadOnlySpan<bool> brokenSegments)
         {
-            Count(brokenSegments, true, out _, out int tube, out int burr);
+            Count(brokenSegments, Counted.Reported, out _, out int tube, out int burr);
+            return tube + burr;
+        }
+
+        /// <summary>
+        /// Most vertices any build can need for these broken-segment flags: every piece at its ring cap
+        /// (<see cref="AdaptiveRings.CapOfPiece"/>) for an adaptive builder, the layout's count for a fixed one. Buffers of
+        /// this size (and <see cref="GetIndexCapacity"/>) take every budget the adaptive rings choose until a segment breaks.
+        /// </summary>
+        public int GetVertexCapacity(ReadOnlySpan<bool> brokenSegments)
+        {
+            Count(brokenSegments, adaptive != null ? Counted.Capacity : Counted.Layout, out int vertices, out _, out _);
+            return vertices;
+        }
+
+        /// <summary>Most indices any build can need for these broken-segment flags (see <see cref="GetVertexCapacity"/>).</summary>
+        public int GetIndexCapacity(ReadOnlySpan<bool> brokenSegments)
+        {
+            Count(brokenSegments, adaptive != null ? Counted.Capacity : Counted.Layout, out _, out int tube, out int burr);
             return tube + burr;
         }
 
@@ -243,7 +275,7 @@ namespace HookeRope.Geometry
             bool takeNext = true;
             if (adaptive.BudgetPending(brokenSegments))
             {
-                Count(brokenSegments, true, out int vertices, out int tube, out int burr);
+                Count(brokenSegments, Counted.Reported, out int vertices, out int tube, out int burr);
                 takeNext = vertices <= vertexCapacity && tube + burr <= indexCapacity;
             }
             bool changed = adaptive.Plan(x, y, z, brokenSegments, neckActive, radius, takeNext, layout);
@@ -305,7 +337,7 @@ namespace HookeRope.Geometry
                 throw new ArgumentException("radii must hold RingCount = " + rings + " values.", nameof(radii));
             if (vertices == null) throw new ArgumentNullException(nameof(vertices));
             if (indices == null) throw new ArgumentNullException(nameof(indices));
-            Count(brokenSegments, false, out int vertexCount, out int tubeIndexCount, out int burrIndexCount);
+            Count(brokenSegments, Counted.Layout, out int vertexCount, out int tubeIndexCount, out int burrIndexCount);
             if (vertices.Length < vertexCount)
                 throw new ArgumentException("vertices must hold at least GetVertexCount = " + vertexCount + " vertices.", nameof(vertices));
             if (indices.Length < tubeIndexCount + burrIndexCount)
@@ -352,7 +384,8 @@ namespace HookeRope.Geometry
             }
 
             var bounds = new Bounds(true);
-            bool rewriteStrands = !radiiOnly || StrandEndsMove(radii, brokenSegments);
+            if (radiiOnly) UpdateAllRadii(radii, brokenSegments);
+            bool rewriteStrands = !radiiOnly || StrandEndsMoved(brokenSegments);
             if (rewriteStrands) strandBounds = new Bounds(true);
             int vertexBase = 0;
             int tubeCursor = 0;
@@ -433,7 +466,7 @@ namespace HookeRope.Geometry
 
         /// <summary>
         /// True when new <paramref name="radii"/> leave the ring centres as they are: the last full build pushed no ring
-        /// forward for being closer than 1e-3·r to the one before, and none would be with these radii.
+        /// forward for being closer than <see cref="PushDistance"/>·r to the one before, and none would be with these radii.
         /// </summary>
         private bool CentresKeep(ReadOnlySpan<float> radii, ReadOnlySpan<bool> brokenSegments)
         {
@@ -444,24 +477,32 @@ namespace HookeRope.Geometry
                 int first = layout.FirstRing(a), last = layout.FirstRing(b);
                 for (int k = first + 1; k <= last; k++)
                 {
-                    float minimum = 1e-3f * Clamped(radii[k]) + 1e-7f;
+                    float minimum = PushDistance * Clamped(radii[k]) + 1e-7f;
                     if (!(spacing2[k] >= minimum * minimum)) return false;
                 }
             }
             return true;
         }
 
-        /// <summary>True when a broken end's ring radius changes (its cap and strands move).</summary>
-        private bool StrandEndsMove(ReadOnlySpan<float> radii, ReadOnlySpan<bool> brokenSegments)
+        /// <summary>The radius work of a radius-only build, piece by piece (before anything is written, so the strands know whether their ends moved).</summary>
+        private void UpdateAllRadii(ReadOnlySpan<float> radii, ReadOnlySpan<bool> brokenSegments)
+        {
+            int n = layout.SegmentCount;
+            int segment = 0;
+            while (NextPiece(brokenSegments, n, ref segment, out int a, out int b))
+                UpdateRadii(layout.FirstRing(a), layout.FirstRing(b), radii);
+        }
+
+        /// <summary>After <see cref="UpdateAllRadii"/>: true when a broken end's ring was rewritten (its cap and strands move).</summary>
+        private bool StrandEndsMoved(ReadOnlySpan<bool> brokenSegments)
         {
             if (!burrEnabled || brokenSegments.Length == 0) return false;
             int n = layout.SegmentCount;
             int segment = 0;
             while (NextPiece(brokenSegments, n, ref segment, out int a, out int b))
             {
-                int first = layout.FirstRing(a), last = layout.FirstRing(b);
-                if (a > 0 && BitConverter.SingleToInt32Bits(Clamped(radii[first])) != BitConverter.SingleToInt32Bits(ringRadii[first])) return true;
-                if (b < n && BitConverter.SingleToInt32Bits(Clamped(radii[last])) != BitConverter.SingleToInt32Bits(ringRadii[last])) return true;
+                if (a > 0 && dirty[layout.FirstRing(a)]) return true;
+                if (b < n && dirty[layout.FirstRing(b)]) return true;
             }
             return false;
         }
@@ -488,9 +529,21 @@ namespace HookeRope.Geometry
         private static bool NextPiece(ReadOnlySpan<bool> brokenSegments, int n, ref int segment, out int a, out int b) =>
             RopePieces.Next(brokenSegments, n, ref segment, out a, out b);
 
-        /// <summary>Vertex and index counts: of the layout (<paramref name="reported"/> false) or of the next adaptive budgets.</summary>
-        private void Count(ReadOnlySpan<bool> brokenSegments, bool reported, out int vertexCount, out int tubeIndexCount, out int burrIndexCount)
+        /// <summary>What <see cref="Count"/> counts.</summary>
+        private enum Counted
         {
+            /// <summary>The layout of the next build.</summary>
+            Layout,
+            /// <summary>The next adaptive budgets (the layout for a fixed builder).</summary>
+            Reported,
+            /// <summary>Every adaptive piece at its ring cap.</summary>
+            Capacity,
+        }
+
+        /// <summary>Vertex and index counts: of the layout, of the next adaptive budgets or of the caps (<paramref name="what"/>).</summary>
+        private void Count(ReadOnlySpan<bool> brokenSegments, Counted what, out int vertexCount, out int tubeIndexCount, out int burrIndexCount)
+        {
+            bool reported = what != Counted.Layout;
             int n = layout.SegmentCount;
             bool hasBroken = brokenSegments.Length > 0;
             if (hasBroken && brokenSegments.Length != n)
@@ -499,9 +552,9 @@ namespace HookeRope.Geometry
             int segment = 0;
             while (NextPiece(brokenSegments, n, ref segment, out int a, out int b))
             {
-                int rings = reported && adaptive != null
-                    ? adaptive.RingsOfPiece(a, brokenSegments)
-                    : layout.FirstRing(b) - layout.FirstRing(a) + 1;
+                int rings = !reported || adaptive == null ? layout.FirstRing(b) - layout.FirstRing(a) + 1
+                    : what == Counted.Capacity ? adaptive.CapOfPiece(a, b) + 1
+                    : adaptive.RingsOfPiece(a, brokenSegments);
                 vertexCount += rings * (radial + 1);
                 tubeIndexCount += (rings - 1) * radial * 6;
                 CountEnd(a > 0, a > 0 ? DanglingRingCount(a - 1, true, reported) : 0, ref vertexCount, ref tubeIndexCount, ref burrIndexCount);
@@ -536,17 +589,17 @@ namespace HookeRope.Geometry
             int first = layout.FirstRing(a);
             int last = layout.FirstRing(b);
             // which rings must be written: all of them after new positions, the changed ones after new radii only
-            if (radiiOnly)
-            {
-                UpdateRadii(first, last, radii);
-            }
-            else
+            if (!radiiOnly)
             {
                 for (int k = first; k <= last; k++) { ringRadii[k] = Clamped(radii[k]); dirty[k] = true; }
                 ComputeCenters(a, b, first, last, x, y, z);
                 if (contactRope != null && contactRope.ColliderCount > 0) PushCentersOutOfColliders(first, last);
                 ComputeFrames(a, b, first, last);
+                ComputeRingLimits(first, last);
+                LimitRadii(first, last, radii);
+                for (int k = first; k <= last; k++) ringRadii[k] = drawnRadii[k];
                 ComputeSlopes(first, last);
+                MarkStripNormals(first, last);
             }
 
             bool startBroken = a > 0, endBroken = b < n;
@@ -565,10 +618,14 @@ namespace HookeRope.Geometry
                 vertexBase += stride;
             }
 
+            // the dangling halves' first rings, for the normals of end rings drawn from their strips
+            Neighbour beforeFirst = DanglingNeighbour(startRings > 0 && stripNormals[first], a - 1, true, first);
+            Neighbour afterLast = DanglingNeighbour(endBroken && dangling != null && stripNormals[last], b, false, last);
             for (int k = first; k <= last; k++)
             {
                 int ringBase = vertexBase + (k - first) * stride;
-                if (dirty[k]) WriteRing(k, vertices.AsSpan(ringBase, stride));
+                if (dirty[k] && stripNormals[k]) WriteRingOnStrips(k, first, last, beforeFirst, afterLast, vertices.AsSpan(ringBase, stride));
+                else if (dirty[k]) WriteRing(k, vertices.AsSpan(ringBase, stride));
                 AddRingBounds(k, ref bounds);
                 if (k < last) WriteStrip(ringBase, ringBase + stride, indices, writeIndices, ref tubeCursor);
             }

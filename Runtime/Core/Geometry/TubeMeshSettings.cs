@@ -22,8 +22,9 @@ namespace HookeRope.Geometry
         public int RingsPerSegment { get => ringsPerSegment; set => ringsPerSegment = RopeParameters.Check(value, RopeParameters.RingsPerSegment.Row); }
 
         /// <summary>
-        /// Place the rings by need (default true): one per segment where the rope is straight, up to 16 where it bends,
-        /// and a Zone neck's stations while it necks, so that the drawn surface stays within 1 − cos(π/RadialSegments) of
+        /// Place the rings by need (default true): one per segment where the rope is straight, up to 16 where it bends
+        /// within a ring budget of 8 per segment on average over each unbroken piece (a rope that wants more has its rings
+        /// redistributed within it; Documentation~/radius-and-mesh.md, "Ring budget"), and a Zone neck's stations while it necks, so that the drawn surface stays within 1 − cos(π/RadialSegments) of
         /// the drawn radius of the smooth tube (the polygon's own error around the tube: 1.9 % at 16 sides). Off:
         /// <see cref="RingsPerSegment"/> rings in every segment (and the neck's stations in Zone mode).
         /// </summary>

@@ -78,6 +78,30 @@ namespace HookeRope.Solver
         public int[] ContactList;                       // particles with ContactCollider ≥ 0, first ContactCount entries
         public int ContactCount;
 
+        // friction in the exact solve (see ChainContacts; allocated with the contacts). Per contact of the current set:
+        // its friction state (sticking: the stiff damper; sliding: the damper whose friction is the kinetic cone; neither:
+        // none yet), the tangential mobility of a held contact (1/kg: 1/(m + ζ)), the displacement the contact prescribes
+        // in this iteration (m: onto the surface, and for a held one what its friction does; folded into the residual), the
+        // collider's friction coefficients and its displacement over the substep at the contact (m). Per particle: the
+        // contact impulse of this substep (N·s², h² times the force: push-outs, normal reaction, friction) and its friction
+        // part, whether the contact was released in this substep, and, kept from one detection to the next, the contact's
+        // state (0 none, 1 held, 2 sticking, 3 sliding), its damping ζ (kg) and its last normal impulse (N·s²).
+        public bool[] ContactSticking, ContactSliding;
+        public double[] ContactMobility;
+        public double[] ContactShiftX, ContactShiftY, ContactShiftZ;
+        public float[] ContactKineticFriction, ContactStaticFriction;
+        public float[] ContactSurfaceX, ContactSurfaceY, ContactSurfaceZ;
+        public double[] ContactImpulseX, ContactImpulseY, ContactImpulseZ;
+        public double[] ContactFrictionX, ContactFrictionY, ContactFrictionZ;
+        public bool[] ContactStopped;                   // released in this substep (stays free in it)
+        public byte[] ContactMemory;
+        public double[] ContactDamping;
+        public double[] ContactNormalImpulse;
+        public bool Bdf2Substep;                        // this substep runs BDF2 (where a contact particle is at rest depends on it)
+        public double Substep;                          // s, this substep's h
+        public double ContactNormalScale;               // N·s², the largest normal impulse of the last substep's contacts
+        public bool HeldWithFriction;                   // the last substep ended with a held contact pressed onto a surface with friction
+        public double ContactImpulseScale = 1.0;        // (h_eff/h)²: the impulse (in the solve's h_eff² units) of a push-out per m·push
         // plastic state of the segments (issue 15; null for an elastic rope without an energy absorber: no work, no memory)
         public SegmentPlasticity Plasticity;
 
@@ -123,6 +147,13 @@ namespace HookeRope.Solver
             ContactNX = new float[n]; ContactNY = new float[n]; ContactNZ = new float[n];
             ContactGap = new float[n]; ContactLoad = new float[n];
             ContactCollider = new int[n]; ContactActive = new bool[n]; ContactList = new int[n];
+            ContactSticking = new bool[n]; ContactSliding = new bool[n]; ContactStopped = new bool[n]; ContactMobility = new double[n];
+            ContactShiftX = new double[n]; ContactShiftY = new double[n]; ContactShiftZ = new double[n];
+            ContactKineticFriction = new float[n]; ContactStaticFriction = new float[n];
+            ContactSurfaceX = new float[n]; ContactSurfaceY = new float[n]; ContactSurfaceZ = new float[n];
+            ContactImpulseX = new double[n]; ContactImpulseY = new double[n]; ContactImpulseZ = new double[n];
+            ContactFrictionX = new double[n]; ContactFrictionY = new double[n]; ContactFrictionZ = new double[n];
+            ContactMemory = new byte[n]; ContactDamping = new double[n]; ContactNormalImpulse = new double[n];
             for (int i = 0; i < n; i++) ContactCollider[i] = -1;
             ContactCount = 0;
         }
@@ -136,6 +167,8 @@ namespace HookeRope.Solver
                 int i = ContactList[k];
                 ContactCollider[i] = -1;
                 ContactActive[i] = false;
+                ContactSticking[i] = false;
+                ContactSliding[i] = false;
             }
             ContactCount = 0;
         }
@@ -168,20 +201,65 @@ namespace HookeRope.Solver
         public double Direction(int j, out double nx, out double ny, out double nz, out float ddx, out float ddy, out float ddz)
         {
             ddx = DX[j + 1] - DX[j]; ddy = DY[j + 1] - DY[j]; ddz = DZ[j + 1] - DZ[j];
-            double ex = ((double)PrevX[j + 1] - PrevX[j]) + (((double)LowX[j + 1] - LowX[j]) + ddx);
-            double ey = ((double)PrevY[j + 1] - PrevY[j]) + (((double)LowY[j + 1] - LowY[j]) + ddy);
-            double ez = ((double)PrevZ[j + 1] - PrevZ[j]) + (((double)LowZ[j + 1] - LowZ[j]) + ddz);
+            double ex = Component(PrevX[j], PrevX[j + 1], LowX[j], LowX[j + 1], ddx);
+            double ey = Component(PrevY[j], PrevY[j + 1], LowY[j], LowY[j + 1], ddy);
+            double ez = Component(PrevZ[j], PrevZ[j + 1], LowZ[j], LowZ[j + 1], ddz);
+            return Normalise(j, ex, ey, ez, Exactly(DirX, SegmentCount), Exactly(DirY, SegmentCount), Exactly(DirZ, SegmentCount), out nx, out ny, out nz);
+        }
+
+        /// <summary>
+        /// One component (m, double) of a segment's live vector from its ends' previous positions, remainders (both float,
+        /// passed as double) and the change of its span over the substep, D_b − D_a (float): (P_b − P_a) + ((Low_b − Low_a) + change).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double Component(double prevA, double prevB, double lowA, double lowB, float change) => (prevB - prevA) + ((lowB - lowA) + change);
+
+        /// <summary>
+        /// Length (m) of segment j's live vector (ex, ey, ez) and its unit direction (nx, ny, nz), stored in float into
+        /// dirX/Y/Z[j] as the last valid direction; a vanishing or non-finite vector keeps the stored direction (see
+        /// <see cref="Direction"/>). The kernels pass the direction arrays as spans (<see cref="Exactly"/>).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static double Normalise(int j, double ex, double ey, double ez, Span<float> dirX, Span<float> dirY, Span<float> dirZ, out double nx, out double ny, out double nz)
+        {
             double len = Math.Sqrt(ex * ex + ey * ey + ez * ez);
             if (len > 1e-12 && len <= float.MaxValue)
             {
                 double inv = 1.0 / len;
                 nx = ex * inv; ny = ey * inv; nz = ez * inv;
-                DirX[j] = (float)nx; DirY[j] = (float)ny; DirZ[j] = (float)nz;
+                dirX[j] = (float)nx; dirY[j] = (float)ny; dirZ[j] = (float)nz;
                 return len;
             }
-            nx = DirX[j]; ny = DirY[j]; nz = DirZ[j];
+            nx = dirX[j]; ny = dirY[j]; nz = dirZ[j];
             return len <= float.MaxValue ? len : 0.0;
         }
+
+        /// <summary>
+        /// The first n entries of an array (one of these particle or segment arrays) as a span whose length the JIT knows to
+        /// be n: the array is checked non-null first, so the span's length is not a choice between n and 0, and a loop bounded
+        /// by n indexes it without bounds checks (an array indexed j + 1, or several arrays under one loop bound, keep theirs).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static Span<T> Exactly<T>(T[] values, int n)
+        {
+            if (values == null) ThrowSizes();
+            return values.AsSpan(0, n);
+        }
+
+        /// <summary>The entries j + 1 … j + n of an array as a span of n (see <see cref="Exactly"/>): a segment's second particle at index j.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static Span<T> Shifted<T>(T[] values, int n)
+        {
+            if (values == null) ThrowSizes();
+            return values.AsSpan(1, n);
+        }
+
+        /// <summary>
+        /// Throws unless every particle array the kernels index has ParticleCount entries and every segment array
+        /// SegmentCount (true by construction): after this check the JIT drops the per-element bounds checks of loops bounded by
+        /// those lengths (a method that only throws is not inlined, and the JIT knows the call does not return).
+        /// </summary>
+        public static void ThrowSizes() => throw new InvalidOperationException("ChainState arrays are sized from SegmentCount");
 
         /// <summary>Vector (m, double) of segment j between the committed positions X + Low of its ends.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]

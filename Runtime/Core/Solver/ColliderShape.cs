@@ -22,8 +22,14 @@ namespace HookeRope.Solver
         public readonly float HalfHeight;
         /// <summary>Box half extents along local X, Y, Z in metres.</summary>
         public readonly Float3 HalfExtents;
-        /// <summary>Coulomb friction coefficient (dimensionless, ≥ 0; 0 = frictionless).</summary>
+        /// <summary>Coulomb friction coefficient of sliding, μ_k (dimensionless, ≥ 0; 0 = frictionless).</summary>
         public readonly float Friction;
+        /// <summary>
+        /// Coulomb friction coefficient of sticking, μ_s (dimensionless, ≥ 0): the friction cone a contact must leave to
+        /// start sliding. Equal to <see cref="Friction"/> unless set with <see cref="WithStaticFriction"/>; a value below
+        /// <see cref="Friction"/> acts as <see cref="Friction"/> (a sliding contact could not stop otherwise).
+        /// </summary>
+        public readonly float StaticFriction;
 
         private ColliderShape(ColliderKind kind, Float3 position, Quat rotation, float radius, float halfHeight, Float3 halfExtents, float friction)
         {
@@ -37,6 +43,24 @@ namespace HookeRope.Solver
             HalfHeight = halfHeight;
             HalfExtents = halfExtents;
             Friction = friction;
+            StaticFriction = friction;
+        }
+
+        private ColliderShape(in ColliderShape shape, float staticFriction)
+        {
+            this = shape;
+            StaticFriction = staticFriction;
+        }
+
+        /// <summary>
+        /// This shape with a static friction coefficient μ_s (dimensionless, finite, ≥ 0) of its own; <see cref="Friction"/>
+        /// stays the sliding coefficient μ_k. Unity's PhysicMaterial has both (staticFriction, dynamicFriction).
+        /// </summary>
+        public ColliderShape WithStaticFriction(float staticFriction)
+        {
+            if (!float.IsFinite(staticFriction) || staticFriction < 0f)
+                throw new ArgumentOutOfRangeException(nameof(staticFriction), staticFriction, "staticFriction must be finite and in [0, +inf)");
+            return new ColliderShape(this, staticFriction);
         }
 
         /// <summary>Plane through <paramref name="point"/> (m) with outward <paramref name="normal"/> (any length, non-zero).</summary>

@@ -118,17 +118,39 @@ namespace HookeRope.Solver
         /// iteration it applies Coulomb friction instead, limited by μ times the particle's whole normal correction in
         /// this substep (<see cref="ChainState.ContactLoad"/>: pushes plus the normal motion the chain solve's
         /// tangent-plane mass withheld).
+        /// <para>Every push adds m·push·normal to the particle's contact impulse (<see cref="ChainState.ContactImpulseX"/>).
+        /// With <paramref name="frictionInSolve"/> (the exact chain solve) friction is part of the solve instead: a contact that
+        /// was sticking or sliding at the last detection starts so again, a new one gets its friction state from the solve
+        /// (see <see cref="ChainContacts"/>), and the pass applies no friction of its own.</para>
         /// <para>The broad phase bounds the particles (<see cref="ParticleBlocks.Scan"/>), rules out the colliders whose path
         /// over the host step is out of reach of the whole rope, works out the substep pose and bound of the others, and
         /// passes to the narrow phase only the blocks of particles within reach of one of them. The result is the
         /// brute-force pass's (<see cref="BruteForce"/>) to the bit.</para>
         /// </summary>
-        public void Project(ChainState c, float h, ContactPass pass)
+        public void Project(ChainState c, float h, ContactPass pass, bool frictionInSolve)
         {
-            bool friction = pass == ContactPass.LastIteration;
             bool detect = pass != ContactPass.LastIteration;
+            passFrictionInSolve = frictionInSolve;
+            passStart = pass == ContactPass.StartOfSubstep;
+            passStep = h;
+            if (passStart)
+            {
+                int n = c.ParticleCount;
+                Array.Clear(c.ContactImpulseX, 0, n); Array.Clear(c.ContactImpulseY, 0, n); Array.Clear(c.ContactImpulseZ, 0, n);
+                Array.Clear(c.ContactFrictionX, 0, n); Array.Clear(c.ContactFrictionY, 0, n); Array.Clear(c.ContactFrictionZ, 0, n);
+                Array.Clear(c.ContactStopped, 0, n);
+            }
+            if (detect) RememberContacts(c);
+            ProjectPass(c, h, pass, detect, pass == ContactPass.LastIteration && !frictionInSolve);
+            if (detect) Array.Clear(c.ContactMemory, 0, c.ParticleCount);
+        }
+
+        private bool passFrictionInSolve, passStart; // the current pass's: friction in the chain solve, start of a substep
+        private float passStep;                       // s, the current pass's substep
+
+        private void ProjectPass(ChainState c, float h, ContactPass pass, bool detect, bool friction)
+        {
             float[] load = c.ContactLoad;
-            if (detect) c.ClearContacts();
             if (BruteForce)
             {
                 ProjectEveryPair(c, h, pass == ContactPass.StartOfSubstep, detect, friction, load);
@@ -216,7 +238,7 @@ namespace HookeRope.Solver
                     }
                     moved |= Resolve(c, i, k, r, h, detect, friction, load, ref best);
                 }
-                if (detect) best.Record(c, i);
+                if (detect && best.Found) AddContact(c, i, best.Collider, best.Normal, best.Gap);
             }
         }
 
@@ -231,7 +253,7 @@ namespace HookeRope.Solver
                 float r = c.Radius[i];
                 var best = new ClosestContact(ContactMarginFraction * r);
                 for (int k = 0; k < Count; k++) Resolve(c, i, k, r, h, detect, friction, load, ref best);
-                if (detect) best.Record(c, i);
+                if (detect && best.Found) AddContact(c, i, best.Collider, best.Normal, best.Gap);
             }
         }
 
@@ -252,6 +274,8 @@ namespace HookeRope.Solver
             {
                 d += normal * push;
                 load[i] += push;
+                double impulse = c.ContactImpulseScale * c.Mass[i] * push;
+                c.ContactImpulseX[i] += impulse * normal.X; c.ContactImpulseY[i] += impulse * normal.Y; c.ContactImpulseZ[i] += impulse * normal.Z;
             }
             else if (!friction || c.ContactCollider[i] != k || -push > ContactMarginFraction * r)
             {
@@ -294,16 +318,48 @@ namespace HookeRope.Solver
                 }
             }
 
-            /// <summary>Makes the closest surface, if any (with a finite normal), particle i's contact.</summary>
-            public void Record(ChainState c, int i)
+            /// <summary>A surface (with a finite normal) was offered.</summary>
+            public bool Found => collider >= 0 && float.IsFinite(normal.X + normal.Y + normal.Z);
+            public int Collider => collider;
+            public Float3 Normal => normal;
+            public float Gap => gap;
+        }
+
+        /// <summary>
+        /// Before a detection: the state of every contact of the set about to be replaced (1 held, 2 sticking, 3 sliding) into
+        /// <see cref="ChainState.ContactMemory"/> (the detection reads it for the new set and clears it), then the set is cleared.
+        /// </summary>
+        private static void RememberContacts(ChainState c)
+        {
+            for (int k = 0; k < c.ContactCount; k++)
             {
-                if (collider < 0 || !float.IsFinite(normal.X + normal.Y + normal.Z)) return;
-                c.ContactCollider[i] = collider;
-                c.ContactActive[i] = true;
-                c.ContactNX[i] = normal.X; c.ContactNY[i] = normal.Y; c.ContactNZ[i] = normal.Z;
-                c.ContactGap[i] = gap;
-                c.ContactList[c.ContactCount++] = i;
+                int i = c.ContactList[k];
+                c.ContactMemory[i] = !c.ContactActive[i] ? (byte)0 : c.ContactSticking[i] ? (byte)2 : c.ContactSliding[i] ? (byte)3 : (byte)1;
             }
+            c.ClearContacts();
+        }
+
+        /// <summary>Adds particle i's contact with collider k (outward normal, gap in m) to the set, in its initial state (see <see cref="ChainContacts"/>).</summary>
+        private void AddContact(ChainState c, int i, int k, Float3 normal, float gap)
+        {
+            bool frictionInSolve = passFrictionInSolve;
+            c.ContactCollider[i] = k;
+            // touching (pushed out) or held in the iteration before: held; else within the margin: free until the chain
+            // drives it onto the surface
+            byte memory = c.ContactMemory[i];
+            c.ContactActive[i] = gap <= 0f || !frictionInSolve || !passStart && memory != 0;
+            c.ContactNX[i] = normal.X; c.ContactNY[i] = normal.Y; c.ContactNZ[i] = normal.Z;
+            c.ContactGap[i] = gap;
+            c.ContactList[c.ContactCount++] = i;
+            float kinetic = shapes[k].Friction, stat = Math.Max(shapes[k].StaticFriction, kinetic);
+            c.ContactKineticFriction[i] = kinetic;
+            c.ContactStaticFriction[i] = stat;
+            Float3 surface = poses.Velocity(k) * passStep;
+            c.ContactSurfaceX[i] = surface.X; c.ContactSurfaceY[i] = surface.Y; c.ContactSurfaceZ[i] = surface.Z;
+            // a held contact keeps its friction state from one detection to the next (see ChainContacts.DecideFriction); a new
+            // one has none until the chain solve's first pass gives it one
+            c.ContactSticking[i] = frictionInSolve && memory == 2;
+            c.ContactSliding[i] = frictionInSolve && memory == 3;
         }
 
         /// <summary>Signed distance (m) from point x (rope-local) to the surface of collider k, and the outward unit normal.</summary>

@@ -18,8 +18,24 @@ namespace HookeRope.Solver
     /// </summary>
     internal static class ExactChainSolver
     {
+        /// <summary>
+        /// Smallest cosine between the accumulated force of a segment beside a held contact and its direction for the force's
+        /// direction to set the residual (about 25°): a converged force lies along its segment, and one far off it comes
+        /// from a segment that was slack or held sideways by the contact in an earlier iteration; taking its direction as
+        /// the target would ask for a correction of the order of the segment's length.
+        /// </summary>
+        public const double MinForceAlignment = 0.9;
+
         /// <summary>Largest number of active-set passes per iteration.</summary>
         public const int MaxPasses = 8;
+
+        /// <summary>
+        /// Largest number of active-set passes per iteration while the friction of some contact is still moving to its cone:
+        /// many contacts sliding together converge slowly (each one's damping changes the slip of all), and friction cut
+        /// short at 8 passes was up to 7 % above its cone at the light end of a wrap (box edges μ 0.3: capstan
+        /// acceleration −95 % at 8 passes, −5 % at 32).
+        /// </summary>
+        public const int MaxFrictionPasses = 64;
 
         /// <summary>
         /// Largest transverse compliance of a segment as a multiple of its ends' mobility w_j + w_{j+1}: a slack or
@@ -63,12 +79,23 @@ namespace HookeRope.Solver
             if (first) ClearForces(c);
             Assemble(c, invH2, beta / h, first);
             bool contacts = c.ContactCount > 0;
-            if (contacts) DropContactsWithoutMobility(c);
-            SolveActiveSet(c, tensionOnly, contacts);
+            if (contacts)
+            {
+                ChainContacts.Prepare(c);
+                ChainContacts.DropContactsWithoutMobility(c);
+            }
+            SolveActiveSet(c, tensionOnly, contacts, first);
             double nonlinear = Apply(c, contacts, tensionOnly, out bool unconverged);
             violent = nonlinear > NonlinearTolerance;
             shortened = false;
-            if (violent)
+            if (contacts && HoldsWithFriction(c))
+            {
+                // friction in the solve: its impulses were recorded for the full Newton step (ChainContacts.Finish) and the
+                // line search's objective has none, so such an iteration keeps its step and the plain convergence test
+                violent = false;
+                unconverged = nonlinear > NonlinearTolerance;
+            }
+            else if (violent)
             {
                 double step = ChainLineSearch.Backtrack(c, tensionOnly);
                 shortened = step < 1.0;
@@ -77,6 +104,17 @@ namespace HookeRope.Solver
             }
             bool branches = c.Plasticity != null && c.Plasticity.UpdateBranches(c, invH2);
             return EstimateTooLow(c, invH2) || unconverged || branches;
+        }
+
+        /// <summary>True when some contact of the solve is held on a surface with friction.</summary>
+        private static bool HoldsWithFriction(ChainState c)
+        {
+            for (int k = 0; k < c.ContactCount; k++)
+            {
+                int i = c.ContactList[k];
+                if (c.ContactActive[i] && c.ContactStaticFriction[i] > 0f) return true;
+            }
+            return false;
         }
 
         private static void ClearForces(ChainState c)
@@ -97,20 +135,37 @@ namespace HookeRope.Solver
         private static void Assemble(ChainState c, double invH2, double gammaAll, bool first)
         {
             int s = c.SegmentCount;
-            float[] w = c.InverseMass, rest = c.RestLength, compliance = c.Compliance, length = c.Length;
-            double[] fx = c.ForceX, fy = c.ForceY, fz = c.ForceZ, rx = c.ResidualX, ry = c.ResidualY, rz = c.ResidualZ;
-            double[] axial = c.AxialCompliance, transverse = c.TransverseCompliance, estimate = c.EstimatedTension;
-            bool[] broken = c.Broken, active = c.Active, assembled = c.Assembled;
+            // spans of exactly s entries (the loop bound) index without bounds checks; B spans are particle j + 1's
+            ReadOnlySpan<float> wA = ChainState.Exactly(c.InverseMass, s), wB = ChainState.Shifted(c.InverseMass, s);
+            ReadOnlySpan<float> dxA = ChainState.Exactly(c.DX, s), dyA = ChainState.Exactly(c.DY, s), dzA = ChainState.Exactly(c.DZ, s);
+            ReadOnlySpan<float> dxB = ChainState.Shifted(c.DX, s), dyB = ChainState.Shifted(c.DY, s), dzB = ChainState.Shifted(c.DZ, s);
+            ReadOnlySpan<float> pxA = ChainState.Exactly(c.PrevX, s), pyA = ChainState.Exactly(c.PrevY, s), pzA = ChainState.Exactly(c.PrevZ, s);
+            ReadOnlySpan<float> pxB = ChainState.Shifted(c.PrevX, s), pyB = ChainState.Shifted(c.PrevY, s), pzB = ChainState.Shifted(c.PrevZ, s);
+            ReadOnlySpan<float> lxA = ChainState.Exactly(c.LowX, s), lyA = ChainState.Exactly(c.LowY, s), lzA = ChainState.Exactly(c.LowZ, s);
+            ReadOnlySpan<float> lxB = ChainState.Shifted(c.LowX, s), lyB = ChainState.Shifted(c.LowY, s), lzB = ChainState.Shifted(c.LowZ, s);
+            ReadOnlySpan<float> rest = ChainState.Exactly(c.RestLength, s), compliance = ChainState.Exactly(c.Compliance, s), lastTension = ChainState.Exactly(c.Tension, s);
+            Span<float> length = ChainState.Exactly(c.Length, s);
+            ReadOnlySpan<double> fx = ChainState.Exactly(c.ForceX, s), fy = ChainState.Exactly(c.ForceY, s), fz = ChainState.Exactly(c.ForceZ, s);
+            Span<double> rx = ChainState.Exactly(c.ResidualX, s), ry = ChainState.Exactly(c.ResidualY, s), rz = ChainState.Exactly(c.ResidualZ, s);
+            Span<double> axial = ChainState.Exactly(c.AxialCompliance, s), transverse = ChainState.Exactly(c.TransverseCompliance, s), estimate = ChainState.Exactly(c.EstimatedTension, s);
+            ReadOnlySpan<bool> broken = ChainState.Exactly(c.Broken, s);
+            Span<bool> active = ChainState.Exactly(c.Active, s);
+            Span<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
+            Span<bool> assembled = ChainState.Exactly(c.Assembled, s);
+            Span<double> effectiveRest = ChainState.Exactly(c.EffectiveRest, s);
             c.RigidInSolve = false;
             SegmentPlasticity plastic = c.Plasticity;
             for (int j = 0; j < s; j++)
             {
                 assembled[j] = false;
                 if (broken[j]) { active[j] = false; continue; }
-                double len = c.Direction(j, out double nx, out double ny, out double nz, out float ddx, out float ddy, out float ddz);
+                // ChainState.Direction on the spans
+                float ddx = dxB[j] - dxA[j], ddy = dyB[j] - dyA[j], ddz = dzB[j] - dzA[j];
+                double len = ChainState.Normalise(j, ChainState.Component(pxA[j], pxB[j], lxA[j], lxB[j], ddx), ChainState.Component(pyA[j], pyB[j], lyA[j], lyB[j], ddy),
+                    ChainState.Component(pzA[j], pzB[j], lzA[j], lzB[j], ddz), dirX, dirY, dirZ, out double nx, out double ny, out double nz);
                 length[j] = (float)len;
                 double alpha = compliance[j];
-                double mobility = (double)w[j] + w[j + 1];
+                double mobility = (double)wA[j] + wB[j];
                 if (mobility == 0.0 && alpha == 0.0) { active[j] = false; continue; }
                 if (alpha == 0.0) c.RigidInSolve = true;
                 double g = alpha > 0.0 ? gammaAll : 0.0;
@@ -122,7 +177,11 @@ namespace HookeRope.Solver
                     restEffective = (restJ + g * (len - rate)) / (1.0 + g);
                     alphaTilde /= 1.0 + g;
                 }
-                if (plastic != null && plastic.IsYielding(j)) plastic.FlowRow(j, invH2, ref restEffective, ref alphaTilde);
+                if (plastic != null && plastic.IsYielding(j))
+                {
+                    restEffective = FlowRow(plastic, j, invH2, restEffective, alphaTilde, out double flowCompliance);
+                    alphaTilde = flowCompliance;
+                }
                 double magnitude = Math.Sqrt(fx[j] * fx[j] + fy[j] * fy[j] + fz[j] * fz[j]);
                 double ex = nx, ey = ny, ez = nz, signed = 0.0;
                 if (magnitude > 0.0)
@@ -132,61 +191,57 @@ namespace HookeRope.Solver
                     signed = sense * magnitude;
                     double inverse = sense / magnitude;
                     ex = fx[j] * inverse; ey = fy[j] * inverse; ez = fz[j] * inverse;
+                    // beside a held contact, a force far off its segment (a nearly slack one held sideways by the contact in
+                    // an earlier iteration) is no estimate of where the segment points: the residual is taken along n
+                    if (ex * nx + ey * ny + ez * nz < MinForceAlignment && BesideHeldContact(c, j)) { ex = nx; ey = ny; ez = nz; }
                 }
                 // the geometric stiffness T/l: with the last substep's tension on the first iteration, the accumulated one after;
                 // a pushing (bilateral) segment's is −|T|/l, which would let it buckle explicitly, so it takes |T| and the
                 // buckling is damped instead
-                double tension = first ? Math.Abs(c.Tension[j]) : Math.Abs(signed * invH2);
+                double tension = first ? Math.Abs(lastTension[j]) : Math.Abs(signed * invH2);
                 estimate[j] = tension;
                 double target = restEffective + alphaTilde * signed; // the length the accumulated force implies
                 double geometric = Math.Max(target, 1e-6 * rest[j]) * invH2;
                 double cap = MaxTransverseComplianceRatio * mobility;
                 transverse[j] = geometric < cap * tension ? geometric / tension : cap;
                 axial[j] = alphaTilde;
-                c.EffectiveRest[j] = restEffective;
+                effectiveRest[j] = restEffective;
                 assembled[j] = true;
                 rx[j] = len * nx - target * ex; ry[j] = len * ny - target * ey; rz[j] = len * nz - target * ez;
             }
         }
 
         /// <summary>
-        /// A held contact that would leave one of its segments with no mobility along it (the other end pinned, the normal
-        /// along the segment, and no compliance) is dropped: the row would be singular.
+        /// <see cref="SegmentPlasticity.FlowRow"/> on copies (returns the effective rest length, the compliance in flowCompliance),
+        /// so the assembly's own locals are not address-exposed and stay in registers.
         /// </summary>
-        private static void DropContactsWithoutMobility(ChainState c)
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
+        private static double FlowRow(SegmentPlasticity plastic, int j, double invH2, double restEffective, double alphaTilde, out double flowCompliance)
         {
-            for (int k = 0; k < c.ContactCount; k++)
-            {
-                int i = c.ContactList[k];
-                if (!c.ContactActive[i]) continue;
-                if ((i > 0 && !AxialMobilityLeft(c, i - 1)) || (i < c.SegmentCount && !AxialMobilityLeft(c, i)))
-                    c.ContactActive[i] = false;
-            }
+            plastic.FlowRow(j, invH2, ref restEffective, ref alphaTilde);
+            flowCompliance = alphaTilde;
+            return restEffective;
         }
 
-        /// <summary>True when segment j keeps mobility (or compliance) along its direction with its ends' contacts held.</summary>
-        private static bool AxialMobilityLeft(ChainState c, int j)
-        {
-            if (c.Broken[j] || c.Compliance[j] > 0f) return true;
-            double nx = c.DirX[j], ny = c.DirY[j], nz = c.DirZ[j];
-            double along = SegmentForceSystem.AlongMobility(c, j, nx, ny, nz) + SegmentForceSystem.AlongMobility(c, j + 1, nx, ny, nz);
-            return along > 1e-9 * ((double)c.InverseMass[j] + c.InverseMass[j + 1]);
-        }
+        /// <summary>True when an end of segment j is a held contact.</summary>
+        private static bool BesideHeldContact(ChainState c, int j) => c.ContactCount > 0 && (c.ContactActive[j] || c.ContactActive[j + 1]);
 
         /// <summary>
         /// Solves for δΛ, then repeats on the same linearisation while the active set changes (at most
-        /// <see cref="MaxPasses"/> solves): a tension-only segment whose total force would push is released (its force
-        /// returns to zero), a released one the solution stretches is re-admitted; a held contact the chain pulls off the
-        /// surface is released, a released one it drives deeper than its gap is held.
+        /// <see cref="MaxPasses"/> solves, or <see cref="MaxFrictionPasses"/> while contact friction is still moving to its
+        /// cone): a tension-only segment whose total force would push is released (its force returns to zero), a released
+        /// one the solution stretches is re-admitted; a held contact the chain pulls off the surface is released, a released
+        /// one it drives deeper than its gap is held; friction follows its cone (<see cref="ChainContacts"/>).
         /// </summary>
-        private static void SolveActiveSet(ChainState c, bool tensionOnly, bool contacts)
+        private static void SolveActiveSet(ChainState c, bool tensionOnly, bool contacts, bool first)
         {
+            bool frictionMoving = false;
             for (int pass = 1; ; pass++)
             {
                 SegmentForceSystem.Solve(c);
-                if ((!tensionOnly && !contacts) || pass >= MaxPasses) return;
+                if ((!tensionOnly && !contacts) || pass >= MaxFrictionPasses || (pass >= MaxPasses && !frictionMoving)) return;
                 bool changed = tensionOnly && UpdateTensionOnlySet(c);
-                if (contacts) changed |= UpdateContacts(c);
+                if (contacts) changed |= ChainContacts.Update(c, first, out frictionMoving);
                 if (!changed) return;
             }
         }
@@ -194,13 +249,17 @@ namespace HookeRope.Solver
         private static bool UpdateTensionOnlySet(ChainState c)
         {
             int s = c.SegmentCount;
-            double[] fx = c.ForceX, fy = c.ForceY, fz = c.ForceZ, dx = c.StepX, dy = c.StepY, dz = c.StepZ;
-            bool[] active = c.Active, broken = c.Broken;
+            // spans of exactly s entries (the loop bound): indexed without bounds checks
+            ReadOnlySpan<double> fx = ChainState.Exactly(c.ForceX, s), fy = ChainState.Exactly(c.ForceY, s), fz = ChainState.Exactly(c.ForceZ, s);
+            ReadOnlySpan<double> dx = ChainState.Exactly(c.StepX, s), dy = ChainState.Exactly(c.StepY, s), dz = ChainState.Exactly(c.StepZ, s);
+            ReadOnlySpan<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
+            Span<bool> active = ChainState.Exactly(c.Active, s);
+            ReadOnlySpan<bool> broken = ChainState.Exactly(c.Broken, s);
             bool changed = false;
             for (int j = 0; j < s; j++)
             {
                 if (broken[j]) continue;
-                double nx = c.DirX[j], ny = c.DirY[j], nz = c.DirZ[j];
+                double nx = dirX[j], ny = dirY[j], nz = dirZ[j];
                 if (active[j])
                 {
                     double along = (fx[j] + dx[j]) * nx + (fy[j] + dy[j]) * ny + (fz[j] + dz[j]) * nz;
@@ -221,112 +280,88 @@ namespace HookeRope.Solver
         /// <summary>Stretch (m) segment j would have after this solution: n·(R + its ends' relative motion).</summary>
         private static double StretchAfter(ChainState c, int j, double nx, double ny, double nz)
         {
-            SegmentForceSystem.Motion(c, j, out double ax, out double ay, out double az);
-            SegmentForceSystem.Motion(c, j + 1, out double bx, out double by, out double bz);
+            ChainContacts.Motion(c, j, out double ax, out double ay, out double az);
+            ChainContacts.Motion(c, j + 1, out double bx, out double by, out double bz);
             return nx * (c.ResidualX[j] + bx - ax) + ny * (c.ResidualY[j] + by - ay) + nz * (c.ResidualZ[j] + bz - az);
         }
 
-        private static bool UpdateContacts(ChainState c)
-        {
-            bool changed = false;
-            for (int k = 0; k < c.ContactCount; k++)
-            {
-                int i = c.ContactList[k];
-                double outward = FreeNormalMotion(c, i);
-                if (c.ContactActive[i])
-                {
-                    if (outward > 0.0) { c.ContactActive[i] = false; changed = true; }
-                }
-                else if (-outward > c.ContactGap[i])
-                {
-                    c.ContactActive[i] = true;
-                    changed = true;
-                }
-            }
-            if (changed) DropContactsWithoutMobility(c);
-            return changed;
-        }
-
-        /// <summary>Normal motion (m, &gt; 0 outward) contact particle i would make without its contact under this solution's pull.</summary>
-        private static double FreeNormalMotion(ChainState c, int i)
-        {
-            SegmentForceSystem.Pull(c, i, out double px, out double py, out double pz);
-            double w = c.InverseMass[i];
-            return w * (c.ContactNX[i] * px + c.ContactNY[i] * py + c.ContactNZ[i] * pz);
-        }
-
         /// <summary>
-        /// Moves every particle by its mobility times this iteration's pull (recorded as its motion), accumulates the forces
-        /// and writes the scalar multipliers λ_j = −Λ_j·n_j the tension read-outs use. A held contact may still close its
-        /// gap; the normal motion it withheld is recorded as its normal load (the friction limit). Then the convergence test:
-        /// returns the largest length error over the rest length of a pulling segment — its second-order error
-        /// e = |Δ_⊥|²/(2l) from this iteration's relative motion Δ of its ends (see <see cref="NonlinearTolerance"/>), or a
-        /// released (tension-only) segment's stretch beyond its rest length — and sets <paramref name="unconverged"/> when
-        /// some active segment's error exceeds NonlinearTolerance·L, a released one is stretched by that much, or the energy
-        /// the errors above round-off leave in the segments is too large (<see cref="Mismatched"/>).
+        /// Moves every particle by its mobility times this iteration's pull (a held contact also by the displacement it
+        /// prescribes, exactly as the system assumed: <see cref="ChainContacts"/>), records it as the particle's motion,
+        /// accumulates the forces and writes the scalar multipliers λ_j = −Λ_j·n_j the tension read-outs use. Then the
+        /// convergence test: returns the largest length error over the rest length of a pulling segment — its second-order
+        /// error e = |Δ_⊥|²/(2l) from this iteration's relative motion Δ of its ends (see <see cref="NonlinearTolerance"/>),
+        /// or a released (tension-only) segment's stretch beyond its rest length — and sets <paramref name="unconverged"/>
+        /// when some active segment's error exceeds NonlinearTolerance·L, a released one is stretched by that much, or the
+        /// energy the errors above round-off leave in the segments is too large (<see cref="Mismatched"/>).
         /// </summary>
         private static double Apply(ChainState c, bool contacts, bool tensionOnly, out bool unconverged)
         {
             int s = c.SegmentCount;
-            float[] w = c.InverseMass;
-            double[] error = c.LengthError;
-            double qx = 0, qy = 0, qz = 0;
-            for (int i = 0; i <= s; i++)
+            // spans of exactly s entries (the loop bound) index without bounds checks; particle s is moved after the loop.
+            // Particle i is pulled by segment i (index i) and segment i − 1, whose values are carried from the pass before.
+            ReadOnlySpan<float> w = ChainState.Exactly(c.InverseMass, s), dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
+            ReadOnlySpan<float> length = ChainState.Exactly(c.Length, s), rest = ChainState.Exactly(c.RestLength, s);
+            Span<float> dx = ChainState.Exactly(c.DX, s), dy = ChainState.Exactly(c.DY, s), dz = ChainState.Exactly(c.DZ, s);
+            Span<double> motionX = ChainState.Exactly(c.MotionX, s), motionY = ChainState.Exactly(c.MotionY, s), motionZ = ChainState.Exactly(c.MotionZ, s);
+            Span<double> error = ChainState.Exactly(c.LengthError, s);
+            ReadOnlySpan<double> sx = ChainState.Exactly(c.StepX, s), sy = ChainState.Exactly(c.StepY, s), sz = ChainState.Exactly(c.StepZ, s);
+            ReadOnlySpan<bool> broken = ChainState.Exactly(c.Broken, s), active = ChainState.Exactly(c.Active, s);
+            double qx = 0, qy = 0, qz = 0, mx, my, mz;
+            // segment i − 1: its step (0 when broken or before the first particle), active flag, direction and length
+            double ax = 0, ay = 0, az = 0;
+            bool before = false;
+            float ex = 0f, ey = 0f, ez = 0f, el = 0f, er = 0f;
+            for (int i = 0; i < s; i++)
             {
-                SegmentForceSystem.Pull(c, i, out double px, out double py, out double pz);
-                double wi = w[i];
-                double mx = wi * px, my = wi * py, mz = wi * pz;
-                if (contacts && c.ContactActive[i])
-                {
-                    double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
-                    double normal = nx * mx + ny * my + nz * mz;
-                    double allowed = normal < 0.0 ? Math.Max(normal, -c.ContactGap[i]) : 0.0;
-                    double withheld = normal - allowed;
-                    mx -= nx * withheld; my -= ny * withheld; mz -= nz * withheld;
-                    if (normal < 0.0) c.ContactLoad[i] += (float)(-withheld);
-                }
-                c.DX[i] += (float)mx; c.DY[i] += (float)my; c.DZ[i] += (float)mz;
-                c.MotionX[i] = mx; c.MotionY[i] = my; c.MotionZ[i] = mz;
-                if (i > 0 && c.Active[i - 1])
-                {
-                    double ux = mx - qx, uy = my - qy, uz = mz - qz;
-                    double along = ux * c.DirX[i - 1] + uy * c.DirY[i - 1] + uz * c.DirZ[i - 1];
-                    double perp = ux * ux + uy * uy + uz * uz - along * along;
-                    error[i - 1] = perp / (2.0 * Math.Max(c.Length[i - 1], 1e-6 * c.RestLength[i - 1]));
-                }
+                double px = 0, py = 0, pz = 0;
+                if (!broken[i]) { px = sx[i]; py = sy[i]; pz = sz[i]; }
+                Move(c, i, w[i], px - ax, py - ay, pz - az, contacts, out mx, out my, out mz);
+                dx[i] += (float)mx; dy[i] += (float)my; dz[i] += (float)mz;
+                motionX[i] = mx; motionY[i] = my; motionZ[i] = mz;
+                if (before) error[i - 1] = LengthError(mx - qx, my - qy, mz - qz, ex, ey, ez, el, er);
                 qx = mx; qy = my; qz = mz;
+                if (broken[i]) { ax = 0; ay = 0; az = 0; } else { ax = sx[i]; ay = sy[i]; az = sz[i]; }
+                before = active[i]; ex = dirX[i]; ey = dirY[i]; ez = dirZ[i]; el = length[i]; er = rest[i];
             }
-            double[] fx = c.ForceX, fy = c.ForceY, fz = c.ForceZ, dx = c.StepX, dy = c.StepY, dz = c.StepZ;
+            Move(c, s, c.InverseMass[s], -ax, -ay, -az, contacts, out mx, out my, out mz);
+            c.DX[s] += (float)mx; c.DY[s] += (float)my; c.DZ[s] += (float)mz;
+            c.MotionX[s] = mx; c.MotionY[s] = my; c.MotionZ[s] = mz;
+            if (before) error[s - 1] = LengthError(mx - qx, my - qy, mz - qz, ex, ey, ez, el, er);
+            Span<double> fx = ChainState.Exactly(c.ForceX, s), fy = ChainState.Exactly(c.ForceY, s), fz = ChainState.Exactly(c.ForceZ, s);
+            Span<double> lambda = ChainState.Exactly(c.Lambda, s);
+            ReadOnlySpan<bool> assembled = ChainState.Exactly(c.Assembled, s);
             double floor = RoundOffFloor * c.Size, worst = 0.0;
             bool mismatched = false;
             unconverged = false;
             for (int j = 0; j < s; j++)
             {
-                fx[j] += dx[j]; fy[j] += dy[j]; fz[j] += dz[j];
-                double lambda = c.Active[j] ? -(fx[j] * c.DirX[j] + fy[j] * c.DirY[j] + fz[j] * c.DirZ[j]) : 0.0;
-                c.Lambda[j] = lambda;
+                double gx = fx[j] + sx[j], gy = fy[j] + sy[j], gz = fz[j] + sz[j];
+                fx[j] = gx; fy[j] = gy; fz[j] = gz;
+                double l = active[j] ? -(gx * dirX[j] + gy * dirY[j] + gz * dirZ[j]) : 0.0;
+                lambda[j] = l;
                 double e;
-                if (c.Active[j])
+                if (active[j])
                 {
                     e = error[j];
                     // a pushing (bilateral) segment's transverse response is damped buckling by design (see Assemble): it
                     // may add iterations, as before, but it is not a violent linearisation and keeps no energy test
-                    if (lambda > 0.0)
+                    if (l > 0.0)
                     {
-                        if (e > NonlinearTolerance * c.RestLength[j]) unconverged = true;
+                        if (e > NonlinearTolerance * rest[j]) unconverged = true;
                         continue;
                     }
                 }
-                else if (tensionOnly && c.Assembled[j])
+                else if (tensionOnly && assembled[j])
                 {
                     e = StretchBeyondRest(c, j);
                     error[j] = e;
                 }
                 else continue;
                 if (e <= floor) continue;
-                double rest = c.RestLength[j];
-                if (e > worst * rest) worst = e / rest;
-                if (e > NonlinearTolerance * rest) unconverged = true;
+                double r = rest[j];
+                if (e > worst * r) worst = e / r;
+                if (e > NonlinearTolerance * r) unconverged = true;
                 else mismatched = true;
             }
             if (!unconverged && mismatched) unconverged = Mismatched(c, tensionOnly, floor);
@@ -370,17 +405,57 @@ namespace HookeRope.Solver
             return mismatch > EnergyTolerance * reference;
         }
 
+        /// <summary>
+        /// Particle i's motion (m) under the pull (px, py, pz) (N·s²) with inverse mass wi: wi·pull, less the normal motion a
+        /// held contact withholds (which it records as the contact's normal load; the contact may still close its gap).
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static void Move(ChainState c, int i, double wi, double px, double py, double pz, bool contacts, out double mx, out double my, out double mz)
+        {
+            mx = wi * px; my = wi * py; mz = wi * pz;
+            if (contacts && c.ContactCollider[i] >= 0) MoveAtContact(c, i, px, py, pz, out mx, out my, out mz);
+        }
+
+        /// <summary>
+        /// Motion of a particle at a contact under the pull (px, py, pz): the held motion W_i·pull plus what the contact
+        /// prescribes (its shift: the gap allowance and friction), which <see cref="ChainContacts.Finish"/> records.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
+        private static void MoveAtContact(ChainState c, int i, double px, double py, double pz, out double mx, out double my, out double mz)
+        {
+            SegmentForceSystem.Mobility(c, i, px, py, pz, out mx, out my, out mz);
+            mx += c.ContactShiftX[i]; my += c.ContactShiftY[i]; mz += c.ContactShiftZ[i];
+            ChainContacts.Finish(c, i, px, py, pz, mx, my, mz);
+        }
+
+        /// <summary>
+        /// Second-order length error |Δ_⊥|²/(2l) (m) of a segment (direction e, length l, rest length L, m) whose ends moved
+        /// apart by (ux, uy, uz) in this iteration (see <see cref="NonlinearTolerance"/>).
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static double LengthError(double ux, double uy, double uz, float ex, float ey, float ez, float length, float rest)
+        {
+            double along = ux * ex + uy * ey + uz * ez;
+            double perp = ux * ux + uy * uy + uz * uz - along * along;
+            return perp / (2.0 * Math.Max(length, 1e-6 * rest));
+        }
+
         /// <summary>See <see cref="Iterate"/>: the estimated tension was below half the result where 4·T·h²·max(w)/l &gt; 1.</summary>
         private static bool EstimateTooLow(ChainState c, double invH2)
         {
             int s = c.SegmentCount;
+            // spans of exactly s entries (the loop bound): indexed without bounds checks
+            ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
+            ReadOnlySpan<double> lambda = ChainState.Exactly(c.Lambda, s), estimate = ChainState.Exactly(c.EstimatedTension, s);
+            ReadOnlySpan<float> wA = ChainState.Exactly(c.InverseMass, s), wB = ChainState.Shifted(c.InverseMass, s);
+            ReadOnlySpan<float> length = ChainState.Exactly(c.Length, s), rest = ChainState.Exactly(c.RestLength, s);
             for (int j = 0; j < s; j++)
             {
-                if (!c.Active[j]) continue;
-                double found = -c.Lambda[j] * invH2;
-                if (!(found > 2.0 * c.EstimatedTension[j])) continue;
-                double w = Math.Max(c.InverseMass[j], c.InverseMass[j + 1]);
-                if (4.0 * found * w > invH2 * Math.Max(c.Length[j], 1e-6 * c.RestLength[j])) return true;
+                if (!active[j]) continue;
+                double found = -lambda[j] * invH2;
+                if (!(found > 2.0 * estimate[j])) continue;
+                double w = Math.Max(wA[j], wB[j]);
+                if (4.0 * found * w > invH2 * Math.Max(length[j], 1e-6 * rest[j])) return true;
             }
             return false;
         }

@@ -1,5 +1,4 @@
 using System;
-using System.Diagnostics;
 
 namespace HookeRope.Solver
 {
@@ -11,51 +10,83 @@ namespace HookeRope.Solver
     {
         public static void Iterate(ChainState c, double h, double beta, bool tensionOnly)
         {
-            int s = c.SegmentCount;
             double invH2 = 1.0 / (h * h);
             double gamma = beta / h; // γ = α̃·β̃/h with β̃ = h²·β·k, k = 1/α
-            float[] w = c.InverseMass, rest = c.RestLength, compliance = c.Compliance;
-            float[] dx = c.DX, dy = c.DY, dz = c.DZ;
-            bool[] broken = c.Broken;
-            double[] lambda = c.Lambda;
-            // ChainState sizes every particle array from SegmentCount + 1 and every segment array from SegmentCount
-            Debug.Assert(w.Length == s + 1 && dx.Length == s + 1 && dy.Length == s + 1 && dz.Length == s + 1
-                && rest.Length == s && compliance.Length == s && broken.Length == s && lambda.Length == s, "ChainState arrays sized from SegmentCount");
+            int s = c.SegmentCount;
+            // every array as spans of exactly s entries, the segment's first particle (A, index j) and its second (B, index
+            // j + 1): spans of one known length, the loop bound, index without bounds checks (arrays indexed j + 1 would not)
+            ReadOnlySpan<float> wA = ChainState.Exactly(c.InverseMass, s), wB = ChainState.Shifted(c.InverseMass, s);
+            Span<float> dxA = ChainState.Exactly(c.DX, s), dyA = ChainState.Exactly(c.DY, s), dzA = ChainState.Exactly(c.DZ, s);
+            Span<float> dxB = ChainState.Shifted(c.DX, s), dyB = ChainState.Shifted(c.DY, s), dzB = ChainState.Shifted(c.DZ, s);
+            ReadOnlySpan<float> pxA = ChainState.Exactly(c.PrevX, s), pyA = ChainState.Exactly(c.PrevY, s), pzA = ChainState.Exactly(c.PrevZ, s);
+            ReadOnlySpan<float> pxB = ChainState.Shifted(c.PrevX, s), pyB = ChainState.Shifted(c.PrevY, s), pzB = ChainState.Shifted(c.PrevZ, s);
+            ReadOnlySpan<float> lxA = ChainState.Exactly(c.LowX, s), lyA = ChainState.Exactly(c.LowY, s), lzA = ChainState.Exactly(c.LowZ, s);
+            ReadOnlySpan<float> lxB = ChainState.Shifted(c.LowX, s), lyB = ChainState.Shifted(c.LowY, s), lzB = ChainState.Shifted(c.LowZ, s);
+            ReadOnlySpan<float> rest = ChainState.Exactly(c.RestLength, s), compliance = ChainState.Exactly(c.Compliance, s);
+            ReadOnlySpan<bool> broken = ChainState.Exactly(c.Broken, s);
+            Span<double> lambda = ChainState.Exactly(c.Lambda, s);
+            Span<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
             bool contacts = c.ContactCount > 0;
             SegmentPlasticity plastic = c.Plasticity;
-            float wa = w[0];
+            // particle a = j is carried from the projection before (its displacement as that projection left it): each
+            // particle's displacement is loaded and stored once per sweep
+            float wa = wA[0], dxa = dxA[0], dya = dyA[0], dza = dzA[0];
             for (int j = 0; j < s; j++)
             {
-                float wb = w[j + 1];
-                if (broken[j]) { wa = wb; continue; }
+                float wb = wB[j], dxb = dxB[j], dyb = dyB[j], dzb = dzB[j];
                 double alpha = compliance[j];
                 double wSum = (double)wa + wb;
-                if (wSum == 0.0 && alpha == 0.0) { wa = wb; continue; }
-                double len = c.Direction(j, out double ex, out double ey, out double ez, out float ddx, out float ddy, out float ddz);
-                float nx = (float)ex, ny = (float)ey, nz = (float)ez;
-                double alphaTilde = alpha * invH2;
-                double g = alpha > 0.0 ? gamma : 0.0;
-                double rel = g > 0.0 ? nx * ddx + ny * ddy + nz * ddz : 0.0;
-                double restJ = plastic == null ? rest[j] : plastic.Rest(j); // a plastic segment's force is measured from L_p
-                double numerator = -((double)len - restJ) - alphaTilde * lambda[j] - g * rel;
-                if (plastic != null) plastic.ChooseBranch(j, lambda[j], g, wSum, invH2, ref numerator, ref alphaTilde);
-                if (contacts && (c.ContactActive[j] || c.ContactActive[j + 1]))
+                if (!broken[j] && (wSum != 0.0 || alpha != 0.0))
                 {
-                    ProjectWithContacts(c, j, nx, ny, nz, numerator, g, alphaTilde, tensionOnly);
-                    wa = wb;
-                    continue;
+                    float ddx = dxb - dxa, ddy = dyb - dya, ddz = dzb - dza;
+                    double len = ChainState.Normalise(j, ChainState.Component(pxA[j], pxB[j], lxA[j], lxB[j], ddx), ChainState.Component(pyA[j], pyB[j], lyA[j], lyB[j], ddy),
+                        ChainState.Component(pzA[j], pzB[j], lzA[j], lzB[j], ddz), dirX, dirY, dirZ, out double ex, out double ey, out double ez);
+                    float nx = (float)ex, ny = (float)ey, nz = (float)ez;
+                    double alphaTilde = alpha * invH2;
+                    double g = alpha > 0.0 ? gamma : 0.0;
+                    double rel = g > 0.0 ? nx * ddx + ny * ddy + nz * ddz : 0.0;
+                    double restJ = plastic == null ? rest[j] : plastic.Rest(j); // a plastic segment's force is measured from L_p
+                    double numerator = -((double)len - restJ) - alphaTilde * lambda[j] - g * rel;
+                    if (plastic != null)
+                    {
+                        numerator = ChooseBranch(plastic, j, lambda[j], g, wSum, invH2, numerator, alphaTilde, out double branchCompliance);
+                        alphaTilde = branchCompliance;
+                    }
+                    if (contacts && (c.ContactActive[j] || c.ContactActive[j + 1]))
+                    {
+                        dxA[j] = dxa; dyA[j] = dya; dzA[j] = dza; dxB[j] = dxb; dyB[j] = dyb; dzB[j] = dzb;
+                        ProjectWithContacts(c, j, nx, ny, nz, numerator, g, alphaTilde, tensionOnly);
+                        dxa = dxA[j]; dya = dyA[j]; dza = dzA[j]; dxb = dxB[j]; dyb = dyB[j]; dzb = dzB[j];
+                    }
+                    else
+                    {
+                        double d = numerator / ((1.0 + g) * wSum + alphaTilde);
+                        d = ChainState.LimitToPulling(lambda[j], d, tensionOnly);
+                        if (d != 0.0)
+                        {
+                            lambda[j] += d;
+                            float ma = (float)(wa * d), mb = (float)(wb * d);
+                            dxa -= nx * ma; dya -= ny * ma; dza -= nz * ma;
+                            dxb += nx * mb; dyb += ny * mb; dzb += nz * mb;
+                        }
+                    }
                 }
-                double d = numerator / ((1.0 + g) * wSum + alphaTilde);
-                d = ChainState.LimitToPulling(lambda[j], d, tensionOnly);
-                if (d != 0.0)
-                {
-                    lambda[j] += d;
-                    float a = (float)(wa * d), b = (float)(wb * d);
-                    dx[j] -= nx * a; dy[j] -= ny * a; dz[j] -= nz * a;
-                    dx[j + 1] += nx * b; dy[j + 1] += ny * b; dz[j + 1] += nz * b;
-                }
-                wa = wb;
+                dxA[j] = dxa; dyA[j] = dya; dzA[j] = dza;
+                wa = wb; dxa = dxb; dya = dyb; dza = dzb;
             }
+            c.DX[s] = dxa; c.DY[s] = dya; c.DZ[s] = dza;
+        }
+
+        /// <summary>
+        /// <see cref="SegmentPlasticity.ChooseBranch"/> on copies (returns the numerator, the compliance α̃ in branchCompliance),
+        /// so the sweep's own numerator and compliance are not address-exposed: they stay in registers.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
+        private static double ChooseBranch(SegmentPlasticity plastic, int j, double lambda, double g, double wSum, double invH2, double numerator, double alphaTilde, out double branchCompliance)
+        {
+            plastic.ChooseBranch(j, lambda, g, wSum, invH2, ref numerator, ref alphaTilde);
+            branchCompliance = alphaTilde;
+            return numerator;
         }
 
         /// <summary>

@@ -32,12 +32,16 @@ namespace HookeRope.Solver
         /// </summary>
         private bool Violent()
         {
-            float[] length = chain.Length, rest = chain.RestLength, x = chain.PrevX, y = chain.PrevY, z = chain.PrevZ;
-            bool[] broken = chain.Broken;
-            for (int j = 0; j < chain.SegmentCount; j++)
+            int s = chain.SegmentCount;
+            // spans of exactly s entries (the loop bound), B for particle j + 1: indexed without bounds checks
+            ReadOnlySpan<float> length = ChainState.Exactly(chain.Length, s), rest = ChainState.Exactly(chain.RestLength, s);
+            ReadOnlySpan<float> xA = ChainState.Exactly(chain.PrevX, s), yA = ChainState.Exactly(chain.PrevY, s), zA = ChainState.Exactly(chain.PrevZ, s);
+            ReadOnlySpan<float> xB = ChainState.Shifted(chain.PrevX, s), yB = ChainState.Shifted(chain.PrevY, s), zB = ChainState.Shifted(chain.PrevZ, s);
+            ReadOnlySpan<bool> broken = ChainState.Exactly(chain.Broken, s);
+            for (int j = 0; j < s; j++)
             {
                 if (broken[j]) continue;
-                float dx = x[j + 1] - x[j], dy = y[j + 1] - y[j], dz = z[j + 1] - z[j];
+                float dx = xB[j] - xA[j], dy = yB[j] - yA[j], dz = zB[j] - zA[j];
                 float start = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
                 if (MathF.Abs(length[j] - start) > ViolentStrain * rest[j]) return true;
             }
@@ -62,42 +66,48 @@ namespace HookeRope.Solver
         private void PredictSecondOrder(TimeIntegrator scheme, double h, Float3 g)
         {
             int n = chain.ParticleCount;
-            float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
-            float[] vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ, ux = chain.PrevVelX, uy = chain.PrevVelY, uz = chain.PrevVelZ;
-            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
-            double[] bx = chain.BaseVelX, by = chain.BaseVelY, bz = chain.BaseVelZ;
-            float[] qx = chain.PredictedDX, qy = chain.PredictedDY, qz = chain.PredictedDZ;
-            bool[] kinematic = chain.Kinematic;
+            // spans of exactly n entries (the loop bound): indexed without bounds checks
+            ReadOnlySpan<float> x = ChainState.Exactly(chain.X, n), y = ChainState.Exactly(chain.Y, n), z = ChainState.Exactly(chain.Z, n);
+            Span<float> px = ChainState.Exactly(chain.PrevX, n), py = ChainState.Exactly(chain.PrevY, n), pz = ChainState.Exactly(chain.PrevZ, n);
+            ReadOnlySpan<float> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
+            Span<float> ux = ChainState.Exactly(chain.PrevVelX, n), uy = ChainState.Exactly(chain.PrevVelY, n), uz = ChainState.Exactly(chain.PrevVelZ, n);
+            Span<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
+            Span<double> bx = ChainState.Exactly(chain.BaseVelX, n), by = ChainState.Exactly(chain.BaseVelY, n), bz = ChainState.Exactly(chain.BaseVelZ, n);
+            Span<float> qx = ChainState.Exactly(chain.PredictedDX, n), qy = ChainState.Exactly(chain.PredictedDY, n), qz = ChainState.Exactly(chain.PredictedDZ, n);
+            ReadOnlySpan<bool> kinematic = ChainState.Exactly(chain.Kinematic, n);
             bool bdf2 = scheme == TimeIntegrator.Bdf2;
             double invH = 1.0 / h, h2 = h * h, c = 4.0 * h2 / 9.0, e = 2.0 * h / 3.0;
+            double gx = g.X, gy = g.Y, gz = g.Z;
             float size = 0f;
             for (int i = 0; i < n; i++)
             {
                 px[i] = x[i]; py[i] = y[i]; pz[i] = z[i];
                 size = Larger(size, x[i], y[i], z[i]);
                 double wx = vx[i], wy = vy[i], wz = vz[i];
+                float ox, oy, oz;
                 if (kinematic[i])
                 {
-                    dx[i] = 0f; dy[i] = 0f; dz[i] = 0f;
+                    ox = 0f; oy = 0f; oz = 0f;
                     bx[i] = 0.0; by[i] = 0.0; bz[i] = 0.0;
                 }
                 else if (bdf2)
                 {
                     double mx = (4.0 * wx - ux[i]) / 3.0, my = (4.0 * wy - uy[i]) / 3.0, mz = (4.0 * wz - uz[i]) / 3.0;
-                    dx[i] = (float)(dx[i] / 3.0 + e * mx + c * g.X);
-                    dy[i] = (float)(dy[i] / 3.0 + e * my + c * g.Y);
-                    dz[i] = (float)(dz[i] / 3.0 + e * mz + c * g.Z);
-                    bx[i] = mx + e * g.X - dx[i] * invH;
-                    by[i] = my + e * g.Y - dy[i] * invH;
-                    bz[i] = mz + e * g.Z - dz[i] * invH;
+                    ox = (float)(dx[i] / 3.0 + e * mx + c * gx);
+                    oy = (float)(dy[i] / 3.0 + e * my + c * gy);
+                    oz = (float)(dz[i] / 3.0 + e * mz + c * gz);
+                    bx[i] = mx + e * gx - ox * invH;
+                    by[i] = my + e * gy - oy * invH;
+                    bz[i] = mz + e * gz - oz * invH;
                 }
                 else
                 {
-                    dx[i] = (float)(h * wx + h2 * g.X); dy[i] = (float)(h * wy + h2 * g.Y); dz[i] = (float)(h * wz + h2 * g.Z);
+                    ox = (float)(h * wx + h2 * gx); oy = (float)(h * wy + h2 * gy); oz = (float)(h * wz + h2 * gz);
                     bx[i] = 0.0; by[i] = 0.0; bz[i] = 0.0;
                 }
+                dx[i] = ox; dy[i] = oy; dz[i] = oz;
                 ux[i] = (float)wx; uy[i] = (float)wy; uz[i] = (float)wz;
-                qx[i] = dx[i]; qy[i] = dy[i]; qz[i] = dz[i];
+                qx[i] = ox; qy[i] = oy; qz[i] = oz;
             }
             chain.Size = size;
             Array.Clear(chain.SolveDX, 0, n);
@@ -136,12 +146,14 @@ namespace HookeRope.Solver
         private void UpdateVelocitiesSecondOrder(TimeIntegrator scheme, double h, bool violent)
         {
             int n = chain.ParticleCount;
-            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
-            double[] bx = chain.BaseVelX, by = chain.BaseVelY, bz = chain.BaseVelZ;
-            double[] sx = chain.SolveDX, sy = chain.SolveDY, sz = chain.SolveDZ;
-            float[] wx = chain.PrevVelX, wy = chain.PrevVelY, wz = chain.PrevVelZ;
-            float[] qx = chain.PredictedDX, qy = chain.PredictedDY, qz = chain.PredictedDZ;
-            bool[] kinematic = chain.Kinematic;
+            // spans of exactly n entries (the loop bound): indexed without bounds checks
+            ReadOnlySpan<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
+            ReadOnlySpan<double> bx = ChainState.Exactly(chain.BaseVelX, n), by = ChainState.Exactly(chain.BaseVelY, n), bz = ChainState.Exactly(chain.BaseVelZ, n);
+            ReadOnlySpan<double> sx = ChainState.Exactly(chain.SolveDX, n), sy = ChainState.Exactly(chain.SolveDY, n), sz = ChainState.Exactly(chain.SolveDZ, n);
+            Span<float> wx = ChainState.Exactly(chain.PrevVelX, n), wy = ChainState.Exactly(chain.PrevVelY, n), wz = ChainState.Exactly(chain.PrevVelZ, n);
+            ReadOnlySpan<float> qx = ChainState.Exactly(chain.PredictedDX, n), qy = ChainState.Exactly(chain.PredictedDY, n), qz = ChainState.Exactly(chain.PredictedDZ, n);
+            Span<float> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
+            ReadOnlySpan<bool> kinematic = ChainState.Exactly(chain.Kinematic, n);
             double invH = 1.0 / h, k = scheme == TimeIntegrator.Bdf2 ? 0.5 * invH : 0.0;
             for (int i = 0; i < n; i++)
             {
@@ -157,8 +169,9 @@ namespace HookeRope.Solver
                 {
                     wx[i] += (float)(cx * invH); wy[i] += (float)(cy * invH); wz[i] += (float)(cz * invH);
                 }
-                CommitParticle(i, (float)(bx[i] + dx[i] * invH + k * sx[i]), (float)(by[i] + dy[i] * invH + k * sy[i]), (float)(bz[i] + dz[i] * invH + k * sz[i]));
+                vx[i] = (float)(bx[i] + dx[i] * invH + k * sx[i]); vy[i] = (float)(by[i] + dy[i] * invH + k * sy[i]); vz[i] = (float)(bz[i] + dz[i] * invH + k * sz[i]);
             }
+            CommitPositions();
             // a violent substep (see ViolentStrain) restarts the history: the next substep is backward Euler
             historyValid = !violent;
             historyStep = h;

@@ -54,7 +54,12 @@ namespace HookeRope.Solver
             {
                 float t = (float)(k + 1) / substeps;
                 TimeIntegrator scheme = SubstepScheme(integrator, hd);
+                // friction in contact: backward Euler (see HeldWithFriction)
+                if (scheme == TimeIntegrator.Bdf2 && exact && chain.HeldWithFriction) scheme = TimeIntegrator.BackwardEuler;
                 double hEff = EffectiveStep(scheme, hd);
+                chain.Bdf2Substep = scheme == TimeIntegrator.Bdf2;
+                chain.Substep = hd;
+                chain.ContactImpulseScale = (hEff / hd) * (hEff / hd);
                 PredictPhase(t, hostDeltaTime, secondOrder, scheme, h, hd, g);
                 if (drag) PredictDrag(secondOrder, scheme == TimeIntegrator.Bdf2, h, hd, hEff, g);
                 // push the prediction out of the colliders and find the contacts the chain solve folds in
@@ -100,14 +105,16 @@ namespace HookeRope.Solver
             if (secondOrder) PredictSecondOrder(scheme, hd, g);
             else Predict(h, g);
             MovePins(t);
-            Array.Clear(chain.Lambda, 0, chain.SegmentCount);
-            if (pinCount > 0) Array.Clear(pinLambda, 0, pinCount * 3);
+            // cleared in loops: for the short arrays of a rope a call to Array.Clear costs more than the stores
+            Span<double> lambda = ChainState.Exactly(chain.Lambda, chain.SegmentCount);
+            for (int j = 0; j < lambda.Length; j++) lambda[j] = 0.0;
+            for (int b = 0; b < pinCount * 3; b++) pinLambda[b] = 0.0;
         }
 
         /// <summary>Phase 2 (and the end of each iteration): push the particles out of the colliders; the pass decides contact detection and friction.</summary>
         private void CollidePhase(float h, ContactPass pass)
         {
-            if (colliders.Count > 0) colliders.Project(chain, h, pass);
+            if (colliders.Count > 0) colliders.Project(chain, h, pass, settings.Solver == ConstraintSolverKind.ExactChain);
         }
 
         /// <summary>
@@ -164,6 +171,9 @@ namespace HookeRope.Solver
                 if (softPins) ReleaseCompliantPins(hEff, t);
                 CollidePhase(h, it == total - 1 ? ContactPass.LastIteration : ContactPass.BetweenIterations);
             }
+            // the exact solve's friction for the next substep, from this one's contact impulses
+            if (exact && chain.ContactCount > 0) ChainContacts.DecideFriction(chain);
+            else chain.HeldWithFriction = false;
             if (!exact) return false;
             reportIterations += total;
             if (unconverged) reportUnconverged++;
@@ -184,20 +194,23 @@ namespace HookeRope.Solver
 
         private void Predict(float h, Float3 g)
         {
-            int n = chain.ParticleCount;
             float gx = g.X * h, gy = g.Y * h, gz = g.Z * h;
-            float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
-            float[] vx = chain.VelX, vy = chain.VelY, vz = chain.VelZ;
-            bool[] kinematic = chain.Kinematic;
-            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
+            int n = chain.ParticleCount;
+            // spans of exactly n entries (the loop bound): indexed without bounds checks
+            ReadOnlySpan<float> x = ChainState.Exactly(chain.X, n), y = ChainState.Exactly(chain.Y, n), z = ChainState.Exactly(chain.Z, n);
+            Span<float> px = ChainState.Exactly(chain.PrevX, n), py = ChainState.Exactly(chain.PrevY, n), pz = ChainState.Exactly(chain.PrevZ, n);
+            Span<float> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
+            Span<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
+            ReadOnlySpan<bool> kinematic = ChainState.Exactly(chain.Kinematic, n);
             float size = 0f;
             for (int i = 0; i < n; i++)
             {
                 px[i] = x[i]; py[i] = y[i]; pz[i] = z[i];
                 size = Larger(size, x[i], y[i], z[i]);
                 if (kinematic[i]) { dx[i] = 0f; dy[i] = 0f; dz[i] = 0f; continue; }
-                vx[i] += gx; vy[i] += gy; vz[i] += gz;
-                dx[i] = vx[i] * h; dy[i] = vy[i] * h; dz[i] = vz[i] * h;
+                float ux = vx[i] + gx, uy = vy[i] + gy, uz = vz[i] + gz;
+                vx[i] = ux; vy[i] = uy; vz[i] = uz;
+                dx[i] = ux * h; dy[i] = uy * h; dz[i] = uz * h;
             }
             chain.Size = size;
         }
@@ -300,36 +313,51 @@ namespace HookeRope.Solver
 
         private void UpdateVelocities(float h)
         {
-            int n = chain.ParticleCount;
             float invH = 1f / h;
-            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ;
-            for (int i = 0; i < n; i++) CommitParticle(i, dx[i] * invH, dy[i] * invH, dz[i] * invH);
+            int n = chain.ParticleCount;
+            ReadOnlySpan<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
+            Span<float> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
+            for (int i = 0; i < n; i++)
+            {
+                vx[i] = dx[i] * invH; vy[i] = dy[i] * invH; vz[i] = dz[i] * invH;
+            }
+            CommitPositions();
         }
 
         /// <summary>
-        /// Ends particle i's substep at x = x_prev + Low + d with velocity (ux, uy, uz) m/s. The sum is formed in double and
-        /// split into the float position and its new remainder Low, so no part of d is rounded away. Never lets a non-finite value into
-        /// the state: then the particle falls back to its last good position, at rest, with no displacement.
+        /// Ends every particle's substep at x = x_prev + Low + d, with the velocity the integrator just wrote (m/s). The sum is
+        /// formed in double and split into the float position and its new remainder Low, so no part of d is rounded away. Never
+        /// lets a non-finite value into the state: then the particle falls back to its last good position, at rest, with no
+        /// displacement (<see cref="RestoreParticle"/>).
         /// </summary>
-        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
-        private void CommitParticle(int i, float ux, float uy, float uz)
+        private void CommitPositions()
         {
-            float[] x = chain.X, y = chain.Y, z = chain.Z, px = chain.PrevX, py = chain.PrevY, pz = chain.PrevZ;
-            float[] dx = chain.DX, dy = chain.DY, dz = chain.DZ, lx = chain.LowX, ly = chain.LowY, lz = chain.LowZ;
-            double ex = (double)px[i] + lx[i] + dx[i], ey = (double)py[i] + ly[i] + dy[i], ez = (double)pz[i] + lz[i] + dz[i];
-            float nx = (float)ex, ny = (float)ey, nz = (float)ez;
-            if (float.IsFinite(ux + uy + uz) && float.IsFinite(nx + ny + nz))
+            int n = chain.ParticleCount;
+            // spans of exactly n entries (the loop bound): indexed without bounds checks
+            Span<float> x = ChainState.Exactly(chain.X, n), y = ChainState.Exactly(chain.Y, n), z = ChainState.Exactly(chain.Z, n);
+            ReadOnlySpan<float> px = ChainState.Exactly(chain.PrevX, n), py = ChainState.Exactly(chain.PrevY, n), pz = ChainState.Exactly(chain.PrevZ, n);
+            ReadOnlySpan<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
+            Span<float> lx = ChainState.Exactly(chain.LowX, n), ly = ChainState.Exactly(chain.LowY, n), lz = ChainState.Exactly(chain.LowZ, n);
+            ReadOnlySpan<float> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
+            for (int i = 0; i < n; i++)
             {
-                x[i] = nx; y[i] = ny; z[i] = nz;
-                lx[i] = (float)(ex - nx); ly[i] = (float)(ey - ny); lz[i] = (float)(ez - nz);
-                chain.VelX[i] = ux; chain.VelY[i] = uy; chain.VelZ[i] = uz;
+                double ex = (double)px[i] + lx[i] + dx[i], ey = (double)py[i] + ly[i] + dy[i], ez = (double)pz[i] + lz[i] + dz[i];
+                float nx = (float)ex, ny = (float)ey, nz = (float)ez;
+                if (float.IsFinite(vx[i] + vy[i] + vz[i]) && float.IsFinite(nx + ny + nz))
+                {
+                    x[i] = nx; y[i] = ny; z[i] = nz;
+                    lx[i] = (float)(ex - nx); ly[i] = (float)(ey - ny); lz[i] = (float)(ez - nz);
+                }
+                else RestoreParticle(i);
             }
-            else
-            {
-                x[i] = px[i]; y[i] = py[i]; z[i] = pz[i];
-                chain.VelX[i] = 0f; chain.VelY[i] = 0f; chain.VelZ[i] = 0f;
-                dx[i] = 0f; dy[i] = 0f; dz[i] = 0f;
-            }
+        }
+
+        /// <summary>A non-finite substep end of particle i: back to its last good position, at rest, with no displacement.</summary>
+        private void RestoreParticle(int i)
+        {
+            chain.X[i] = chain.PrevX[i]; chain.Y[i] = chain.PrevY[i]; chain.Z[i] = chain.PrevZ[i];
+            chain.VelX[i] = 0f; chain.VelY[i] = 0f; chain.VelZ[i] = 0f;
+            chain.DX[i] = 0f; chain.DY[i] = 0f; chain.DZ[i] = 0f;
         }
 
         /// <summary>
@@ -340,18 +368,37 @@ namespace HookeRope.Solver
         {
             double invH2 = 1.0 / (h * h);
             int s = chain.SegmentCount;
-            double[] lambda = chain.Lambda;
-            float[] tension = chain.Tension, peak = chain.PeakTension, sum = chain.MeanTension;
-            bool[] broken = chain.Broken;
+            // spans of exactly s entries (the loop bound): indexed without bounds checks
+            ReadOnlySpan<double> lambda = ChainState.Exactly(chain.Lambda, s);
+            Span<float> tension = ChainState.Exactly(chain.Tension, s), peak = ChainState.Exactly(chain.PeakTension, s), sum = ChainState.Exactly(chain.MeanTension, s);
+            ReadOnlySpan<bool> broken = ChainState.Exactly(chain.Broken, s);
+            // a broken segment reads 0 (skipped while none is broken); the host step's largest and summed substep tension
+            // restart on its first substep
+            bool intact = chain.BrokenCount == 0;
+            if (firstSubstep)
+            {
+                for (int j = 0; j < s; j++)
+                {
+                    float value = Tension(intact || !broken[j] ? lambda[j] : 0.0, invH2);
+                    tension[j] = value; peak[j] = value; sum[j] = value;
+                }
+                return;
+            }
             for (int j = 0; j < s; j++)
             {
-                double t = broken[j] ? 0.0 : -lambda[j] * invH2;
-                float value = (float)t;
-                value = float.IsFinite(value) ? value : float.MaxValue;
+                float value = Tension(intact || !broken[j] ? lambda[j] : 0.0, invH2);
                 tension[j] = value;
-                if (firstSubstep) { peak[j] = value; sum[j] = value; }
-                else { if (value > peak[j]) peak[j] = value; sum[j] += value; }
+                if (value > peak[j]) peak[j] = value;
+                sum[j] += value;
             }
+        }
+
+        /// <summary>Tension T = −λ/h² (N, float; non-finite reads float.MaxValue) of a multiplier λ (N·s²), invH2 = 1/h².</summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static float Tension(double lambda, double invH2)
+        {
+            float value = (float)(-lambda * invH2);
+            return float.IsFinite(value) ? value : float.MaxValue;
         }
 
         /// <summary>Raises each load's <see cref="GetLoadPeakForce"/> to this substep's |M·(Δv/h − g)| (invH = 1/h in 1/s).</summary>

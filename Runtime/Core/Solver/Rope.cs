@@ -299,10 +299,19 @@ namespace HookeRope.Solver
 
         private void RefreshLengths()
         {
-            for (int j = 0; j < chain.SegmentCount; j++)
+            int s = chain.SegmentCount;
+            // ChainState.Span on spans of exactly s entries (A: particle j, B: particle j + 1), indexed without bounds checks
+            ReadOnlySpan<float> xA = ChainState.Exactly(chain.X, s), yA = ChainState.Exactly(chain.Y, s), zA = ChainState.Exactly(chain.Z, s);
+            ReadOnlySpan<float> xB = ChainState.Shifted(chain.X, s), yB = ChainState.Shifted(chain.Y, s), zB = ChainState.Shifted(chain.Z, s);
+            ReadOnlySpan<float> lxA = ChainState.Exactly(chain.LowX, s), lyA = ChainState.Exactly(chain.LowY, s), lzA = ChainState.Exactly(chain.LowZ, s);
+            ReadOnlySpan<float> lxB = ChainState.Shifted(chain.LowX, s), lyB = ChainState.Shifted(chain.LowY, s), lzB = ChainState.Shifted(chain.LowZ, s);
+            Span<float> length = ChainState.Exactly(chain.Length, s);
+            for (int j = 0; j < s; j++)
             {
-                chain.Span(j, out double dx, out double dy, out double dz);
-                chain.Length[j] = (float)Math.Sqrt(dx * dx + dy * dy + dz * dz);
+                double dx = ((double)xB[j] - xA[j]) + ((double)lxB[j] - lxA[j]);
+                double dy = ((double)yB[j] - yA[j]) + ((double)lyB[j] - lyA[j]);
+                double dz = ((double)zB[j] - zA[j]) + ((double)lzB[j] - lzA[j]);
+                length[j] = (float)Math.Sqrt(dx * dx + dy * dy + dz * dz);
             }
         }
 

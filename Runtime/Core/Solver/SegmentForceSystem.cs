@@ -6,7 +6,9 @@ namespace HookeRope.Solver
     /// <summary>
     /// The block-tridiagonal system of <see cref="ExactChainSolver"/> in the segment force changes δΛ_j (3-vectors,
     /// N·s²): row j reads −W_j δΛ_{j−1} + (W_j + W_{j+1} + α̃_j n nᵀ + τ_j (I − n nᵀ)) δΛ_j − W_{j+1} δΛ_{j+1} = R_j, with
-    /// W_i = w_i I, or w_i (I − c cᵀ) for a particle held on a surface of normal c. A released or invalid row is
+    /// W_i = w_i I, or w_t (I − c cᵀ) for a particle held on a surface of normal c (w_t its tangential mobility under friction,
+    /// see <see cref="ChainContacts"/>; 0 when it is stuck, which decouples its two segments: the elimination passes nothing
+    /// through it). A released or invalid row is
     /// δΛ_j = −Λ_j (its force returns to zero). Solved by block Thomas elimination in double precision: the 3×3 pivots
     /// are symmetric positive definite (each is a compliance plus a mobility), so no pivoting is needed; where the
     /// couplings are isotropic (no contact) the elimination costs one 3×3 inverse and a few scaled adds per segment.
@@ -17,10 +19,14 @@ namespace HookeRope.Solver
         public static void Solve(ChainState c)
         {
             int s = c.SegmentCount;
-            float[] w = c.InverseMass;
-            double[] gi = c.PivotInverse, yx = c.ReducedX, yy = c.ReducedY, yz = c.ReducedZ;
-            double[] rx = c.ResidualX, ry = c.ResidualY, rz = c.ResidualZ;
-            bool[] active = c.Active;
+            // spans of exactly s entries (the loop bound) index without bounds checks; wB[j] is particle j + 1's
+            ReadOnlySpan<float> wA = ChainState.Exactly(c.InverseMass, s), wB = ChainState.Shifted(c.InverseMass, s);
+            ReadOnlySpan<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
+            ReadOnlySpan<double> axial = ChainState.Exactly(c.AxialCompliance, s), transverse = ChainState.Exactly(c.TransverseCompliance, s);
+            Span<double> gi = ChainState.Exactly(c.PivotInverse, 6 * s);
+            Span<double> yx = ChainState.Exactly(c.ReducedX, s), yy = ChainState.Exactly(c.ReducedY, s), yz = ChainState.Exactly(c.ReducedZ, s);
+            ReadOnlySpan<double> rx = ChainState.Exactly(c.ResidualX, s), ry = ChainState.Exactly(c.ResidualY, s), rz = ChainState.Exactly(c.ResidualZ, s);
+            ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
             bool contacts = c.ContactCount > 0;
             // forward sweep: S_j = A_j − L_j S_{j−1}⁻¹ U_{j−1}, y_j = R_j − L_j S_{j−1}⁻¹ y_{j−1}
             double gxx = 1, gxy = 0, gxz = 0, gyy = 1, gyz = 0, gzz = 1, px = 0, py = 0, pz = 0;
@@ -28,84 +34,107 @@ namespace HookeRope.Solver
             for (int j = 0; j < s; j++)
             {
                 double sxx, sxy, sxz, syy, syz, szz, bx, by, bz;
-                if (!active[j])
+                bool rowActive = active[j];
+                if (!rowActive)
                 {
                     sxx = 1; sxy = 0; sxz = 0; syy = 1; syz = 0; szz = 1;
                     bx = -c.ForceX[j]; by = -c.ForceY[j]; bz = -c.ForceZ[j];
                 }
                 else
                 {
-                    Diagonal(c, j, out sxx, out sxy, out sxz, out syy, out syz, out szz);
+                    Block(dirX[j], dirY[j], dirZ[j], transverse[j], axial[j], (double)wA[j] + wB[j], out sxx, out sxy, out sxz, out syy, out syz, out szz);
                     bx = rx[j]; by = ry[j]; bz = rz[j];
-                    if (j > 0)
+                    if (contacts)
                     {
-                        if (contacts && c.ContactActive[j])
+                        // the contact terms work on a copy: the row's own locals are never passed by reference, so they stay
+                        // in registers on a rope without contacts
+                        var row = new Row { XX = sxx, XY = sxy, XZ = sxz, YY = syy, YZ = syz, ZZ = szz, X = bx, Y = by, Z = bz };
+                        SubtractHeldNormal(c, j, ref row.XX, ref row.XY, ref row.XZ, ref row.YY, ref row.YZ, ref row.ZZ);
+                        SubtractHeldNormal(c, j + 1, ref row.XX, ref row.XY, ref row.XZ, ref row.YY, ref row.YZ, ref row.ZZ);
+                        if (j > 0 && c.ContactActive[j])
                             EliminateHeld(c, j, previousActive, gxx, gxy, gxz, gyy, gyz, gzz, px, py, pz,
-                                ref sxx, ref sxy, ref sxz, ref syy, ref syz, ref szz, ref bx, ref by, ref bz);
-                        else
+                                ref row.XX, ref row.XY, ref row.XZ, ref row.YY, ref row.YZ, ref row.ZZ, ref row.X, ref row.Y, ref row.Z);
+                        sxx = row.XX; sxy = row.XY; sxz = row.XZ; syy = row.YY; syz = row.YZ; szz = row.ZZ; bx = row.X; by = row.Y; bz = row.Z;
+                    }
+                    if (j > 0 && !(contacts && c.ContactActive[j]))
+                    {
+                        // elimination through a free particle j (isotropic coupling −w_j I)
+                        double wj = wA[j];
+                        if (previousActive)
                         {
-                            double wj = w[j];
-                            if (previousActive)
-                            {
-                                double k = wj * wj;
-                                sxx -= k * gxx; sxy -= k * gxy; sxz -= k * gxz; syy -= k * gyy; syz -= k * gyz; szz -= k * gzz;
-                            }
-                            bx += wj * (gxx * px + gxy * py + gxz * pz);
-                            by += wj * (gxy * px + gyy * py + gyz * pz);
-                            bz += wj * (gxz * px + gyz * py + gzz * pz);
+                            double k = wj * wj;
+                            sxx -= k * gxx; sxy -= k * gxy; sxz -= k * gxz; syy -= k * gyy; syz -= k * gyz; szz -= k * gzz;
                         }
+                        bx += wj * (gxx * px + gxy * py + gxz * pz);
+                        by += wj * (gxy * px + gyy * py + gyz * pz);
+                        bz += wj * (gxz * px + gyz * py + gzz * pz);
                     }
                 }
                 Invert(sxx, sxy, sxz, syy, syz, szz, out gxx, out gxy, out gxz, out gyy, out gyz, out gzz);
-                int b = 6 * j;
-                gi[b] = gxx; gi[b + 1] = gxy; gi[b + 2] = gxz; gi[b + 3] = gyy; gi[b + 4] = gyz; gi[b + 5] = gzz;
+                Span<double> pivot = gi.Slice(6 * j, 6);
+                pivot[0] = gxx; pivot[1] = gxy; pivot[2] = gxz; pivot[3] = gyy; pivot[4] = gyz; pivot[5] = gzz;
                 yx[j] = bx; yy[j] = by; yz[j] = bz;
                 px = bx; py = by; pz = bz;
-                previousActive = active[j];
+                previousActive = rowActive;
             }
             // back substitution: δ_j = S_j⁻¹ (y_j − U_j δ_{j+1}), U_j = −W_{j+1} on an active row
-            double[] dx = c.StepX, dy = c.StepY, dz = c.StepZ;
+            Span<double> dx = ChainState.Exactly(c.StepX, s), dy = ChainState.Exactly(c.StepY, s), dz = ChainState.Exactly(c.StepZ, s);
             double nx = 0, ny = 0, nz = 0;
             for (int j = s - 1; j >= 0; j--)
             {
                 double vx = yx[j], vy = yy[j], vz = yz[j];
                 if (active[j] && j + 1 < s)
                 {
-                    Mobility(c, j + 1, nx, ny, nz, out double mx, out double my, out double mz);
+                    double mx, my, mz;
+                    if (contacts) Mobility(c, j + 1, nx, ny, nz, out mx, out my, out mz);
+                    else
+                    {
+                        double w = wB[j];
+                        mx = w * nx; my = w * ny; mz = w * nz;
+                    }
                     vx += mx; vy += my; vz += mz;
                 }
-                int b = 6 * j;
-                double ox = gi[b] * vx + gi[b + 1] * vy + gi[b + 2] * vz;
-                double oy = gi[b + 1] * vx + gi[b + 3] * vy + gi[b + 4] * vz;
-                double oz = gi[b + 2] * vx + gi[b + 4] * vy + gi[b + 5] * vz;
+                ReadOnlySpan<double> pivot = gi.Slice(6 * j, 6);
+                double ox = pivot[0] * vx + pivot[1] * vy + pivot[2] * vz;
+                double oy = pivot[1] * vx + pivot[3] * vy + pivot[4] * vz;
+                double oz = pivot[2] * vx + pivot[4] * vy + pivot[5] * vz;
                 dx[j] = ox; dy[j] = oy; dz[j] = oz;
                 nx = ox; ny = oy; nz = oz;
             }
         }
 
-        /// <summary>A_j = W_j + W_{j+1} + α̃ n nᵀ + τ (I − n nᵀ) (n normalised in double: τ may be 10⁶ times the rest).</summary>
-        private static void Diagonal(ChainState c, int j, out double xx, out double xy, out double xz, out double yy, out double yz, out double zz)
+        /// <summary>A row's symmetric block (XX … ZZ) and right-hand side (X, Y, Z) while the contact terms change it.</summary>
+        private struct Row
         {
-            double nx = c.DirX[j], ny = c.DirY[j], nz = c.DirZ[j];
-            double unit = 1.0 / Math.Sqrt(nx * nx + ny * ny + nz * nz);
-            nx *= unit; ny *= unit; nz *= unit;
-            double tau = c.TransverseCompliance[j], d = c.AxialCompliance[j] - tau;
-            double m = (double)c.InverseMass[j] + c.InverseMass[j + 1] + tau;
-            xx = m + d * nx * nx; yy = m + d * ny * ny; zz = m + d * nz * nz;
-            xy = d * nx * ny; xz = d * nx * nz; yz = d * ny * nz;
-            if (c.ContactCount > 0)
-            {
-                SubtractHeldNormal(c, j, ref xx, ref xy, ref xz, ref yy, ref yz, ref zz);
-                SubtractHeldNormal(c, j + 1, ref xx, ref xy, ref xz, ref yy, ref yz, ref zz);
-            }
+            public double XX, XY, XZ, YY, YZ, ZZ, X, Y, Z;
         }
 
-        /// <summary>W_i = w (I − c cᵀ) for a held contact: subtracts w c cᵀ from a diagonal block.</summary>
+        /// <summary>
+        /// A_j = W_j + W_{j+1} + α̃ n nᵀ + τ (I − n nᵀ) for free ends (mobility = w_j + w_{j+1}, 1/kg; τ the transverse and
+        /// axial the axial compliance); n (the stored float direction) is normalised in double: τ may be 10⁶ times the rest.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void Block(double nx, double ny, double nz, double tau, double axial, double mobility,
+            out double xx, out double xy, out double xz, out double yy, out double yz, out double zz)
+        {
+            double unit = 1.0 / Math.Sqrt(nx * nx + ny * ny + nz * nz);
+            nx *= unit; ny *= unit; nz *= unit;
+            double d = axial - tau;
+            double m = mobility + tau;
+            xx = m + d * nx * nx; yy = m + d * ny * ny; zz = m + d * nz * nz;
+            xy = d * nx * ny; xz = d * nx * nz; yz = d * ny * nz;
+        }
+
+        /// <summary>
+        /// W_i = w_t (I − c cᵀ) for a held contact (w_t its tangential mobility: w without friction, 0 stuck): replaces w I in a
+        /// diagonal block, subtracting (w − w_t) I + w_t c cᵀ.
+        /// </summary>
         private static void SubtractHeldNormal(ChainState c, int i, ref double xx, ref double xy, ref double xz, ref double yy, ref double yz, ref double zz)
         {
             if (!c.ContactActive[i]) return;
-            double w = c.InverseMass[i], nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
-            xx -= w * nx * nx; xy -= w * nx * ny; xz -= w * nx * nz; yy -= w * ny * ny; yz -= w * ny * nz; zz -= w * nz * nz;
+            double wt = c.ContactMobility[i], d = c.InverseMass[i] - wt;
+            double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
+            xx -= d + wt * nx * nx; xy -= wt * nx * ny; xz -= wt * nx * nz; yy -= d + wt * ny * ny; yz -= wt * ny * nz; zz -= d + wt * nz * nz;
         }
 
         /// <summary>The elimination step through a held contact particle j: S −= W G W (when the row before is active), y += W G y_{j−1}.</summary>
@@ -140,13 +169,14 @@ namespace HookeRope.Solver
             rz = gxz * vx + gyz * vy + gzz * vz;
         }
 
-        /// <summary>r = W_i v (1/kg · N·s² = m): w v, or w (v − c (c·v)) with a held contact.</summary>
+        /// <summary>r = W_i v (1/kg · N·s² = m): w v, or w_t (v − c (c·v)) with a held contact (w_t its tangential mobility, 0 stuck).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static void Mobility(ChainState c, int i, double vx, double vy, double vz, out double rx, out double ry, out double rz)
         {
             double w = c.InverseMass[i];
             if (c.ContactCount > 0 && c.ContactActive[i])
             {
+                w = c.ContactMobility[i];
                 double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
                 double along = nx * vx + ny * vy + nz * vz;
                 vx -= nx * along; vy -= ny * along; vz -= nz * along;

@@ -8,8 +8,10 @@ namespace HookeRope.World
     /// (<see cref="RopeWorld.FillMeshes"/>, <see cref="RopeWorld.StepAndFillMeshes"/>) and the host uploads them
     /// afterwards on its own thread (copy-out). Positions come either from the rope itself (rope-local frame, the
     /// default) or from caller-owned arrays written before the pass (copy-in, e.g. interpolated and in a renderer's
-    /// local frame, see <see cref="UseCallerPositions(float[], float[], float[], float)"/>). The buffers grow when the topology needs more (a break,
-    /// or a rope bending more than it ever did needs more rings), to twice what it needs, so a pass allocates only then and rarely.
+    /// local frame, see <see cref="UseCallerPositions(float[], float[], float[], float)"/>). The buffers are made at the
+    /// first fill for the most the mesh can need (<see cref="RopeSimulation.GetVertexCapacity"/>,
+    /// <see cref="RopeSimulation.GetIndexCapacity"/>: the adaptive rings' ring budget), so no later pass allocates
+    /// whatever ring budget the rope's motion asks for; only a break (or new mesh topology settings) makes them again, once.
     /// </summary>
     public sealed class RopeMeshSlot
     {
@@ -87,10 +89,10 @@ namespace HookeRope.World
         /// <summary>Fills the buffers from <paramref name="simulation"/> (called by the world on a worker thread).</summary>
         internal void Fill(RopeSimulation simulation)
         {
-            int vertexCount = simulation.GetVertexCount(), indexCount = simulation.GetIndexCount();
-            // room to spare: an adaptive ring budget grows in steps as the rope bends more, and each growth here would allocate
-            if (Vertices.Length < vertexCount) Vertices = new TubeVertex[Math.Max(vertexCount, 2 * Vertices.Length)];
-            if (Indices.Length < indexCount) Indices = new int[Math.Max(indexCount, 2 * Indices.Length)];
+            // made once for the ring budget's most (constant until a break): the adaptive budgets step within it
+            int vertexCapacity = simulation.GetVertexCapacity(), indexCapacity = simulation.GetIndexCapacity();
+            if (Vertices.Length < vertexCapacity) Vertices = new TubeVertex[vertexCapacity];
+            if (Indices.Length < indexCapacity) Indices = new int[indexCapacity];
             Update = callerX == null ? simulation.FillMesh(Vertices, Indices)
                 : hasFrame ? simulation.FillMesh(callerX, callerY, callerZ, Vertices, Indices, radiusScale, frame)
                 : simulation.FillMesh(callerX, callerY, callerZ, Vertices, Indices, radiusScale);

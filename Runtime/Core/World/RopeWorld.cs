@@ -10,7 +10,8 @@ namespace HookeRope.World
     /// is worker 0; <see cref="WorkerCount"/> − 1 long-lived background threads do the rest). Each pass splits the
     /// ropes into contiguous blocks of about equal cost, one per worker; every rope is stepped by exactly one thread
     /// with the same code, so the results are the same bits for any worker count. Allocation-free per pass after
-    /// warm-up (a rope whose mesh grows reallocates its slot once). An exception thrown by a rope is caught, the other
+    /// warm-up (a slot's buffers are made at its first fill for the rope's ring budget, <see cref="RopeSimulation.GetVertexCapacity"/>,
+    /// and again only after a break). An exception thrown by a rope is caught, the other
     /// ropes still finish the pass, and the caller gets an <see cref="InvalidOperationException"/> naming the lowest
     /// failing rope index with the rope's exception inside; the world stays usable. Ropes must not share state (a
     /// rope, its settings object, caller position arrays) and the host must not touch them while a pass runs. One

@@ -74,7 +74,7 @@ namespace HookeRope.Tests.Components
 
         static void AssertMeshFinite(Mesh mesh)
         {
-            var vertices = mesh.vertices;
+            var vertices = MeshInUse.Vertices(mesh);
             Assert.That(vertices.Length, Is.GreaterThan(0));
             for (int v = 0; v < vertices.Length; v++)
                 Assert.That(float.IsFinite(vertices[v].x) && float.IsFinite(vertices[v].y) && float.IsFinite(vertices[v].z), Is.True, "vertex " + v);

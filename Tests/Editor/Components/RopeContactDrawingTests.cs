@@ -27,7 +27,7 @@ namespace HookeRope.Tests.Components
         {
             var rope = DrapedRope(out var renderer);
             Assert.That(renderer.Render(1f), Is.True);
-            var vertices = renderer.Mesh.vertices;
+            var vertices = MeshInUse.Vertices(renderer.Mesh);
             float deepest = float.PositiveInfinity;
             for (int v = 0; v < vertices.Length; v++)
                 deepest = Mathf_Min(deepest, OutsideBar(renderer.transform.TransformPoint(vertices[v])));

@@ -52,7 +52,7 @@ namespace HookeRope.Tests.Components
         {
             var mesh = renderer.GetComponent<MeshFilter>().sharedMesh;
             Assert.That(mesh, Is.Not.Null, "the MeshFilter holds the generated mesh (pickable in the Scene view)");
-            var vertices = mesh.vertices;
+            var vertices = MeshInUse.Vertices(mesh);
             Assert.That(vertices.Length, Is.GreaterThan(0));
             for (int v = 0; v < vertices.Length; v++) vertices[v] = renderer.transform.TransformPoint(vertices[v]);
             return vertices;

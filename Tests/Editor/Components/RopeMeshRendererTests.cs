@@ -38,7 +38,7 @@ namespace HookeRope.Tests.Components
 
         static void AssertMeshFollowsRope(ElasticRope rope, Mesh mesh)
         {
-            var vertices = mesh.vertices;
+            var vertices = MeshInUse.Vertices(mesh);
             Assert.That(vertices.Length, Is.GreaterThan(0));
             var bounds = mesh.bounds;
             Vector3 min = bounds.center - bounds.size * 0.5f, max = bounds.center + bounds.size * 0.5f;
@@ -142,6 +142,42 @@ namespace HookeRope.Tests.Components
             Assert.That(() => { renderer.Render(0.5f); }, Is.Not.AllocatingGCMemory(), "broken");
         }
 
+        /// <summary>
+        /// Issue 18, "0 bytes per update": the mesh's buffers hold the ring budget's most from the first frame, so while the
+        /// swung rope's adaptive ring budget steps the vertex buffer keeps its size (the capacity) and only the sub-meshes'
+        /// counts move, and no frame allocates.
+        /// </summary>
+        [Test]
+        public void ARingBudgetStepsWithinTheMeshBuffersAndNoFrameAllocates()
+        {
+            var (rope, renderer, grip) = Build();
+            rope.Radius = 0.002f;
+            rope.Rebuild();
+            renderer.Render(1f);
+            for (int frame = 0; frame < 3; frame++) { rope.Simulate(0.01f); renderer.Render(1f); }
+            var mesh = renderer.Mesh;
+            int capacity = rope.Simulation.GetVertexCapacity();
+            var inUse = new int[120];
+            var sizes = new int[120];
+            Assert.That(() =>
+            {
+                for (int frame = 0; frame < inUse.Length; frame++)
+                {
+                    grip.position = new Vector3(0.3f + 0.25f * System.MathF.Sin(0.2f * frame), 2f, 0.1f * System.MathF.Sin(0.3f * frame));
+                    rope.Simulate(0.01f);
+                    renderer.Render(1f);
+                    inUse[frame] = mesh.GetSubMesh(0).vertexCount;
+                    sizes[frame] = mesh.vertexCount;
+                }
+            }, Is.Not.AllocatingGCMemory(), "120 frames of a swung rope");
+            int steps = 0;
+            for (int frame = 1; frame < inUse.Length; frame++) if (inUse[frame] != inUse[frame - 1]) steps++;
+            TestContext.WriteLine("capacity " + capacity + " vertices; in use " + inUse[0] + " … " + inUse[inUse.Length - 1] + ", " + steps + " budget steps");
+            Assert.That(steps, Is.GreaterThan(0), "the ring budget stepped during the frames");
+            foreach (int size in sizes) Assert.That(size, Is.EqualTo(capacity), "the vertex buffer keeps the capacity");
+            foreach (int used in inUse) Assert.That(used, Is.LessThanOrEqualTo(capacity));
+        }
+
         [TestCase(false)]
         [TestCase(true)]
         public void UploadedVerticesAreTheCoreMesh(bool broken)
@@ -173,7 +209,10 @@ namespace HookeRope.Tests.Components
             var indices = new int[simulation.GetIndexCount()];
             var update = simulation.FillMesh(x, y, z, vertices, indices, radiusScale: 0.5f);
 
-            var uploaded = renderer.Mesh.vertices;
+            // the vertex buffer holds the ring budget's most (sized once), the sub-meshes the vertices in use
+            Assert.That(renderer.Mesh.vertexCount, Is.EqualTo(simulation.GetVertexCapacity()), "vertex buffer = capacity");
+            Assert.That(renderer.Mesh.GetSubMesh(0).vertexCount, Is.EqualTo(update.VertexCount), "vertices in use");
+            var uploaded = MeshInUse.Vertices(renderer.Mesh);
             Assert.That(uploaded.Length, Is.EqualTo(update.VertexCount));
             for (int v = 0; v < update.VertexCount; v++)
             {
@@ -190,10 +229,6 @@ namespace HookeRope.Tests.Components
         (ElasticRope Rope, RopeMeshRenderer Renderer, Mesh Mesh) BrokenAndDrawn()
         {
             var (rope, renderer, grip) = Build();
-            // damped, so that the recoiling halves do not pile up in slack folds tighter than the 2 cm radius (as an undamped
-            // elastic cord does with BDF2, which keeps its recoil energy): there any tube passes through itself, and these
-            // tests are about the winding of a drawable tube
-            rope.Damping = 0.02f;
             BreakIt(rope, grip);
             Assert.That(renderer.Render(1f), Is.True);
             Assert.That(renderer.Mesh.subMeshCount, Is.EqualTo(2));
@@ -245,7 +280,13 @@ namespace HookeRope.Tests.Components
             Assert.That(leastOutward, Is.GreaterThan(0.5f), "front faces point away from the strand: back-face culling keeps the outside");
         }
 
-        /// <summary>The tube and caps of a broken rope use the strands' winding: front faces outward.</summary>
+        /// <summary>
+        /// The tube and caps of a broken rope use the strands' winding: front faces outward. Undamped (issue 17): a step after
+        /// the break the upper piece has recoiled into 14 cm (10 segments of 6 cm rest, particles 0.3 mm apart in places,
+        /// two of them passed their neighbours): the tube there closes into fold tips and cones whose smooth vertex normals
+        /// lean off their thin triangles (measured: more than 26° on 27 % of the area, least cosine 0.086), but no triangle is
+        /// wound against its normals and no vertex is lit from behind on any triangle around it.
+        /// </summary>
         [Test]
         public void TubeAndCapsWindOutwardLikeTheBurrStrands()
         {
@@ -254,18 +295,34 @@ namespace HookeRope.Tests.Components
             var normals = mesh.normals;
             var tube = mesh.GetTriangles(0);
             Assert.That(tube.Length, Is.GreaterThan(0));
-            float leastAlignment = float.PositiveInfinity;
+            double leastAlignment = double.PositiveInfinity, leastSummed = double.PositiveInfinity, area = 0.0, leaning = 0.0;
             int degenerate = 0;
             for (int k = 0; k < tube.Length; k += 3)
             {
-                var winding = WindingNormal(positions, tube, k);
-                if (winding.sqrMagnitude == 0f) { degenerate++; continue; }
-                var unit = winding.normalized;
-                for (int c = 0; c < 3; c++) leastAlignment = System.Math.Min(leastAlignment, Vector3.Dot(unit, normals[tube[k + c]]));
+                // the winding normal in double (Vector3.normalized returns zero below a length of 1e-5, a 5 mm² triangle)
+                Vector3 a = positions[tube[k]], b = positions[tube[k + 1]], c = positions[tube[k + 2]];
+                double ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, wx = c.x - a.x, wy = c.y - a.y, wz = c.z - a.z;
+                double nx = uy * wz - uz * wy, ny = uz * wx - ux * wz, nz = ux * wy - uy * wx;
+                double length = System.Math.Sqrt(nx * nx + ny * ny + nz * nz);
+                if (length == 0.0) { degenerate++; continue; }
+                nx /= length; ny /= length; nz /= length;
+                area += 0.5 * length;
+                double least = double.PositiveInfinity, sx = 0.0, sy = 0.0, sz = 0.0;
+                for (int q = 0; q < 3; q++)
+                {
+                    Vector3 n = normals[tube[k + q]];
+                    least = System.Math.Min(least, nx * n.x + ny * n.y + nz * n.z);
+                    sx += n.x; sy += n.y; sz += n.z;
+                }
+                leastAlignment = System.Math.Min(leastAlignment, least);
+                leastSummed = System.Math.Min(leastSummed, (nx * sx + ny * sy + nz * sz) / System.Math.Sqrt(sx * sx + sy * sy + sz * sz));
+                if (least < 0.9) leaning += 0.5 * length;
             }
-            TestContext.WriteLine("tube and cap triangles: " + tube.Length / 3 + ", least normal·winding " + leastAlignment);
+            TestContext.WriteLine("tube and cap triangles: " + tube.Length / 3 + ", least normal·winding " + leastAlignment + ", least mean normal·winding " + leastSummed +
+                                  ", share of the area with a normal leaning over 26° " + leaning / area);
             Assert.That(degenerate, Is.EqualTo(0));
-            Assert.That(leastAlignment, Is.GreaterThan(0.9f), "one winding convention for the whole mesh: front faces outward");
+            Assert.That(leastSummed, Is.GreaterThan(0.0), "one winding convention for the whole mesh: front faces outward");
+            Assert.That(leastAlignment, Is.GreaterThan(0.0), "no vertex lit from behind on a triangle it belongs to");
         }
     }
 }

@@ -254,10 +254,10 @@ namespace HookeRope.Tests.Core.Fracture
         [Test]
         public void TheBrokenEndsAreDrawnDeterministicallyAndWithoutAllocating()
         {
-            // two steps after the break: by the third, BDF2 (which keeps the recoil energy) has the slack halves pile up in
-            // folds tighter than the radius, where any tube passes through itself (a tube-mesh matter, not the break's)
-            var a = BrokenCord(16, 2);
-            var b = BrokenCord(16, 2);
+            // six steps after the break, the slack halves piled up in folds tighter than the radius (BDF2 keeps the recoil
+            // energy), and the ten steps of the allocation count fold and unfold them: fold tips and all (issue 17)
+            var a = BrokenCord(16, 6);
+            var b = BrokenCord(16, 6);
             var va = new TubeVertex[a.Simulation.GetVertexCount()];
             var ia = new int[a.Simulation.GetIndexCount()];
             var vb = new TubeVertex[b.Simulation.GetVertexCount()];
@@ -275,9 +275,48 @@ namespace HookeRope.Tests.Core.Fracture
             Assert.That(bad, Is.EqualTo(0), "tube, dangling halves and caps stay closed and consistently wound");
             Assert.That(v - e + f, Is.EqualTo(4), "two closed pieces");
             Assert.That(MeshChecks.AllFiniteAndUnit(va, ua.VertexCount), Is.True);
-            Assert.That(LeastWinding(va, ia, ua.TubeIndexCount), Is.GreaterThan(0.9), "one winding convention: front faces outward");
+            Assert.That(MeshChecks.Inverted(va, ia, 0, ua.TubeIndexCount, out _), Is.EqualTo(0), "one winding convention: front faces outward");
+            Assert.That(MeshChecks.LeastNormalCosine(va, ia, 0, ua.TubeIndexCount, 1e-6 * R * R), Is.GreaterThan(0.0), "no vertex lit from behind");
             long bytes = SteadyStateAllocation.Bytes(() => { a.Advance(); a.Simulation.FillMesh(va, ia); }, 10);
             Assert.That(bytes, Is.EqualTo(0), "stepping and drawing a broken rope allocates nothing");
+        }
+
+        [TestCase(8)]
+        [TestCase(16)]
+        [TestCase(32)]
+        public void TheBrokenCordIsDrawnCorrectlyThreeToTenStepsAfterTheBreak(int radial)
+        {
+            // issue 17: from the third host step the recoiling halves (BDF2 keeps the recoil energy) fold back on
+            // themselves tighter than the radius; the tube there closes into fold tips and cones instead of passing through
+            // itself: no triangle wound against its normals, no two consecutive rings crossing, every piece still closed
+            var cord = BrokenCord(radial, 3);
+            var sim = cord.Simulation;
+            var broken = new bool[21];
+            int inverted = 0, crossings = 0, tips = 0;
+            double least = double.MaxValue, leastClearance = double.MaxValue, leastWinding = double.MaxValue;
+            for (int after = 3; after <= 10; after++)
+            {
+                if (after > 3) cord.Advance();
+                var vertices = new TubeVertex[sim.GetVertexCount()];
+                var indices = new int[sim.GetIndexCount()];
+                var update = sim.FillMesh(vertices, indices);
+                sim.Rope.BrokenSegments.CopyTo(broken);
+                MeshChecks.Topology(vertices, update.VertexCount, indices, 0, update.TubeIndexCount, out int v, out int e, out int f, out int bad, out int directions);
+                Assert.That(bad + directions, Is.EqualTo(0), after + " steps after: tube, dangling halves and caps closed and wound one way");
+                Assert.That(v - e + f, Is.EqualTo(4), after + " steps after: two closed pieces");
+                Assert.That(MeshChecks.AllFiniteAndUnit(vertices, update.VertexCount), Is.True);
+                inverted += MeshChecks.Inverted(vertices, indices, 0, update.TubeIndexCount, out _);
+                crossings += MeshChecks.RingCrossings(sim.Mesh.Builder, broken, out double clearance, out int stepTips);
+                tips = Math.Max(tips, stepTips);
+                leastClearance = Math.Min(leastClearance, clearance);
+                least = Math.Min(least, MeshChecks.LeastNormalCosine(vertices, indices, 0, update.TubeIndexCount, 1e-6 * R * R));
+                leastWinding = Math.Min(leastWinding, LeastWinding(vertices, indices, update.TubeIndexCount));
+            }
+            TestContext.WriteLine($"{radial} radial, steps 3-10 after the break: inverted {inverted}, ring pairs crossing {crossings} (least clearance {leastClearance / R:E3} R), " +
+                                  $"up to {tips} fold-tip rings, least normal·winding {least:F4} (all triangles: {leastWinding:F4})");
+            Assert.That(inverted, Is.EqualTo(0), "no triangle wound against its own normals");
+            Assert.That(crossings, Is.EqualTo(0), "consecutive rings never cross");
+            Assert.That(least, Is.GreaterThan(0.0), "no vertex lit from behind on a triangle around it");
         }
 
         /// <summary>Smallest cosine between a tube or cap triangle's winding normal and its vertex normals.</summary>

@@ -107,9 +107,11 @@ namespace HookeRope.Tests.Core.Geometry
         [TestCaseSource(nameof(BentShapes))]
         public void DrawnSurfaceStaysWithinTheBoundOfTheSmoothTube(string name, int radial)
         {
+            // the placement's own bound, without the ring budget (a 32-sided tight helix wants more than the budget holds:
+            // the package's builder then redistributes the rings, TheRingBudgetKeepsTheBoundWhereItHoldsTheDemand)
             RopeShape shape = Shape(name);
             int n = shape.Segments;
-            var builder = Adaptive(radial, n);
+            var builder = TubeMeshBuilder.Adaptive(new TubeMeshSettings { RadialSegments = radial }, n, R, null, AdaptiveRings.MaxRingsPerSegment);
             var update = BuildAdaptive(builder, shape, R, new bool[n], out var vertices, out _);
             double polygon = R * (1.0 - Math.Cos(Math.PI / radial));
             double bound = polygon + builder.ToleranceFraction * R;
@@ -122,6 +124,36 @@ namespace HookeRope.Tests.Core.Geometry
                                   $"largest deviation {adaptive / R:F4} R (smooth→drawn {inward / R:F4} R, drawn→smooth {outward / R:F4} R), " +
                                   $"bound {bound / R:F4} R (polygon {polygon / R:F4} R); 4 rings per segment: {uniform.Layout.RingCount} rings, {four / R:F4} R");
             Assert.That(adaptive, Is.LessThanOrEqualTo(bound * 1.0001 + 1e-7));
+        }
+
+        [TestCaseSource(nameof(BentShapes))]
+        public void TheRingBudgetKeepsTheBoundWhereItHoldsTheDemand(string name, int radial)
+        {
+            // with the package's ring budget: the same bits as without it where the budget holds the demand; where it does
+            // not, the rings are redistributed within the cap and the deviation grows by at most half the bound
+            RopeShape shape = Shape(name);
+            int n = shape.Segments;
+            var uncapped = TubeMeshBuilder.Adaptive(new TubeMeshSettings { RadialSegments = radial }, n, R, null, AdaptiveRings.MaxRingsPerSegment);
+            var reference = BuildAdaptive(uncapped, shape, R, new bool[n], out var referenceVertices, out var referenceIndices);
+            var builder = Adaptive(radial, n);
+            var update = BuildAdaptive(builder, shape, R, new bool[n], out var vertices, out var indices);
+            double bound = R * (1.0 - Math.Cos(Math.PI / radial)) + builder.ToleranceFraction * R;
+            double deviation = TubeDeviation.Largest(shape, R, builder.Layout, radial, vertices, out _, out _);
+            TestContext.WriteLine($"{name}, {radial} sides: budget hit {builder.BudgetHit}, {builder.Layout.RingCount} rings of {builder.MostRings} " +
+                                  $"(without the budget {uncapped.Layout.RingCount}), deviation {deviation / bound:F3} of the bound");
+            if (builder.BudgetHit)
+            {
+                Assert.That(builder.Layout.RingCount, Is.EqualTo(builder.MostRings), "the budget stays at the cap");
+                Assert.That(deviation, Is.LessThanOrEqualTo(1.5 * bound));
+                return;
+            }
+            Assert.That(update.VertexCount, Is.EqualTo(reference.VertexCount));
+            int differing = 0;
+            for (int v = 0; v < update.VertexCount; v++)
+                if (BitConverter.SingleToInt32Bits(vertices[v].PX) != BitConverter.SingleToInt32Bits(referenceVertices[v].PX)
+                    || BitConverter.SingleToInt32Bits(vertices[v].NY) != BitConverter.SingleToInt32Bits(referenceVertices[v].NY)) differing++;
+            for (int k = 0; k < update.IndexCount; k++) if (indices[k] != referenceIndices[k]) differing++;
+            Assert.That(differing, Is.EqualTo(0), "words that differ from the mesh without the budget");
         }
 
         /// <summary>The goal lanyard at rest: 65 particles at equal arc length on the catenary of a 2 m rope hung 1.8 m apart.</summary>

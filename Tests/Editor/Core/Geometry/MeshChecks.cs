@@ -91,6 +91,92 @@ namespace HookeRope.Tests.Core.Geometry
             }
         }
 
+        /// <summary>
+        /// Triangles of indices[start, start + count) wound against their own vertex normals (inverted: the winding normal
+        /// Cross(b − a, c − a) has a negative dot product with the sum of the three vertex normals; a GPU culls them where
+        /// they should show and lights them from behind), and their summed area (m²). Zero-area triangles are never inverted.
+        /// </summary>
+        public static int Inverted(TubeVertex[] vertices, int[] indices, int start, int count, out double area)
+        {
+            int inverted = 0;
+            area = 0.0;
+            for (int t = start; t < start + count; t += 3)
+            {
+                TubeVertex a = vertices[indices[t]], b = vertices[indices[t + 1]], c = vertices[indices[t + 2]];
+                double ux = b.PX - a.PX, uy = b.PY - a.PY, uz = b.PZ - a.PZ;
+                double wx = c.PX - a.PX, wy = c.PY - a.PY, wz = c.PZ - a.PZ;
+                double nx = uy * wz - uz * wy, ny = uz * wx - ux * wz, nz = ux * wy - uy * wx;
+                double along = nx * ((double)a.NX + b.NX + c.NX) + ny * ((double)a.NY + b.NY + c.NY) + nz * ((double)a.NZ + b.NZ + c.NZ);
+                if (!(along < 0.0)) continue;
+                inverted++;
+                area += 0.5 * Math.Sqrt(nx * nx + ny * ny + nz * nz);
+            }
+            return inverted;
+        }
+
+        /// <summary>
+        /// Smallest cosine between a vertex normal and the unit winding normal of a triangle of indices[start, start + count)
+        /// that uses it, over triangles of area above <paramref name="minimumArea"/> (m²): 1 for a flat-shaded mesh, &gt; 0
+        /// when no vertex is lit from behind on any triangle around it.
+        /// </summary>
+        public static double LeastNormalCosine(TubeVertex[] vertices, int[] indices, int start, int count, double minimumArea)
+        {
+            double least = double.MaxValue;
+            for (int t = start; t < start + count; t += 3)
+            {
+                TubeVertex a = vertices[indices[t]], b = vertices[indices[t + 1]], c = vertices[indices[t + 2]];
+                double ux = b.PX - a.PX, uy = b.PY - a.PY, uz = b.PZ - a.PZ;
+                double wx = c.PX - a.PX, wy = c.PY - a.PY, wz = c.PZ - a.PZ;
+                double nx = uy * wz - uz * wy, ny = uz * wx - ux * wz, nz = ux * wy - uy * wx;
+                double length = Math.Sqrt(nx * nx + ny * ny + nz * nz);
+                if (!(0.5 * length > minimumArea)) continue;
+                nx /= length; ny /= length; nz /= length;
+                least = Math.Min(least, nx * a.NX + ny * a.NY + nz * a.NZ);
+                least = Math.Min(least, nx * b.NX + ny * b.NY + nz * b.NZ);
+                least = Math.Min(least, nx * c.NX + ny * c.NY + nz * c.NZ);
+            }
+            return least;
+        }
+
+        /// <summary>
+        /// Consecutive rings of one piece of the builder's last build whose circles cross each other's planes: ring k (centre
+        /// c_k, drawn radius r_k, plane normal t_k) lies in front of ring k − 1's plane iff (c_k − c_{k−1})·t_{k−1} ≥ r_k sin θ
+        /// (θ the angle between the tangents), and ring k − 1 behind ring k's iff (c_k − c_{k−1})·t_k ≥ r_{k−1} sin θ.
+        /// <paramref name="leastClearance"/> is the smallest of the two slacks (m) over all pairs; <paramref name="tips"/> counts
+        /// the rings drawn as fold tips.
+        /// </summary>
+        public static int RingCrossings(TubeMeshBuilder builder, bool[] broken, out double leastClearance, out int tips)
+        {
+            RingLayout layout = builder.Layout;
+            int n = layout.SegmentCount, segment = 0, crossings = 0;
+            leastClearance = double.MaxValue;
+            tips = 0;
+            ReadOnlySpan<bool> flags = broken ?? Array.Empty<bool>();
+            while (RopePieces.Next(flags, n, ref segment, out int a, out int b))
+            {
+                int first = layout.FirstRing(a), last = layout.FirstRing(b);
+                for (int k = first; k <= last; k++)
+                {
+                    builder.DrawnRing(k, out _, out _, out _, out bool tip);
+                    if (tip) tips++;
+                }
+                for (int k = first + 1; k <= last; k++)
+                {
+                    builder.DrawnRing(k - 1, out var c0, out var t0, out float r0, out _);
+                    builder.DrawnRing(k, out var c1, out var t1, out float r1, out _);
+                    double sx = c1.X - c0.X, sy = c1.Y - c0.Y, sz = c1.Z - c0.Z;
+                    double ax = (double)t0.Y * t1.Z - (double)t0.Z * t1.Y, ay = (double)t0.Z * t1.X - (double)t0.X * t1.Z, az = (double)t0.X * t1.Y - (double)t0.Y * t1.X;
+                    double sine = Math.Sqrt(ax * ax + ay * ay + az * az);
+                    double ahead = sx * t0.X + sy * t0.Y + sz * t0.Z - r1 * sine;
+                    double behind = sx * t1.X + sy * t1.Y + sz * t1.Z - r0 * sine;
+                    double clearance = Math.Min(ahead, behind);
+                    leastClearance = Math.Min(leastClearance, clearance);
+                    if (!(clearance > 0.0)) crossings++;
+                }
+            }
+            return crossings;
+        }
+
         /// <summary>True when every float of the first <paramref name="count"/> vertices is finite and every normal and tangent is unit length within 1e-3.</summary>
         public static bool AllFiniteAndUnit(TubeVertex[] vertices, int count)
         {

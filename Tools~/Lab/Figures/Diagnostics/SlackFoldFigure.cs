@@ -10,9 +10,10 @@ using static HookeRope.Lab.Figures.Paper.PaperFigures;
 namespace HookeRope.Lab.Figures.Diagnostics
 {
     /// <summary>
-    /// A known mesh problem made visible (issue 17): the slack pieces of the built-in "fracture" cord, a few host steps
-    /// after the break, fold tighter than the tube radius (BDF2 keeps the recoil's energy), and the tube mesh passes
-    /// through itself. Two rows (the built-in cord without gravity, the same cord with gravity), one panel per step after
+    /// Slack folds made visible (issue 17): the slack pieces of the built-in "fracture" cord, a few host steps after the
+    /// break, fold tighter than the tube radius (BDF2 keeps the recoil's energy). The tube mesh used to pass through itself
+    /// there; since the fold repair (rings that never cross, fold tips, the Hermite tangent clamp) it closes into cones and
+    /// the census is 0 at every step. Two rows (the built-in cord without gravity, the same cord with gravity), one panel per step after
     /// the break, each drawn as a GPU with back-face culling draws it, the tube triangles wound against their own normals
     /// in red, centred on the folds of the piece on the fixed end. Numbers: per panel the inverted triangles and their
     /// area, the shortest segment against its rest length and the sharpest turn between segments; per row the inverted
@@ -134,7 +135,7 @@ namespace HookeRope.Lab.Figures.Diagnostics
                 Tag(figure, 8, row * rowHeight + panel + Px(30, scale), F("{0}: inverted tube triangles at steps 0–{1} after the break: {2}", RowNames[row], CensusSteps, string.Join(", ", counts)));
             }
             Caption(figure, "Slack folds after a break (fracture scenario, BDF2, 90 Hz × 4): a GPU's view (back faces culled), tube triangles wound\n" +
-                            "against their normals in red, around the folds of the fixed piece; areas in R² (rest radius 10 mm). Known issue (issue 17).");
+                            "against their normals in red, around the folds of the fixed piece; areas in R² (rest radius 10 mm). Fold tips (issue 17).");
             return figure;
         }
     }

@@ -1,0 +1,387 @@
+using System;
+using HookeRope.Fracture;
+using HookeRope.Mathematics;
+
+namespace HookeRope.Geometry
+{
+    /// <summary>
+    /// Rings that never cross (issues 17 and 18): a slack rope folds tighter than its radius (the recoiling pieces of a
+    /// broken cord, a stretched cord let go), and rings drawn at full radius there pass through each other, so the tube
+    /// between them turns inside out (triangles wound against their own normals: holes and dark patches on a GPU that culls
+    /// back faces). Ring k's circle (centre c_k, radius r_k, plane normal t_k) lies wholly in front of ring k − 1's plane
+    /// iff s·t_{k−1} ≥ r_k sin θ, with s = c_k − c_{k−1} and sin θ = |t_{k−1} × t_k|, and ring k − 1 lies behind ring k's
+    /// plane iff s·t_k ≥ r_{k−1} sin θ; with both, the strip between them is wound outward for any turn θ &lt; 180°.
+    /// <list type="bullet">
+    /// <item><b>Fold tips</b> (<see cref="RepairFold"/>, while the frames are transported): where the curve goes backwards
+    /// against a ring (a particle passed its neighbour: the advance s·t of one ring past the other is too small for even a
+    /// ring of <see cref="FoldRadius"/> of the radius) no radius keeps the two rings apart, and a strip turning by about
+    /// 180° between two rings on one line is always half inside out. The second ring's tangent is turned back to at most
+    /// <see cref="TipTurnLimit"/> from the first's (in the plane of the turn) and its centre moved by the least distance that
+    /// puts each ring in front of the other's plane with room for <see cref="TipRoom"/> tip radii; both rings are drawn at
+    /// <see cref="FoldRadius"/> of their radius, with radial normals. The move is a few tip radii (0.1 R), the tip a point.</item>
+    /// <item><b>Crossing limit</b> (<see cref="ComputeRingLimits"/>): every other ring is drawn at most
+    /// <see cref="CrossingMargin"/> of both bounds above.</item>
+    /// <item><b>Cone limit</b> (<see cref="LimitRadii"/>): then the drawn radius changes by at most <see cref="ConeSlope"/>
+    /// per unit of centre distance both ways, r_k ≤ r_{k±1} + 2|s| (cones of at most 63°), so a thinned ring takes its
+    /// neighbours down with it and the normals, tilted by dr/ds, stay on the winding's side: fold tips close into cones
+    /// that read as rounded ends.</item>
+    /// </list>
+    /// The crossing and cone limits depend only on the centres and tangents (kept for a radius-only build); a fold tip's
+    /// move depends on the radius, so a piece with one is always rebuilt whole. On a rope that bends no tighter than its
+    /// radius and whose radius changes slowly all three are idle and the drawn radius is the ring radius, bit for bit.
+    /// </summary>
+    internal sealed partial class TubeMeshBuilder
+    {
+        /// <summary>Share of the distance to a neighbouring ring's plane that a ring may reach.</summary>
+        internal const float CrossingMargin = 0.95f;
+
+        /// <summary>Drawn radius of the two rings of a fold tip, as a fraction of their radius.</summary>
+        internal const float FoldRadius = 1e-2f;
+
+        /// <summary>Largest turn between the tangents of a fold tip's two rings (rad, 170°): a turn of 180° has no plane.</summary>
+        internal const float TipTurnLimit = 2.9670597f;
+
+        /// <summary>Tip radii of room a fold tip's move leaves each ring in front of the other's plane (beyond the crossing margin).</summary>
+        internal const float TipRoom = 4f;
+
+        /// <summary>
+        /// The ring next to a fold tip reaches at most this many times its centre's advance along the tip's axis (less its
+        /// offset from that axis): the fan from the tip to it is then steeper than 30° to the tip's plane, so each of the
+        /// tip's radial normals has a cosine ≥ ½ with the fan's triangles (√3, a little under).
+        /// </summary>
+        internal const float TipFan = 1.7f;
+
+        /// <summary>Largest change of the drawn radius per unit of distance between neighbouring ring centres.</summary>
+        internal const float ConeSlope = 2f;
+
+        /// <summary>Per ring: the square of the largest radius that keeps it clear of its neighbours' planes (+∞: none).</summary>
+        private float[] capSquared = Array.Empty<float>();
+
+        /// <summary>Per ring: squared distance to the previous ring's centre (0 for a piece's first ring).</summary>
+        private float[] gapSquared = Array.Empty<float>();
+
+        /// <summary>Per ring: the drawn radius of the last <see cref="LimitRadii"/>.</summary>
+        private float[] drawnRadii = Array.Empty<float>();
+
+        /// <summary>Per ring: one of the two rings of a fold tip (drawn at <see cref="FoldRadius"/>, radial normals).</summary>
+        private bool[] foldTip = Array.Empty<bool>();
+
+        /// <summary>Per ring: the last <see cref="LimitRadii"/> drew it thinner than its radius.</summary>
+        private bool[] thinned = Array.Empty<bool>();
+
+        /// <summary>Per ring: a chord to a neighbouring ring makes more than <see cref="SkewLimit"/> with its tangent (its strips are squashed).</summary>
+        private bool[] skewed = Array.Empty<bool>();
+
+        /// <summary>Cosine of the largest angle between a ring's tangent and the chord to a neighbour for which the tube's own normals are kept (45°).</summary>
+        internal const float SkewLimit = 0.70710677f;
+
+        /// <summary>
+        /// Cosine of the largest angle between a ring's tangent and the chord to a neighbour before the two make a fold tip
+        /// (60°): a ring at the apex of a hairpin drawn with one ring faces neither chord, and the tube creases by up to 180°
+        /// there, which no normal can follow.
+        /// </summary>
+        internal const float FoldSkew = 0.5f;
+
+        /// <summary>
+        /// Ring <paramref name="k"/> as the last build drew it: centre (m, relative to the build's frame origin), unit
+        /// tangent (the normal of its plane), drawn radius (m) and whether it is one of a fold tip's two rings.
+        /// For tests and the lab's figures.
+        /// </summary>
+        internal void DrawnRing(int k, out Float3 centre, out Float3 tangent, out float radius, out bool tip)
+        {
+            centre = centers[k];
+            tangent = tangents[k];
+            radius = ringRadii[k];
+            tip = foldTip[k];
+        }
+
+        /// <summary>Rings of the last build that are fold tips, drawn thinner than their radius, or given strip normals (all 0 on a taut rope).</summary>
+        internal void FoldCounts(out int tips, out int thinnedRings, out int stripRings)
+        {
+            tips = 0; thinnedRings = 0; stripRings = 0;
+            int rings = layout.RingCount;
+            for (int k = 0; k < rings && k < foldTip.Length; k++)
+            {
+                if (foldTip[k]) tips++;
+                if (thinned[k]) thinnedRings++;
+                if (stripNormals[k]) stripRings++;
+            }
+        }
+
+        private void EnsureFoldStorage(int size)
+        {
+            if (capSquared.Length >= size) return;
+            Array.Resize(ref capSquared, size);
+            Array.Resize(ref gapSquared, size);
+            Array.Resize(ref drawnRadii, size);
+            Array.Resize(ref foldTip, size);
+            Array.Resize(ref thinned, size);
+            Array.Resize(ref stripNormals, size);
+            Array.Resize(ref skewed, size);
+        }
+
+        /// <summary>
+        /// The part of <see cref="RepairFold"/>'s test that needs no turn angle: true when rings k − 1 and k (tangent
+        /// (tx, ty, tz)) stand far enough in front of each other's planes for any turn between them (sin θ ≤ 1, with 1e-3 to
+        /// spare for rounding) and their chord is within <see cref="FoldSkew"/> of both tangents, so there is nothing to
+        /// repair. The frame transport calls it first for every ring, so that a rope without folds pays for two dot products.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private bool ClearOfFold(int k, float tx, float ty, float tz)
+        {
+            Float3 c0 = centers[k - 1], c1 = centers[k], t0 = tangents[k - 1];
+            float sx = c1.X - c0.X, sy = c1.Y - c0.Y, sz = c1.Z - c0.Z;
+            float ahead = sx * t0.X + sy * t0.Y + sz * t0.Z, behind = sx * tx + sy * ty + sz * tz;
+            const float held = TipRoom * 1.001f;
+            float chord2 = (sx * sx + sy * sy + sz * sz) * (FoldSkew * FoldSkew);
+            return ahead > 0f && behind > 0f
+                && ahead * CrossingMargin >= FoldRadius * ringRadii[k] * held && behind * CrossingMargin >= FoldRadius * ringRadii[k - 1] * held
+                && ahead * ahead >= chord2 && behind * behind >= chord2;
+        }
+
+        /// <summary>
+        /// Called by the frame transport for ring k &gt; first with its tangent (tx, ty, tz) (unit) before its normal is
+        /// transported: when rings k − 1 and k cannot hold rings of <see cref="FoldRadius"/> of their radius in front of each
+        /// other's planes, makes them a fold tip (see the class summary): may turn the tangent and moves centre k. Returns
+        /// true when it did.
+        /// </summary>
+        private bool RepairFold(int k, ref float tx, ref float ty, ref float tz)
+        {
+            Float3 c0 = centers[k - 1], c1 = centers[k], t0 = tangents[k - 1];
+            float sx = c1.X - c0.X, sy = c1.Y - c0.Y, sz = c1.Z - c0.Z;
+            float ahead = sx * t0.X + sy * t0.Y + sz * t0.Z, behind = sx * tx + sy * ty + sz * tz;
+            float ax = t0.Y * tz - t0.Z * ty, ay = t0.Z * tx - t0.X * tz, az = t0.X * ty - t0.Y * tx;
+            float sine = MathF.Sqrt(ax * ax + ay * ay + az * az);
+            float tip0 = FoldRadius * ringRadii[k - 1], tip1 = FoldRadius * ringRadii[k];
+            float held = TipRoom * sine;
+            float chord2 = (sx * sx + sy * sy + sz * sz) * (FoldSkew * FoldSkew);
+            if (ahead > 0f && behind > 0f && ahead * CrossingMargin >= tip1 * held && behind * CrossingMargin >= tip0 * held
+                && ahead * ahead >= chord2 && behind * behind >= chord2) return false;
+
+            // the plane of the turn: its axis a, and w = a × t0, the way t0 turns toward t1
+            float cosine = t0.X * tx + t0.Y * ty + t0.Z * tz;
+            if (sine > 1e-4f) { ax /= sine; ay /= sine; az /= sine; }
+            else
+            {
+                // (anti)parallel tangents: turn about ring k − 1's normal (a reversal's transport keeps it)
+                Float3 n0 = normals[k - 1];
+                ax = n0.X; ay = n0.Y; az = n0.Z;
+            }
+            float wx = ay * t0.Z - az * t0.Y, wy = az * t0.X - ax * t0.Z, wz = ax * t0.Y - ay * t0.X;
+            float turn = MathF.Atan2(sine, cosine);
+            if (turn > TipTurnLimit)
+            {
+                float c = MathF.Cos(TipTurnLimit), sn = MathF.Sin(TipTurnLimit);
+                tx = t0.X * c + wx * sn; ty = t0.Y * c + wy * sn; tz = t0.Z * c + wz * sn;
+                Normalize(ref tx, ref ty, ref tz);
+                cosine = c;
+                sine = sn;
+                behind = sx * tx + sy * ty + sz * tz;
+            }
+
+            // the least move of centre k that gives each ring TipRoom tip radii (and at least one tip radius of advance)
+            float room = TipRoom * sine / CrossingMargin;
+            float need0 = tip1 * MathF.Max(room, 1f) - ahead, need1 = tip0 * MathF.Max(room, 1f) - behind;
+            float mx = 0f, my = 0f, mz = 0f;
+            bool alongFirst = need0 > 0f && need1 - need0 * cosine <= 0f, alongSecond = need1 > 0f && need0 - need1 * cosine <= 0f;
+            if (need0 <= 0f && need1 <= 0f) { }
+            else if (alongFirst && (!alongSecond || need0 <= need1)) { mx = t0.X * need0; my = t0.Y * need0; mz = t0.Z * need0; }
+            else if (alongSecond) { mx = tx * need1; my = ty * need1; mz = tz * need1; }
+            else if (1f - cosine * cosine > 1e-3f)
+            {
+                // both planes: the least move onto their line of intersection (the tangents are ≥ 1.8° apart)
+                float determinant = 1f - cosine * cosine;
+                float alpha = (need0 - cosine * need1) / determinant, beta = (need1 - cosine * need0) / determinant;
+                mx = t0.X * alpha + tx * beta; my = t0.Y * alpha + ty * beta; mz = t0.Z * alpha + tz * beta;
+            }
+            else
+            {
+                // (anti)parallel tangents: along their mean (or, antiparallel, the turn's side) far enough for both
+                float ux = t0.X + tx, uy = t0.Y + ty, uz = t0.Z + tz;
+                if (!Normalize(ref ux, ref uy, ref uz)) { ux = wx; uy = wy; uz = wz; }
+                float d0 = ux * t0.X + uy * t0.Y + uz * t0.Z, d1 = ux * tx + uy * ty + uz * tz;
+                float move = MathF.Max(d0 > 0f ? need0 / d0 : 0f, d1 > 0f ? need1 / d1 : 0f);
+                mx = ux * move; my = uy * move; mz = uz * move;
+            }
+            centers[k] = new Float3(c1.X + mx, c1.Y + my, c1.Z + mz);
+            foldTip[k - 1] = true;
+            foldTip[k] = true;
+            spacing2[k] = float.NaN; // the centre now depends on the radius: no radius-only rebuild
+            return true;
+        }
+
+        /// <summary>The geometric limits of rings first … last of a piece, from its centres and tangents (after the frames).</summary>
+        private void ComputeRingLimits(int first, int last)
+        {
+            for (int k = first; k <= last; k++) { capSquared[k] = float.PositiveInfinity; skewed[k] = false; }
+            gapSquared[first] = 0f;
+            const float skew2 = SkewLimit * SkewLimit;
+            const float margin2 = CrossingMargin * CrossingMargin;
+            for (int k = first + 1; k <= last; k++)
+            {
+                Float3 c0 = centers[k - 1], c1 = centers[k], t0 = tangents[k - 1], t1 = tangents[k];
+                float sx = c1.X - c0.X, sy = c1.Y - c0.Y, sz = c1.Z - c0.Z;
+                gapSquared[k] = sx * sx + sy * sy + sz * sz;
+                float ahead = sx * t0.X + sy * t0.Y + sz * t0.Z;   // advance past ring k − 1's plane
+                float behind = sx * t1.X + sy * t1.Y + sz * t1.Z;  // advance of ring k's plane past ring k − 1
+                if (ahead * ahead < skew2 * gapSquared[k] || ahead < 0f) skewed[k - 1] = true;
+                if (behind * behind < skew2 * gapSquared[k] || behind < 0f) skewed[k] = true;
+                if (!(ahead > 0f && behind > 0f))
+                {
+                    // only where a fold tip's repair could not part them (non-finite geometry): drawn as tips
+                    foldTip[k - 1] = true;
+                    foldTip[k] = true;
+                    continue;
+                }
+                float nx = t0.Y * t1.Z - t0.Z * t1.Y, ny = t0.Z * t1.X - t0.X * t1.Z, nz = t0.X * t1.Y - t0.Y * t1.X;
+                float sine2 = nx * nx + ny * ny + nz * nz;
+                if (!(sine2 > 0f)) continue;
+                float scale = margin2 / sine2;
+                float capNext = ahead * ahead * scale, capPrevious = behind * behind * scale;
+                if (capNext < capSquared[k]) capSquared[k] = capNext;
+                if (capPrevious < capSquared[k - 1]) capSquared[k - 1] = capPrevious;
+            }
+            // the strips next to a fold tip: steep fans (see TipFan)
+            for (int k = first + 1; k <= last; k++)
+            {
+                if (foldTip[k - 1] == foldTip[k]) continue;
+                int tip = foldTip[k - 1] ? k - 1 : k, other = tip == k ? k - 1 : k;
+                Float3 ct = centers[tip], t = tangents[tip], co = centers[other];
+                float dx = co.X - ct.X, dy = co.Y - ct.Y, dz = co.Z - ct.Z;
+                float advance = dx * t.X + dy * t.Y + dz * t.Z;
+                if (tip == k) advance = -advance;
+                float along = dx * t.X + dy * t.Y + dz * t.Z;
+                float ox = dx - along * t.X, oy = dy - along * t.Y, oz = dz - along * t.Z;
+                float offset = MathF.Sqrt(ox * ox + oy * oy + oz * oz);
+                float fan = TipFan * advance - offset;
+                float fan2 = fan > 0f ? fan * fan : 0f;
+                if (fan2 < capSquared[other]) capSquared[other] = fan2;
+            }
+        }
+
+        /// <summary>
+        /// The drawn radii of rings first … last into <see cref="drawnRadii"/>: each ring's radius (<paramref name="radii"/>,
+        /// clamped to ≥ 1e-6) limited by <see cref="ComputeRingLimits"/>'s caps, then by the cone slope both ways.
+        /// </summary>
+        private void LimitRadii(int first, int last, ReadOnlySpan<float> radii)
+        {
+            for (int k = first; k <= last; k++)
+            {
+                float r = Clamped(radii[k]);
+                float cap2 = capSquared[k];
+                float d = r;
+                if (foldTip[k]) d = FoldRadius * r;
+                else if (r * r > cap2)
+                {
+                    d = MathF.Sqrt(cap2);
+                    if (!(d >= FoldRadius * r)) d = FoldRadius * r;
+                }
+                drawnRadii[k] = d;
+            }
+            const float slope2 = ConeSlope * ConeSlope;
+            for (int k = first + 1; k <= last; k++)
+            {
+                float previous = drawnRadii[k - 1], rise = drawnRadii[k] - previous;
+                if (rise > 0f && rise * rise > slope2 * gapSquared[k]) drawnRadii[k] = previous + ConeSlope * MathF.Sqrt(gapSquared[k]);
+            }
+            for (int k = last - 1; k >= first; k--)
+            {
+                float next = drawnRadii[k + 1], rise = drawnRadii[k] - next;
+                if (rise > 0f && rise * rise > slope2 * gapSquared[k + 1]) drawnRadii[k] = next + ConeSlope * MathF.Sqrt(gapSquared[k + 1]);
+            }
+            for (int k = first; k <= last; k++) thinned[k] = drawnRadii[k] != Clamped(radii[k]);
+        }
+
+        /// <summary>Per ring: its normals are drawn from its two strips (<see cref="WriteRingOnStrips"/>), not the tube's own formula.</summary>
+        private bool[] stripNormals = Array.Empty<bool>();
+
+        /// <summary>
+        /// Marks the rings of piece first … last whose normals come from their strips: every ring the limits thinned and its
+        /// neighbours. Returns true when a ring is or was marked (a radius-only build then rewrites the whole piece).
+        /// </summary>
+        private bool MarkStripNormals(int first, int last)
+        {
+            bool any = false;
+            for (int k = first; k <= last; k++)
+            {
+                bool marked = (thinned[k] || skewed[k] || (k > first && thinned[k - 1]) || (k < last && thinned[k + 1])) && !foldTip[k];
+                any |= marked || stripNormals[k];
+                stripNormals[k] = marked;
+            }
+            return any;
+        }
+
+        /// <summary>
+        /// Writes ring k of piece first … last like <see cref="WriteRing"/> (the same positions, tangents and uv), with each
+        /// vertex normal the bisector of the unit normals of its two strips, τ × (p_{k+1} − p_k) and τ × (p_k − p_{k−1}) (τ the
+        /// direction around the ring; one strip at a piece's end, whose neighbour beyond is the dangling half's first ring,
+        /// <paramref name="beforeFirst"/>/<paramref name="afterLast"/>, when there is one). A ring thinned between wide
+        /// neighbours, or tilted across its strips at a fold, is not a surface of revolution about its tangent, and the
+        /// formula's normals (e − (dr/ds) t) can face away from a strip; the bisector faces both (its dot product with either
+        /// unit normal is 1 + their cosine ≥ 0).
+        /// </summary>
+        private void WriteRingOnStrips(int k, int first, int last, in Neighbour beforeFirst, in Neighbour afterLast, Span<TubeVertex> ring)
+        {
+            WriteRing(k, ring);
+            Float3 c = centers[k], t = tangents[k], nrm = normals[k];
+            Float3 bin = Float3.Cross(t, nrm);
+            float r = ringRadii[k];
+            Neighbour behind = k > first ? RingAt(k - 1) : beforeFirst;
+            Neighbour ahead = k < last ? RingAt(k + 1) : afterLast;
+            Float3 bb = Float3.Cross(behind.Tangent, behind.Normal), ba = Float3.Cross(ahead.Tangent, ahead.Normal);
+            for (int i = 0; i < ring.Length; i++)
+            {
+                float ci = cos[i], si = sin[i];
+                Float3 e = nrm * ci + bin * si;
+                Float3 p = c + e * r;
+                Float3 around = bin * ci - nrm * si;
+                Float3 sum = Float3.Zero;
+                if (ahead.Exists)
+                {
+                    Float3 q = ahead.Centre + (ahead.Normal * ci + ba * si) * ahead.Radius;
+                    sum = sum + Float3.Cross(around, q - p).NormalizedOr(Float3.Zero);
+                }
+                if (behind.Exists)
+                {
+                    Float3 q = behind.Centre + (behind.Normal * ci + bb * si) * behind.Radius;
+                    sum = sum + Float3.Cross(around, p - q).NormalizedOr(Float3.Zero);
+                }
+                Float3 normal = sum.NormalizedOr(e);
+                ref TubeVertex vertex = ref ring[i];
+                vertex.NX = normal.X; vertex.NY = normal.Y; vertex.NZ = normal.Z;
+            }
+        }
+
+        /// <summary>A ring next to the one drawn: centre, frame and drawn radius (Exists false: none).</summary>
+        private readonly struct Neighbour
+        {
+            public readonly bool Exists;
+            public readonly Float3 Centre, Tangent, Normal;
+            public readonly float Radius;
+
+            public Neighbour(Float3 centre, Float3 tangent, Float3 normal, float radius)
+            {
+                Exists = true;
+                Centre = centre;
+                Tangent = tangent;
+                Normal = normal;
+                Radius = radius;
+            }
+        }
+
+        private Neighbour RingAt(int k) => new Neighbour(centers[k], tangents[k], normals[k], ringRadii[k]);
+
+        /// <summary>The first ring of the dangling half beyond ring <paramref name="joint"/> (straight along its tangent, with its frame), or none.</summary>
+        private Neighbour DanglingNeighbour(bool present, int segment, bool upper, int joint)
+        {
+            if (!present) return default;
+            DanglingEnds.Stations(layout, segment, upper, stations);
+            int k = stations[0];
+            float fraction = k >= 0 ? layout.RingFractions[k] : DanglingEnds.Cut;
+            float r = Clamped(k >= 0 ? lastRadii[k] : dangling.CutRadius(segment, upper));
+            Float3 t = tangents[joint];
+            Float3 outward = upper ? -t : t;
+            return new Neighbour(centers[joint] + outward * (dangling.HalfLength(segment) * DanglingEnds.ShareOfHalf(fraction, upper)), t, normals[joint], r);
+        }
+    }
+}

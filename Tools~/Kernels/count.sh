@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Instructions per simulated second of one kernel scene, native code (NativeAOT) under callgrind.
+#   bash "Tools~/Kernels/count.sh" SCENE [SHORT LONG] [--annotate]
+# Publishes the probe ahead-of-time (once per call), strips its DWARF (valgrind cannot read the DWARF 5 the AOT
+# toolchain writes), runs `run SCENE SHORT` and `run SCENE LONG` under callgrind and prints
+# (Ir_long − Ir_short) · 90 / (LONG − SHORT): start-up and scene building cancel. With --annotate, prints the
+# per-function profile of the long run (inclusive of nothing: self instructions per function).
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+scene="${1:?scene name}"; short="${2:-20}"; long="${3:-200}"; annotate="${4:-}"
+out="${KERNELS_OUT:-/tmp/hookerope-kernels-$(id -u)}"
+dotnet publish "$here/HookeRope.Kernels.csproj" -c Release -r linux-x64 -o "$out/publish" -nologo -v quiet >/dev/null
+objcopy --strip-debug "$out/publish/HookeRope.Kernels" "$out/probe"
+count() {
+  valgrind --tool=callgrind --callgrind-out-file="$out/cg.$1" "$out/probe" run "$scene" "$1" 2>&1 >/dev/null | sed -n 's/.*Collected : \([0-9]*\).*/\1/p'
+}
+a=$(count "$short"); b=$(count "$long")
+awk -v a="$a" -v b="$b" -v s="$short" -v l="$long" -v name="$scene" \
+  'BEGIN { printf "%s: %.0f instructions per host step, %.3f M per simulated second (90 steps)\n", name, (b-a)/(l-s), (b-a)*90/(l-s)/1e6 }'
+if [ "$annotate" = "--annotate" ]; then
+  callgrind_annotate --threshold=99 "$out/cg.$long" | sed -n '1,60p'
+fi
