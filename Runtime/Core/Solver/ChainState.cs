@@ -62,6 +62,15 @@ namespace HookeRope.Solver
         public readonly double[] PivotInverse, ReducedX, ReducedY, ReducedZ;
         public readonly double[] AxialCompliance, TransverseCompliance, EstimatedTension;
         public readonly bool[] Active;
+        // the convergence test and line search of the exact solve (see ExactChainSolver.Apply and Mismatched, ChainLineSearch): each
+        // segment's effective rest length L' (m, damping folded in) and whether it was assembled this iteration (not broken,
+        // not an invalid row), and the iteration's motion of each particle (m)
+        public readonly double[] EffectiveRest;
+        public readonly double[] LengthError;     // m, the iteration's length error of each pulling or released segment
+        public readonly bool[] Assembled;
+        public readonly double[] MotionX, MotionY, MotionZ;
+        public bool RigidInSolve;                 // some inextensible segment (α = 0) is in the solve: no merit, no line search
+        public double Size;                       // m, largest |coordinate| of the particles at the start of the substep
 
         // second-order integrator (see Rope.Integration): the chain solve's displacement of this substep Δ (m), the velocity
         // the scheme adds to d/h + κΔ/h (m/s), and the velocity of the substep before (m/s)
@@ -129,6 +138,8 @@ namespace HookeRope.Solver
             PivotInverse = new double[6 * s]; ReducedX = new double[s]; ReducedY = new double[s]; ReducedZ = new double[s];
             AxialCompliance = new double[s]; TransverseCompliance = new double[s]; EstimatedTension = new double[s];
             Active = new bool[s];
+            EffectiveRest = new double[s]; LengthError = new double[s]; Assembled = new bool[s];
+            MotionX = new double[n]; MotionY = new double[n]; MotionZ = new double[n];
             SolveDX = new double[n]; SolveDY = new double[n]; SolveDZ = new double[n];
             BaseVelX = new double[n]; BaseVelY = new double[n]; BaseVelZ = new double[n];
             PrevVelX = new double[n]; PrevVelY = new double[n]; PrevVelZ = new double[n];

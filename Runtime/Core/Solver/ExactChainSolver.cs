@@ -46,18 +46,34 @@ namespace HookeRope.Solver
         /// <summary>
         /// Largest second-order length error of an iteration, as a fraction of the rest length, that needs no further
         /// iteration: a segment whose ends moved by Δ across it in this iteration is longer than the linearisation assumed
-        /// by about |Δ_⊥|²/(2l).
+        /// by about |Δ_⊥|²/(2l). Beyond it the linearisation is off and the iteration's step goes through
+        /// <see cref="ChainLineSearch"/>.
         /// </summary>
         public const double NonlinearTolerance = 1e-3;
+
+        /// <summary>
+        /// Largest energy a converged iteration may leave in its segments' length errors, Σ(|F|·e + ½e²/α), as a fraction of
+        /// the chain's kinetic and elastic energy: a stiff segment stores ½e²/α for a length error e (steel: 0.02 J for
+        /// 3 µm on a 4 mm segment), so its error must be small in energy, not only against its length.
+        /// </summary>
+        public const double EnergyTolerance = 1e-6;
+
+        /// <summary>
+        /// Length error (as a multiple of the largest coordinate of the rope, <see cref="ChainState.Size"/>, m/m) below which
+        /// an iteration cannot improve a segment: 4·2⁻²³, four float32 ulps of the positions it is stored in.
+        /// </summary>
+        public const double RoundOffFloor = 4.0 / 8388608.0;
 
         /// <summary>
         /// Runs one iteration (h: the integrator's effective substep, s; beta: damping β, s; first: the substep's first
         /// iteration, whose accumulated forces start at zero). Returns true when another iteration should follow: the
         /// tension the geometric stiffness was estimated with was less than half the tension found on some segment whose
-        /// transverse response it governs (4·T·h²·w/l &gt; 1), or the iteration moved some segment's ends across it by so
-        /// much that its linearisation is off by more than <see cref="NonlinearTolerance"/> of the rest length.
+        /// transverse response it governs (4·T·h²·w/l &gt; 1); the iteration moved some segment's ends across it by so
+        /// much that its length is off the linearisation by more than a converged chain allows (<see cref="Apply"/>); a
+        /// released tension-only segment ended stretched; or the line search shortened the step. <paramref name="violent"/>: the linearisation was off by more than <see cref="NonlinearTolerance"/> (its
+        /// step went through <see cref="ChainLineSearch"/>), or a released segment ended stretched by more than that.
         /// </summary>
-        public static bool Iterate(ChainState c, double h, double beta, bool tensionOnly, bool first)
+        public static bool Iterate(ChainState c, double h, double beta, bool tensionOnly, bool first, out bool violent, out bool shortened)
         {
             double invH2 = 1.0 / (h * h);
             if (first) ClearForces(c);
@@ -69,9 +85,36 @@ namespace HookeRope.Solver
                 ChainContacts.DropContactsWithoutMobility(c);
             }
             SolveActiveSet(c, tensionOnly, contacts, first);
-            double nonlinear = Apply(c, contacts);
+            double nonlinear = Apply(c, contacts, tensionOnly, out bool unconverged);
+            violent = nonlinear > NonlinearTolerance;
+            shortened = false;
+            if (contacts && HoldsWithFriction(c))
+            {
+                // friction in the solve: its impulses were recorded for the full Newton step (ChainContacts.Finish) and the
+                // line search's objective has none, so such an iteration keeps its step and the plain convergence test
+                violent = false;
+                unconverged = nonlinear > NonlinearTolerance;
+            }
+            else if (violent)
+            {
+                double step = ChainLineSearch.Backtrack(c, tensionOnly);
+                shortened = step < 1.0;
+                if (shortened) ChainLineSearch.Shorten(c, step);
+                unconverged = true;
+            }
             bool branches = c.Plasticity != null && c.Plasticity.UpdateBranches(c, invH2);
-            return EstimateTooLow(c, invH2) || nonlinear > NonlinearTolerance || branches;
+            return EstimateTooLow(c, invH2) || unconverged || branches;
+        }
+
+        /// <summary>True when some contact of the solve is held on a surface with friction.</summary>
+        private static bool HoldsWithFriction(ChainState c)
+        {
+            for (int k = 0; k < c.ContactCount; k++)
+            {
+                int i = c.ContactList[k];
+                if (c.ContactActive[i] && c.ContactStaticFriction[i] > 0f) return true;
+            }
+            return false;
         }
 
         private static void ClearForces(ChainState c)
@@ -110,9 +153,13 @@ namespace HookeRope.Solver
             ReadOnlySpan<bool> broken = ChainState.Exactly(c.Broken, s);
             Span<bool> active = ChainState.Exactly(c.Active, s);
             Span<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
+            Span<bool> assembled = ChainState.Exactly(c.Assembled, s);
+            Span<double> effectiveRest = ChainState.Exactly(c.EffectiveRest, s);
+            c.RigidInSolve = false;
             SegmentPlasticity plastic = c.Plasticity;
             for (int j = 0; j < s; j++)
             {
+                assembled[j] = false;
                 if (broken[j]) { active[j] = false; continue; }
                 // ChainState.Direction on the spans
                 double ddx = ChainState.Change(dxA[j], dxB[j], dlxA[j], dlxB[j]), ddy = ChainState.Change(dyA[j], dyB[j], dlyA[j], dlyB[j]);
@@ -123,6 +170,7 @@ namespace HookeRope.Solver
                 double alpha = compliance[j];
                 double mobility = (double)wA[j] + wB[j];
                 if (mobility == 0.0 && alpha == 0.0) { active[j] = false; continue; }
+                if (alpha == 0.0) c.RigidInSolve = true;
                 double g = alpha > 0.0 ? gammaAll : 0.0;
                 double restJ = plastic == null ? rest[j] : plastic.Rest(j); // a plastic segment's force is measured from L_p
                 double restEffective = restJ, alphaTilde = alpha * invH2;
@@ -160,6 +208,8 @@ namespace HookeRope.Solver
                 double cap = MaxTransverseComplianceRatio * mobility;
                 transverse[j] = geometric < cap * tension ? geometric / tension : cap;
                 axial[j] = alphaTilde;
+                effectiveRest[j] = restEffective;
+                assembled[j] = true;
                 rx[j] = len * nx - target * ex; ry[j] = len * ny - target * ey; rz[j] = len * nz - target * ez;
             }
         }
@@ -240,11 +290,15 @@ namespace HookeRope.Solver
 
         /// <summary>
         /// Moves every particle by its mobility times this iteration's pull (a held contact also by the displacement it
-        /// prescribes, exactly as the system assumed: <see cref="ChainContacts"/>), accumulates the forces and writes the
-        /// scalar multipliers λ_j = −Λ_j·n_j the tension read-outs use. Returns the largest second-order length error
-        /// |Δ_⊥|²/(2l) of a segment over its rest length (see <see cref="NonlinearTolerance"/>).
+        /// prescribes, exactly as the system assumed: <see cref="ChainContacts"/>), records it as the particle's motion,
+        /// accumulates the forces and writes the scalar multipliers λ_j = −Λ_j·n_j the tension read-outs use. Then the
+        /// convergence test: returns the largest length error over the rest length of a pulling segment — its second-order
+        /// error e = |Δ_⊥|²/(2l) from this iteration's relative motion Δ of its ends (see <see cref="NonlinearTolerance"/>),
+        /// or a released (tension-only) segment's stretch beyond its rest length — and sets <paramref name="unconverged"/>
+        /// when some active segment's error exceeds NonlinearTolerance·L, a released one is stretched by that much, or the
+        /// energy the errors above round-off leave in the segments is too large (<see cref="Mismatched"/>).
         /// </summary>
-        private static double Apply(ChainState c, bool contacts)
+        private static double Apply(ChainState c, bool contacts, bool tensionOnly, out bool unconverged)
         {
             int s = c.SegmentCount;
             // spans of exactly s entries (the loop bound) index without bounds checks; particle s is moved after the loop.
@@ -253,10 +307,12 @@ namespace HookeRope.Solver
             ReadOnlySpan<float> length = ChainState.Exactly(c.Length, s), rest = ChainState.Exactly(c.RestLength, s);
             Span<float> dx = ChainState.Exactly(c.DX, s), dy = ChainState.Exactly(c.DY, s), dz = ChainState.Exactly(c.DZ, s);
             Span<float> dlx = ChainState.Exactly(c.DLowX, s), dly = ChainState.Exactly(c.DLowY, s), dlz = ChainState.Exactly(c.DLowZ, s);
+            Span<double> motionX = ChainState.Exactly(c.MotionX, s), motionY = ChainState.Exactly(c.MotionY, s), motionZ = ChainState.Exactly(c.MotionZ, s);
+            Span<double> error = ChainState.Exactly(c.LengthError, s);
             ReadOnlySpan<double> sx = ChainState.Exactly(c.StepX, s), sy = ChainState.Exactly(c.StepY, s), sz = ChainState.Exactly(c.StepZ, s);
             ReadOnlySpan<bool> broken = ChainState.Exactly(c.Broken, s), active = ChainState.Exactly(c.Active, s);
-            double worst = 0.0, qx = 0, qy = 0, qz = 0, mx, my, mz;
-            // segment i − 1: its step (0 when broken or before the first particle), active flag, direction, length and rest length
+            double qx = 0, qy = 0, qz = 0, mx, my, mz;
+            // segment i − 1: its step (0 when broken or before the first particle), active flag, direction and length
             double ax = 0, ay = 0, az = 0;
             bool before = false;
             float ex = 0f, ey = 0f, ez = 0f, el = 0f, er = 0f;
@@ -266,23 +322,89 @@ namespace HookeRope.Solver
                 if (!broken[i]) { px = sx[i]; py = sy[i]; pz = sz[i]; }
                 Move(c, i, w[i], px - ax, py - ay, pz - az, contacts, out mx, out my, out mz);
                 ChainState.Add(ref dx[i], ref dlx[i], mx); ChainState.Add(ref dy[i], ref dly[i], my); ChainState.Add(ref dz[i], ref dlz[i], mz);
-                if (before) worst = Worse(worst, LengthError(mx - qx, my - qy, mz - qz, ex, ey, ez, el, er));
+                motionX[i] = mx; motionY[i] = my; motionZ[i] = mz;
+                if (before) error[i - 1] = LengthError(mx - qx, my - qy, mz - qz, ex, ey, ez, el, er);
                 qx = mx; qy = my; qz = mz;
                 if (broken[i]) { ax = 0; ay = 0; az = 0; } else { ax = sx[i]; ay = sy[i]; az = sz[i]; }
                 before = active[i]; ex = dirX[i]; ey = dirY[i]; ez = dirZ[i]; el = length[i]; er = rest[i];
             }
             Move(c, s, c.InverseMass[s], -ax, -ay, -az, contacts, out mx, out my, out mz);
             c.AddDisplacement(s, mx, my, mz);
-            if (before) worst = Worse(worst, LengthError(mx - qx, my - qy, mz - qz, ex, ey, ez, el, er));
+            c.MotionX[s] = mx; c.MotionY[s] = my; c.MotionZ[s] = mz;
+            if (before) error[s - 1] = LengthError(mx - qx, my - qy, mz - qz, ex, ey, ez, el, er);
             Span<double> fx = ChainState.Exactly(c.ForceX, s), fy = ChainState.Exactly(c.ForceY, s), fz = ChainState.Exactly(c.ForceZ, s);
             Span<double> lambda = ChainState.Exactly(c.Lambda, s);
+            ReadOnlySpan<bool> assembled = ChainState.Exactly(c.Assembled, s);
+            double floor = RoundOffFloor * c.Size, worst = 0.0;
+            bool mismatched = false;
+            unconverged = false;
             for (int j = 0; j < s; j++)
             {
                 double gx = fx[j] + sx[j], gy = fy[j] + sy[j], gz = fz[j] + sz[j];
                 fx[j] = gx; fy[j] = gy; fz[j] = gz;
-                lambda[j] = active[j] ? -(gx * dirX[j] + gy * dirY[j] + gz * dirZ[j]) : 0.0;
+                double l = active[j] ? -(gx * dirX[j] + gy * dirY[j] + gz * dirZ[j]) : 0.0;
+                lambda[j] = l;
+                double e;
+                if (active[j])
+                {
+                    e = error[j];
+                    // a pushing (bilateral) segment's transverse response is damped buckling by design (see Assemble): it
+                    // may add iterations, as before, but it is not a violent linearisation and keeps no energy test
+                    if (l > 0.0)
+                    {
+                        if (e > NonlinearTolerance * rest[j]) unconverged = true;
+                        continue;
+                    }
+                }
+                else if (tensionOnly && assembled[j])
+                {
+                    e = StretchBeyondRest(c, j);
+                    error[j] = e;
+                }
+                else continue;
+                if (e <= floor) continue;
+                double r = rest[j];
+                if (e > worst * r) worst = e / r;
+                if (e > NonlinearTolerance * r) unconverged = true;
+                else mismatched = true;
             }
+            if (!unconverged && mismatched) unconverged = Mismatched(c, tensionOnly, floor);
             return worst;
+        }
+
+        /// <summary>How much longer (m) released segment j now is than its effective rest length (≤ 0: not stretched).</summary>
+        private static double StretchBeyondRest(ChainState c, int j)
+        {
+            c.LiveSpan(j, out double dx, out double dy, out double dz, out _, out _, out _);
+            return Math.Sqrt(dx * dx + dy * dy + dz * dz) - c.EffectiveRest[j];
+        }
+
+        /// <summary>
+        /// True when the length errors above round-off (<paramref name="floor"/>, m) of the pulling and released segments
+        /// (<see cref="ChainState.LengthError"/>) leave more energy in them, Σ (|F|·e + ½e²/α), than
+        /// <see cref="EnergyTolerance"/> of the chain's kinetic (over the substep) and elastic energy. A stiff segment stores
+        /// ½e²/α for a length error e, so its error must be small in energy, not only against its length; a floppy one
+        /// (a light free end) may keep a larger one.
+        /// </summary>
+        private static bool Mismatched(ChainState c, bool tensionOnly, double floor)
+        {
+            double mismatch = 0.0, reference = 0.0;
+            for (int j = 0; j < c.SegmentCount; j++)
+            {
+                if (!c.Assembled[j]) continue;
+                double alpha = c.AxialCompliance[j], squared = c.ForceX[j] * c.ForceX[j] + c.ForceY[j] * c.ForceY[j] + c.ForceZ[j] * c.ForceZ[j];
+                if (c.Active[j]) reference += 0.5 * alpha * squared;
+                bool counted = c.Active[j] ? c.Lambda[j] <= 0.0 : tensionOnly;
+                double e = c.LengthError[j];
+                if (!counted || e <= floor || alpha == 0.0) continue;
+                mismatch += (c.Active[j] ? Math.Sqrt(squared) * e : 0.0) + 0.5 * e * e / alpha;
+            }
+            for (int i = 0; i < c.ParticleCount; i++)
+            {
+                double w = c.InverseMass[i];
+                if (w > 0.0) reference += 0.5 * ((double)c.DX[i] * c.DX[i] + (double)c.DY[i] * c.DY[i] + (double)c.DZ[i] * c.DZ[i]) / w;
+            }
+            return mismatch > EnergyTolerance * reference;
         }
 
         /// <summary>
@@ -308,20 +430,16 @@ namespace HookeRope.Solver
             ChainContacts.Finish(c, i, px, py, pz, mx, my, mz);
         }
 
-        /// <summary>The larger of worst and e, ignoring a NaN e.</summary>
-        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
-        private static double Worse(double worst, double e) => e > worst ? e : worst;
-
         /// <summary>
-        /// Second-order length error |Δ_⊥|²/(2l) over the rest length of a segment (direction e, length l, rest length L, m)
-        /// whose ends moved apart by (ux, uy, uz) in this iteration (see <see cref="NonlinearTolerance"/>).
+        /// Second-order length error |Δ_⊥|²/(2l) (m) of a segment (direction e, length l, rest length L, m) whose ends moved
+        /// apart by (ux, uy, uz) in this iteration (see <see cref="NonlinearTolerance"/>).
         /// </summary>
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         private static double LengthError(double ux, double uy, double uz, float ex, float ey, float ez, float length, float rest)
         {
             double along = ux * ex + uy * ey + uz * ez;
             double perp = ux * ux + uy * uy + uz * uz - along * along;
-            return perp / (2.0 * Math.Max(length, 1e-6 * rest) * rest);
+            return perp / (2.0 * Math.Max(length, 1e-6 * rest));
         }
 
         /// <summary>See <see cref="Iterate"/>: the estimated tension was below half the result where 4·T·h²·max(w)/l &gt; 1.</summary>

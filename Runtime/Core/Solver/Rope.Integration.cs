@@ -79,9 +79,11 @@ namespace HookeRope.Solver
             bool bdf2 = scheme == TimeIntegrator.Bdf2;
             double invH = 1.0 / h, h2 = h * h, c = 4.0 * h2 / 9.0, e = 2.0 * h / 3.0;
             double gx = g.X, gy = g.Y, gz = g.Z;
+            float size = 0f;
             for (int i = 0; i < n; i++)
             {
                 px[i] = x[i]; py[i] = y[i]; pz[i] = z[i];
+                size = Larger(size, x[i], y[i], z[i]);
                 double wx = vx[i], wy = vy[i], wz = vz[i];
                 float ox, oy, oz;
                 if (kinematic[i])
@@ -111,6 +113,7 @@ namespace HookeRope.Solver
                 ux[i] = wx; uy[i] = wy; uz[i] = wz;
                 qx[i] = ox; qy[i] = oy; qz[i] = oz;
             }
+            chain.Size = size;
             Array.Clear(chain.SolveDX, 0, n);
             Array.Clear(chain.SolveDY, 0, n);
             Array.Clear(chain.SolveDZ, 0, n);

@@ -45,6 +45,7 @@ namespace HookeRope.Solver
                 loadPeakForce[l] = 0f;
             }
 
+            reportIterations = 0; reportViolent = 0; reportShortened = 0; reportUnconverged = 0;
             TimeIntegrator integrator = settings.Integrator;
             bool secondOrder = integrator != TimeIntegrator.BackwardEuler;
             bool drag = settings.HasDrag, viscousDrag = drag && settings.ViscousDrag > 0f;
@@ -64,9 +65,9 @@ namespace HookeRope.Solver
                 // push the prediction out of the colliders and find the contacts the chain solve folds in
                 CollidePhase(h, ContactPass.StartOfSubstep);
                 if (viscousDrag) FoldViscousDrag(hEff);
-                SolvePhase(h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder);
+                bool violentSolve = SolvePhase(h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder);
                 if (viscousDrag) UnfoldViscousDrag();
-                if (secondOrder) UpdateVelocitiesSecondOrder(scheme, hd, Violent());
+                if (secondOrder) UpdateVelocitiesSecondOrder(scheme, hd, violentSolve || Violent());
                 else UpdateVelocities(hd);
                 if (drag) AccumulateDragWork();
                 FinishPhase(hd, hEff, g, k == 0);
@@ -86,7 +87,11 @@ namespace HookeRope.Solver
                 loadForce[l] = ((v - loadStartVelocity[l]) * invDt - g) * loadMass[l];
             }
 
-            return new StepReport { Residual = ComputeResidual(), Iterations = iterations, Substeps = substeps };
+            return new StepReport
+            {
+                Residual = ComputeResidual(), Iterations = iterations, Substeps = substeps, SolveIterations = reportIterations,
+                ViolentSubsteps = reportViolent, ShortenedSteps = reportShortened, UnconvergedSubsteps = reportUnconverged,
+            };
         }
 
         /// <summary>
@@ -116,29 +121,47 @@ namespace HookeRope.Solver
         /// Most Newton iterations of the exact chain solve in a substep. Beyond <see cref="RopeSettings.Iterations"/>, the
         /// solve adds one iteration at a time, up to this total, while the last one was not to be trusted: its geometric
         /// stiffness used a tension far below the one it found (a rope snatched taut, the first substep of a loaded rope),
-        /// or it moved segments across themselves so far that the linearisation was off (a whipping end). A rope that
-        /// hangs, swings or stretches smoothly needs none.
+        /// or it moved segments across themselves so far that the linearisation was off (a whipping end), or the length
+        /// errors it left would store energy that matters (a stiff rope bent around a collider: 3 µm on a 4 mm steel segment
+        /// is 0.02 J). A rope that hangs, swings or stretches smoothly needs none. A violent substep may run up to
+        /// <see cref="MaxViolentNewtonIterations"/>.
         /// </summary>
         public const int MaxNewtonIterations = 4;
 
         /// <summary>
+        /// Most Newton iterations of the exact chain solve in a violent substep: one whose linearisation was off by more than
+        /// 10⁻³ of a rest length (a rope released 10× stretched, an anchor teleported 1 km), or that left a released
+        /// tension-only segment stretched that much. Its iterations go through a backtracking line search on the implicit
+        /// step's objective Φ(x) = ½|x − x̃|²_M/h² + U(x), so each one makes progress, and it keeps iterating until converged
+        /// or this many. A second-order integrator restarts with backward Euler after it.
+        /// </summary>
+        public const int MaxViolentNewtonIterations = 32;
+
+        // what the solve did in this host step (StepReport)
+        private int reportIterations, reportViolent, reportShortened, reportUnconverged;
+
+        /// <summary>
         /// Phase 3: the constraint iterations. Each folds in the compliant pins, solves the chain (one Newton iteration of
         /// the exact solve, or a Gauss–Seidel sweep), releases the pins and runs a collision pass. The exact solve adds
-        /// iterations, up to <see cref="MaxNewtonIterations"/>, while its tension estimate proves too low.
+        /// iterations, up to <see cref="MaxNewtonIterations"/> (<see cref="MaxViolentNewtonIterations"/> in a violent
+        /// substep), while it is unconverged. Returns true for a violent substep.
         /// </summary>
-        private void SolvePhase(float h, double hd, double hEff, float t, double beta, bool tensionOnly, bool exact, int iterations, bool hasCompliantPins, bool trackSolve)
+        private bool SolvePhase(float h, double hd, double hEff, float t, double beta, bool tensionOnly, bool exact, int iterations, bool hasCompliantPins, bool trackSolve)
         {
             // the solve runs with α̃ = α/h_eff² (the integrator's effective step) and keeps the dashpot γ = β/h
             double solveBeta = beta * (hEff / hd);
-            int total = iterations;
+            int total = iterations, cap = MaxNewtonIterations;
+            bool unconverged = false;
             for (int it = 0; it < total; it++)
             {
                 if (trackSolve) TrackSolveDisplacement(-1.0);
                 bool softPins = hasCompliantPins && ProjectCompliantPins(hEff, t);
                 if (exact)
                 {
-                    bool underestimated = ExactChainSolver.Iterate(chain, hEff, solveBeta, tensionOnly, it == 0);
-                    if (underestimated && it == total - 1 && total < MaxNewtonIterations && !chain.HeldWithFriction) total++;
+                    unconverged = ExactChainSolver.Iterate(chain, hEff, solveBeta, tensionOnly, it == 0, out bool violent, out bool shortened);
+                    if (violent) cap = MaxViolentNewtonIterations;
+                    if (shortened) reportShortened++;
+                    if (unconverged && it == total - 1 && total < cap) total++;
                 }
                 else
                 {
@@ -151,6 +174,12 @@ namespace HookeRope.Solver
             // the exact solve's friction for the next substep, from this one's contact impulses
             if (exact && chain.ContactCount > 0) ChainContacts.DecideFriction(chain);
             else chain.HeldWithFriction = false;
+            if (!exact) return false;
+            reportIterations += total;
+            if (unconverged) reportUnconverged++;
+            bool violentSubstep = cap == MaxViolentNewtonIterations;
+            if (violentSubstep) reportViolent++;
+            return violentSubstep;
         }
 
         /// <summary>Phase 4 (after the velocities): time, tensions T = −λ/h_eff², the plastic return mapping, pin forces (and pin breaks). The segment lengths are refreshed once, after the last substep.</summary>
@@ -174,15 +203,31 @@ namespace HookeRope.Solver
             Span<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
             Span<float> lx = ChainState.Exactly(chain.DLowX, n), ly = ChainState.Exactly(chain.DLowY, n), lz = ChainState.Exactly(chain.DLowZ, n);
             ReadOnlySpan<bool> kinematic = ChainState.Exactly(chain.Kinematic, n);
+            float size = 0f;
             for (int i = 0; i < n; i++)
             {
                 px[i] = x[i]; py[i] = y[i]; pz[i] = z[i];
+                size = Larger(size, x[i], y[i], z[i]);
                 if (kinematic[i]) { dx[i] = 0f; dy[i] = 0f; dz[i] = 0f; lx[i] = 0f; ly[i] = 0f; lz[i] = 0f; continue; }
                 double ux = vx[i] + gx, uy = vy[i] + gy, uz = vz[i] + gz;
                 vx[i] = ux; vy[i] = uy; vz[i] = uz;
                 // D + DLow = v·h exactly (ChainState.SetDisplacement)
                 ChainState.Set(ref dx[i], ref lx[i], ux * h); ChainState.Set(ref dy[i], ref ly[i], uy * h); ChainState.Set(ref dz[i], ref lz[i], uz * h);
             }
+            chain.Size = size;
+        }
+
+        /// <summary>The larger of size and the magnitudes of x, y, z (plain compares: MathF.Max's NaN and −0 rules cost far more).</summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static float Larger(float size, float x, float y, float z)
+        {
+            if (x < 0f) x = -x;
+            if (y < 0f) y = -y;
+            if (z < 0f) z = -z;
+            if (x > size) size = x;
+            if (y > size) size = y;
+            if (z > size) size = z;
+            return size;
         }
 
         private void MovePins(float t)

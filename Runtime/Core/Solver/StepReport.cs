@@ -12,5 +12,20 @@ namespace HookeRope.Solver
         public int Iterations;
         /// <summary>Substeps the host step was split into.</summary>
         public int Substeps;
+        /// <summary>
+        /// Newton iterations the exact chain solve ran over the substeps (at least Substeps × Iterations; more where the
+        /// solve added iterations, see <see cref="Rope.MaxNewtonIterations"/>); 0 for Gauss–Seidel.
+        /// </summary>
+        public int SolveIterations;
+        /// <summary>
+        /// Substeps whose exact solve was violent (a linearisation off by more than 10⁻³ of a rest length: a rope released far
+        /// stretched, a teleported anchor): their iterations went through the line search, up to
+        /// <see cref="Rope.MaxViolentNewtonIterations"/>, and a second-order integrator restarted with backward Euler.
+        /// </summary>
+        public int ViolentSubsteps;
+        /// <summary>Iterations whose Newton step the line search shortened (the full step would have raised the implicit step's objective).</summary>
+        public int ShortenedSteps;
+        /// <summary>Substeps whose solve ended at its iteration limit still unconverged.</summary>
+        public int UnconvergedSubsteps;
     }
 }

@@ -9,14 +9,29 @@ using Spectre.Console;
 
 namespace HookeRope.Lab.Commands
 {
-    /// <summary><c>stability --full</c>: the integrator grid (<see cref="GridSweep"/>), a summary per integrator and a table of every failure; exit code 1 if any case fails.</summary>
+    /// <summary>
+    /// <c>stability --full</c>: the integrator grid (<see cref="GridSweep"/>), a summary per family and integrator, the
+    /// documented domain limits (<see cref="GridLimits"/>) and a table of every failing case with the limit it falls under;
+    /// exit code 1 if any failure falls under none.
+    /// </summary>
     public static class GridCommand
     {
-        /// <summary>Runs the grid (whole, or the CI subset), prints and writes stability-grid.md (or stability-grid-ci.md) to <paramref name="outDir"/>.</summary>
-        public static int Execute(IAnsiConsole console, string outDir, bool full)
+        /// <summary>A limit's name: the text before its colon.</summary>
+        private static string Short(string limit) => limit.Substring(0, limit.IndexOf(':'));
+
+        /// <summary>"n (p %)": a count and its share of the substeps.</summary>
+        private static string Share(long n, long substeps) =>
+            string.Format(CultureInfo.InvariantCulture, "{0} ({1:G2} %)", n, 100.0 * n / System.Math.Max(substeps, 1));
+
+        /// <summary>
+        /// Runs the grid (whole, or the CI subset; only the cases whose description contains <paramref name="match"/> when
+        /// given), prints and writes stability-grid.md (or stability-grid-ci.md) to <paramref name="outDir"/>.
+        /// </summary>
+        public static int Execute(IAnsiConsole console, string outDir, bool full, string match = null)
         {
             OutputFolder.Ensure(outDir);
             var cases = GridSweep.Cases(full);
+            if (!string.IsNullOrEmpty(match)) cases.RemoveAll(c => !c.ToString().Contains(match, System.StringComparison.Ordinal));
             var clock = Stopwatch.StartNew();
             var outcomes = GridSweep.RunAll(cases);
             double seconds = clock.Elapsed.TotalSeconds;
@@ -24,50 +39,79 @@ namespace HookeRope.Lab.Commands
             md.Append("# HookeRope integrator stability grid").Append(full ? "" : " (CI subset)").Append("\n\n");
             md.Append("Machine: ").Append(MachineInfo.Describe()).Append("\n\n");
             md.Append(string.Format(CultureInfo.InvariantCulture, "{0} cases in {1:F1} s.\n\n", cases.Count, seconds));
-            md.Append("| integrator | cases | failed | largest energy gain (J) |\n|---|---:|---:|---:|\n");
+            md.Append("| family | integrator | cases | failed | documented limit | largest energy gain (J) | largest gain / round-off bound | iterations / substep | violent substeps | shortened steps | unconverged substeps |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
             var summary = new Table().Border(TableBorder.Rounded).Title("HookeRope integrator grid" + (full ? "" : " (CI subset)"));
+            summary.AddColumn("family");
             summary.AddColumn("integrator");
             summary.AddColumn(new TableColumn("cases").RightAligned());
             summary.AddColumn(new TableColumn("failed").RightAligned());
+            summary.AddColumn(new TableColumn("documented limit").RightAligned());
             summary.AddColumn(new TableColumn("largest energy gain (J)").RightAligned());
-            int failedAll = 0;
-            foreach (var integrator in new[] { TimeIntegrator.BackwardEuler, TimeIntegrator.Bdf2 })
-            {
-                int count = 0, failed = 0;
-                double gain = 0.0;
-                foreach (var o in outcomes)
+            summary.AddColumn(new TableColumn("largest gain / round-off bound").RightAligned());
+            summary.AddColumn(new TableColumn("iterations / substep").RightAligned());
+            summary.AddColumn(new TableColumn("violent substeps").RightAligned());
+            summary.AddColumn(new TableColumn("shortened steps").RightAligned());
+            summary.AddColumn(new TableColumn("unconverged substeps").RightAligned());
+            int failedAll = 0, limitedAll = 0;
+            foreach (var family in new[] { GridFamily.Undamped, GridFamily.Friction, GridFamily.Settle, GridFamily.Teleport })
+                foreach (var integrator in new[] { TimeIntegrator.BackwardEuler, TimeIntegrator.Bdf2 })
                 {
-                    if (o.Case.Integrator != integrator) continue;
-                    count++;
-                    if (o.Failed) failed++;
-                    if (o.EnergyGain > gain) gain = o.EnergyGain;
+                    int count = 0, failed = 0, limited = 0;
+                    double gain = 0.0, relative = 0.0;
+                    long substeps = 0, iterations = 0, violent = 0, shortened = 0, unconverged = 0;
+                    foreach (var o in outcomes)
+                    {
+                        if (o.Case.Integrator != integrator || o.Case.Family != family) continue;
+                        count++;
+                        if (o.Undocumented) failed++;
+                        else if (o.Failed) limited++;
+                        if (o.EnergyGain > gain) gain = o.EnergyGain;
+                        double r = o.EnergyGain / System.Math.Max(o.RoundOff, 1e-300);
+                        if (r > relative) relative = r;
+                        substeps += o.Substeps; iterations += o.SolveIterations; violent += o.ViolentSubsteps;
+                        shortened += o.ShortenedSteps; unconverged += o.UnconvergedSubsteps;
+                    }
+                    if (count == 0) continue;
+                    failedAll += failed;
+                    limitedAll += limited;
+                    string g = gain.ToString("G3", CultureInfo.InvariantCulture), rel = relative.ToString("G3", CultureInfo.InvariantCulture);
+                    string its = ((double)iterations / System.Math.Max(substeps, 1)).ToString("F3", CultureInfo.InvariantCulture);
+                    string v = Share(violent, substeps), sh = shortened.ToString(CultureInfo.InvariantCulture), u = Share(unconverged, substeps);
+                    summary.AddRow(family.ToString(), integrator.ToString(), count.ToString(CultureInfo.InvariantCulture), failed == 0 ? "[green]0[/]" : $"[red]{failed}[/]",
+                        limited.ToString(CultureInfo.InvariantCulture), g, rel, its, v, sh, u);
+                    md.Append(string.Format(CultureInfo.InvariantCulture, "| {0} | {1} | {2} | {3} | {4} | {5} | {6} | {7} | {8} | {9} | {10} |\n", family, integrator, count, failed, limited, g, rel, its, v, sh, u));
                 }
-                failedAll += failed;
-                string g = gain.ToString("G3", CultureInfo.InvariantCulture);
-                summary.AddRow(integrator.ToString(), count.ToString(CultureInfo.InvariantCulture), failed == 0 ? "[green]0[/]" : $"[red]{failed}[/]", g);
-                md.Append(string.Format(CultureInfo.InvariantCulture, "| {0} | {1} | {2} | {3} |\n", integrator, count, failed, g));
-            }
             console.Write(summary);
-            md.Append("\n## Failures\n\n");
-            if (failedAll == 0) md.Append("None.\n");
+            md.Append("\n## Documented domain limits\n\n");
+            foreach (string limit in new[] { GridLimits.Friction, GridLimits.Rod, GridLimits.Push })
+            {
+                int n = 0;
+                foreach (var o in outcomes) if (o.Limit == limit) n++;
+                md.Append("- **").Append(Short(limit)).Append("** (").Append(n.ToString(CultureInfo.InvariantCulture)).Append(" cases): ")
+                    .Append(limit.Substring(limit.IndexOf(':') + 2)).Append(".\n");
+            }
+            md.Append("\n## Failures (every failing case; the limit column names the documented limit it falls under)\n\n");
+            if (failedAll + limitedAll == 0) md.Append("None.\n");
             else
             {
                 var failures = new Table().Border(TableBorder.Rounded).Title("failures");
                 failures.AddColumn("case");
                 failures.AddColumn("why");
-                md.Append("| case | why |\n|---|---|\n");
+                failures.AddColumn("documented limit");
+                md.Append("| case | why | documented limit |\n|---|---|---|\n");
                 foreach (var o in outcomes)
                 {
                     if (!o.Failed) continue;
-                    failures.AddRow(Markup.Escape(o.Case.ToString()), Markup.Escape(o.Reason));
-                    md.Append("| ").Append(o.Case).Append(" | ").Append(o.Reason).Append(" |\n");
+                    string limit = o.Limit == null ? "none: undocumented failure" : Short(o.Limit);
+                    failures.AddRow(Markup.Escape(o.Case.ToString()), Markup.Escape(o.Reason), Markup.Escape(limit));
+                    md.Append("| ").Append(o.Case).Append(" | ").Append(o.Reason).Append(" | ").Append(limit).Append(" |\n");
                 }
                 console.Write(failures);
             }
             string path = Path.Combine(outDir, full ? "stability-grid.md" : "stability-grid-ci.md");
             File.WriteAllText(path, md.ToString());
-            console.MarkupLine($"{cases.Count - failedAll} of {cases.Count} cases stable in {seconds:F1} s, " +
-                (failedAll == 0 ? "[green]0 failed[/]" : $"[red]{failedAll} failed[/]") + "; [grey]wrote[/] " + Markup.Escape(path));
+            console.MarkupLine($"{cases.Count - failedAll - limitedAll} of {cases.Count} cases stable in {seconds:F1} s, {limitedAll} within documented domain limits, " +
+                (failedAll == 0 ? "[green]0 undocumented failures[/]" : $"[red]{failedAll} undocumented failures[/]") + "; [grey]wrote[/] " + Markup.Escape(path));
             return failedAll == 0 ? 0 : 1;
         }
     }

@@ -79,15 +79,16 @@ namespace HookeRope.Lab.Commands
             var stabilityOut = OutOption();
             var stabilityQuick = new Option<bool>("--quick") { Description = "Reduced sweep for CI." };
             var stabilityQuiet = QuietOption();
-            var stabilityFull = new Option<bool>("--full") { Description = "The integrator grid (1 356 cases, both integrators, both tension models, with and without a collider) after the scenario sweep." };
+            var stabilityFull = new Option<bool>("--full") { Description = "The integrator stability grid (1 752 cases: both integrators, both tension models, with and without a collider, friction, settle, 1 km teleport); exit 1 on a failure outside the documented domain limits." };
             var stabilityGrid = new Option<bool>("--grid") { Description = "The CI subset of the integrator grid (--full runs all of it)." };
+            var stabilityMatch = new Option<string>("--match") { Description = "With --full or --grid: only the cases whose description contains this text (e.g. \"2 seg, stretch 10\")." };
             var stability = new Command("stability", "Sweep of stiff and extreme cases; exit code 1 if any case fails.")
             {
-                stabilityOut, stabilityQuick, stabilityQuiet, stabilityFull, stabilityGrid,
+                stabilityOut, stabilityQuick, stabilityQuiet, stabilityFull, stabilityGrid, stabilityMatch,
             };
             stability.SetAction(p => Guard(console, error, () =>
                 p.GetValue(stabilityFull) || p.GetValue(stabilityGrid)
-                    ? GridCommand.Execute(console, p.GetValue(stabilityOut), full: p.GetValue(stabilityFull))
+                    ? GridCommand.Execute(console, p.GetValue(stabilityOut), full: p.GetValue(stabilityFull), match: p.GetValue(stabilityMatch))
                     : StabilityCommand.Execute(console, p.GetValue(stabilityOut), p.GetValue(stabilityQuick), p.GetValue(stabilityQuiet) ? null : error)));
             root.Subcommands.Add(stability);
 

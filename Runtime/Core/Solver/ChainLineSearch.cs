@@ -1,0 +1,122 @@
+using System;
+
+namespace HookeRope.Solver
+{
+    /// <summary>
+    /// Backtracking line search for an iteration of <see cref="ExactChainSolver"/> whose linearisation was off (a violent
+    /// substep). The implicit step minimises Φ(x) = ½|x − x̃|²_M/h² + Σ_j ψ_j(l_j) with ψ_j = ½(l_j − L'_j)²/α'_j
+    /// (tension-only: only where l_j &gt; L'_j), and the iteration's motion δ is a descent direction of Φ. Measured from the
+    /// iterate before the iteration, h²Φ changes along s·δ by Σ_i [s δ_i·P_i + ½s² m_i|δ_i|²] + h²Σ_j Δψ_j, P_i the
+    /// accumulated pull of the solve on particle i (m_i (x_i − x̃_i) = P_i). The step is halved until h²Φ decreases by at
+    /// least 1e-4 of the predicted decrease (Armijo).
+    /// </summary>
+    internal static class ChainLineSearch
+    {
+        /// <summary>Most halvings of the step.</summary>
+        public const int MaxHalvings = 12;
+
+        /// <summary>Armijo constant: the accepted step decreases Φ by at least this fraction of the linear prediction.</summary>
+        public const double Sufficient = 1e-4;
+
+        /// <summary>The step s ∈ (0, 1] along the iteration's motion (1: the full Newton step).</summary>
+        public static double Backtrack(ChainState c, bool tensionOnly)
+        {
+            if (c.RigidInSolve) return 1.0;
+            double slope = Slope(c, tensionOnly);
+            if (!(slope < 0.0)) return 1.0;
+            double s = 1.0;
+            for (int k = 0; k < MaxHalvings; k++)
+            {
+                if (Change(c, tensionOnly, s) <= Sufficient * s * slope) return s;
+                s *= 0.5;
+            }
+            return s;
+        }
+
+        /// <summary>Takes back (1 − s) of the iteration: positions, accumulated forces, multipliers.</summary>
+        public static void Shorten(ChainState c, double s)
+        {
+            double back = 1.0 - s;
+            int n = c.ParticleCount;
+            for (int i = 0; i < n; i++)
+            {
+                c.AddDisplacement(i, -back * c.MotionX[i], -back * c.MotionY[i], -back * c.MotionZ[i]);
+                c.MotionX[i] *= s; c.MotionY[i] *= s; c.MotionZ[i] *= s;
+            }
+            for (int j = 0; j < c.SegmentCount; j++)
+            {
+                c.ForceX[j] -= back * c.StepX[j]; c.ForceY[j] -= back * c.StepY[j]; c.ForceZ[j] -= back * c.StepZ[j];
+                c.StepX[j] *= s; c.StepY[j] *= s; c.StepZ[j] *= s;
+                c.Lambda[j] = c.Active[j] ? -(c.ForceX[j] * c.DirX[j] + c.ForceY[j] * c.DirY[j] + c.ForceZ[j] * c.DirZ[j]) : 0.0;
+            }
+        }
+
+        /// <summary>dΦ/ds at s = 0 (×h²).</summary>
+        private static double Slope(ChainState c, bool tensionOnly)
+        {
+            double slope = 0.0;
+            int n = c.ParticleCount, segs = c.SegmentCount;
+            for (int i = 0; i < n; i++)
+            {
+                Pull(c, i, out double px, out double py, out double pz);
+                slope += c.MotionX[i] * px + c.MotionY[i] * py + c.MotionZ[i] * pz;
+            }
+            for (int j = 0; j < segs; j++)
+            {
+                if (!c.Assembled[j]) continue;
+                Before(c, j, out double dx, out double dy, out double dz, out double ux, out double uy, out double uz);
+                double l = Math.Sqrt(dx * dx + dy * dy + dz * dz);
+                double stretch = l - c.EffectiveRest[j];
+                if ((tensionOnly && stretch <= 0.0) || l == 0.0) continue;
+                slope += stretch / c.AxialCompliance[j] * (dx * ux + dy * uy + dz * uz) / l;
+            }
+            return slope;
+        }
+
+        /// <summary>h²·(Φ(s) − Φ(0)).</summary>
+        private static double Change(ChainState c, bool tensionOnly, double s)
+        {
+            double change = 0.0;
+            int n = c.ParticleCount, segs = c.SegmentCount;
+            for (int i = 0; i < n; i++)
+            {
+                double w = c.InverseMass[i];
+                if (w == 0.0) continue;
+                Pull(c, i, out double px, out double py, out double pz);
+                double mx = c.MotionX[i], my = c.MotionY[i], mz = c.MotionZ[i];
+                change += s * (mx * px + my * py + mz * pz) + 0.5 * s * s * (mx * mx + my * my + mz * mz) / w;
+            }
+            for (int j = 0; j < segs; j++)
+            {
+                if (!c.Assembled[j]) continue;
+                Before(c, j, out double dx, out double dy, out double dz, out double ux, out double uy, out double uz);
+                change += Energy(c, j, tensionOnly, dx + s * ux, dy + s * uy, dz + s * uz) - Energy(c, j, tensionOnly, dx, dy, dz);
+            }
+            return change;
+        }
+
+        private static double Energy(ChainState c, int j, bool tensionOnly, double dx, double dy, double dz)
+        {
+            double stretch = Math.Sqrt(dx * dx + dy * dy + dz * dz) - c.EffectiveRest[j];
+            if (tensionOnly && stretch <= 0.0) return 0.0;
+            return 0.5 * stretch * stretch / c.AxialCompliance[j];
+        }
+
+        /// <summary>Segment j before the iteration (d, m) and the iteration's change of it (u, m).</summary>
+        private static void Before(ChainState c, int j, out double dx, out double dy, out double dz, out double ux, out double uy, out double uz)
+        {
+            ux = c.MotionX[j + 1] - c.MotionX[j]; uy = c.MotionY[j + 1] - c.MotionY[j]; uz = c.MotionZ[j + 1] - c.MotionZ[j];
+            // the live segment Prev + Low + D + DLow (as ChainState.Direction forms it) less the iteration's change
+            c.LiveSpan(j, out dx, out dy, out dz, out _, out _, out _);
+            dx -= ux; dy -= uy; dz -= uz;
+        }
+
+        /// <summary>The accumulated pull Λ_i − Λ_{i−1} on particle i before the iteration (N·s²).</summary>
+        private static void Pull(ChainState c, int i, out double px, out double py, out double pz)
+        {
+            px = 0; py = 0; pz = 0;
+            if (i < c.SegmentCount && !c.Broken[i]) { px = c.ForceX[i] - c.StepX[i]; py = c.ForceY[i] - c.StepY[i]; pz = c.ForceZ[i] - c.StepZ[i]; }
+            if (i > 0 && !c.Broken[i - 1]) { px -= c.ForceX[i - 1] - c.StepX[i - 1]; py -= c.ForceY[i - 1] - c.StepY[i - 1]; pz -= c.ForceZ[i - 1] - c.StepZ[i - 1]; }
+        }
+    }
+}

@@ -1,0 +1,51 @@
+using HookeRope.Solver;
+
+namespace HookeRope.Lab.Stability
+{
+    /// <summary>
+    /// The documented domain limits of the stability grid (solver.md, "Stability sweep"): failing cases whose failure has a
+    /// known cause in the solver's design, named with it. A failing case that matches none is an undocumented failure, and
+    /// <c>stability --full</c> exits 1 for it. The limits are stated, counted and listed case by case, never skipped.
+    /// </summary>
+    public static class GridLimits
+    {
+        /// <summary>
+        /// A stiff rope held on a sphere with friction: the exact solve's friction-held iterations keep their full step and
+        /// only the plain 10⁻³ length test, so length errors stay in the segments at the contact.
+        /// </summary>
+        public const string Friction =
+            "friction on a stiff rope: Coulomb friction is inside the exact chain solve (ChainContacts), but an iteration " +
+            "with a contact held on a surface with friction keeps its full Newton step and only the 10⁻³ length test " +
+            "(ExactChainSolver.Iterate: the line search's objective has no friction, and the energy test of the length errors " +
+            "made the 2π box wrap at μ 0.6 slide 145 m in 2 s), so on a 200 GPa rope the segments at a sticking contact keep " +
+            "length errors e whose ½e²/α shows as an elastic energy gain (the motion alone gains nothing in 12 of the 17 " +
+            "cases; the other 5, one of them 1.7 MJ, also gain motion, their cause not isolated beyond this)";
+
+        /// <summary>A pushing (bilateral) segment's transverse response is damped buckling, not the exact implicit step.</summary>
+        public const string Rod =
+            "rod in compression: a bilateral segment that pushes takes |T| for its geometric stiffness (ExactChainSolver.Assemble: " +
+            "the exact −|T|/l would let it buckle explicitly), so its substep is damped buckling, not the minimiser of the " +
+            "implicit step's energy, and nothing bounds the energy it can gain";
+
+        /// <summary>The collision pass after the last iteration pushes particles out of the collider without the chain.</summary>
+        public const string Push =
+            "push after the solve: the collision pass after the last chain iteration pushes particles out of the sphere " +
+            "(ContactPass.LastIteration) without the chain, storing ½δ²/α in the segments at the pushed particle (1 µm on a " +
+            "6 cm steel segment is 0.1 mJ) that the next substep releases, and keeps a rope resting on the sphere from coming " +
+            "quite to rest; solving again after the push was tried and failed more cases";
+
+        /// <summary>
+        /// The limit a failing case falls under, or null (an undocumented failure, or a case that passed). Non-finite
+        /// results and escapes are never a documented limit.
+        /// </summary>
+        public static string Explain(GridOutcome o)
+        {
+            if (!o.Failed || !o.Finite || o.Escaped || o.NotRecovered) return null;
+            GridCase c = o.Case;
+            if (c.Collider && c.Friction > 0f) return Friction;
+            if (c.Tension == TensionModel.Bilateral) return Rod;
+            if (c.Collider) return Push;
+            return null;
+        }
+    }
+}
