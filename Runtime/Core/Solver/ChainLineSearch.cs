@@ -40,7 +40,10 @@ namespace HookeRope.Solver
             int n = c.ParticleCount;
             for (int i = 0; i < n; i++)
             {
-                c.AddDisplacement(i, -back * c.MotionX[i], -back * c.MotionY[i], -back * c.MotionZ[i]);
+                // in float, DLow left as it is (an error of at most half a float step of D). Taking it back exactly through
+                // AddDisplacement flips two knife-edge sweep cases (16-segment steel, load ratio 1e6, released 10× stretched, backward
+                // Euler, 1 kHz) to a 1.5e12 J gain; that family flips under 1e-5 changes of its release stretch (stability-grid.md)
+                c.DX[i] -= (float)(back * c.MotionX[i]); c.DY[i] -= (float)(back * c.MotionY[i]); c.DZ[i] -= (float)(back * c.MotionZ[i]);
                 c.MotionX[i] *= s; c.MotionY[i] *= s; c.MotionZ[i] *= s;
             }
             for (int j = 0; j < c.SegmentCount; j++)
