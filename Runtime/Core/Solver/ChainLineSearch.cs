@@ -109,7 +109,7 @@ namespace HookeRope.Solver
         private static void Before(ChainState c, int j, out double dx, out double dy, out double dz, out double ux, out double uy, out double uz)
         {
             ux = c.MotionX[j + 1] - c.MotionX[j]; uy = c.MotionY[j + 1] - c.MotionY[j]; uz = c.MotionZ[j + 1] - c.MotionZ[j];
-            // the live segment Prev + Low + D + DLow (as ChainState.Direction forms it) less the iteration's change
+            // the live segment Prev + Low + D + DLow (ChainState.LiveSpan) less the iteration's change
             c.LiveSpan(j, out dx, out dy, out dz, out _, out _, out _);
             dx -= ux; dy -= uy; dz -= uz;
         }

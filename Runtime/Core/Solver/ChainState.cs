@@ -275,21 +275,6 @@ namespace HookeRope.Solver
         }
 
         /// <summary>
-        /// Length (m) of segment j from the live positions Prev + Low + D + DLow, and its unit direction into (nx, ny, nz), which
-        /// it also stores (in float) as the segment's last valid direction; when the ends coincide (or the length is not finite)
-        /// the last valid direction is kept and a non-finite length reads 0. (ddx, ddy, ddz) is the segment's change over the
-        /// substep, <see cref="SubstepChange"/> (m), which the damping term needs. Formed in double from the exact positions: a segment's
-        /// stretch is resolved far below the float resolution of its ends' coordinates (1e-6 m at 10 m, 1e-3 m at 10 km) and
-        /// of its own length (1.5e-8 m at 0.125 m, which an inextensible rope's tension felt as ±0.5 % noise).
-        /// </summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        public double Direction(int j, out double nx, out double ny, out double nz, out double ddx, out double ddy, out double ddz)
-        {
-            LiveSpan(j, out double ex, out double ey, out double ez, out ddx, out ddy, out ddz);
-            return Normalise(j, ex, ey, ez, Exactly(DirX, SegmentCount), Exactly(DirY, SegmentCount), Exactly(DirZ, SegmentCount), out nx, out ny, out nz);
-        }
-
-        /// <summary>
         /// One component (m, double) of a segment's change over the substep from its ends' displacements and their sub-float
         /// remainders (all float): (D_b − D_a) + (DLow_b − DLow_a), formed in double.
         /// </summary>
@@ -307,7 +292,7 @@ namespace HookeRope.Solver
         /// <summary>
         /// Length (m) of segment j's live vector (ex, ey, ez) and its unit direction (nx, ny, nz), stored in float into
         /// dirX/Y/Z[j] as the last valid direction; a vanishing or non-finite vector keeps the stored direction (see
-        /// <see cref="Direction"/>). The kernels pass the direction arrays as spans (<see cref="Exactly"/>).
+        /// <see cref="LiveSpan"/>). The kernels pass the direction arrays as spans (<see cref="Exactly"/>).
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static double Normalise(int j, double ex, double ey, double ez, Span<float> dirX, Span<float> dirY, Span<float> dirZ, out double nx, out double ny, out double nz)

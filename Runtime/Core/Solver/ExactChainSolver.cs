@@ -161,7 +161,7 @@ namespace HookeRope.Solver
             {
                 assembled[j] = false;
                 if (broken[j]) { active[j] = false; continue; }
-                // ChainState.Direction on the spans
+                // ChainState.LiveSpan and Normalise on the spans
                 double ddx = ChainState.Change(dxA[j], dxB[j], dlxA[j], dlxB[j]), ddy = ChainState.Change(dyA[j], dyB[j], dlyA[j], dlyB[j]);
                 double ddz = ChainState.Change(dzA[j], dzB[j], dlzA[j], dlzB[j]);
                 double len = ChainState.Normalise(j, ChainState.Component(pxA[j], pxB[j], lxA[j], lxB[j], ddx), ChainState.Component(pyA[j], pyB[j], lyA[j], lyB[j], ddy),

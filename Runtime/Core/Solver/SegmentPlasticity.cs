@@ -237,7 +237,7 @@ namespace HookeRope.Solver
         private static double Misaligned(ChainState c, int j)
         {
             double fx = c.ForceX[j], fy = c.ForceY[j], fz = c.ForceZ[j];
-            // the live segment vector Prev + Low + D + DLow, exact as ChainState.Direction forms it
+            // the live segment vector Prev + Low + D + DLow, exact (ChainState.LiveSpan)
             c.LiveSpan(j, out double dx, out double dy, out double dz, out _, out _, out _);
             double cx = fy * dz - fz * dy, cy = fz * dx - fx * dz, cz = fx * dy - fy * dx;
             double norms = Math.Sqrt((fx * fx + fy * fy + fz * fz) * (dx * dx + dy * dy + dz * dz));
