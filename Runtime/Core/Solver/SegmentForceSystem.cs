@@ -18,17 +18,36 @@ namespace HookeRope.Solver
         /// <summary>Solves the system of the current active set and contact set into Step (δΛ).</summary>
         public static void Solve(ChainState c)
         {
+            // the forward sweep specialised on whether there are contacts: without them the loop calls nothing, so its
+            // carried pivot and reduced vector stay in registers (every xmm register is caller-saved on x86-64)
+            if (c.ContactCount > 0) Forward<WithContacts>(c);
+            else Forward<NoContacts>(c);
+            Back(c);
+        }
+
+        /// <summary>Type arguments of <see cref="Forward{T}"/>: the JIT compiles one copy per struct and folds the contact test.</summary>
+        private struct WithContacts { }
+
+        /// <summary>See <see cref="WithContacts"/>.</summary>
+        private struct NoContacts { }
+
+        /// <summary>
+        /// Forward sweep: S_j = A_j − L_j S_{j−1}⁻¹ U_{j−1} (its inverse into PivotInverse), y_j = R_j − L_j S_{j−1}⁻¹ y_{j−1}
+        /// (into Step, which the back substitution overwrites with δΛ in place).
+        /// </summary>
+        private static void Forward<T>(ChainState c) where T : struct
+        {
+            bool contacts = typeof(T) == typeof(WithContacts);
             int s = c.SegmentCount;
             // spans of exactly s entries (the loop bound) index without bounds checks; wB[j] is particle j + 1's
             ReadOnlySpan<float> wA = ChainState.Exactly(c.InverseMass, s), wB = ChainState.Shifted(c.InverseMass, s);
             ReadOnlySpan<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
             ReadOnlySpan<double> axial = ChainState.Exactly(c.AxialCompliance, s), transverse = ChainState.Exactly(c.TransverseCompliance, s);
             Span<double> gi = ChainState.Exactly(c.PivotInverse, 6 * s);
-            Span<double> yx = ChainState.Exactly(c.ReducedX, s), yy = ChainState.Exactly(c.ReducedY, s), yz = ChainState.Exactly(c.ReducedZ, s);
+            Span<double> yx = ChainState.Exactly(c.StepX, s), yy = ChainState.Exactly(c.StepY, s), yz = ChainState.Exactly(c.StepZ, s);
             ReadOnlySpan<double> rx = ChainState.Exactly(c.ResidualX, s), ry = ChainState.Exactly(c.ResidualY, s), rz = ChainState.Exactly(c.ResidualZ, s);
+            ReadOnlySpan<double> fx = ChainState.Exactly(c.ForceX, s), fy = ChainState.Exactly(c.ForceY, s), fz = ChainState.Exactly(c.ForceZ, s);
             ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
-            bool contacts = c.ContactCount > 0;
-            // forward sweep: S_j = A_j − L_j S_{j−1}⁻¹ U_{j−1}, y_j = R_j − L_j S_{j−1}⁻¹ y_{j−1}
             double gxx = 1, gxy = 0, gxz = 0, gyy = 1, gyz = 0, gzz = 1, px = 0, py = 0, pz = 0;
             bool previousActive = false;
             for (int j = 0; j < s; j++)
@@ -38,25 +57,26 @@ namespace HookeRope.Solver
                 if (!rowActive)
                 {
                     sxx = 1; sxy = 0; sxz = 0; syy = 1; syz = 0; szz = 1;
-                    bx = -c.ForceX[j]; by = -c.ForceY[j]; bz = -c.ForceZ[j];
+                    bx = -fx[j]; by = -fy[j]; bz = -fz[j];
                 }
                 else
                 {
                     Block(dirX[j], dirY[j], dirZ[j], transverse[j], axial[j], (double)wA[j] + wB[j], out sxx, out sxy, out sxz, out syy, out syz, out szz);
                     bx = rx[j]; by = ry[j]; bz = rz[j];
+                    bool held = false;
                     if (contacts)
                     {
-                        // the contact terms work on a copy: the row's own locals are never passed by reference, so they stay
-                        // in registers on a rope without contacts
+                        // the contact terms work on a copy: the row's own locals are never passed by reference
                         var row = new Row { XX = sxx, XY = sxy, XZ = sxz, YY = syy, YZ = syz, ZZ = szz, X = bx, Y = by, Z = bz };
                         SubtractHeldNormal(c, j, ref row.XX, ref row.XY, ref row.XZ, ref row.YY, ref row.YZ, ref row.ZZ);
                         SubtractHeldNormal(c, j + 1, ref row.XX, ref row.XY, ref row.XZ, ref row.YY, ref row.YZ, ref row.ZZ);
-                        if (j > 0 && c.ContactActive[j])
+                        held = j > 0 && c.ContactActive[j];
+                        if (held)
                             EliminateHeld(c, j, previousActive, gxx, gxy, gxz, gyy, gyz, gzz, px, py, pz,
                                 ref row.XX, ref row.XY, ref row.XZ, ref row.YY, ref row.YZ, ref row.ZZ, ref row.X, ref row.Y, ref row.Z);
                         sxx = row.XX; sxy = row.XY; sxz = row.XZ; syy = row.YY; syz = row.YZ; szz = row.ZZ; bx = row.X; by = row.Y; bz = row.Z;
                     }
-                    if (j > 0 && !(contacts && c.ContactActive[j]))
+                    if (j > 0 && !held)
                     {
                         // elimination through a free particle j (isotropic coupling −w_j I)
                         double wj = wA[j];
@@ -77,12 +97,21 @@ namespace HookeRope.Solver
                 px = bx; py = by; pz = bz;
                 previousActive = rowActive;
             }
-            // back substitution: δ_j = S_j⁻¹ (y_j − U_j δ_{j+1}), U_j = −W_{j+1} on an active row
+        }
+
+        /// <summary>Back substitution in place: δ_j = S_j⁻¹ (y_j − U_j δ_{j+1}), U_j = −W_{j+1} on an active row.</summary>
+        private static void Back(ChainState c)
+        {
+            int s = c.SegmentCount;
+            bool contacts = c.ContactCount > 0;
+            ReadOnlySpan<float> wB = ChainState.Shifted(c.InverseMass, s);
+            ReadOnlySpan<double> gi = ChainState.Exactly(c.PivotInverse, 6 * s);
+            ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
             Span<double> dx = ChainState.Exactly(c.StepX, s), dy = ChainState.Exactly(c.StepY, s), dz = ChainState.Exactly(c.StepZ, s);
             double nx = 0, ny = 0, nz = 0;
             for (int j = s - 1; j >= 0; j--)
             {
-                double vx = yx[j], vy = yy[j], vz = yz[j];
+                double vx = dx[j], vy = dy[j], vz = dz[j];
                 if (active[j] && j + 1 < s)
                 {
                     double mx, my, mz;
