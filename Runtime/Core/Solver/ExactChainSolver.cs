@@ -204,7 +204,7 @@ namespace HookeRope.Solver
                 double tension = first ? Math.Abs(lastTension[j]) : Math.Abs(signed * invH2);
                 estimate[j] = tension;
                 double target = restEffective + alphaTilde * signed; // the length the accumulated force implies
-                double geometric = Math.Max(target, 1e-6 * rest[j]) * invH2;
+                double geometric = AtLeast(target, 1e-6 * rest[j]) * invH2;
                 double cap = MaxTransverseComplianceRatio * mobility;
                 transverse[j] = geometric < cap * tension ? geometric / tension : cap;
                 axial[j] = alphaTilde;
@@ -300,38 +300,14 @@ namespace HookeRope.Solver
         /// </summary>
         private static double Apply(ChainState c, bool contacts, bool tensionOnly, out bool unconverged)
         {
+            if (contacts) MoveParticles<SegmentForceSystem.WithContacts>(c);
+            else MoveParticles<SegmentForceSystem.NoContacts>(c);
             int s = c.SegmentCount;
-            // spans of exactly s entries (the loop bound) index without bounds checks; particle s is moved after the loop.
-            // Particle i is pulled by segment i (index i) and segment i − 1, whose values are carried from the pass before.
-            ReadOnlySpan<float> w = ChainState.Exactly(c.InverseMass, s), dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
-            ReadOnlySpan<float> length = ChainState.Exactly(c.Length, s), rest = ChainState.Exactly(c.RestLength, s);
-            Span<float> dx = ChainState.Exactly(c.DX, s), dy = ChainState.Exactly(c.DY, s), dz = ChainState.Exactly(c.DZ, s);
-            Span<float> dlx = ChainState.Exactly(c.DLowX, s), dly = ChainState.Exactly(c.DLowY, s), dlz = ChainState.Exactly(c.DLowZ, s);
-            Span<double> motionX = ChainState.Exactly(c.MotionX, s), motionY = ChainState.Exactly(c.MotionY, s), motionZ = ChainState.Exactly(c.MotionZ, s);
+            ReadOnlySpan<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
+            ReadOnlySpan<float> rest = ChainState.Exactly(c.RestLength, s);
             Span<double> error = ChainState.Exactly(c.LengthError, s);
             ReadOnlySpan<double> sx = ChainState.Exactly(c.StepX, s), sy = ChainState.Exactly(c.StepY, s), sz = ChainState.Exactly(c.StepZ, s);
-            ReadOnlySpan<bool> broken = ChainState.Exactly(c.Broken, s), active = ChainState.Exactly(c.Active, s);
-            double qx = 0, qy = 0, qz = 0, mx, my, mz;
-            // segment i − 1: its step (0 when broken or before the first particle), active flag, direction and length
-            double ax = 0, ay = 0, az = 0;
-            bool before = false;
-            float ex = 0f, ey = 0f, ez = 0f, el = 0f, er = 0f;
-            for (int i = 0; i < s; i++)
-            {
-                double px = 0, py = 0, pz = 0;
-                if (!broken[i]) { px = sx[i]; py = sy[i]; pz = sz[i]; }
-                Move(c, i, w[i], px - ax, py - ay, pz - az, contacts, out mx, out my, out mz);
-                ChainState.Add(ref dx[i], ref dlx[i], mx); ChainState.Add(ref dy[i], ref dly[i], my); ChainState.Add(ref dz[i], ref dlz[i], mz);
-                motionX[i] = mx; motionY[i] = my; motionZ[i] = mz;
-                if (before) error[i - 1] = LengthError(mx - qx, my - qy, mz - qz, ex, ey, ez, el, er);
-                qx = mx; qy = my; qz = mz;
-                if (broken[i]) { ax = 0; ay = 0; az = 0; } else { ax = sx[i]; ay = sy[i]; az = sz[i]; }
-                before = active[i]; ex = dirX[i]; ey = dirY[i]; ez = dirZ[i]; el = length[i]; er = rest[i];
-            }
-            Move(c, s, c.InverseMass[s], -ax, -ay, -az, contacts, out mx, out my, out mz);
-            c.AddDisplacement(s, mx, my, mz);
-            c.MotionX[s] = mx; c.MotionY[s] = my; c.MotionZ[s] = mz;
-            if (before) error[s - 1] = LengthError(mx - qx, my - qy, mz - qz, ex, ey, ez, el, er);
+            ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
             Span<double> fx = ChainState.Exactly(c.ForceX, s), fy = ChainState.Exactly(c.ForceY, s), fz = ChainState.Exactly(c.ForceZ, s);
             Span<double> lambda = ChainState.Exactly(c.Lambda, s);
             ReadOnlySpan<bool> assembled = ChainState.Exactly(c.Assembled, s);
@@ -370,6 +346,53 @@ namespace HookeRope.Solver
             }
             if (!unconverged && mismatched) unconverged = Mismatched(c, tensionOnly, floor);
             return worst;
+        }
+
+        /// <summary>
+        /// The particle pass of <see cref="Apply"/>: moves every particle by its mobility times this iteration's pull (at a
+        /// contact through <see cref="Move"/>), records its motion and each active segment's second-order length error.
+        /// Specialised on contacts (<see cref="SegmentForceSystem.WithContacts"/>): without them the loop calls nothing, so
+        /// its motion and carried segment stay in registers.
+        /// </summary>
+        private static void MoveParticles<T>(ChainState c) where T : struct
+        {
+            int s = c.SegmentCount;
+            // spans of exactly s entries (the loop bound) index without bounds checks; particle s is moved after the loop.
+            // Particle i is pulled by segment i (index i) and segment i − 1, whose values are carried from the pass before.
+            ReadOnlySpan<float> w = ChainState.Exactly(c.InverseMass, s), dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
+            ReadOnlySpan<float> length = ChainState.Exactly(c.Length, s), rest = ChainState.Exactly(c.RestLength, s);
+            Span<float> dx = ChainState.Exactly(c.DX, s), dy = ChainState.Exactly(c.DY, s), dz = ChainState.Exactly(c.DZ, s);
+            Span<float> dlx = ChainState.Exactly(c.DLowX, s), dly = ChainState.Exactly(c.DLowY, s), dlz = ChainState.Exactly(c.DLowZ, s);
+            Span<double> motionX = ChainState.Exactly(c.MotionX, s), motionY = ChainState.Exactly(c.MotionY, s), motionZ = ChainState.Exactly(c.MotionZ, s);
+            Span<double> error = ChainState.Exactly(c.LengthError, s);
+            ReadOnlySpan<double> sx = ChainState.Exactly(c.StepX, s), sy = ChainState.Exactly(c.StepY, s), sz = ChainState.Exactly(c.StepZ, s);
+            ReadOnlySpan<bool> broken = ChainState.Exactly(c.Broken, s), active = ChainState.Exactly(c.Active, s);
+            double qx = 0, qy = 0, qz = 0, mx, my, mz;
+            // segment i − 1: its step (0 when broken or before the first particle), active flag, direction and length
+            double ax = 0, ay = 0, az = 0;
+            bool before = false;
+            float ex = 0f, ey = 0f, ez = 0f, el = 0f, er = 0f;
+            for (int i = 0; i < s; i++)
+            {
+                double px = 0, py = 0, pz = 0;
+                if (!broken[i]) { px = sx[i]; py = sy[i]; pz = sz[i]; }
+                if (typeof(T) == typeof(SegmentForceSystem.WithContacts)) Move(c, i, w[i], px - ax, py - ay, pz - az, true, out mx, out my, out mz);
+                else
+                {
+                    double wi = w[i];
+                    mx = wi * (px - ax); my = wi * (py - ay); mz = wi * (pz - az);
+                }
+                ChainState.Add(ref dx[i], ref dlx[i], mx); ChainState.Add(ref dy[i], ref dly[i], my); ChainState.Add(ref dz[i], ref dlz[i], mz);
+                motionX[i] = mx; motionY[i] = my; motionZ[i] = mz;
+                if (before) error[i - 1] = LengthError(mx - qx, my - qy, mz - qz, ex, ey, ez, el, er);
+                qx = mx; qy = my; qz = mz;
+                if (broken[i]) { ax = 0; ay = 0; az = 0; } else { ax = sx[i]; ay = sy[i]; az = sz[i]; }
+                before = active[i]; ex = dirX[i]; ey = dirY[i]; ez = dirZ[i]; el = length[i]; er = rest[i];
+            }
+            Move(c, s, c.InverseMass[s], -ax, -ay, -az, typeof(T) == typeof(SegmentForceSystem.WithContacts), out mx, out my, out mz);
+            c.AddDisplacement(s, mx, my, mz);
+            c.MotionX[s] = mx; c.MotionY[s] = my; c.MotionZ[s] = mz;
+            if (before) error[s - 1] = LengthError(mx - qx, my - qy, mz - qz, ex, ey, ez, el, er);
         }
 
         /// <summary>How much longer (m) released segment j now is than its effective rest length (≤ 0: not stretched).</summary>
@@ -439,8 +462,15 @@ namespace HookeRope.Solver
         {
             double along = ux * ex + uy * ey + uz * ez;
             double perp = ux * ux + uy * uy + uz * uz - along * along;
-            return perp / (2.0 * Math.Max(length, 1e-6 * rest));
+            return perp / (2.0 * AtLeast(length, 1e-6 * rest));
         }
+
+        /// <summary>
+        /// max(value, floor) for a positive floor, as Math.Max gives it (a NaN value stays NaN), without Math.Max's code for
+        /// NaN and signed zeros, which the JIT expands to about twenty instructions per call.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static double AtLeast(double value, double floor) => value < floor ? floor : value;
 
         /// <summary>See <see cref="Iterate"/>: the estimated tension was below half the result where 4·T·h²·max(w)/l &gt; 1.</summary>
         private static bool EstimateTooLow(ChainState c, double invH2)

@@ -25,11 +25,14 @@ namespace HookeRope.Solver
             Back(c);
         }
 
-        /// <summary>Type arguments of <see cref="Forward{T}"/>: the JIT compiles one copy per struct and folds the contact test.</summary>
-        private struct WithContacts { }
+        /// <summary>
+        /// Type argument of the kernels specialised on contacts (<see cref="Forward{T}"/>, ExactChainSolver's particle pass):
+        /// the JIT compiles one copy per struct and folds the test typeof(T) == typeof(WithContacts).
+        /// </summary>
+        internal struct WithContacts { }
 
-        /// <summary>See <see cref="WithContacts"/>.</summary>
-        private struct NoContacts { }
+        /// <summary>See <see cref="WithContacts"/>: the copy for a chain without contacts, which calls nothing per element.</summary>
+        internal struct NoContacts { }
 
         /// <summary>
         /// Forward sweep: S_j = A_j − L_j S_{j−1}⁻¹ U_{j−1} (its inverse into PivotInverse), y_j = R_j − L_j S_{j−1}⁻¹ y_{j−1}
