@@ -262,13 +262,12 @@ namespace HookeRope.Solver
             for (int j = 0; j < s; j++)
             {
                 if (broken[j]) continue;
-                double nx = dirX[j], ny = dirY[j], nz = dirZ[j];
                 if (active[j])
                 {
-                    double along = (fx[j] + dx[j]) * nx + (fy[j] + dy[j]) * ny + (fz[j] + dz[j]) * nz;
+                    double along = (fx[j] + dx[j]) * dirX[j] + (fy[j] + dy[j]) * dirY[j] + (fz[j] + dz[j]) * dirZ[j];
                     if (along < 0.0) { active[j] = false; changed = true; }
                 }
-                else if (IsRestorable(c, j) && StretchAfter(c, j, nx, ny, nz) > 0.0)
+                else if (Restores(c, j))
                 {
                     active[j] = true;
                     changed = true;
@@ -276,6 +275,14 @@ namespace HookeRope.Solver
             }
             return changed;
         }
+
+        /// <summary>
+        /// True when released segment j rejoins the system: it may (<see cref="IsRestorable"/>) and this solution stretches it
+        /// (<see cref="StretchAfter"/> along its stored direction). Not inlined: the pass over the active rows keeps its
+        /// values in registers.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
+        private static bool Restores(ChainState c, int j) => IsRestorable(c, j) && StretchAfter(c, j, c.DirX[j], c.DirY[j], c.DirZ[j]) > 0.0;
 
         /// <summary>A released segment that may rejoin the system (it has mobility or compliance, unlike an invalid row).</summary>
         private static bool IsRestorable(ChainState c, int j) => (double)c.InverseMass[j] + c.InverseMass[j + 1] > 0.0 || c.Compliance[j] > 0f;
