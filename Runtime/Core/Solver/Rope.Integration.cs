@@ -114,9 +114,7 @@ namespace HookeRope.Solver
                 qx[i] = ox; qy[i] = oy; qz[i] = oz;
             }
             chain.Size = size;
-            Array.Clear(chain.SolveDX, 0, n);
-            Array.Clear(chain.SolveDY, 0, n);
-            Array.Clear(chain.SolveDZ, 0, n);
+            // Δ (SolveDX/Y/Z) starts from 0 at the substep's first mark (TrackSolveDisplacement's start): no clearing pass
         }
 
         /// <summary>
@@ -131,14 +129,26 @@ namespace HookeRope.Solver
             chain.AddDisplacement(i, dx * h, dy * h, dz * h);
         }
 
-        /// <summary>Marks the start (sign −1) or the end (+1) of a chain solve: Δ accumulates the displacement it applies.</summary>
-        private void TrackSolveDisplacement(double sign)
+        /// <summary>
+        /// Marks the start (sign −1) or the end (+1) of a chain solve: Δ accumulates the displacement it applies.
+        /// <paramref name="start"/>: the substep's first mark, where Δ starts from 0 (written, not read: the prediction does
+        /// not clear it; 0 + x keeps the bits the cleared sum gave, +0 for a zero displacement).
+        /// </summary>
+        private void TrackSolveDisplacement(double sign, bool start)
         {
             int n = chain.ParticleCount;
             // spans of exactly n entries (the loop bound): indexed without bounds checks
             ReadOnlySpan<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
             ReadOnlySpan<float> lx = ChainState.Exactly(chain.DLowX, n), ly = ChainState.Exactly(chain.DLowY, n), lz = ChainState.Exactly(chain.DLowZ, n);
             Span<double> sx = ChainState.Exactly(chain.SolveDX, n), sy = ChainState.Exactly(chain.SolveDY, n), sz = ChainState.Exactly(chain.SolveDZ, n);
+            if (start)
+            {
+                for (int i = 0; i < n; i++)
+                {
+                    sx[i] = 0.0 + sign * ((double)dx[i] + lx[i]); sy[i] = 0.0 + sign * ((double)dy[i] + ly[i]); sz[i] = 0.0 + sign * ((double)dz[i] + lz[i]);
+                }
+                return;
+            }
             for (int i = 0; i < n; i++)
             {
                 sx[i] += sign * ((double)dx[i] + lx[i]); sy[i] += sign * ((double)dy[i] + ly[i]); sz[i] += sign * ((double)dz[i] + lz[i]);

@@ -154,7 +154,7 @@ namespace HookeRope.Solver
             bool unconverged = false;
             for (int it = 0; it < total; it++)
             {
-                if (trackSolve) TrackSolveDisplacement(-1.0);
+                if (trackSolve) TrackSolveDisplacement(-1.0, it == 0);
                 bool softPins = hasCompliantPins && ProjectCompliantPins(hEff, t);
                 if (exact)
                 {
@@ -167,7 +167,7 @@ namespace HookeRope.Solver
                 {
                     GaussSeidelSolver.Iterate(chain, hEff, solveBeta, tensionOnly);
                 }
-                if (trackSolve) TrackSolveDisplacement(1.0);
+                if (trackSolve) TrackSolveDisplacement(1.0, false);
                 if (softPins) ReleaseCompliantPins(hEff, t);
                 CollidePhase(h, it == total - 1 ? ContactPass.LastIteration : ContactPass.BetweenIterations);
             }
