@@ -56,10 +56,11 @@ namespace HookeRope.Solver
 
         // exact solve (double, N·s² per segment; see ExactChainSolver): the segment force vectors Λ = h²·F accumulated over
         // the substep's iterations, this iteration's change δΛ, the residual R (m), the block Thomas sweep's inverse
-        // pivots (6 per segment, symmetric 3×3; its reduced right-hand sides live in Step until the back substitution), the axial and transverse compliances of
+        // pivots (6 per segment, symmetric 3×3) and reduced right-hand sides (kept for the next active-set pass, which redoes
+        // only the rows from the first changed one), the axial and transverse compliances of
         // Λ (m per N·s²), and the active flags (tension-only, valid rows)
         public readonly double[] ForceX, ForceY, ForceZ, StepX, StepY, StepZ, ResidualX, ResidualY, ResidualZ;
-        public readonly double[] PivotInverse;
+        public readonly double[] PivotInverse, ReducedX, ReducedY, ReducedZ;
         public readonly double[] AxialCompliance, TransverseCompliance, EstimatedTension;
         public readonly bool[] Active;
         // the convergence test and line search of the exact solve (see ExactChainSolver.Apply and Mismatched, ChainLineSearch): each
@@ -135,7 +136,7 @@ namespace HookeRope.Solver
             ForceX = new double[s]; ForceY = new double[s]; ForceZ = new double[s];
             StepX = new double[s]; StepY = new double[s]; StepZ = new double[s];
             ResidualX = new double[s]; ResidualY = new double[s]; ResidualZ = new double[s];
-            PivotInverse = new double[6 * s];
+            PivotInverse = new double[6 * s]; ReducedX = new double[s]; ReducedY = new double[s]; ReducedZ = new double[s];
             AxialCompliance = new double[s]; TransverseCompliance = new double[s]; EstimatedTension = new double[s];
             Active = new bool[s];
             EffectiveRest = new double[s]; LengthError = new double[s]; Assembled = new bool[s];

@@ -243,17 +243,26 @@ namespace HookeRope.Solver
         private static void SolveActiveSet(ChainState c, bool tensionOnly, bool contacts, bool first)
         {
             bool frictionMoving = false;
+            // the first row the forward sweep must redo: between passes without contacts only the tension-only flags change,
+            // and the rows before the first changed one keep their pivots and reduced right-hand sides bit for bit
+            int from = 0;
             for (int pass = 1; ; pass++)
             {
-                SegmentForceSystem.Solve(c);
+                SegmentForceSystem.Solve(c, from);
                 if ((!tensionOnly && !contacts) || pass >= MaxFrictionPasses || (pass >= MaxPasses && !frictionMoving)) return;
-                bool changed = tensionOnly && UpdateTensionOnlySet(c);
-                if (contacts) changed |= ChainContacts.Update(c, first, out frictionMoving);
+                from = c.SegmentCount;
+                bool changed = tensionOnly && UpdateTensionOnlySet(c, out from);
+                if (contacts)
+                {
+                    changed |= ChainContacts.Update(c, first, out frictionMoving);
+                    from = 0;
+                }
                 if (!changed) return;
             }
         }
 
-        private static bool UpdateTensionOnlySet(ChainState c)
+        /// <summary>Releases and re-admits tension-only segments (see <see cref="SolveActiveSet"/>); <paramref name="firstChanged"/>: the first row whose flag changed (SegmentCount when none).</summary>
+        private static bool UpdateTensionOnlySet(ChainState c, out int firstChanged)
         {
             int s = c.SegmentCount;
             // spans of exactly s entries (the loop bound): indexed without bounds checks
@@ -263,20 +272,22 @@ namespace HookeRope.Solver
             Span<bool> active = ChainState.Exactly(c.Active, s);
             ReadOnlySpan<bool> broken = ChainState.Exactly(c.Broken, s);
             bool changed = false;
+            int first = s;
             for (int j = 0; j < s; j++)
             {
                 if (broken[j]) continue;
                 if (active[j])
                 {
                     double along = (fx[j] + dx[j]) * dirX[j] + (fy[j] + dy[j]) * dirY[j] + (fz[j] + dz[j]) * dirZ[j];
-                    if (along < 0.0) { active[j] = false; changed = true; }
+                    if (along >= 0.0) continue;
+                    active[j] = false;
                 }
-                else if (Restores(c, j))
-                {
-                    active[j] = true;
-                    changed = true;
-                }
+                else if (Restores(c, j)) active[j] = true;
+                else continue;
+                if (!changed) first = j;
+                changed = true;
             }
+            firstChanged = first;
             return changed;
         }
 

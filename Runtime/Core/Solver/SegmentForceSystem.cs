@@ -15,13 +15,17 @@ namespace HookeRope.Solver
     /// </summary>
     internal static class SegmentForceSystem
     {
-        /// <summary>Solves the system of the current active set and contact set into Step (δΛ).</summary>
-        public static void Solve(ChainState c)
+        /// <summary>
+        /// Solves the system of the current active set and contact set into Step (δΛ). <paramref name="from"/>: the first row
+        /// whose inputs changed since the last solve of the same linearisation (0: all); the rows before it keep their pivots
+        /// and reduced right-hand sides, which depend only on the rows before them.
+        /// </summary>
+        public static void Solve(ChainState c, int from)
         {
             // the forward sweep specialised on whether there are contacts: without them the loop calls nothing, so its
             // carried pivot and reduced vector stay in registers (every xmm register is caller-saved on x86-64)
-            if (c.ContactCount > 0) Forward<WithContacts>(c);
-            else Forward<NoContacts>(c);
+            if (c.ContactCount > 0) Forward<WithContacts>(c, from);
+            else Forward<NoContacts>(c, from);
             Back(c);
         }
 
@@ -35,10 +39,10 @@ namespace HookeRope.Solver
         internal struct NoContacts { }
 
         /// <summary>
-        /// Forward sweep: S_j = A_j − L_j S_{j−1}⁻¹ U_{j−1} (its inverse into PivotInverse), y_j = R_j − L_j S_{j−1}⁻¹ y_{j−1}
-        /// (into Step, which the back substitution overwrites with δΛ in place).
+        /// Forward sweep from row <paramref name="from"/>: S_j = A_j − L_j S_{j−1}⁻¹ U_{j−1} (its inverse into PivotInverse),
+        /// y_j = R_j − L_j S_{j−1}⁻¹ y_{j−1} (into Reduced), carried in from the stored row before.
         /// </summary>
-        private static void Forward<T>(ChainState c) where T : struct
+        private static void Forward<T>(ChainState c, int from) where T : struct
         {
             bool contacts = typeof(T) == typeof(WithContacts);
             int s = c.SegmentCount;
@@ -47,13 +51,20 @@ namespace HookeRope.Solver
             ReadOnlySpan<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
             ReadOnlySpan<double> axial = ChainState.Exactly(c.AxialCompliance, s), transverse = ChainState.Exactly(c.TransverseCompliance, s);
             Span<double> gi = ChainState.Exactly(c.PivotInverse, 6 * s);
-            Span<double> yx = ChainState.Exactly(c.StepX, s), yy = ChainState.Exactly(c.StepY, s), yz = ChainState.Exactly(c.StepZ, s);
+            Span<double> yx = ChainState.Exactly(c.ReducedX, s), yy = ChainState.Exactly(c.ReducedY, s), yz = ChainState.Exactly(c.ReducedZ, s);
             ReadOnlySpan<double> rx = ChainState.Exactly(c.ResidualX, s), ry = ChainState.Exactly(c.ResidualY, s), rz = ChainState.Exactly(c.ResidualZ, s);
             ReadOnlySpan<double> fx = ChainState.Exactly(c.ForceX, s), fy = ChainState.Exactly(c.ForceY, s), fz = ChainState.Exactly(c.ForceZ, s);
             ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
             double gxx = 1, gxy = 0, gxz = 0, gyy = 1, gyz = 0, gzz = 1, px = 0, py = 0, pz = 0;
             bool previousActive = false;
-            for (int j = 0; j < s; j++)
+            if (from > 0)
+            {
+                ReadOnlySpan<double> kept = gi.Slice(6 * (from - 1), 6);
+                gxx = kept[0]; gxy = kept[1]; gxz = kept[2]; gyy = kept[3]; gyz = kept[4]; gzz = kept[5];
+                px = yx[from - 1]; py = yy[from - 1]; pz = yz[from - 1];
+                previousActive = active[from - 1];
+            }
+            for (int j = from; j < s; j++)
             {
                 double sxx, sxy, sxz, syy, syz, szz, bx, by, bz;
                 bool rowActive = active[j];
@@ -102,7 +113,7 @@ namespace HookeRope.Solver
             }
         }
 
-        /// <summary>Back substitution in place: δ_j = S_j⁻¹ (y_j − U_j δ_{j+1}), U_j = −W_{j+1} on an active row.</summary>
+        /// <summary>Back substitution: δ_j = S_j⁻¹ (y_j − U_j δ_{j+1}), U_j = −W_{j+1} on an active row.</summary>
         private static void Back(ChainState c)
         {
             int s = c.SegmentCount;
@@ -110,11 +121,12 @@ namespace HookeRope.Solver
             ReadOnlySpan<float> wB = ChainState.Shifted(c.InverseMass, s);
             ReadOnlySpan<double> gi = ChainState.Exactly(c.PivotInverse, 6 * s);
             ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
+            ReadOnlySpan<double> yx = ChainState.Exactly(c.ReducedX, s), yy = ChainState.Exactly(c.ReducedY, s), yz = ChainState.Exactly(c.ReducedZ, s);
             Span<double> dx = ChainState.Exactly(c.StepX, s), dy = ChainState.Exactly(c.StepY, s), dz = ChainState.Exactly(c.StepZ, s);
             double nx = 0, ny = 0, nz = 0;
             for (int j = s - 1; j >= 0; j--)
             {
-                double vx = dx[j], vy = dy[j], vz = dz[j];
+                double vx = yx[j], vy = yy[j], vz = yz[j];
                 if (active[j] && j + 1 < s)
                 {
                     double mx, my, mz;
