@@ -63,7 +63,7 @@ namespace HookeRope.Solver
         /// Δ = 0; kinematic particles do not move here (the pins place them). A backward-Euler substep predicts d = h·v + h²·g
         /// with base v + h·g − d/h (v = d/h of the unrounded prediction plus what moved the particle since).
         /// </summary>
-        private void PredictSecondOrder(TimeIntegrator scheme, double h, Float3 g)
+        private void PredictSecondOrder(TimeIntegrator scheme, double h, Float3 g, bool measureSize)
         {
             int n = chain.ParticleCount;
             // spans of exactly n entries (the loop bound): indexed without bounds checks
@@ -83,7 +83,7 @@ namespace HookeRope.Solver
             for (int i = 0; i < n; i++)
             {
                 px[i] = x[i]; py[i] = y[i]; pz[i] = z[i];
-                size = Larger(size, x[i], y[i], z[i]);
+                if (measureSize) size = Larger(size, x[i], y[i], z[i]);
                 double wx = vx[i], wy = vy[i], wz = vz[i];
                 float ox, oy, oz;
                 if (kinematic[i])
@@ -180,7 +180,7 @@ namespace HookeRope.Solver
                 }
                 vx[i] = bx[i] + mx * invH + k * sx[i]; vy[i] = by[i] + my * invH + k * sy[i]; vz[i] = bz[i] + mz * invH + k * sz[i];
             }
-            CommitPositions();
+            CommitPositions(false, 0.0);
             // a violent substep (see ViolentStrain) restarts the history: the next substep is backward Euler
             historyValid = !violent;
             historyStep = h;

@@ -102,8 +102,10 @@ namespace HookeRope.Solver
         private void PredictPhase(float t, float hostDeltaTime, bool secondOrder, TimeIntegrator scheme, float h, double hd, Float3 g)
         {
             if (colliders.Count > 0) colliders.PrepareSubstep(t, hostDeltaTime);
-            if (secondOrder) PredictSecondOrder(scheme, hd, g);
-            else Predict(hd, g);
+            // the largest coordinate (ChainState.Size) is the exact solve's round-off floor: the Gauss–Seidel sweep skips it
+            bool measureSize = settings.Solver == ConstraintSolverKind.ExactChain;
+            if (secondOrder) PredictSecondOrder(scheme, hd, g, measureSize);
+            else Predict(hd, g, measureSize);
             MovePins(t);
             // cleared in loops: for the short arrays of a rope a call to Array.Clear costs more than the stores
             Span<double> lambda = ChainState.Exactly(chain.Lambda, chain.SegmentCount);
@@ -192,7 +194,7 @@ namespace HookeRope.Solver
             if (pinCount > 0) UpdatePinForces(hEff, g);
         }
 
-        private void Predict(double h, Float3 g)
+        private void Predict(double h, Float3 g, bool measureSize)
         {
             double gx = g.X * h, gy = g.Y * h, gz = g.Z * h;
             int n = chain.ParticleCount;
@@ -207,7 +209,7 @@ namespace HookeRope.Solver
             for (int i = 0; i < n; i++)
             {
                 px[i] = x[i]; py[i] = y[i]; pz[i] = z[i];
-                size = Larger(size, x[i], y[i], z[i]);
+                if (measureSize) size = Larger(size, x[i], y[i], z[i]);
                 if (kinematic[i]) { dx[i] = 0f; dy[i] = 0f; dz[i] = 0f; lx[i] = 0f; ly[i] = 0f; lz[i] = 0f; continue; }
                 double ux = vx[i] + gx, uy = vy[i] + gy, uz = vz[i] + gz;
                 vx[i] = ux; vy[i] = uy; vz[i] = uz;
@@ -312,28 +314,17 @@ namespace HookeRope.Solver
             cz = (double)chain.PrevZ[i] - target.Z + chain.LowZ[i] + ((double)chain.DZ[i] + chain.DLowZ[i]);
         }
 
-        private void UpdateVelocities(double h)
-        {
-            double invH = 1.0 / h;
-            int n = chain.ParticleCount;
-            ReadOnlySpan<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
-            ReadOnlySpan<float> lx = ChainState.Exactly(chain.DLowX, n), ly = ChainState.Exactly(chain.DLowY, n), lz = ChainState.Exactly(chain.DLowZ, n);
-            Span<double> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
-            for (int i = 0; i < n; i++)
-            {
-                // v = (D + DLow)/h
-                vx[i] = ((double)dx[i] + lx[i]) * invH; vy[i] = ((double)dy[i] + ly[i]) * invH; vz[i] = ((double)dz[i] + lz[i]) * invH;
-            }
-            CommitPositions();
-        }
+        /// <summary>Velocities of a backward-Euler run, v = (D + DLow)/h (h s), written in the commit pass (<see cref="CommitPositions"/>).</summary>
+        private void UpdateVelocities(double h) => CommitPositions(true, 1.0 / h);
 
         /// <summary>
         /// Ends every particle's substep at x = x_prev + Low + d, with the velocity the integrator just wrote (m/s). The sum is
         /// formed in double and split into the float position and its new remainder Low, so no part of d is rounded away. Never
         /// lets a non-finite value into the state: then the particle falls back to its last good position, at rest, with no
-        /// displacement (<see cref="RestoreParticle"/>).
+        /// displacement (<see cref="RestoreParticle"/>). With firstOrder, the pass first writes backward Euler's velocity
+        /// v = (D + DLow)·invH (invH = 1/h in 1/s), so the displacements are loaded once.
         /// </summary>
-        private void CommitPositions()
+        private void CommitPositions(bool firstOrder, double invH)
         {
             int n = chain.ParticleCount;
             // spans of exactly n entries (the loop bound): indexed without bounds checks
@@ -342,9 +333,11 @@ namespace HookeRope.Solver
             ReadOnlySpan<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
             ReadOnlySpan<float> dlx = ChainState.Exactly(chain.DLowX, n), dly = ChainState.Exactly(chain.DLowY, n), dlz = ChainState.Exactly(chain.DLowZ, n);
             Span<float> lx = ChainState.Exactly(chain.LowX, n), ly = ChainState.Exactly(chain.LowY, n), lz = ChainState.Exactly(chain.LowZ, n);
-            ReadOnlySpan<double> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
+            Span<double> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
             for (int i = 0; i < n; i++)
             {
+                // v = (D + DLow)/h
+                if (firstOrder) { vx[i] = ((double)dx[i] + dlx[i]) * invH; vy[i] = ((double)dy[i] + dly[i]) * invH; vz[i] = ((double)dz[i] + dlz[i]) * invH; }
                 // x = x_prev + Low + (D + DLow)
                 double ex = (double)px[i] + lx[i] + ((double)dx[i] + dlx[i]), ey = (double)py[i] + ly[i] + ((double)dy[i] + dly[i]);
                 double ez = (double)pz[i] + lz[i] + ((double)dz[i] + dlz[i]);
