@@ -68,10 +68,11 @@ namespace HookeRope.Solver
                     double g = alpha > 0.0 ? gamma : 0.0;
                     double rel = g > 0.0 ? nx * ddx + ny * ddy + nz * ddz : 0.0;
                     double restJ = !featured || plastic == null ? rest[j] : plastic.Rest(j); // a plastic segment's force is measured from L_p
-                    double numerator = -((double)len - restJ) - alphaTilde * lambda[j] - g * rel;
+                    double lambdaJ = lambda[j];
+                    double numerator = -((double)len - restJ) - alphaTilde * lambdaJ - g * rel;
                     if (featured && plastic != null)
                     {
-                        numerator = ChooseBranch(plastic, j, lambda[j], g, wSum, invH2, numerator, alphaTilde, out double branchCompliance);
+                        numerator = ChooseBranch(plastic, j, lambdaJ, g, wSum, invH2, numerator, alphaTilde, out double branchCompliance);
                         alphaTilde = branchCompliance;
                     }
                     if (featured && contacts && (c.ContactActive[j] || c.ContactActive[j + 1]))
@@ -85,13 +86,14 @@ namespace HookeRope.Solver
                     else
                     {
                         double d = numerator / ((1.0 + g) * wSum + alphaTilde);
-                        d = ChainState.LimitToPulling(lambda[j], d, tensionOnly);
+                        d = ChainState.LimitToPulling(lambdaJ, d, tensionOnly);
                         if (d != 0.0)
                         {
-                            lambda[j] += d;
-                            // D + DLow moved exactly (ChainState.AddDisplacement on the carried copies)
-                            double ma = wa * d, mb = wb * d;
-                            ChainState.Add(ref dxa, ref dlxa, -nx * ma); ChainState.Add(ref dya, ref dlya, -ny * ma); ChainState.Add(ref dza, ref dlza, -nz * ma);
+                            lambda[j] = lambdaJ + d;
+                            // D + DLow moved exactly (ChainState.AddDisplacement on the carried copies); end a by n·(−w_a·d), the
+                            // same product as (−n)·(w_a·d), with one negation instead of three
+                            double ma = -(wa * d), mb = wb * d;
+                            ChainState.Add(ref dxa, ref dlxa, nx * ma); ChainState.Add(ref dya, ref dlya, ny * ma); ChainState.Add(ref dza, ref dlza, nz * ma);
                             ChainState.Add(ref dxb, ref dlxb, nx * mb); ChainState.Add(ref dyb, ref dlyb, ny * mb); ChainState.Add(ref dzb, ref dlzb, nz * mb);
                         }
                     }
