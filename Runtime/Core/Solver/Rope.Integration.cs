@@ -63,8 +63,9 @@ namespace HookeRope.Solver
         /// Δ = 0; kinematic particles do not move here (the pins place them). A backward-Euler substep predicts d = h·v + h²·g
         /// with base v + h·g − d/h (v = d/h of the unrounded prediction plus what moved the particle since).
         /// </summary>
-        private void PredictSecondOrder(TimeIntegrator scheme, double h, Float3 g, bool measureSize)
+        private void PredictSecondOrder<TSize>(TimeIntegrator scheme, double h, Float3 g) where TSize : struct
         {
+            bool measureSize = typeof(TSize) == typeof(Sized); // ChainState.Size for the exact solve only (see Predict)
             int n = chain.ParticleCount;
             // spans of exactly n entries (the loop bound): indexed without bounds checks
             ReadOnlySpan<float> x = ChainState.Exactly(chain.X, n), y = ChainState.Exactly(chain.Y, n), z = ChainState.Exactly(chain.Z, n);
@@ -180,7 +181,7 @@ namespace HookeRope.Solver
                 }
                 vx[i] = bx[i] + mx * invH + k * sx[i]; vy[i] = by[i] + my * invH + k * sy[i]; vz[i] = bz[i] + mz * invH + k * sz[i];
             }
-            CommitPositions(false, 0.0);
+            CommitPositions();
             // a violent substep (see ViolentStrain) restarts the history: the next substep is backward Euler
             historyValid = !violent;
             historyStep = h;

@@ -103,9 +103,13 @@ namespace HookeRope.Solver
         {
             if (colliders.Count > 0) colliders.PrepareSubstep(t, hostDeltaTime);
             // the largest coordinate (ChainState.Size) is the exact solve's round-off floor: the Gauss–Seidel sweep skips it
-            bool measureSize = settings.Solver == ConstraintSolverKind.ExactChain;
-            if (secondOrder) PredictSecondOrder(scheme, hd, g, measureSize);
-            else Predict(hd, g, measureSize);
+            if (settings.Solver == ConstraintSolverKind.ExactChain)
+            {
+                if (secondOrder) PredictSecondOrder<Sized>(scheme, hd, g);
+                else Predict<Sized>(hd, g);
+            }
+            else if (secondOrder) PredictSecondOrder<Unsized>(scheme, hd, g);
+            else Predict<Unsized>(hd, g);
             MovePins(t);
             // cleared in loops: for the short arrays of a rope a call to Array.Clear costs more than the stores
             Span<double> lambda = ChainState.Exactly(chain.Lambda, chain.SegmentCount);
@@ -194,8 +198,19 @@ namespace HookeRope.Solver
             if (pinCount > 0) UpdatePinForces(hEff, g);
         }
 
-        private void Predict(double h, Float3 g, bool measureSize)
+        /// <summary>A prediction that measures <see cref="ChainState.Size"/> (the exact solve's round-off floor).</summary>
+        private struct Sized { }
+
+        /// <summary>A prediction that leaves <see cref="ChainState.Size"/> alone (the Gauss–Seidel sweep does not read it).</summary>
+        private struct Unsized { }
+
+        /// <summary>
+        /// Backward Euler's prediction v += h·g, D + DLow = h·v (h s, g m/s²); kinematic particles do not move here. TSize is
+        /// <see cref="Sized"/> or <see cref="Unsized"/>: the JIT compiles one body for each and folds the size test away.
+        /// </summary>
+        private void Predict<TSize>(double h, Float3 g) where TSize : struct
         {
+            bool measureSize = typeof(TSize) == typeof(Sized);
             double gx = g.X * h, gy = g.Y * h, gz = g.Z * h;
             int n = chain.ParticleCount;
             // spans of exactly n entries (the loop bound): indexed without bounds checks
@@ -314,17 +329,28 @@ namespace HookeRope.Solver
             cz = (double)chain.PrevZ[i] - target.Z + chain.LowZ[i] + ((double)chain.DZ[i] + chain.DLowZ[i]);
         }
 
-        /// <summary>Velocities of a backward-Euler run, v = (D + DLow)/h (h s), written in the commit pass (<see cref="CommitPositions"/>).</summary>
-        private void UpdateVelocities(double h) => CommitPositions(true, 1.0 / h);
+        private void UpdateVelocities(double h)
+        {
+            double invH = 1.0 / h;
+            int n = chain.ParticleCount;
+            ReadOnlySpan<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
+            ReadOnlySpan<float> lx = ChainState.Exactly(chain.DLowX, n), ly = ChainState.Exactly(chain.DLowY, n), lz = ChainState.Exactly(chain.DLowZ, n);
+            Span<double> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
+            for (int i = 0; i < n; i++)
+            {
+                // v = (D + DLow)/h
+                vx[i] = ((double)dx[i] + lx[i]) * invH; vy[i] = ((double)dy[i] + ly[i]) * invH; vz[i] = ((double)dz[i] + lz[i]) * invH;
+            }
+            CommitPositions();
+        }
 
         /// <summary>
         /// Ends every particle's substep at x = x_prev + Low + d, with the velocity the integrator just wrote (m/s). The sum is
         /// formed in double and split into the float position and its new remainder Low, so no part of d is rounded away. Never
         /// lets a non-finite value into the state: then the particle falls back to its last good position, at rest, with no
-        /// displacement (<see cref="RestoreParticle"/>). With firstOrder, the pass first writes backward Euler's velocity
-        /// v = (D + DLow)·invH (invH = 1/h in 1/s), so the displacements are loaded once.
+        /// displacement (<see cref="RestoreParticle"/>).
         /// </summary>
-        private void CommitPositions(bool firstOrder, double invH)
+        private void CommitPositions()
         {
             int n = chain.ParticleCount;
             // spans of exactly n entries (the loop bound): indexed without bounds checks
@@ -333,11 +359,9 @@ namespace HookeRope.Solver
             ReadOnlySpan<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
             ReadOnlySpan<float> dlx = ChainState.Exactly(chain.DLowX, n), dly = ChainState.Exactly(chain.DLowY, n), dlz = ChainState.Exactly(chain.DLowZ, n);
             Span<float> lx = ChainState.Exactly(chain.LowX, n), ly = ChainState.Exactly(chain.LowY, n), lz = ChainState.Exactly(chain.LowZ, n);
-            Span<double> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
+            ReadOnlySpan<double> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
             for (int i = 0; i < n; i++)
             {
-                // v = (D + DLow)/h
-                if (firstOrder) { vx[i] = ((double)dx[i] + dlx[i]) * invH; vy[i] = ((double)dy[i] + dly[i]) * invH; vz[i] = ((double)dz[i] + dlz[i]) * invH; }
                 // x = x_prev + Low + (D + DLow)
                 double ex = (double)px[i] + lx[i] + ((double)dx[i] + dlx[i]), ey = (double)py[i] + ly[i] + ((double)dy[i] + dly[i]);
                 double ez = (double)pz[i] + lz[i] + ((double)dz[i] + dlz[i]);
