@@ -10,6 +10,25 @@ namespace HookeRope.Solver
     {
         public static void Iterate(ChainState c, double h, double beta, bool tensionOnly)
         {
+            // a rope without contacts or plasticity runs the sweep compiled without their branches: no call in the loop, so
+            // nothing the loop keeps in registers is spilled around one (every XMM register is caller-saved)
+            if (c.ContactCount == 0 && c.Plasticity == null) Sweep<Plain>(c, h, beta, tensionOnly);
+            else Sweep<Featured>(c, h, beta, tensionOnly);
+        }
+
+        /// <summary>The sweep compiled for ropes without contacts and plasticity (their branches folded away).</summary>
+        private struct Plain { }
+
+        /// <summary>The sweep compiled with the contact and plastic branches.</summary>
+        private struct Featured { }
+
+        /// <summary>
+        /// The sweep; T is <see cref="Plain"/> or <see cref="Featured"/>. The JIT compiles one body per struct type argument and
+        /// folds typeof(T) == typeof(Featured) to a constant, so the plain body has neither branch.
+        /// </summary>
+        private static void Sweep<T>(ChainState c, double h, double beta, bool tensionOnly) where T : struct
+        {
+            bool featured = typeof(T) == typeof(Featured);
             double invH2 = 1.0 / (h * h);
             double gamma = beta / h; // γ = α̃·β̃/h with β̃ = h²·β·k, k = 1/α
             int s = c.SegmentCount;
@@ -29,8 +48,8 @@ namespace HookeRope.Solver
             ReadOnlySpan<bool> broken = ChainState.Exactly(c.Broken, s);
             Span<double> lambda = ChainState.Exactly(c.Lambda, s);
             Span<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
-            bool contacts = c.ContactCount > 0;
-            SegmentPlasticity plastic = c.Plasticity;
+            bool contacts = featured && c.ContactCount > 0;
+            SegmentPlasticity plastic = featured ? c.Plasticity : null;
             // particle a = j is carried from the projection before (its displacement as that projection left it): each
             // particle's displacement is loaded and stored once per sweep
             float wa = wA[0], dxa = dxA[0], dya = dyA[0], dza = dzA[0], dlxa = dlxA[0], dlya = dlyA[0], dlza = dlzA[0];
@@ -48,14 +67,15 @@ namespace HookeRope.Solver
                     double alphaTilde = alpha * invH2;
                     double g = alpha > 0.0 ? gamma : 0.0;
                     double rel = g > 0.0 ? nx * ddx + ny * ddy + nz * ddz : 0.0;
-                    double restJ = plastic == null ? rest[j] : plastic.Rest(j); // a plastic segment's force is measured from L_p
-                    double numerator = -((double)len - restJ) - alphaTilde * lambda[j] - g * rel;
-                    if (plastic != null)
+                    double restJ = !featured || plastic == null ? rest[j] : plastic.Rest(j); // a plastic segment's force is measured from L_p
+                    double lambdaJ = lambda[j];
+                    double numerator = -((double)len - restJ) - alphaTilde * lambdaJ - g * rel;
+                    if (featured && plastic != null)
                     {
-                        numerator = ChooseBranch(plastic, j, lambda[j], g, wSum, invH2, numerator, alphaTilde, out double branchCompliance);
+                        numerator = ChooseBranch(plastic, j, lambdaJ, g, wSum, invH2, numerator, alphaTilde, out double branchCompliance);
                         alphaTilde = branchCompliance;
                     }
-                    if (contacts && (c.ContactActive[j] || c.ContactActive[j + 1]))
+                    if (featured && contacts && (c.ContactActive[j] || c.ContactActive[j + 1]))
                     {
                         dxA[j] = dxa; dyA[j] = dya; dzA[j] = dza; dxB[j] = dxb; dyB[j] = dyb; dzB[j] = dzb;
                         dlxA[j] = dlxa; dlyA[j] = dlya; dlzA[j] = dlza; dlxB[j] = dlxb; dlyB[j] = dlyb; dlzB[j] = dlzb;
@@ -66,13 +86,14 @@ namespace HookeRope.Solver
                     else
                     {
                         double d = numerator / ((1.0 + g) * wSum + alphaTilde);
-                        d = ChainState.LimitToPulling(lambda[j], d, tensionOnly);
+                        d = ChainState.LimitToPulling(lambdaJ, d, tensionOnly);
                         if (d != 0.0)
                         {
-                            lambda[j] += d;
-                            // D + DLow moved exactly (ChainState.AddDisplacement on the carried copies)
-                            double ma = wa * d, mb = wb * d;
-                            ChainState.Add(ref dxa, ref dlxa, -nx * ma); ChainState.Add(ref dya, ref dlya, -ny * ma); ChainState.Add(ref dza, ref dlza, -nz * ma);
+                            lambda[j] = lambdaJ + d;
+                            // D + DLow moved exactly (ChainState.AddDisplacement on the carried copies); end a by n·(−w_a·d), the
+                            // same product as (−n)·(w_a·d), with one negation instead of three
+                            double ma = -(wa * d), mb = wb * d;
+                            ChainState.Add(ref dxa, ref dlxa, nx * ma); ChainState.Add(ref dya, ref dlya, ny * ma); ChainState.Add(ref dza, ref dlza, nz * ma);
                             ChainState.Add(ref dxb, ref dlxb, nx * mb); ChainState.Add(ref dyb, ref dlyb, ny * mb); ChainState.Add(ref dzb, ref dlzb, nz * mb);
                         }
                     }

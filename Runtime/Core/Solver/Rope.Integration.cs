@@ -63,8 +63,9 @@ namespace HookeRope.Solver
         /// Δ = 0; kinematic particles do not move here (the pins place them). A backward-Euler substep predicts d = h·v + h²·g
         /// with base v + h·g − d/h (v = d/h of the unrounded prediction plus what moved the particle since).
         /// </summary>
-        private void PredictSecondOrder(TimeIntegrator scheme, double h, Float3 g)
+        private void PredictSecondOrder<TSize>(TimeIntegrator scheme, double h, Float3 g) where TSize : struct
         {
+            bool measureSize = typeof(TSize) == typeof(Sized); // ChainState.Size for the exact solve only (see Predict)
             int n = chain.ParticleCount;
             // spans of exactly n entries (the loop bound): indexed without bounds checks
             ReadOnlySpan<float> x = ChainState.Exactly(chain.X, n), y = ChainState.Exactly(chain.Y, n), z = ChainState.Exactly(chain.Z, n);
@@ -83,7 +84,7 @@ namespace HookeRope.Solver
             for (int i = 0; i < n; i++)
             {
                 px[i] = x[i]; py[i] = y[i]; pz[i] = z[i];
-                size = Larger(size, x[i], y[i], z[i]);
+                if (measureSize) size = Larger(size, x[i], y[i], z[i]);
                 double wx = vx[i], wy = vy[i], wz = vz[i];
                 float ox, oy, oz;
                 if (kinematic[i])

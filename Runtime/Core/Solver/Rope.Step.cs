@@ -102,8 +102,14 @@ namespace HookeRope.Solver
         private void PredictPhase(float t, float hostDeltaTime, bool secondOrder, TimeIntegrator scheme, float h, double hd, Float3 g)
         {
             if (colliders.Count > 0) colliders.PrepareSubstep(t, hostDeltaTime);
-            if (secondOrder) PredictSecondOrder(scheme, hd, g);
-            else Predict(hd, g);
+            // the largest coordinate (ChainState.Size) is the exact solve's round-off floor: the Gauss–Seidel sweep skips it
+            if (settings.Solver == ConstraintSolverKind.ExactChain)
+            {
+                if (secondOrder) PredictSecondOrder<Sized>(scheme, hd, g);
+                else Predict<Sized>(hd, g);
+            }
+            else if (secondOrder) PredictSecondOrder<Unsized>(scheme, hd, g);
+            else Predict<Unsized>(hd, g);
             MovePins(t);
             // cleared in loops: for the short arrays of a rope a call to Array.Clear costs more than the stores
             Span<double> lambda = ChainState.Exactly(chain.Lambda, chain.SegmentCount);
@@ -192,8 +198,19 @@ namespace HookeRope.Solver
             if (pinCount > 0) UpdatePinForces(hEff, g);
         }
 
-        private void Predict(double h, Float3 g)
+        /// <summary>A prediction that measures <see cref="ChainState.Size"/> (the exact solve's round-off floor).</summary>
+        private struct Sized { }
+
+        /// <summary>A prediction that leaves <see cref="ChainState.Size"/> alone (the Gauss–Seidel sweep does not read it).</summary>
+        private struct Unsized { }
+
+        /// <summary>
+        /// Backward Euler's prediction v += h·g, D + DLow = h·v (h s, g m/s²); kinematic particles do not move here. TSize is
+        /// <see cref="Sized"/> or <see cref="Unsized"/>: the JIT compiles one body for each and folds the size test away.
+        /// </summary>
+        private void Predict<TSize>(double h, Float3 g) where TSize : struct
         {
+            bool measureSize = typeof(TSize) == typeof(Sized);
             double gx = g.X * h, gy = g.Y * h, gz = g.Z * h;
             int n = chain.ParticleCount;
             // spans of exactly n entries (the loop bound): indexed without bounds checks
@@ -207,7 +224,7 @@ namespace HookeRope.Solver
             for (int i = 0; i < n; i++)
             {
                 px[i] = x[i]; py[i] = y[i]; pz[i] = z[i];
-                size = Larger(size, x[i], y[i], z[i]);
+                if (measureSize) size = Larger(size, x[i], y[i], z[i]);
                 if (kinematic[i]) { dx[i] = 0f; dy[i] = 0f; dz[i] = 0f; lx[i] = 0f; ly[i] = 0f; lz[i] = 0f; continue; }
                 double ux = vx[i] + gx, uy = vy[i] + gy, uz = vz[i] + gz;
                 vx[i] = ux; vy[i] = uy; vz[i] = uz;
