@@ -77,7 +77,7 @@ namespace HookeRope.Solver
         {
             double invH2 = 1.0 / (h * h);
             if (first) ClearForces(c);
-            Assemble(c, invH2, beta / h, first);
+            Assemble(c, invH2, beta / h, first, tensionOnly);
             bool contacts = c.ContactCount > 0;
             if (contacts)
             {
@@ -132,7 +132,7 @@ namespace HookeRope.Solver
         /// geometric stiffness and the residual R = d − (L' + α̃'|Λ|)·ê of the accumulated force Λ (ê its direction, signed
         /// along n; n while Λ = 0). A segment with no mobility and no compliance is not in the system.
         /// </summary>
-        private static void Assemble(ChainState c, double invH2, double gammaAll, bool first)
+        private static void Assemble(ChainState c, double invH2, double gammaAll, bool first, bool tensionOnly)
         {
             int s = c.SegmentCount;
             // spans of exactly s entries (the loop bound) index without bounds checks; B spans are particle j + 1's
@@ -176,7 +176,9 @@ namespace HookeRope.Solver
                 double restEffective = restJ, alphaTilde = alpha * invH2;
                 if (g > 0.0)
                 {
-                    double rate = nx * ddx + ny * ddy + nz * ddz; // the substep's stretch along n, m
+                    // the substep's stretch, m: along n (XPBD's linearised ∇C·Δx) on a tension-only rope; on a bilateral one
+                    // the exact length change l − l₀ (BilateralDamping), so len − rate is the length at the substep's start
+                    double rate = tensionOnly ? nx * ddx + ny * ddy + nz * ddz : len - StartLength(pxA[j], pxB[j], lxA[j], lxB[j], pyA[j], pyB[j], lyA[j], lyB[j], pzA[j], pzB[j], lzA[j], lzB[j]);
                     restEffective = (restJ + g * (len - rate)) / (1.0 + g);
                     alphaTilde /= 1.0 + g;
                 }
@@ -212,6 +214,17 @@ namespace HookeRope.Solver
                 assembled[j] = true;
                 rx[j] = len * nx - target * ex; ry[j] = len * ny - target * ey; rz[j] = len * nz - target * ez;
             }
+        }
+
+        /// <summary>
+        /// Length (m) of a segment at the start of the substep, |(P_b − P_a) + (Low_b − Low_a)|, from its ends' previous
+        /// positions and remainders.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
+        private static double StartLength(float pxA, float pxB, float lxA, float lxB, float pyA, float pyB, float lyA, float lyB, float pzA, float pzB, float lzA, float lzB)
+        {
+            double x = ChainState.Component(pxA, pxB, lxA, lxB, 0.0), y = ChainState.Component(pyA, pyB, lyA, lyB, 0.0), z = ChainState.Component(pzA, pzB, lzA, lzB, 0.0);
+            return Math.Sqrt(x * x + y * y + z * z);
         }
 
         /// <summary>
