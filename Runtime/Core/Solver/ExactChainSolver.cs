@@ -200,15 +200,18 @@ namespace HookeRope.Solver
                     // an earlier iteration) is no estimate of where the segment points: the residual is taken along n
                     if (ex * nx + ey * ny + ez * nz < MinForceAlignment && BesideHeldContact(c, j)) { ex = nx; ey = ny; ez = nz; }
                 }
-                // the geometric stiffness T/l: with the last substep's tension on the first iteration, the accumulated one after;
-                // a pushing (bilateral) segment's is −|T|/l, which would let it buckle explicitly, so it takes |T| and the
-                // buckling is damped instead
+                // the geometric stiffness T/l: with the last substep's tension on the first iteration, the accumulated one after
                 double tension = first ? Math.Abs(lastTension[j]) : Math.Abs(signed * invH2);
                 estimate[j] = tension;
                 double target = restEffective + alphaTilde * signed; // the length the accumulated force implies
                 double geometric = Math.Max(target, 1e-6 * rest[j]) * invH2;
                 double cap = MaxTransverseComplianceRatio * mobility;
-                transverse[j] = geometric < cap * tension ? geometric / tension : cap;
+                // a pushing (bilateral) segment's exact geometric stiffness is −|T|/l: the implicit step's energy is not convex
+                // across it, and the Newton matrix with it is indefinite (it would buckle explicitly). It takes none (pure
+                // axial: the transverse compliance at its cap), not +|T|/l, which is off by twice as much the other way and
+                // made the pushing rods of the stability grid gain energy (solver.md, "Rods in compression")
+                bool pushing = !tensionOnly && (first ? lastTension[j] < 0f : signed < 0.0);
+                transverse[j] = !pushing && geometric < cap * tension ? geometric / tension : cap;
                 axial[j] = alphaTilde;
                 effectiveRest[j] = restEffective;
                 assembled[j] = true;
@@ -361,8 +364,9 @@ namespace HookeRope.Solver
                 if (active[j])
                 {
                     e = error[j];
-                    // a pushing (bilateral) segment's transverse response is damped buckling by design (see Assemble): it
-                    // may add iterations, as before, but it is not a violent linearisation and keeps no energy test
+                    // a pushing (bilateral) segment has no geometric stiffness in the system (see Assemble): it may add
+                    // iterations, but it is not a violent linearisation and keeps no energy test (counting it in either was
+                    // measured: more pushing rods of the stability grid gained energy, solver.md "Rods in compression")
                     if (l > 0.0)
                     {
                         if (e > NonlinearTolerance * rest[j]) unconverged = true;

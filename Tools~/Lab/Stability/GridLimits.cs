@@ -43,7 +43,9 @@ namespace HookeRope.Lab.Stability
             if (!o.Failed || !o.Finite || o.Escaped || o.NotRecovered) return null;
             GridCase c = o.Case;
             if (c.Collider && c.Friction > 0f) return Friction;
-            if (c.Tension == TensionModel.Bilateral) return Rod;
+            // a bilateral rope that never pushed is a rope like a tension-only one (the 2-segment rods resting on the sphere
+            // fail exactly as their tension-only twins do, under Push)
+            if (c.Tension == TensionModel.Bilateral && o.LargestPush > 0.0) return Rod;
             if (c.Collider) return Push;
             return null;
         }
