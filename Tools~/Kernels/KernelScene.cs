@@ -35,6 +35,7 @@ namespace HookeRope.Kernels
         {
             "gs-be-chain16", "gs-bdf2-load64", "gs-bilateral-softpin", "gs-plastic-absorber", "gs-drag-wind",
             "exact-bdf2-chain16", "exact-be-load64", "exact-bdf2-swing256", "exact-plastic-neck", "exact-drag-plane", "gs-plane",
+            "exact-bilateral-softpin",
         };
 
         /// <summary>
@@ -59,8 +60,11 @@ namespace HookeRope.Kernels
                 case "exact-be-load64": return Loaded(ConstraintSolverKind.ExactChain, TimeIntegrator.BackwardEuler, 64, 80f);
                 case "exact-bdf2-swing256": return Chain(ConstraintSolverKind.ExactChain, TimeIntegrator.Bdf2, 256);
                 case "gs-bilateral-softpin":
+                case "exact-bilateral-softpin":
                 {
-                    Rope rope = Chain(ConstraintSolverKind.GaussSeidel, TimeIntegrator.BackwardEuler, 24);
+                    // 2.4 m of rod pinned at both ends 1.73 m apart (the far end softly): it pushes and bows
+                    bool gs = name.StartsWith("gs", StringComparison.Ordinal);
+                    Rope rope = Chain(gs ? ConstraintSolverKind.GaussSeidel : ConstraintSolverKind.ExactChain, gs ? TimeIntegrator.BackwardEuler : TimeIntegrator.Bdf2, 24);
                     rope.Settings.Tension = TensionModel.Bilateral;
                     rope.AddPin(24, new Float3(1.5f, -0.8f, 0.3f), 1e-4f);
                     return rope;

@@ -77,7 +77,7 @@ namespace HookeRope.Solver
         {
             double invH2 = 1.0 / (h * h);
             if (first) ClearForces(c);
-            Assemble(c, invH2, beta / h, first);
+            Assemble(c, invH2, beta / h, first, tensionOnly);
             bool contacts = c.ContactCount > 0;
             if (contacts)
             {
@@ -136,7 +136,7 @@ namespace HookeRope.Solver
         /// geometric stiffness and the residual R = d − (L' + α̃'|Λ|)·ê of the accumulated force Λ (ê its direction, signed
         /// along n; n while Λ = 0). A segment with no mobility and no compliance is not in the system.
         /// </summary>
-        private static void Assemble(ChainState c, double invH2, double gammaAll, bool first)
+        private static void Assemble(ChainState c, double invH2, double gammaAll, bool first, bool tensionOnly)
         {
             int s = c.SegmentCount;
             // spans of exactly s entries (the loop bound) index without bounds checks; B spans are particle j + 1's
@@ -180,7 +180,9 @@ namespace HookeRope.Solver
                 double restEffective = restJ, alphaTilde = alpha * invH2;
                 if (g > 0.0)
                 {
-                    double rate = nx * ddx + ny * ddy + nz * ddz; // the substep's stretch along n, m
+                    // the substep's stretch, m: along n (XPBD's linearised ∇C·Δx) on a tension-only rope; on a bilateral one
+                    // the exact length change l − l₀ (BilateralDamping), so len − rate is the length at the substep's start
+                    double rate = tensionOnly ? nx * ddx + ny * ddy + nz * ddz : len - StartLength(pxA[j], pxB[j], lxA[j], lxB[j], pyA[j], pyB[j], lyA[j], lyB[j], pzA[j], pzB[j], lzA[j], lzB[j]);
                     restEffective = (restJ + g * (len - rate)) / (1.0 + g);
                     alphaTilde /= 1.0 + g;
                 }
@@ -202,20 +204,34 @@ namespace HookeRope.Solver
                     // an earlier iteration) is no estimate of where the segment points: the residual is taken along n
                     if (ex * nx + ey * ny + ez * nz < MinForceAlignment && BesideHeldContact(c, j)) { ex = nx; ey = ny; ez = nz; }
                 }
-                // the geometric stiffness T/l: with the last substep's tension on the first iteration, the accumulated one after;
-                // a pushing (bilateral) segment's is −|T|/l, which would let it buckle explicitly, so it takes |T| and the
-                // buckling is damped instead
+                // the geometric stiffness T/l: with the last substep's tension on the first iteration, the accumulated one after
                 double tension = first ? Math.Abs(lastTension[j]) : Math.Abs(signed * invH2);
                 estimate[j] = tension;
                 double target = restEffective + alphaTilde * signed; // the length the accumulated force implies
                 double geometric = AtLeast(target, 1e-6 * rest[j]) * invH2;
                 double cap = MaxTransverseComplianceRatio * mobility;
-                transverse[j] = geometric < cap * tension ? geometric / tension : cap;
+                // a pushing (bilateral) segment's exact geometric stiffness is −|T|/l: the implicit step's energy is not convex
+                // across it, and the Newton matrix with it is indefinite (it would buckle explicitly). It takes none (pure
+                // axial: the transverse compliance at its cap), not +|T|/l, which is off by twice as much the other way and
+                // made the pushing rods of the stability grid gain energy (solver.md, "Rods in compression")
+                bool pushing = !tensionOnly && (first ? lastTension[j] < 0f : signed < 0.0);
+                transverse[j] = !pushing && geometric < cap * tension ? geometric / tension : cap;
                 axial[j] = alphaTilde;
                 effectiveRest[j] = restEffective;
                 assembled[j] = true;
                 rx[j] = len * nx - target * ex; ry[j] = len * ny - target * ey; rz[j] = len * nz - target * ez;
             }
+        }
+
+        /// <summary>
+        /// Length (m) of a segment at the start of the substep, |(P_b − P_a) + (Low_b − Low_a)|, from its ends' previous
+        /// positions and remainders.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
+        private static double StartLength(float pxA, float pxB, float lxA, float lxB, float pyA, float pyB, float lyA, float lyB, float pzA, float pzB, float lzA, float lzB)
+        {
+            double x = ChainState.Component(pxA, pxB, lxA, lxB, 0.0), y = ChainState.Component(pyA, pyB, lyA, lyB, 0.0), z = ChainState.Component(pzA, pzB, lzA, lzB, 0.0);
+            return Math.Sqrt(x * x + y * y + z * z);
         }
 
         /// <summary>
@@ -346,8 +362,9 @@ namespace HookeRope.Solver
                 if (active[j])
                 {
                     e = error[j];
-                    // a pushing (bilateral) segment's transverse response is damped buckling by design (see Assemble): it
-                    // may add iterations, as before, but it is not a violent linearisation and keeps no energy test
+                    // a pushing (bilateral) segment has no geometric stiffness in the system (see Assemble): it may add
+                    // iterations, but it is not a violent linearisation and keeps no energy test (counting it in either was
+                    // measured: more pushing rods of the stability grid gained energy, solver.md "Rods in compression")
                     if (l > 0.0)
                     {
                         if (e > NonlinearTolerance * rest[j]) unconverged = true;

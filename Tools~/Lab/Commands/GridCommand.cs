@@ -24,6 +24,21 @@ namespace HookeRope.Lab.Commands
             string.Format(CultureInfo.InvariantCulture, "{0} ({1:G2} %)", n, 100.0 * n / System.Math.Max(substeps, 1));
 
         /// <summary>
+        /// True when the case's description contains one of the '|'-separated alternatives of <paramref name="match"/> (an
+        /// alternative ending in '$' must be the whole description).
+        /// </summary>
+        private static bool Matches(string description, string match)
+        {
+            foreach (string alternative in match.Split('|'))
+            {
+                if (alternative.Length == 0) continue;
+                if (alternative[alternative.Length - 1] == '$' ? description == alternative.Substring(0, alternative.Length - 1)
+                    : description.Contains(alternative, System.StringComparison.Ordinal)) return true;
+            }
+            return false;
+        }
+
+        /// <summary>
         /// Runs the grid (whole, or the CI subset; only the cases whose description contains <paramref name="match"/> when
         /// given), prints and writes stability-grid.md (or stability-grid-ci.md) to <paramref name="outDir"/>.
         /// </summary>
@@ -31,7 +46,7 @@ namespace HookeRope.Lab.Commands
         {
             OutputFolder.Ensure(outDir);
             var cases = GridSweep.Cases(full);
-            if (!string.IsNullOrEmpty(match)) cases.RemoveAll(c => !c.ToString().Contains(match, System.StringComparison.Ordinal));
+            if (!string.IsNullOrEmpty(match)) cases.RemoveAll(c => !Matches(c.ToString(), match));
             var clock = Stopwatch.StartNew();
             var outcomes = GridSweep.RunAll(cases);
             double seconds = clock.Elapsed.TotalSeconds;

@@ -14,6 +14,8 @@ namespace HookeRope.Lab.Stability
         public double EnergyGain;
         /// <summary>Largest rise of kinetic + gravitational energy alone above the energy put in, J (a diagnostic: the gain that shows as motion).</summary>
         public double MotionGain;
+        /// <summary>Largest push (compressive force, N, ≥ 0) any segment read after a host step: 0 for a rope that never pushed.</summary>
+        public double LargestPush;
         /// <summary>The energy put in (the ceiling), J: the total at the start, or right after the teleport, with the elastic part's upper bound; gravitational energy is zero at the anchor's height.</summary>
         public double Ceiling;
         /// <summary>Farthest particle from the anchor at the end, m.</summary>

@@ -234,6 +234,7 @@ namespace HookeRope.Lab.Stability
                 o.ShortenedSteps += report.ShortenedSteps;
                 o.UnconvergedSubsteps += report.UnconvergedSubsteps;
                 if (c.Drag > 0.0) Drag(rope, decay);
+                for (int j = 0; j < rope.SegmentCount; j++) o.LargestPush = Math.Max(o.LargestPush, -rope.Tensions[j]);
                 motion = rope.KineticEnergy() + rope.GravitationalEnergy();
                 if (!double.IsFinite(motion) || !AllFinite(rope)) { o.Finite = false; break; }
                 if (s == teleportStep) o.Ceiling = Math.Max(o.Ceiling, Energy(rope, upper: true));
