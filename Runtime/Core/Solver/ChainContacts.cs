@@ -69,6 +69,7 @@ namespace HookeRope.Solver
             {
                 int i = c.ContactList[k];
                 c.ContactShiftX[i] = 0.0; c.ContactShiftY[i] = 0.0; c.ContactShiftZ[i] = 0.0;
+                c.ContactLastDamping[i] = 0.0;
                 Reshift(c, i);
             }
         }
@@ -277,12 +278,14 @@ namespace HookeRope.Solver
                     // leaves the static cone: slides with the kinetic one
                     float kinetic = c.ContactKineticFriction[i];
                     cone = kinetic * Kappa(c, i, kinetic) * normal;
+                    c.ContactLastDamping[i] = 0.0;
+                    next = zeta * cone / force;
                 }
-                next = zeta * cone / force;
+                else next = Secant(c, i, zeta, force, cone);
             }
             else if (sliding && force < (1.0 - FrictionTolerance) * cone)
             {
-                next = force > 0.0 ? Math.Min(stiff, zeta * cone / force) : stiff;
+                next = force > 0.0 ? Math.Min(stiff, Secant(c, i, zeta, force, cone)) : stiff;
             }
             else if (!sliding && Math.Abs(zeta - stiff) > 0.5 * stiff)
             {
@@ -298,6 +301,34 @@ namespace HookeRope.Solver
             c.ContactSliding[i] = next < stiff;
             c.ContactSticking[i] = !c.ContactSliding[i];
             return true;
+        }
+
+        /// <summary>Largest factor by which one pass's secant step may change a sliding contact's ζ.</summary>
+        public const double MaxSecantFactor = 1e3;
+
+        /// <summary>
+        /// The next ζ (kg) of sliding contact i, whose damper ζ gave the friction ζ|s| = force (N·s²) against the cone C
+        /// (N·s²). The plain update ζ·C/force (the damper whose friction would be the cone at this slip) is a fixed point
+        /// that converges slowly where many contacts slide together: each one's ζ changes the slip of all, and with the wrap's
+        /// friction close to the load's pull it contracts by about (friction / pull) per pass (0.98 at 2 % past the capstan
+        /// ratio). The friction f(ζ) = ζ|s(ζ)| of the coupled solve rises with ζ and flattens towards the pull, so the secant
+        /// through this pass's (ζ, f) and the pass before's solves f(ζ) = C in a few passes (the contacts of a wrap move
+        /// their ζ together, which makes it nearly a one-dimensional root). The secant step is taken when the slope is
+        /// positive and it goes the way the plain update goes, by at most <see cref="MaxSecantFactor"/>; otherwise the plain
+        /// update. Either way ζ stays a damper's (it never reverses the slip, never adds energy).
+        /// </summary>
+        private static double Secant(ChainState c, int i, double zeta, double force, double cone)
+        {
+            double plain = zeta * cone / force;
+            double lastZeta = c.ContactLastDamping[i], lastForce = c.ContactLastForce[i];
+            c.ContactLastDamping[i] = zeta;
+            c.ContactLastForce[i] = force;
+            if (!(lastZeta > 0.0) || lastZeta == zeta) return plain;
+            double slope = (force - lastForce) / (zeta - lastZeta);
+            if (!(slope > 0.0)) return plain;
+            double next = zeta + (cone - force) / slope;
+            if (!double.IsFinite(next) || (next - zeta) * (plain - zeta) <= 0.0) return plain;
+            return Math.Max(zeta / MaxSecantFactor, Math.Min(zeta * MaxSecantFactor, next));
         }
 
         /// <summary>

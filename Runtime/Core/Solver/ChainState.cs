@@ -108,6 +108,9 @@ namespace HookeRope.Solver
         public byte[] ContactMemory;
         public double[] ContactDamping;
         public double[] ContactNormalImpulse;
+        // a sliding contact's ζ (kg) and friction ζ|s| (N·s²) of the pass before in this iteration (0: none), the secant's
+        // other point (ChainContacts.Secant)
+        public double[] ContactLastDamping, ContactLastForce;
         public bool Bdf2Substep;                        // this substep runs BDF2 (where a contact particle is at rest depends on it)
         public double Substep;                          // s, this substep's h
         public double ContactNormalScale;               // N·s², the largest normal impulse of the last substep's contacts
@@ -166,6 +169,7 @@ namespace HookeRope.Solver
             ContactImpulseX = new double[n]; ContactImpulseY = new double[n]; ContactImpulseZ = new double[n];
             ContactFrictionX = new double[n]; ContactFrictionY = new double[n]; ContactFrictionZ = new double[n];
             ContactMemory = new byte[n]; ContactDamping = new double[n]; ContactNormalImpulse = new double[n];
+            ContactLastDamping = new double[n]; ContactLastForce = new double[n];
             for (int i = 0; i < n; i++) ContactCollider[i] = -1;
             ContactCount = 0;
         }
