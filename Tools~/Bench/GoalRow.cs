@@ -21,6 +21,10 @@ namespace HookeRope.Bench
         public double MinMsPerFrame { get; set; }
         /// <summary>Processor time of the whole process per frame (all threads, spinning included), ms: robust to other processes' load as long as this one's threads are not starved.</summary>
         public double CpuMsPerFrame { get; set; }
+        /// <summary>Mean thread time of the ropes' steps per frame (RopeWorld.GetLastStepMilliseconds summed over the ropes, all workers), ms; 0 when not recorded.</summary>
+        public double StepMsPerFrame { get; set; }
+        /// <summary>Mean thread time of the ropes' mesh fills per frame (RopeWorld.GetLastFillMilliseconds summed over the ropes, all workers), ms; 0 when not recorded.</summary>
+        public double MeshMsPerFrame { get; set; }
         /// <summary>Median ns per unit: per segment-substep (ropes × segments × substeps per frame), mesh included.</summary>
         public double NsPerUnit { get; set; }
         /// <summary>Instructions per unit from callgrind (all threads), or 0 when not measured.</summary>

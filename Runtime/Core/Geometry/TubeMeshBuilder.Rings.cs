@@ -1,4 +1,6 @@
 using System;
+using System.Numerics;
+using System.Runtime.InteropServices;
 using HookeRope.Mathematics;
 
 namespace HookeRope.Geometry
@@ -6,9 +8,9 @@ namespace HookeRope.Geometry
     /// <summary>
     /// The per-ring work of <see cref="TubeMeshBuilder"/>: ring centres on the Catmull–Rom curve, parallel-transported
     /// frames, radius slopes, and the ring kernel that writes a ring's vertices. Written as scalar loops over the ring
-    /// arrays (no vector temporaries), so the cost does not depend on what a JIT or an ahead-of-time compiler inlines:
-    /// per vertex the kernel does 15 multiplications, 15 additions and 12 stores, with the cosines, sines and u of the
-    /// sides taken from tables made once per builder and everything per ring (binormal, tilt, offsets) hoisted.
+    /// arrays (no <c>Float3</c> temporaries), so the cost does not depend on what a JIT or an ahead-of-time compiler inlines;
+    /// the vertex kernel writes each vertex as three 4-float lanes, A + B·cos + C·sin with A, B, C per ring (see
+    /// <see cref="WriteRing"/>), the cosines, sines and u of the sides taken from tables made once per builder.
     /// </summary>
     internal sealed partial class TubeMeshBuilder
     {
@@ -229,7 +231,14 @@ namespace HookeRope.Geometry
                 for (int k = first; k <= last; k++) dirty[k] = true;
         }
 
-        /// <summary>The ring kernel: writes ring <paramref name="k"/>'s radial + 1 vertices (seam duplicated) into <paramref name="ring"/>.</summary>
+        /// <summary>
+        /// The ring kernel: writes ring <paramref name="k"/>'s radial + 1 vertices (seam duplicated) into <paramref name="ring"/>.
+        /// Every field of a ring's vertex i is linear in (cos φ_i, sin φ_i): field = A + B·cos φ_i + C·sin φ_i (+ u_i), with
+        /// A, B, C worked out once per ring (position: c, r·n, r·b, then + the frame origin o; normal: −slope·t, n, b, all over sqrt(1 + slope²);
+        /// tangent: 0, b, −n). The 48-byte vertex is three 4-float lanes (position.xyz normal.x | normal.yz tangent.xy |
+        /// tangent.zw u v), so a vertex is 6 multiplications, 8 additions and 3 stores of 4-float vectors, read from the
+        /// side tables (cos, sin, u) made once per builder, written in place in SetVertexBufferData's layout.
+        /// </summary>
         private void WriteRing(int k, Span<TubeVertex> ring)
         {
             Float3 c = centers[k], t = tangents[k], nrm = normals[k];
@@ -238,30 +247,30 @@ namespace HookeRope.Geometry
             float bx = t.Y * nz - t.Z * ny, by = t.Z * nx - t.X * nz, bz = t.X * ny - t.Y * nx;
             float r = ringRadii[k];
             float slope = slopes[k];
-            float inverse = 1f / MathF.Sqrt(1f + slope * slope);
             // the normal tilts for a varying radius: (e_r − slope·t)/sqrt(1 + slope²)
+            float inverse = 1f / MathF.Sqrt(1f + slope * slope);
             float sx = t.X * slope, sy = t.Y * slope, sz = t.Z * slope;
-            float cx = c.X, cy = c.Y, cz = c.Z;
-            float ox = frameOrigin.X, oy = frameOrigin.Y, oz = frameOrigin.Z;
-            float v = ringV[k];
-            ReadOnlySpan<float> cs = cos, sn = sin, us = around;
-            for (int i = 0; i < ring.Length; i++)
+            // the radial offset first, then the centre, then the origin: (c + offset) + origin rounds monotonically in the
+            // offset, so the ring's bounds (c ± r·sqrt(1 − t²)·(1 + 1e-6), + origin) hold its vertices
+            var a0 = new Vector4(c.X, c.Y, c.Z, -(sx * inverse));
+            var o0 = new Vector4(frameOrigin.X, frameOrigin.Y, frameOrigin.Z, 0f);
+            var b0 = new Vector4(nx * r, ny * r, nz * r, nx * inverse);
+            var c0 = new Vector4(bx * r, by * r, bz * r, bx * inverse);
+            var a1 = new Vector4(-(sy * inverse), -(sz * inverse), 0f, 0f);
+            var b1 = new Vector4(ny * inverse, nz * inverse, bx, by);
+            var c1 = new Vector4(by * inverse, bz * inverse, -nx, -ny);
+            var a2 = new Vector4(0f, 0f, 0f, ringV[k]);
+            var b2 = new Vector4(bz, 0f, 0f, 0f);
+            var c2 = new Vector4(-nz, 0f, 0f, 0f);
+            Span<Vector4> lanes = MemoryMarshal.Cast<TubeVertex, Vector4>(ring);
+            ReadOnlySpan<Vector4> cs = cosLanes, sn = sinLanes, us = uLanes;
+            int count = Math.Min(ring.Length, cs.Length);
+            for (int i = 0, j = 0; i < count; i++, j += 3)
             {
-                float ci = cs[i], si = sn[i];
-                float dx = nx * ci + bx * si, dy = ny * ci + by * si, dz = nz * ci + bz * si;
-                ref TubeVertex vertex = ref ring[i];
-                vertex.PX = (cx + dx * r) + ox;
-                vertex.PY = (cy + dy * r) + oy;
-                vertex.PZ = (cz + dz * r) + oz;
-                vertex.NX = (dx - sx) * inverse;
-                vertex.NY = (dy - sy) * inverse;
-                vertex.NZ = (dz - sz) * inverse;
-                vertex.TX = bx * ci - nx * si;
-                vertex.TY = by * ci - ny * si;
-                vertex.TZ = bz * ci - nz * si;
-                vertex.TW = 1f;
-                vertex.U = us[i];
-                vertex.V = v;
+                Vector4 ci = cs[i], si = sn[i];
+                lanes[j + 2] = (b2 * ci + c2 * si) + (a2 + us[i]);
+                lanes[j] = ((b0 * ci + c0 * si) + a0) + o0;
+                lanes[j + 1] = (b1 * ci + c1 * si) + a1;
             }
         }
 

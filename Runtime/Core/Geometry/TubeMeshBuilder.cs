@@ -1,4 +1,5 @@
 using System;
+using System.Numerics;
 using HookeRope.Fracture;
 using HookeRope.Mathematics;
 
@@ -55,6 +56,8 @@ namespace HookeRope.Geometry
         private readonly float[] cos;
         private readonly float[] sin;
         private readonly float[] around;
+        private readonly Vector4[] cosLanes, sinLanes, uLanes;
+        private readonly TubeVertex[] capRim;
         private readonly double[] restArc;
         private readonly float[] particleRadii;
         private float[] segmentRingRadii = Array.Empty<float>();
@@ -115,6 +118,16 @@ namespace HookeRope.Geometry
                 sin[i] = i == radial ? 0f : (float)Math.Sin(angle);
                 around[i] = (float)i / radial;
             }
+            cosLanes = new Vector4[radial + 1];
+            sinLanes = new Vector4[radial + 1];
+            uLanes = new Vector4[radial + 1];
+            for (int i = 0; i <= radial; i++)
+            {
+                cosLanes[i] = new Vector4(cos[i]);
+                sinLanes[i] = new Vector4(sin[i]);
+                uLanes[i] = new Vector4(0f, 1f, around[i], 0f);
+            }
+            capRim = new TubeVertex[radial + 1];
             int n = layout.SegmentCount;
             restArc = new double[n + 1];
             particleRadii = new float[n + 1];
@@ -728,19 +741,23 @@ namespace HookeRope.Geometry
             ref int vertexBase, ref int tubeCursor, ref Bounds bounds)
         {
             Float3 c = centers[k], t = tangents[k], nrm = normals[k];
-            Float3 bin = Float3.Cross(t, nrm);
             Float3 outward = atEnd ? t : -t;
-            float r = ringRadii[k];
-            if (rewrite) SetVertex(vertices, vertexBase, c, outward, nrm, 0.5f, 0.5f);
-            bounds.Add(c);
-            for (int i = 0; i < radial; i++)
+            if (rewrite)
             {
-                // the rim is the ring's own vertex i (same expression, so the cap and the tube share exact positions)
-                float dx = nrm.X * cos[i] + bin.X * sin[i], dy = nrm.Y * cos[i] + bin.Y * sin[i], dz = nrm.Z * cos[i] + bin.Z * sin[i];
-                var p = new Float3(c.X + dx * r, c.Y + dy * r, c.Z + dz * r);
-                if (rewrite) SetVertex(vertices, vertexBase + 1 + i, p, outward, nrm, 0.5f + 0.5f * cos[i], 0.5f + 0.5f * sin[i]);
-                bounds.Add(p);
+                SetVertex(vertices, vertexBase, c, outward, nrm, 0.5f, 0.5f);
+                // the rim is the ring's own vertices (the same kernel, so the cap and the tube share exact positions)
+                WriteRing(k, capRim);
+                for (int i = 0; i < radial; i++)
+                {
+                    ref TubeVertex vertex = ref vertices[vertexBase + 1 + i];
+                    vertex.PX = capRim[i].PX; vertex.PY = capRim[i].PY; vertex.PZ = capRim[i].PZ;
+                    vertex.NX = outward.X; vertex.NY = outward.Y; vertex.NZ = outward.Z;
+                    vertex.TX = nrm.X; vertex.TY = nrm.Y; vertex.TZ = nrm.Z; vertex.TW = 1f;
+                    vertex.U = 0.5f + 0.5f * cos[i]; vertex.V = 0.5f + 0.5f * sin[i];
+                }
             }
+            // the rim lies on ring k, whose bounds the piece adds (AddRingBounds)
+            bounds.Add(c);
             if (writeIndices)
             {
                 for (int i = 0; i < radial; i++)
@@ -864,8 +881,9 @@ namespace HookeRope.Geometry
 
             public void Add(Float3 p)
             {
-                Min = new Float3(MathF.Min(Min.X, p.X), MathF.Min(Min.Y, p.Y), MathF.Min(Min.Z, p.Z));
-                Max = new Float3(MathF.Max(Max.X, p.X), MathF.Max(Max.Y, p.Y), MathF.Max(Max.Z, p.Z));
+                // plain comparisons (MathF.Min/Max order NaN and signed zeros, which finite geometry never needs)
+                Min = new Float3(p.X < Min.X ? p.X : Min.X, p.Y < Min.Y ? p.Y : Min.Y, p.Z < Min.Z ? p.Z : Min.Z);
+                Max = new Float3(p.X > Max.X ? p.X : Max.X, p.Y > Max.Y ? p.Y : Max.Y, p.Z > Max.Z ? p.Z : Max.Z);
             }
 
             public void Add(Bounds other)

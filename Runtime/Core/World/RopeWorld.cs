@@ -8,8 +8,11 @@ namespace HookeRope.World
     /// <summary>
     /// Steps a set of independent <see cref="RopeSimulation"/>s on a fixed pool of worker threads (the calling thread
     /// is worker 0; <see cref="WorkerCount"/> − 1 long-lived background threads do the rest). Each pass splits the
-    /// ropes into contiguous blocks of about equal cost, one per worker; every rope is stepped by exactly one thread
-    /// with the same code, so the results are the same bits for any worker count. Allocation-free per pass after
+    /// ropes into contiguous chunks of about equal cost, <see cref="ChunksPerWorker"/> per worker, which the workers claim
+    /// in order as they become free (one interlocked increment per chunk): a worker that the operating system wakes late
+    /// (a loaded machine, a host's busy cores) takes fewer chunks instead of holding up the pass, so a pass on W workers
+    /// is never much slower than on one. Every rope is stepped by exactly one thread with the same code, so the results
+    /// are the same bits for any worker count and any claiming order. Allocation-free per pass after
     /// warm-up (a slot's buffers are made at its first fill for the rope's ring budget, <see cref="RopeSimulation.GetVertexCapacity"/>,
     /// and again only after a break). An exception thrown by a rope is caught, the other
     /// ropes still finish the pass, and the caller gets an <see cref="InvalidOperationException"/> naming the lowest
@@ -21,6 +24,9 @@ namespace HookeRope.World
     {
         private const int PhaseStep = 1, PhaseMesh = 2;
 
+        /// <summary>Chunks of ropes per worker and pass that the workers claim dynamically (a late worker leaves its share to the others).</summary>
+        internal const int ChunksPerWorker = 8;
+
         private readonly WorkerPool pool;
         private readonly int[] bounds;
         private readonly Exception[] failure;
@@ -30,6 +36,9 @@ namespace HookeRope.World
         private StepReport[] reports = new StepReport[4];
         private double[] costs = new double[4];
         private long[] stepTicks = new long[4];
+        private long[] fillTicks = new long[4];
+        private int chunkCount;
+        private int nextChunk;
         private bool[] failedInPass = new bool[4];
         private int count;
         private int phase;
@@ -44,7 +53,7 @@ namespace HookeRope.World
         {
             if (workerCount < 1 || workerCount > 64)
                 throw new ArgumentOutOfRangeException(nameof(workerCount), workerCount, "workerCount must be in [1, 64].");
-            bounds = new int[workerCount + 1];
+            bounds = new int[workerCount * ChunksPerWorker + 1];
             failure = new Exception[workerCount];
             failureIndex = new int[workerCount];
             pool = new WorkerPool(workerCount, Work, "HookeRope world worker");
@@ -93,6 +102,17 @@ namespace HookeRope.World
         }
 
         /// <summary>
+        /// Wall-clock time (ms) the rope's last mesh fill in this world took on the thread that filled it (0 before its
+        /// first fill, or when its mesh is off): with <see cref="GetLastStepMilliseconds"/>, the split of a pass between
+        /// the step and the mesh. Two timestamp reads per rope and fill.
+        /// </summary>
+        public double GetLastFillMilliseconds(int index)
+        {
+            CheckIndex(index);
+            return fillTicks[index] * 1000.0 / Stopwatch.Frequency;
+        }
+
+        /// <summary>
         /// True when the rope's step or mesh fill threw in the last pass (that pass's exception names only the lowest
         /// failing index; this flags every failing rope, so a host can leave their results alone).
         /// </summary>
@@ -126,12 +146,14 @@ namespace HookeRope.World
                 Array.Resize(ref reports, capacity);
                 Array.Resize(ref costs, capacity);
                 Array.Resize(ref stepTicks, capacity);
+                Array.Resize(ref fillTicks, capacity);
                 Array.Resize(ref failedInPass, capacity);
             }
             ropes[count] = simulation;
             slots[count] = null;
             reports[count] = default;
             stepTicks[count] = 0;
+            fillTicks[count] = 0;
             failedInPass[count] = false;
             return count++;
         }
@@ -153,6 +175,7 @@ namespace HookeRope.World
             ropes[index] = simulation;
             reports[index] = default;
             stepTicks[index] = 0;
+            fillTicks[index] = 0;
             failedInPass[index] = false;
         }
 
@@ -167,12 +190,14 @@ namespace HookeRope.World
             Array.Copy(slots, index + 1, slots, index, tail);
             Array.Copy(reports, index + 1, reports, index, tail);
             Array.Copy(stepTicks, index + 1, stepTicks, index, tail);
+            Array.Copy(fillTicks, index + 1, fillTicks, index, tail);
             Array.Copy(failedInPass, index + 1, failedInPass, index, tail);
             count--;
             ropes[count] = null;
             slots[count] = null;
             reports[count] = default;
             stepTicks[count] = 0;
+            fillTicks[count] = 0;
             failedInPass[count] = false;
             return true;
         }
@@ -199,6 +224,7 @@ namespace HookeRope.World
             CheckIndex(index);
             CheckIdle();
             slots[index] = null;
+            fillTicks[index] = 0;
         }
 
         /// <summary>Steps every rope by <paramref name="hostDeltaTime"/> seconds ((0, 1] s) in parallel (<see cref="RopeSimulation.Step"/>).</summary>
@@ -243,9 +269,11 @@ namespace HookeRope.World
 
         private void Partition(int passPhase)
         {
-            int workers = bounds.Length - 1;
+            nextChunk = 0;
+            int workers = pool.WorkerCount;
             if (workers == 1)
             {
+                chunkCount = 1;
                 bounds[0] = 0;
                 bounds[1] = count;
                 return;
@@ -253,37 +281,49 @@ namespace HookeRope.World
             bool step = (passPhase & PhaseStep) != 0;
             for (int i = 0; i < count; i++)
                 costs[i] = WorkPartition.Cost(ropes[i], step, (passPhase & PhaseMesh) != 0 && slots[i] != null && slots[i].Enabled ? slots[i] : null);
-            WorkPartition.Split(costs, count, bounds);
+            chunkCount = Math.Max(1, Math.Min(bounds.Length - 1, count));
+            WorkPartition.Split(costs, count, bounds.AsSpan(0, chunkCount + 1));
         }
 
         private void Work(int worker)
         {
             bool step = (phase & PhaseStep) != 0, mesh = (phase & PhaseMesh) != 0;
             float dt = deltaTime;
-            int end = bounds[worker + 1];
-            for (int i = bounds[worker]; i < end; i++)
+            // claim chunks in order until none is left (ropes within a chunk, and the chunks a worker takes, ascend)
+            for (int chunk = Interlocked.Increment(ref nextChunk) - 1; chunk < chunkCount; chunk = Interlocked.Increment(ref nextChunk) - 1)
             {
-                failedInPass[i] = false;
-                try
-                {
-                    if (step)
-                    {
-                        long started = Stopwatch.GetTimestamp();
-                        reports[i] = ropes[i].Step(dt);
-                        stepTicks[i] = Stopwatch.GetTimestamp() - started;
-                    }
-                    RopeMeshSlot slot = slots[i];
-                    if (mesh && slot != null && slot.Enabled) slot.Fill(ropes[i]);
-                }
-                catch (Exception e)
-                {
-                    failedInPass[i] = true;
-                    if (failure[worker] != null) continue;
-                    failure[worker] = e;
-                    failureIndex[worker] = i;
-                }
+                int end = bounds[chunk + 1];
+                for (int i = bounds[chunk]; i < end; i++) Process(worker, i, step, mesh, dt);
             }
             WorkerProbe?.Invoke(worker);
+        }
+
+        private void Process(int worker, int i, bool step, bool mesh, float dt)
+        {
+            failedInPass[i] = false;
+            try
+            {
+                if (step)
+                {
+                    long started = Stopwatch.GetTimestamp();
+                    reports[i] = ropes[i].Step(dt);
+                    stepTicks[i] = Stopwatch.GetTimestamp() - started;
+                }
+                RopeMeshSlot slot = slots[i];
+                if (mesh && slot != null && slot.Enabled)
+                {
+                    long started = Stopwatch.GetTimestamp();
+                    slot.Fill(ropes[i]);
+                    fillTicks[i] = Stopwatch.GetTimestamp() - started;
+                }
+            }
+            catch (Exception e)
+            {
+                failedInPass[i] = true;
+                if (failure[worker] != null) return;
+                failure[worker] = e;
+                failureIndex[worker] = i;
+            }
         }
 
         private void ThrowFirstFailure()

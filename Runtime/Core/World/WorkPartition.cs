@@ -4,10 +4,11 @@ using HookeRope.Solver;
 namespace HookeRope.World
 {
     /// <summary>
-    /// Static partition of the world's ropes into contiguous blocks, one per worker, of about equal estimated cost:
+    /// Partition of the world's ropes into contiguous chunks of about equal estimated cost (the world makes
+    /// <see cref="RopeWorld.ChunksPerWorker"/> per worker and the workers claim them as they become free):
     /// particles × substeps × iterations for the step plus the mesh vertices when meshes are filled (the count of the
     /// slot's last fill; before the first, one ring of sides + 1 per particle). It decides only
-    /// which thread steps which rope; each rope is stepped by exactly one thread with the same code, so the results are
+    /// which ropes go together; which thread steps a chunk depends on timing, and each rope is stepped by exactly one thread with the same code, so the results are
     /// the same bits whatever the partition and the worker count.
     /// </summary>
     internal static class WorkPartition
@@ -28,7 +29,7 @@ namespace HookeRope.World
         }
 
         /// <summary>
-        /// Writes block boundaries into <paramref name="bounds"/> (length workers + 1): worker w takes ropes
+        /// Writes block boundaries into <paramref name="bounds"/> (length blocks + 1): block w holds ropes
         /// [bounds[w], bounds[w + 1]). <paramref name="costs"/> holds one cost per rope (the first
         /// <paramref name="count"/> entries). Allocation-free.
         /// </summary>

@@ -280,12 +280,15 @@ namespace HookeRope.Tests.Core.World
                 RopeMeshSlot slot = world.EnableMesh(1);
                 world.StepAndFillMeshes(Frame);
                 Assert.That(world.GetLastStepMilliseconds(1), Is.GreaterThan(0.0), "the step of rope 1 was timed (ms)");
+                Assert.That(world.GetLastFillMilliseconds(1), Is.GreaterThan(0.0), "and its mesh fill (ms)");
+                Assert.That(world.GetLastFillMilliseconds(0), Is.EqualTo(0.0), "rope 0 has no mesh: no fill time");
 
                 world.Replace(1, rebuilt);
                 Assert.That(world.GetRope(1), Is.SameAs(rebuilt));
                 Assert.That(world.GetMeshSlot(1), Is.SameAs(slot), "the host's slot stays with the place");
                 Assert.That(world.GetLastReport(1).Substeps, Is.EqualTo(0), "the new rope has not stepped here yet");
                 Assert.That(world.GetLastStepMilliseconds(1), Is.EqualTo(0.0));
+                Assert.That(world.GetLastFillMilliseconds(1), Is.EqualTo(0.0));
                 world.Replace(1, rebuilt);
                 Assert.Throws<ArgumentException>(() => world.Replace(0, rebuilt), "a rope can be in one world once");
                 Assert.Throws<ArgumentNullException>(() => world.Replace(0, null));
