@@ -18,9 +18,9 @@ namespace HookeRope.Lab.Stability
             "with a contact held on a surface with friction keeps its full Newton step and only the 10⁻³ length test " +
             "(ExactChainSolver.Iterate: the line search's objective has no friction, and the energy test of the length errors " +
             "made the 2π box wrap at μ 0.6 slide 145 m in 2 s), so on a 200 GPa rope the segments at a sticking contact keep " +
-            "length errors e whose ½e²/α shows as an elastic energy gain (18 cases since the secant friction update, " +
-            "ChainContacts.Secant, was 20; the motion alone gains nothing in 12 of them; the other 6, one of them 1.8 MJ, " +
-            "also gain motion, their cause not isolated beyond this; giving friction-held iterations the energy test again " +
+            "length errors e whose ½e²/α shows as an elastic energy gain (17 cases since the secant friction update, " +
+            "ChainContacts.Secant, and the pure-axial pushing segment, was 20; the motion alone gains nothing in 11 of them; " +
+            "the other 6, one of them 1.8 MJ, also gain motion, their cause not isolated beyond this; giving friction-held iterations the energy test again " +
             "passed one more case and made the 2π box wrap at μ 0.6 slide 38 m)";
 
         /// <summary>
