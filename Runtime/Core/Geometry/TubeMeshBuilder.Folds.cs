@@ -124,14 +124,15 @@ namespace HookeRope.Geometry
         /// The part of <see cref="RepairFold"/>'s test that needs no turn angle: true when rings k − 1 and k (tangent
         /// (tx, ty, tz)) stand far enough in front of each other's planes for any turn between them (sin θ ≤ 1, with 1e-3 to
         /// spare for rounding) and their chord is within <see cref="FoldSkew"/> of both tangents, so there is nothing to
-        /// repair. The frame transport calls it first for every ring, so that a rope without folds pays for two dot products.
+        /// repair. The frame transport calls it first for every ring, so that a rope without folds pays for two dot products;
+        /// it passes what it holds already: ring k − 1's centre <paramref name="c0"/> and tangent (t0x, t0y, t0z), ring k's
+        /// centre <paramref name="c1"/>.
         /// </summary>
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
-        private bool ClearOfFold(int k, float tx, float ty, float tz)
+        private bool ClearOfFold(int k, in Float3 c0, in Float3 c1, float t0x, float t0y, float t0z, float tx, float ty, float tz)
         {
-            Float3 c0 = centers[k - 1], c1 = centers[k], t0 = tangents[k - 1];
             float sx = c1.X - c0.X, sy = c1.Y - c0.Y, sz = c1.Z - c0.Z;
-            float ahead = sx * t0.X + sy * t0.Y + sz * t0.Z, behind = sx * tx + sy * ty + sz * tz;
+            float ahead = sx * t0x + sy * t0y + sz * t0z, behind = sx * tx + sy * ty + sz * tz;
             const float held = TipRoom * 1.001f;
             float chord2 = (sx * sx + sy * sy + sz * sz) * (FoldSkew * FoldSkew);
             return ahead > 0f && behind > 0f
