@@ -33,6 +33,7 @@ namespace HookeRope.Geometry
         }
 
         /// <summary>Scalar <see cref="Transport(Float3, Float3, Float3)"/>: (nx, ny, nz) is transported in place from tangent f to tangent t.</summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         public static void Transport(ref float nx, ref float ny, ref float nz, float fx, float fy, float fz, float tx, float ty, float tz)
         {
             float c = fx * tx + fy * ty + fz * tz;
@@ -50,6 +51,7 @@ namespace HookeRope.Geometry
         }
 
         /// <summary>Scalar <see cref="Perpendicular(Float3, Float3)"/>: (x, y, z) made unit and perpendicular to unit tangent t in place.</summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         public static void Perpendicular(ref float x, ref float y, ref float z, float tx, float ty, float tz)
         {
             float d = x * tx + y * ty + z * tz;

@@ -124,14 +124,15 @@ namespace HookeRope.Geometry
         /// The part of <see cref="RepairFold"/>'s test that needs no turn angle: true when rings k − 1 and k (tangent
         /// (tx, ty, tz)) stand far enough in front of each other's planes for any turn between them (sin θ ≤ 1, with 1e-3 to
         /// spare for rounding) and their chord is within <see cref="FoldSkew"/> of both tangents, so there is nothing to
-        /// repair. The frame transport calls it first for every ring, so that a rope without folds pays for two dot products.
+        /// repair. The frame transport calls it first for every ring, so that a rope without folds pays for two dot products;
+        /// it passes what it holds already: ring k − 1's centre <paramref name="c0"/> and tangent (t0x, t0y, t0z), ring k's
+        /// centre <paramref name="c1"/>.
         /// </summary>
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
-        private bool ClearOfFold(int k, float tx, float ty, float tz)
+        private bool ClearOfFold(int k, in Float3 c0, in Float3 c1, float t0x, float t0y, float t0z, float tx, float ty, float tz)
         {
-            Float3 c0 = centers[k - 1], c1 = centers[k], t0 = tangents[k - 1];
             float sx = c1.X - c0.X, sy = c1.Y - c0.Y, sz = c1.Z - c0.Z;
-            float ahead = sx * t0.X + sy * t0.Y + sz * t0.Z, behind = sx * tx + sy * ty + sz * tz;
+            float ahead = sx * t0x + sy * t0y + sz * t0z, behind = sx * tx + sy * ty + sz * tz;
             const float held = TipRoom * 1.001f;
             float chord2 = (sx * sx + sy * sy + sz * sz) * (FoldSkew * FoldSkew);
             return ahead > 0f && behind > 0f
@@ -213,33 +214,41 @@ namespace HookeRope.Geometry
         /// <summary>The geometric limits of rings first … last of a piece, from its centres and tangents (after the frames).</summary>
         private void ComputeRingLimits(int first, int last)
         {
-            for (int k = first; k <= last; k++) { capSquared[k] = float.PositiveInfinity; skewed[k] = false; }
-            gapSquared[first] = 0f;
+            // the ring arrays once; each ring's centre and tangent read once (carried to the next pair)
+            ReadOnlySpan<Float3> ringCentres = centers, ringTangents = tangents;
+            Span<float> cap = capSquared, gap = gapSquared;
+            Span<bool> skew = skewed, tips = foldTip;
+            for (int k = first; k <= last; k++) { cap[k] = float.PositiveInfinity; skew[k] = false; }
+            gap[first] = 0f;
             const float skew2 = SkewLimit * SkewLimit;
             const float margin2 = CrossingMargin * CrossingMargin;
+            Float3 c0 = ringCentres[first], t0 = ringTangents[first];
             for (int k = first + 1; k <= last; k++)
             {
-                Float3 c0 = centers[k - 1], c1 = centers[k], t0 = tangents[k - 1], t1 = tangents[k];
+                Float3 c1 = ringCentres[k], t1 = ringTangents[k];
                 float sx = c1.X - c0.X, sy = c1.Y - c0.Y, sz = c1.Z - c0.Z;
-                gapSquared[k] = sx * sx + sy * sy + sz * sz;
+                float gap2 = sx * sx + sy * sy + sz * sz;
+                gap[k] = gap2;
                 float ahead = sx * t0.X + sy * t0.Y + sz * t0.Z;   // advance past ring k − 1's plane
                 float behind = sx * t1.X + sy * t1.Y + sz * t1.Z;  // advance of ring k's plane past ring k − 1
-                if (ahead * ahead < skew2 * gapSquared[k] || ahead < 0f) skewed[k - 1] = true;
-                if (behind * behind < skew2 * gapSquared[k] || behind < 0f) skewed[k] = true;
+                if (ahead * ahead < skew2 * gap2 || ahead < 0f) skew[k - 1] = true;
+                if (behind * behind < skew2 * gap2 || behind < 0f) skew[k] = true;
                 if (!(ahead > 0f && behind > 0f))
                 {
                     // only where a fold tip's repair could not part them (non-finite geometry): drawn as tips
-                    foldTip[k - 1] = true;
-                    foldTip[k] = true;
+                    tips[k - 1] = true;
+                    tips[k] = true;
+                    c0 = c1; t0 = t1;
                     continue;
                 }
                 float nx = t0.Y * t1.Z - t0.Z * t1.Y, ny = t0.Z * t1.X - t0.X * t1.Z, nz = t0.X * t1.Y - t0.Y * t1.X;
                 float sine2 = nx * nx + ny * ny + nz * nz;
+                c0 = c1; t0 = t1;
                 if (!(sine2 > 0f)) continue;
                 float scale = margin2 / sine2;
                 float capNext = ahead * ahead * scale, capPrevious = behind * behind * scale;
-                if (capNext < capSquared[k]) capSquared[k] = capNext;
-                if (capPrevious < capSquared[k - 1]) capSquared[k - 1] = capPrevious;
+                if (capNext < cap[k]) cap[k] = capNext;
+                if (capPrevious < cap[k - 1]) cap[k - 1] = capPrevious;
             }
             // the strips next to a fold tip: steep fans (see TipFan)
             for (int k = first + 1; k <= last; k++)
@@ -265,31 +274,35 @@ namespace HookeRope.Geometry
         /// </summary>
         private void LimitRadii(int first, int last, ReadOnlySpan<float> radii)
         {
+            Span<float> drawn = drawnRadii;
+            ReadOnlySpan<float> cap = capSquared, gap = gapSquared;
+            ReadOnlySpan<bool> tip = foldTip;
             for (int k = first; k <= last; k++)
             {
                 float r = Clamped(radii[k]);
-                float cap2 = capSquared[k];
+                float cap2 = cap[k];
                 float d = r;
-                if (foldTip[k]) d = FoldRadius * r;
+                if (tip[k]) d = FoldRadius * r;
                 else if (r * r > cap2)
                 {
                     d = MathF.Sqrt(cap2);
                     if (!(d >= FoldRadius * r)) d = FoldRadius * r;
                 }
-                drawnRadii[k] = d;
+                drawn[k] = d;
             }
             const float slope2 = ConeSlope * ConeSlope;
             for (int k = first + 1; k <= last; k++)
             {
-                float previous = drawnRadii[k - 1], rise = drawnRadii[k] - previous;
-                if (rise > 0f && rise * rise > slope2 * gapSquared[k]) drawnRadii[k] = previous + ConeSlope * MathF.Sqrt(gapSquared[k]);
+                float previous = drawn[k - 1], rise = drawn[k] - previous;
+                if (rise > 0f && rise * rise > slope2 * gap[k]) drawn[k] = previous + ConeSlope * MathF.Sqrt(gap[k]);
             }
             for (int k = last - 1; k >= first; k--)
             {
-                float next = drawnRadii[k + 1], rise = drawnRadii[k] - next;
-                if (rise > 0f && rise * rise > slope2 * gapSquared[k + 1]) drawnRadii[k] = next + ConeSlope * MathF.Sqrt(gapSquared[k + 1]);
+                float next = drawn[k + 1], rise = drawn[k] - next;
+                if (rise > 0f && rise * rise > slope2 * gap[k + 1]) drawn[k] = next + ConeSlope * MathF.Sqrt(gap[k + 1]);
             }
-            for (int k = first; k <= last; k++) thinned[k] = drawnRadii[k] != Clamped(radii[k]);
+            Span<bool> thin = thinned;
+            for (int k = first; k <= last; k++) thin[k] = drawn[k] != Clamped(radii[k]);
         }
 
         /// <summary>Per ring: its normals are drawn from its two strips (<see cref="WriteRingOnStrips"/>), not the tube's own formula.</summary>

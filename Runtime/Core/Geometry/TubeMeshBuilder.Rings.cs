@@ -23,6 +23,9 @@ namespace HookeRope.Geometry
         private float[] slopeDistance = Array.Empty<float>();
         private float[] spacing2 = Array.Empty<float>();
         private bool[] dirty = Array.Empty<bool>();
+
+        /// <summary>The last <see cref="ComputeFrames"/> left <see cref="slopeDistance"/> valid for its piece (no fold tip moved a centre).</summary>
+        private bool slopeDistanceKept;
         private Float3[] particleNormal;
         private Float3[] particleTangent;
         private bool[] particleFrameValid;
@@ -133,48 +136,66 @@ namespace HookeRope.Geometry
         /// </summary>
         private void ComputeFrames(int a, int b, int first, int last)
         {
-            Float3 span = centers[last] - centers[first];
+            // the ring arrays once (RepairFold writes centers[k] through the field: the same array)
+            ReadOnlySpan<Float3> c = centers;
+            Span<Float3> tangent = tangents, normal = normals;
+            Span<float> distance = slopeDistance;
+            Span<bool> tip = foldTip;
+            Float3 span = c[last] - c[first];
             float px = span.X, py = span.Y, pz = span.Z;
             if (!Normalize(ref px, ref py, ref pz)) { px = 1f; py = 0f; pz = 0f; }
             float nx = 0f, ny = 0f, nz = 0f, qx = 0f, qy = 0f, qz = 0f;
+            bool moved = false;
             for (int k = first; k <= last; k++)
             {
-                Float3 ahead = k < last ? centers[k + 1] : centers[k];
-                Float3 behind = k > first ? centers[k - 1] : centers[k];
+                Float3 here = c[k];
+                Float3 ahead = k < last ? c[k + 1] : here;
+                Float3 behind = k > first ? c[k - 1] : here;
                 float tx = ahead.X - behind.X, ty = ahead.Y - behind.Y, tz = ahead.Z - behind.Z;
-                bool found = Normalize(ref tx, ref ty, ref tz);
+                // Normalize's operations, keeping the length: it is ComputeSlopes' ring distance (the same centres)
+                float lengthSquared = tx * tx + ty * ty + tz * tz;
+                float length = MathF.Sqrt(lengthSquared);
+                distance[k] = length;
+                bool found = lengthSquared > 1e-20f;
+                if (found)
+                {
+                    float inverse = 1f / length;
+                    tx *= inverse; ty *= inverse; tz *= inverse;
+                }
                 if (!found && k < last)
                 {
-                    Float3 d = centers[k + 1] - centers[k];
+                    Float3 d = ahead - here;
                     tx = d.X; ty = d.Y; tz = d.Z;
                     found = Normalize(ref tx, ref ty, ref tz);
                 }
                 if (!found && k > first)
                 {
-                    Float3 d = centers[k] - centers[k - 1];
+                    Float3 d = here - behind;
                     tx = d.X; ty = d.Y; tz = d.Z;
                     found = Normalize(ref tx, ref ty, ref tz);
                 }
                 if (!found) { tx = px; ty = py; tz = pz; }
-                if (k == first) foldTip[k] = false;
-                else { foldTip[k] = false; if (!ClearOfFold(k, tx, ty, tz)) RepairFold(k, ref tx, ref ty, ref tz); }
-                var tangent = new Float3(tx, ty, tz);
+                tip[k] = false;
+                // ring k − 1's tangent is (qx, qy, qz), its centre behind
+                if (k > first && !ClearOfFold(k, behind, here, qx, qy, qz, tx, ty, tz) && RepairFold(k, ref tx, ref ty, ref tz)) moved = true;
                 if (k == first)
                 {
                     Float3 seed = particleNormal[a];
                     nx = seed.X; ny = seed.Y; nz = seed.Z;
-                    if (!(particleFrameValid[a] && particleTangent[a].Equals(tangent)))
+                    if (!(particleFrameValid[a] && particleTangent[a].Equals(new Float3(tx, ty, tz))))
                         FrameTransport.Perpendicular(ref nx, ref ny, ref nz, tx, ty, tz);
                 }
                 else
                 {
                     FrameTransport.Transport(ref nx, ref ny, ref nz, qx, qy, qz, tx, ty, tz);
                 }
-                tangents[k] = tangent;
-                normals[k] = new Float3(nx, ny, nz);
+                tangent[k] = new Float3(tx, ty, tz);
+                normal[k] = new Float3(nx, ny, nz);
                 qx = tx; qy = ty; qz = tz;
                 px = tx; py = ty; pz = tz;
             }
+            // a fold tip moved a centre after its neighbours' distances were taken: ComputeSlopes measures them again
+            slopeDistanceKept = !moved;
             for (int j = a; j <= b; j++)
             {
                 int k = layout.FirstRing(j);
@@ -184,15 +205,23 @@ namespace HookeRope.Geometry
             }
         }
 
+        /// <summary>
+        /// Radius slopes dr/ds over the distance between each ring's neighbours (the ring itself at a piece's end). The
+        /// frames took those distances already (the length of the central difference they normalise), bit for bit the
+        /// same, unless a fold tip moved a centre afterwards.
+        /// </summary>
         private void ComputeSlopes(int first, int last)
         {
             for (int k = first; k <= last; k++)
             {
                 int ahead = k < last ? k + 1 : k;
                 int behind = k > first ? k - 1 : k;
-                Float3 ca = centers[ahead], cb = centers[behind];
-                float dx = ca.X - cb.X, dy = ca.Y - cb.Y, dz = ca.Z - cb.Z;
-                slopeDistance[k] = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
+                if (!slopeDistanceKept)
+                {
+                    Float3 ca = centers[ahead], cb = centers[behind];
+                    float dx = ca.X - cb.X, dy = ca.Y - cb.Y, dz = ca.Z - cb.Z;
+                    slopeDistance[k] = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
+                }
                 slopes[k] = foldTip[k] ? 0f : Slope(ringRadii[ahead], ringRadii[behind], slopeDistance[k]);
             }
         }
@@ -274,16 +303,21 @@ namespace HookeRope.Geometry
             }
         }
 
-        /// <summary>The ring lies on the circle of radius r around c in the plane normal to t: per axis c ± r·sqrt(1 − t²).</summary>
+        /// <summary>
+        /// The ring lies on the circle of radius r around c in the plane normal to t: per axis c ± r·sqrt(1 − t²). The three
+        /// square roots are one 4-lane square root (correctly rounded per lane, so the same bits as three scalar ones), and
+        /// the box goes into the bounds with one comparison per axis and side (c − e ≤ c + e).
+        /// </summary>
         private void AddRingBounds(int k, ref Bounds bounds)
         {
             Float3 c = centers[k], t = tangents[k];
             float r = ringRadii[k];
-            float ex = r * MathF.Sqrt(MathF.Max(0f, 1f - t.X * t.X)) * 1.000001f;
-            float ey = r * MathF.Sqrt(MathF.Max(0f, 1f - t.Y * t.Y)) * 1.000001f;
-            float ez = r * MathF.Sqrt(MathF.Max(0f, 1f - t.Z * t.Z)) * 1.000001f;
-            bounds.Add(new Float3(c.X - ex, c.Y - ey, c.Z - ez));
-            bounds.Add(new Float3(c.X + ex, c.Y + ey, c.Z + ez));
+            var t4 = new Vector4(t.X, t.Y, t.Z, 0f);
+            Vector4 root = Vector4.SquareRoot(Vector4.Max(Vector4.Zero, Vector4.One - t4 * t4));
+            float ex = r * root.X * 1.000001f;
+            float ey = r * root.Y * 1.000001f;
+            float ez = r * root.Z * 1.000001f;
+            bounds.AddBox(c.X - ex, c.Y - ey, c.Z - ez, c.X + ex, c.Y + ey, c.Z + ez);
         }
 
         /// <summary>(x, y, z) scaled to unit length and true, or unchanged and false when its length² is not above 1e-20 (as Float3.NormalizedOr).</summary>

@@ -886,6 +886,14 @@ namespace HookeRope.Geometry
                 Max = new Float3(p.X > Max.X ? p.X : Max.X, p.Y > Max.Y ? p.Y : Max.Y, p.Z > Max.Z ? p.Z : Max.Z);
             }
 
+            /// <summary>Adds the box lo … hi (lo ≤ hi per axis, or NaN): the same result as Add(lo) then Add(hi), with half the comparisons.</summary>
+            [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+            public void AddBox(float lx, float ly, float lz, float hx, float hy, float hz)
+            {
+                Min = new Float3(lx < Min.X ? lx : Min.X, ly < Min.Y ? ly : Min.Y, lz < Min.Z ? lz : Min.Z);
+                Max = new Float3(hx > Max.X ? hx : Max.X, hy > Max.Y ? hy : Max.Y, hz > Max.Z ? hz : Max.Z);
+            }
+
             public void Add(Bounds other)
             {
                 if (other.Min.X > other.Max.X) return;
