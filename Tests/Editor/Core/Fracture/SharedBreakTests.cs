@@ -15,7 +15,7 @@ namespace HookeRope.Tests.Core.Fracture
     /// </summary>
     public sealed class SharedBreakTests
     {
-        private const float R = 0.01f;
+        private const float R = FractureCord.Radius;
         private const float HostStep = 1f / 90f;
 
         private sealed class Pulled
@@ -35,21 +35,8 @@ namespace HookeRope.Tests.Core.Fracture
 
         private static Pulled Cord(int radial)
         {
-            var settings = new RopeSettings
-            {
-                RestLength = 1f, SegmentCount = 21, Radius = R, AxialStiffness = 1000f, Density = 1100f, Gravity = Float3.Zero,
-                Substeps = 4, Iterations = 1, Damping = 0.01f, Solver = ConstraintSolverKind.ExactChain,
-            };
-            var radius = new RadiusSettings
-            {
-                PoissonRatio = 0.5f, Necking = true, NeckMode = NeckMode.Zone, NeckRadiusFraction = 0.85f, DefectPosition = 0.5f,
-                Fracture = true, BreakStrain = 0.5f,
-            };
-            var mesh = new TubeMeshSettings { RadialSegments = radial };
-            var rope = new Rope(settings, Float3.Zero, new Float3(1f, 0f, 0f));
-            rope.AddPin(0, Float3.Zero);
-            int pin = rope.AddPin(21, new Float3(1f, 0f, 0f));
-            return new Pulled { Simulation = new RopeSimulation(rope, radius, mesh), EndPin = pin };
+            var simulation = FractureCord.Build(new TubeMeshSettings { RadialSegments = radial }, out int pin);
+            return new Pulled { Simulation = simulation, EndPin = pin };
         }
 
         private static Pulled BrokenCord(int radial, int stepsAfter)

@@ -3,6 +3,7 @@ using HookeRope.Geometry;
 using HookeRope.Mathematics;
 using HookeRope.Radius;
 using HookeRope.Solver;
+using HookeRope.Tests.Core.Fracture;
 
 namespace HookeRope.Tests.Core.Geometry
 {
@@ -41,20 +42,8 @@ namespace HookeRope.Tests.Core.Geometry
         /// <summary>The lab's fracture cord pulled at 0.5 m/s to <paramref name="strain"/> (0: until it breaks).</summary>
         private static TubeMeshUpdate Cord(int radial, bool adaptive, float strain, out TubeVertex[] vertices, out int[] indices, out TubeMeshBuilder builder)
         {
-            var settings = new RopeSettings
-            {
-                RestLength = 1f, SegmentCount = 21, Radius = R, AxialStiffness = 1000f, Density = 1100f, Gravity = Float3.Zero,
-                Substeps = 4, Iterations = 1, Damping = 0.01f, Solver = ConstraintSolverKind.ExactChain,
-            };
-            var radius = new RadiusSettings
-            {
-                PoissonRatio = 0.5f, Necking = true, NeckMode = NeckMode.Zone, NeckRadiusFraction = 0.85f, DefectPosition = 0.5f,
-                Fracture = true, BreakStrain = 0.5f,
-            };
-            var rope = new Rope(settings, Float3.Zero, new Float3(1f, 0f, 0f));
-            rope.AddPin(0, Float3.Zero);
-            int pin = rope.AddPin(21, new Float3(1f, 0f, 0f));
-            var sim = new RopeSimulation(rope, radius, new TubeMeshSettings { RadialSegments = radial, AdaptiveRings = adaptive });
+            var sim = FractureCord.Build(new TubeMeshSettings { RadialSegments = radial, AdaptiveRings = adaptive }, out int pin);
+            Rope rope = sim.Rope;
             for (int step = 1; step <= 400; step++)
             {
                 if (strain > 0f ? sim.Readouts.Strain >= strain : sim.IsBroken) break;

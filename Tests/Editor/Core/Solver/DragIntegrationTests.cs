@@ -12,22 +12,14 @@ namespace HookeRope.Tests.Solver
     /// </summary>
     public sealed class DragIntegrationTests
     {
-        private static Rope Swinging(RopeSettings settings)
-        {
-            float length = settings.RestLength;
-            var rope = new Rope(settings, Float3.Zero, new Float3(length * 0.5f, -length * (float)Math.Sqrt(0.75), 0f));
-            rope.AddPin(0, Float3.Zero);
-            return rope;
-        }
-
         [TestCase(TimeIntegrator.Bdf2)]
         [TestCase(TimeIntegrator.BackwardEuler)]
         public void ZeroDragIsBitIdenticalToNoDrag(TimeIntegrator integrator)
         {
-            var plain = Swinging(new RopeSettings { Integrator = integrator });
+            var plain = RopeTestKit.ReleasedAt30Degrees(new RopeSettings { Integrator = integrator });
             // drag settings that all amount to no drag: zero coefficients with a wind and a dense fluid, and drag turned on then off again
-            var zero = Swinging(new RopeSettings { Integrator = integrator, Wind = new Float3(5f, 0f, -3f), AirDensity = 1000f });
-            var toggled = Swinging(new RopeSettings { Integrator = integrator, ViscousDrag = 1f, DragCoefficient = 1f, SkinFriction = 0.1f });
+            var zero = RopeTestKit.ReleasedAt30Degrees(new RopeSettings { Integrator = integrator, Wind = new Float3(5f, 0f, -3f), AirDensity = 1000f });
+            var toggled = RopeTestKit.ReleasedAt30Degrees(new RopeSettings { Integrator = integrator, ViscousDrag = 1f, DragCoefficient = 1f, SkinFriction = 0.1f });
             toggled.Settings.ViscousDrag = 0f;
             toggled.Settings.DragCoefficient = 0f;
             toggled.Settings.AirDensity = 0f;
@@ -53,7 +45,7 @@ namespace HookeRope.Tests.Solver
         [TestCase(TimeIntegrator.BackwardEuler)]
         public void StepWithDragAllocatesNothingAfterWarmUp(TimeIntegrator integrator)
         {
-            var rope = Swinging(new RopeSettings { Integrator = integrator, ViscousDrag = 0.5f, DragCoefficient = 1.2f, SkinFriction = 0.01f, Wind = new Float3(2f, 0f, 1f) });
+            var rope = RopeTestKit.ReleasedAt30Degrees(new RopeSettings { Integrator = integrator, ViscousDrag = 0.5f, DragCoefficient = 1.2f, SkinFriction = 0.01f, Wind = new Float3(2f, 0f, 1f) });
             rope.AddPin(rope.ParticleCount - 1, rope.GetPosition(rope.ParticleCount - 1), 1e-4f);   // a compliant pin folds onto the drag's mass
             for (int k = 0; k < 20; k++) rope.Step(1f / 90f);
             // three windows: a real per-step allocation shows in every one, a one-off runtime allocation in one at most
@@ -71,15 +63,7 @@ namespace HookeRope.Tests.Solver
         private static double[] AnglesAfterOneSecond(RopeSettings settings, int substeps)
         {
             settings.Substeps = substeps;
-            var rope = Swinging(settings);
-            for (int k = 0; k < 45; k++) rope.Step(1f / 45f);
-            var angles = new double[rope.SegmentCount];
-            for (int j = 0; j < angles.Length; j++)
-            {
-                Float3 d = rope.GetPosition(j + 1) - rope.GetPosition(j);
-                angles[j] = Math.Atan2(d.X, -d.Y);
-            }
-            return angles;
+            return RopeTestKit.AnglesAfterOneSecond(settings);
         }
 
         /// <summary>Largest angle error (rad) at 2, 4, 8 and 16 substeps of a 1/45 s host step against 512 substeps.</summary>
@@ -181,7 +165,7 @@ namespace HookeRope.Tests.Solver
                 RestLength = 1f, SegmentCount = 16, Radius = 0.005f, YoungsModulus = 1e6f, Density = 1140f, Damping = 0.05f,
                 Integrator = integrator, ViscousDrag = viscous, DragCoefficient = dragCoefficient, AirDensity = airDensity,
             };
-            var rope = Swinging(settings);
+            var rope = RopeTestKit.ReleasedAt30Degrees(settings);
             float particleMass = settings.LinearDensity * settings.RestLength / settings.SegmentCount;
             rope.AddLoad(rope.ParticleCount - 1, 100f * particleMass);
             double load = 100.0 * particleMass;

@@ -52,6 +52,29 @@ namespace HookeRope.Tests.Solver
             };
         }
 
+        /// <summary>A straight rope of <paramref name="settings"/> pinned at the origin and released at rest length 30° from the downward vertical.</summary>
+        public static Rope ReleasedAt30Degrees(RopeSettings settings)
+        {
+            float length = settings.RestLength;
+            var rope = new Rope(settings, Float3.Zero, new Float3(length * 0.5f, -length * (float)Math.Sqrt(0.75), 0f));
+            rope.AddPin(0, Float3.Zero);
+            return rope;
+        }
+
+        /// <summary>Segment angles (rad) from the downward vertical after 1 s (45 host steps of 1/45 s) of <see cref="ReleasedAt30Degrees"/>.</summary>
+        public static double[] AnglesAfterOneSecond(RopeSettings settings)
+        {
+            var rope = ReleasedAt30Degrees(settings);
+            for (int k = 0; k < 45; k++) rope.Step(1f / 45f);
+            var angles = new double[rope.SegmentCount];
+            for (int j = 0; j < angles.Length; j++)
+            {
+                Float3 d = rope.GetPosition(j + 1) - rope.GetPosition(j);
+                angles[j] = Math.Atan2(d.X, -d.Y);
+            }
+            return angles;
+        }
+
         public static float Bottom(Rope rope) => rope.GetPosition(rope.ParticleCount - 1).Y;
 
         public static bool AllFinite(Rope rope)

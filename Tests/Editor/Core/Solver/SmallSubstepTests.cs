@@ -44,21 +44,8 @@ namespace HookeRope.Tests.Solver
         }
 
         /// <summary>Segment angles (rad) after 1 s (45 host steps of 1/45 s) of a 2 m, 4-segment rope pinned at the origin and released at 30°.</summary>
-        private static double[] AnglesAfterOneSecond(TimeIntegrator integrator, ConstraintSolverKind solver, int substeps)
-        {
-            var settings = new RopeSettings { SegmentCount = 4, Integrator = integrator, Solver = solver, Substeps = substeps };
-            float length = settings.RestLength;
-            var rope = new Rope(settings, Float3.Zero, new Float3(length * 0.5f, -length * (float)Math.Sqrt(0.75), 0f));
-            rope.AddPin(0, Float3.Zero);
-            for (int k = 0; k < 45; k++) rope.Step(1f / 45f);
-            var angles = new double[rope.SegmentCount];
-            for (int j = 0; j < angles.Length; j++)
-            {
-                Float3 d = rope.GetPosition(j + 1) - rope.GetPosition(j);
-                angles[j] = Math.Atan2(d.X, -d.Y);
-            }
-            return angles;
-        }
+        private static double[] AnglesAfterOneSecond(TimeIntegrator integrator, ConstraintSolverKind solver, int substeps) =>
+            RopeTestKit.AnglesAfterOneSecond(new RopeSettings { SegmentCount = 4, Integrator = integrator, Solver = solver, Substeps = substeps });
 
         private static double LargestDifference(double[] a, double[] b)
         {
