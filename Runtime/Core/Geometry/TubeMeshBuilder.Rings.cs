@@ -150,16 +150,8 @@ namespace HookeRope.Geometry
                 Float3 ahead = k < last ? c[k + 1] : here;
                 Float3 behind = k > first ? c[k - 1] : here;
                 float tx = ahead.X - behind.X, ty = ahead.Y - behind.Y, tz = ahead.Z - behind.Z;
-                // Normalize's operations, keeping the length: it is ComputeSlopes' ring distance (the same centres)
-                float lengthSquared = tx * tx + ty * ty + tz * tz;
-                float length = MathF.Sqrt(lengthSquared);
-                distance[k] = length;
-                bool found = lengthSquared > 1e-20f;
-                if (found)
-                {
-                    float inverse = 1f / length;
-                    tx *= inverse; ty *= inverse; tz *= inverse;
-                }
+                // the length is ComputeSlopes' ring distance (the same centres)
+                bool found = Normalize(ref tx, ref ty, ref tz, out distance[k]);
                 if (!found && k < last)
                 {
                     Float3 d = ahead - here;
@@ -319,11 +311,16 @@ namespace HookeRope.Geometry
         }
 
         /// <summary>(x, y, z) scaled to unit length and true, or unchanged and false when its length² is not above 1e-20 (as Float3.NormalizedOr).</summary>
-        private static bool Normalize(ref float x, ref float y, ref float z)
+        private static bool Normalize(ref float x, ref float y, ref float z) => Normalize(ref x, ref y, ref z, out _);
+
+        /// <summary><see cref="Normalize(ref float, ref float, ref float)"/> that also gives the length of (x, y, z) before scaling (set either way).</summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static bool Normalize(ref float x, ref float y, ref float z, out float length)
         {
             float lengthSquared = x * x + y * y + z * z;
+            length = MathF.Sqrt(lengthSquared);
             if (!(lengthSquared > 1e-20f)) return false;
-            float inverse = 1f / MathF.Sqrt(lengthSquared);
+            float inverse = 1f / length;
             x *= inverse; y *= inverse; z *= inverse;
             return true;
         }
