@@ -43,7 +43,6 @@ namespace HookeRope.Geometry
         private readonly int n;
         private readonly RingLayout zone;
         private readonly float tolerance;
-        private readonly int meanCap;
         private readonly int[] capBefore;
         private readonly float[] need;
         private readonly int[] counts;
@@ -84,10 +83,9 @@ namespace HookeRope.Geometry
             n = segmentCount;
             zone = neckStations;
             tolerance = RingNeed.Tolerance(radialSegments);
-            meanCap = meanRingsPerSegment;
             capBefore = new int[n + 1];
             for (int j = 0; j < n; j++)
-                capBefore[j + 1] = capBefore[j] + meanCap + (zone != null && zone.RingsIn(j) > 1 ? zone.RingsIn(j) : 0);
+                capBefore[j + 1] = capBefore[j] + meanRingsPerSegment + (zone != null && zone.RingsIn(j) > 1 ? zone.RingsIn(j) : 0);
             need = new float[n];
             counts = new int[n];
             budget = new int[n];
@@ -110,11 +108,8 @@ namespace HookeRope.Geometry
         /// </summary>
         public int MostRings => capBefore[n] + 1;
 
-        /// <summary>Mean rings per segment the budget allows (<see cref="MaxMeanRingsPerSegment"/> unless a test asked otherwise).</summary>
-        public int MeanRingsPerSegmentCap => meanCap;
-
         /// <summary>
-        /// Most rings the segments [a, b) of one unbroken piece may hold: <see cref="MeanRingsPerSegmentCap"/> per segment
+        /// Most rings the segments [a, b) of one unbroken piece may hold: the constructor's mean rings per segment
         /// plus the neck's stations in each segment that holds more than one. A piece's budget never exceeds it.
         /// </summary>
         public int CapOfPiece(int a, int b) => capBefore[b] - capBefore[a];

@@ -257,9 +257,8 @@ namespace HookeRope.Geometry
                 int tip = foldTip[k - 1] ? k - 1 : k, other = tip == k ? k - 1 : k;
                 Float3 ct = centers[tip], t = tangents[tip], co = centers[other];
                 float dx = co.X - ct.X, dy = co.Y - ct.Y, dz = co.Z - ct.Z;
-                float advance = dx * t.X + dy * t.Y + dz * t.Z;
-                if (tip == k) advance = -advance;
                 float along = dx * t.X + dy * t.Y + dz * t.Z;
+                float advance = tip == k ? -along : along;
                 float ox = dx - along * t.X, oy = dy - along * t.Y, oz = dz - along * t.Z;
                 float offset = MathF.Sqrt(ox * ox + oy * oy + oz * oz);
                 float fan = TipFan * advance - offset;

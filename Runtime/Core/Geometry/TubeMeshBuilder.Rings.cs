@@ -23,9 +23,6 @@ namespace HookeRope.Geometry
         private float[] slopeDistance = Array.Empty<float>();
         private float[] spacing2 = Array.Empty<float>();
         private bool[] dirty = Array.Empty<bool>();
-
-        /// <summary>The last <see cref="ComputeFrames"/> left <see cref="slopeDistance"/> valid for its piece (no fold tip moved a centre).</summary>
-        private bool slopeDistanceKept;
         private Float3[] particleNormal;
         private Float3[] particleTangent;
         private bool[] particleFrameValid;
@@ -132,9 +129,10 @@ namespace HookeRope.Geometry
         /// <summary>
         /// Tangents (central differences of the centres) and normals by parallel transport from the piece's first ring,
         /// whose normal is the last build's normal at that particle, re-projected only when its tangent changed (so the
-        /// tube does not spin between frames, and the same input gives the same bits).
+        /// tube does not spin between frames, and the same input gives the same bits). Returns true when the ring distances
+        /// it left in <see cref="slopeDistance"/> hold for <see cref="ComputeSlopes"/> (no fold tip moved a centre).
         /// </summary>
-        private void ComputeFrames(int a, int b, int first, int last)
+        private bool ComputeFrames(int a, int b, int first, int last)
         {
             // the ring arrays once (RepairFold writes centers[k] through the field: the same array)
             ReadOnlySpan<Float3> c = centers;
@@ -152,16 +150,8 @@ namespace HookeRope.Geometry
                 Float3 ahead = k < last ? c[k + 1] : here;
                 Float3 behind = k > first ? c[k - 1] : here;
                 float tx = ahead.X - behind.X, ty = ahead.Y - behind.Y, tz = ahead.Z - behind.Z;
-                // Normalize's operations, keeping the length: it is ComputeSlopes' ring distance (the same centres)
-                float lengthSquared = tx * tx + ty * ty + tz * tz;
-                float length = MathF.Sqrt(lengthSquared);
-                distance[k] = length;
-                bool found = lengthSquared > 1e-20f;
-                if (found)
-                {
-                    float inverse = 1f / length;
-                    tx *= inverse; ty *= inverse; tz *= inverse;
-                }
+                // the length is ComputeSlopes' ring distance (the same centres)
+                bool found = Normalize(ref tx, ref ty, ref tz, out distance[k]);
                 if (!found && k < last)
                 {
                     Float3 d = ahead - here;
@@ -194,8 +184,6 @@ namespace HookeRope.Geometry
                 qx = tx; qy = ty; qz = tz;
                 px = tx; py = ty; pz = tz;
             }
-            // a fold tip moved a centre after its neighbours' distances were taken: ComputeSlopes measures them again
-            slopeDistanceKept = !moved;
             for (int j = a; j <= b; j++)
             {
                 int k = layout.FirstRing(j);
@@ -203,20 +191,22 @@ namespace HookeRope.Geometry
                 particleTangent[j] = tangents[k];
                 particleFrameValid[j] = true;
             }
+            // a fold tip moved a centre after its neighbours' distances were taken: ComputeSlopes measures them again
+            return !moved;
         }
 
         /// <summary>
         /// Radius slopes dr/ds over the distance between each ring's neighbours (the ring itself at a piece's end). The
         /// frames took those distances already (the length of the central difference they normalise), bit for bit the
-        /// same, unless a fold tip moved a centre afterwards.
+        /// same, unless a fold tip moved a centre afterwards (<paramref name="distancesKept"/> false, from <see cref="ComputeFrames"/>).
         /// </summary>
-        private void ComputeSlopes(int first, int last)
+        private void ComputeSlopes(int first, int last, bool distancesKept)
         {
             for (int k = first; k <= last; k++)
             {
                 int ahead = k < last ? k + 1 : k;
                 int behind = k > first ? k - 1 : k;
-                if (!slopeDistanceKept)
+                if (!distancesKept)
                 {
                     Float3 ca = centers[ahead], cb = centers[behind];
                     float dx = ca.X - cb.X, dy = ca.Y - cb.Y, dz = ca.Z - cb.Z;
@@ -321,11 +311,16 @@ namespace HookeRope.Geometry
         }
 
         /// <summary>(x, y, z) scaled to unit length and true, or unchanged and false when its length² is not above 1e-20 (as Float3.NormalizedOr).</summary>
-        private static bool Normalize(ref float x, ref float y, ref float z)
+        private static bool Normalize(ref float x, ref float y, ref float z) => Normalize(ref x, ref y, ref z, out _);
+
+        /// <summary><see cref="Normalize(ref float, ref float, ref float)"/> that also gives the length of (x, y, z) before scaling (set either way).</summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static bool Normalize(ref float x, ref float y, ref float z, out float length)
         {
             float lengthSquared = x * x + y * y + z * z;
+            length = MathF.Sqrt(lengthSquared);
             if (!(lengthSquared > 1e-20f)) return false;
-            float inverse = 1f / MathF.Sqrt(lengthSquared);
+            float inverse = 1f / length;
             x *= inverse; y *= inverse; z *= inverse;
             return true;
         }

@@ -607,11 +607,11 @@ namespace HookeRope.Geometry
                 for (int k = first; k <= last; k++) { ringRadii[k] = Clamped(radii[k]); dirty[k] = true; }
                 ComputeCenters(a, b, first, last, x, y, z);
                 if (contactRope != null && contactRope.ColliderCount > 0) PushCentersOutOfColliders(first, last);
-                ComputeFrames(a, b, first, last);
+                bool distancesKept = ComputeFrames(a, b, first, last);
                 ComputeRingLimits(first, last);
                 LimitRadii(first, last, radii);
                 for (int k = first; k <= last; k++) ringRadii[k] = drawnRadii[k];
-                ComputeSlopes(first, last);
+                ComputeSlopes(first, last, distancesKept);
                 MarkStripNormals(first, last);
             }
 

@@ -69,6 +69,14 @@ namespace HookeRope.Tests.Core.Geometry
             return sum / 6.0;
         }
 
+        /// <summary>The winding normal Cross(b − a, c − a) of triangle a, b, c (its length is twice the area, m²).</summary>
+        private static void Winding(in TubeVertex a, in TubeVertex b, in TubeVertex c, out double nx, out double ny, out double nz)
+        {
+            double ux = b.PX - a.PX, uy = b.PY - a.PY, uz = b.PZ - a.PZ;
+            double wx = c.PX - a.PX, wy = c.PY - a.PY, wz = c.PZ - a.PZ;
+            nx = uy * wz - uz * wy; ny = uz * wx - ux * wz; nz = ux * wy - uy * wx;
+        }
+
         /// <summary>Smallest triangle area in m² and the smallest cosine between a face normal (from the winding) and its vertices' normals.</summary>
         public static void Faces(TubeVertex[] vertices, int[] indices, int start, int count, out double smallestArea, out double worstAlignment)
         {
@@ -77,9 +85,7 @@ namespace HookeRope.Tests.Core.Geometry
             for (int t = start; t < start + count; t += 3)
             {
                 TubeVertex a = vertices[indices[t]], b = vertices[indices[t + 1]], c = vertices[indices[t + 2]];
-                double ux = b.PX - a.PX, uy = b.PY - a.PY, uz = b.PZ - a.PZ;
-                double wx = c.PX - a.PX, wy = c.PY - a.PY, wz = c.PZ - a.PZ;
-                double nx = uy * wz - uz * wy, ny = uz * wx - ux * wz, nz = ux * wy - uy * wx;
+                Winding(a, b, c, out double nx, out double ny, out double nz);
                 double length = Math.Sqrt(nx * nx + ny * ny + nz * nz);
                 smallestArea = Math.Min(smallestArea, 0.5 * length);
                 if (length > 0.0)
@@ -103,9 +109,7 @@ namespace HookeRope.Tests.Core.Geometry
             for (int t = start; t < start + count; t += 3)
             {
                 TubeVertex a = vertices[indices[t]], b = vertices[indices[t + 1]], c = vertices[indices[t + 2]];
-                double ux = b.PX - a.PX, uy = b.PY - a.PY, uz = b.PZ - a.PZ;
-                double wx = c.PX - a.PX, wy = c.PY - a.PY, wz = c.PZ - a.PZ;
-                double nx = uy * wz - uz * wy, ny = uz * wx - ux * wz, nz = ux * wy - uy * wx;
+                Winding(a, b, c, out double nx, out double ny, out double nz);
                 double along = nx * ((double)a.NX + b.NX + c.NX) + ny * ((double)a.NY + b.NY + c.NY) + nz * ((double)a.NZ + b.NZ + c.NZ);
                 if (!(along < 0.0)) continue;
                 inverted++;
@@ -125,9 +129,7 @@ namespace HookeRope.Tests.Core.Geometry
             for (int t = start; t < start + count; t += 3)
             {
                 TubeVertex a = vertices[indices[t]], b = vertices[indices[t + 1]], c = vertices[indices[t + 2]];
-                double ux = b.PX - a.PX, uy = b.PY - a.PY, uz = b.PZ - a.PZ;
-                double wx = c.PX - a.PX, wy = c.PY - a.PY, wz = c.PZ - a.PZ;
-                double nx = uy * wz - uz * wy, ny = uz * wx - ux * wz, nz = ux * wy - uy * wx;
+                Winding(a, b, c, out double nx, out double ny, out double nz);
                 double length = Math.Sqrt(nx * nx + ny * ny + nz * nz);
                 if (!(0.5 * length > minimumArea)) continue;
                 nx /= length; ny /= length; nz /= length;
