@@ -96,7 +96,7 @@ namespace HookeRope.Solver
         // collider's friction coefficients and its displacement over the substep at the contact (m). Per particle: the
         // contact impulse of this substep (N·s², h² times the force: push-outs, normal reaction, friction) and its friction
         // part, whether the contact was released in this substep, and, kept from one detection to the next, the contact's
-        // state (0 none, 1 held, 2 sticking, 3 sliding), its damping ζ (kg) and its last normal impulse (N·s²).
+        // state (0 none, 1 held, 2 sticking, 3 sliding) and its damping ζ (kg).
         public bool[] ContactSticking, ContactSliding;
         public double[] ContactMobility;
         public double[] ContactShiftX, ContactShiftY, ContactShiftZ;
@@ -107,7 +107,6 @@ namespace HookeRope.Solver
         public bool[] ContactStopped;                   // released in this substep (stays free in it)
         public byte[] ContactMemory;
         public double[] ContactDamping;
-        public double[] ContactNormalImpulse;
         // a sliding contact's ζ (kg) and friction ζ|s| (N·s²) of the pass before in this iteration (0: none), the secant's
         // other point (ChainContacts.Secant)
         public double[] ContactLastDamping, ContactLastForce;
@@ -168,7 +167,7 @@ namespace HookeRope.Solver
             ContactSurfaceX = new float[n]; ContactSurfaceY = new float[n]; ContactSurfaceZ = new float[n];
             ContactImpulseX = new double[n]; ContactImpulseY = new double[n]; ContactImpulseZ = new double[n];
             ContactFrictionX = new double[n]; ContactFrictionY = new double[n]; ContactFrictionZ = new double[n];
-            ContactMemory = new byte[n]; ContactDamping = new double[n]; ContactNormalImpulse = new double[n];
+            ContactMemory = new byte[n]; ContactDamping = new double[n];
             ContactLastDamping = new double[n]; ContactLastForce = new double[n];
             for (int i = 0; i < n; i++) ContactCollider[i] = -1;
             ContactCount = 0;
