@@ -211,10 +211,7 @@ namespace HookeRope.Solver
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void AddDisplacement(int i, double mx, double my, double mz)
         {
-            double x = ((double)DX[i] + DLowX[i]) + mx, y = ((double)DY[i] + DLowY[i]) + my, z = ((double)DZ[i] + DLowZ[i]) + mz;
-            float fx = (float)x, fy = (float)y, fz = (float)z;
-            DX[i] = fx; DY[i] = fy; DZ[i] = fz;
-            DLowX[i] = (float)(x - fx); DLowY[i] = (float)(y - fy); DLowZ[i] = (float)(z - fz);
+            Add(ref DX[i], ref DLowX[i], mx); Add(ref DY[i], ref DLowY[i], my); Add(ref DZ[i], ref DLowZ[i], mz);
         }
 
         /// <summary>
@@ -247,9 +244,7 @@ namespace HookeRope.Solver
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void SetDisplacement(int i, double x, double y, double z)
         {
-            float fx = (float)x, fy = (float)y, fz = (float)z;
-            DX[i] = fx; DY[i] = fy; DZ[i] = fz;
-            DLowX[i] = (float)(x - fx); DLowY[i] = (float)(y - fy); DLowZ[i] = (float)(z - fz);
+            Set(ref DX[i], ref DLowX[i], x); Set(ref DY[i], ref DLowY[i], y); Set(ref DZ[i], ref DLowZ[i], z);
         }
 
         /// <summary>Particle i's substep displacement D + DLow (m, double).</summary>
