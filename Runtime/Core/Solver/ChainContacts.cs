@@ -332,9 +332,9 @@ namespace HookeRope.Solver
         }
 
         /// <summary>
-        /// After the substep's last iteration: each held contact's normal impulse (kept for the next substep's first pass)
-        /// and whether friction acts on it: one not pressed onto a surface with friction loses its friction state; the
-        /// others keep theirs (ζ included: a sliding contact's ζ is the next substep's first guess) and make the next
+        /// After the substep's last iteration: the largest normal impulse of the held contacts
+        /// (<see cref="ChainState.ContactNormalScale"/>) and whether friction acts on each: one not pressed onto a surface
+        /// with friction loses its friction state; the others keep theirs (ζ included: a sliding contact's ζ is the next substep's first guess) and make the next
         /// substep backward Euler (<see cref="ChainState.HeldWithFriction"/>).
         /// </summary>
         public static void DecideFriction(ChainState c)
@@ -347,7 +347,6 @@ namespace HookeRope.Solver
                 if (!c.ContactActive[i]) continue;
                 double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
                 double normal = c.ContactImpulseX[i] * nx + c.ContactImpulseY[i] * ny + c.ContactImpulseZ[i] * nz;
-                c.ContactNormalImpulse[i] = normal;
                 c.ContactNormalScale = Math.Max(c.ContactNormalScale, normal);
                 if (!(normal > 0.0) || c.ContactStaticFriction[i] == 0f)
                 {

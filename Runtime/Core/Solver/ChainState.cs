@@ -96,7 +96,7 @@ namespace HookeRope.Solver
         // collider's friction coefficients and its displacement over the substep at the contact (m). Per particle: the
         // contact impulse of this substep (N·s², h² times the force: push-outs, normal reaction, friction) and its friction
         // part, whether the contact was released in this substep, and, kept from one detection to the next, the contact's
-        // state (0 none, 1 held, 2 sticking, 3 sliding), its damping ζ (kg) and its last normal impulse (N·s²).
+        // state (0 none, 1 held, 2 sticking, 3 sliding) and its damping ζ (kg).
         public bool[] ContactSticking, ContactSliding;
         public double[] ContactMobility;
         public double[] ContactShiftX, ContactShiftY, ContactShiftZ;
@@ -107,7 +107,6 @@ namespace HookeRope.Solver
         public bool[] ContactStopped;                   // released in this substep (stays free in it)
         public byte[] ContactMemory;
         public double[] ContactDamping;
-        public double[] ContactNormalImpulse;
         // a sliding contact's ζ (kg) and friction ζ|s| (N·s²) of the pass before in this iteration (0: none), the secant's
         // other point (ChainContacts.Secant)
         public double[] ContactLastDamping, ContactLastForce;
@@ -168,7 +167,7 @@ namespace HookeRope.Solver
             ContactSurfaceX = new float[n]; ContactSurfaceY = new float[n]; ContactSurfaceZ = new float[n];
             ContactImpulseX = new double[n]; ContactImpulseY = new double[n]; ContactImpulseZ = new double[n];
             ContactFrictionX = new double[n]; ContactFrictionY = new double[n]; ContactFrictionZ = new double[n];
-            ContactMemory = new byte[n]; ContactDamping = new double[n]; ContactNormalImpulse = new double[n];
+            ContactMemory = new byte[n]; ContactDamping = new double[n];
             ContactLastDamping = new double[n]; ContactLastForce = new double[n];
             for (int i = 0; i < n; i++) ContactCollider[i] = -1;
             ContactCount = 0;
@@ -212,10 +211,7 @@ namespace HookeRope.Solver
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void AddDisplacement(int i, double mx, double my, double mz)
         {
-            double x = ((double)DX[i] + DLowX[i]) + mx, y = ((double)DY[i] + DLowY[i]) + my, z = ((double)DZ[i] + DLowZ[i]) + mz;
-            float fx = (float)x, fy = (float)y, fz = (float)z;
-            DX[i] = fx; DY[i] = fy; DZ[i] = fz;
-            DLowX[i] = (float)(x - fx); DLowY[i] = (float)(y - fy); DLowZ[i] = (float)(z - fz);
+            Add(ref DX[i], ref DLowX[i], mx); Add(ref DY[i], ref DLowY[i], my); Add(ref DZ[i], ref DLowZ[i], mz);
         }
 
         /// <summary>
@@ -248,9 +244,7 @@ namespace HookeRope.Solver
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public void SetDisplacement(int i, double x, double y, double z)
         {
-            float fx = (float)x, fy = (float)y, fz = (float)z;
-            DX[i] = fx; DY[i] = fy; DZ[i] = fz;
-            DLowX[i] = (float)(x - fx); DLowY[i] = (float)(y - fy); DLowZ[i] = (float)(z - fz);
+            Set(ref DX[i], ref DLowX[i], x); Set(ref DY[i], ref DLowY[i], y); Set(ref DZ[i], ref DLowZ[i], z);
         }
 
         /// <summary>Particle i's substep displacement D + DLow (m, double).</summary>

@@ -324,9 +324,10 @@ namespace HookeRope.Solver
         /// <summary>Pin constraint C = x_i − target (m, double) from particle i's live position Prev + Low + D + DLow.</summary>
         private void PinOffset(int i, Float3 target, out double cx, out double cy, out double cz)
         {
-            cx = (double)chain.PrevX[i] - target.X + chain.LowX[i] + ((double)chain.DX[i] + chain.DLowX[i]);
-            cy = (double)chain.PrevY[i] - target.Y + chain.LowY[i] + ((double)chain.DY[i] + chain.DLowY[i]);
-            cz = (double)chain.PrevZ[i] - target.Z + chain.LowZ[i] + ((double)chain.DZ[i] + chain.DLowZ[i]);
+            chain.Displacement(i, out double dx, out double dy, out double dz);
+            cx = (double)chain.PrevX[i] - target.X + chain.LowX[i] + dx;
+            cy = (double)chain.PrevY[i] - target.Y + chain.LowY[i] + dy;
+            cz = (double)chain.PrevZ[i] - target.Z + chain.LowZ[i] + dz;
         }
 
         private void UpdateVelocities(double h)
