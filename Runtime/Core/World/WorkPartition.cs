@@ -29,22 +29,22 @@ namespace HookeRope.World
         }
 
         /// <summary>
-        /// Writes block boundaries into <paramref name="bounds"/> (length blocks + 1): block w holds ropes
+        /// Writes chunk boundaries into <paramref name="bounds"/> (length chunks + 1): chunk w holds ropes
         /// [bounds[w], bounds[w + 1]). <paramref name="costs"/> holds one cost per rope (the first
         /// <paramref name="count"/> entries). Allocation-free.
         /// </summary>
         public static void Split(ReadOnlySpan<double> costs, int count, Span<int> bounds)
         {
-            int workers = bounds.Length - 1;
+            int chunks = bounds.Length - 1;
             double total = 0.0;
             for (int i = 0; i < count; i++) total += costs[i];
             bounds[0] = 0;
             int next = 0;
             double cumulative = 0.0;
-            for (int w = 1; w < workers; w++)
+            for (int w = 1; w < chunks; w++)
             {
-                double target = total * w / workers;
-                // take ropes while the block's end stays closer to the target than the block without the rope
+                double target = total * w / chunks;
+                // take ropes while the chunk's end stays closer to the target than the chunk without the rope
                 while (next < count && cumulative + costs[next] * 0.5 <= target)
                 {
                     cumulative += costs[next];
@@ -52,7 +52,7 @@ namespace HookeRope.World
                 }
                 bounds[w] = next;
             }
-            bounds[workers] = count;
+            bounds[chunks] = count;
         }
     }
 }
