@@ -285,7 +285,10 @@ namespace HookeRope.Solver
             }
             else if (sliding && force < (1.0 - FrictionTolerance) * cone)
             {
-                next = force > 0.0 ? Math.Min(stiff, Secant(c, i, zeta, force, cone)) : stiff;
+                // a contact without friction (ζ 0: its normal impulse was negligible in the pass before) takes the damper whose
+                // friction is its cone at this slip, not the sticking one: going from 0 to sticking and back made contacts
+                // cycle until the passes ran out (64, traced on a 16-segment 1 GPa rope on the sphere of the stability sweep)
+                next = force > 0.0 ? Math.Min(stiff, Secant(c, i, zeta, force, cone)) : slip > 0.0 ? Math.Min(stiff, cone / slip) : stiff;
             }
             else if (!sliding && Math.Abs(zeta - stiff) > 0.5 * stiff)
             {
@@ -417,6 +420,100 @@ namespace HookeRope.Solver
             double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
             double along = (c.ContactImpulseScale - 1.0) * (mx * nx + my * ny + mz * nz);
             ix = m * (mx + along * nx) - px; iy = m * (my + along * ny) - py; iz = m * (mz + along * nz) - pz;
+        }
+
+        /// <summary>
+        /// The friction part of the line search's objective (<see cref="ChainLineSearch"/>) at step s along this iteration
+        /// (h²·ΔΦ, N·m·s²), and its slope at s = 0 (<paramref name="slope"/>): a held contact with friction damper ζ adds
+        /// ½ζ|s_slip|² to the implicit step's objective (its gradient is the damper's −ζ·s_slip), and the friction impulse
+        /// G_t the substep had applied before the iteration is a force on the particle like the chain's pull, so along the
+        /// iteration's tangential motion δ_t the objective changes by s·δ_t·G_t + ζ(s·s₀·δ_t + ½s²|δ_t|²), s₀ the slip before
+        /// the iteration. With friction in it, a step the line search accepts lowers the energy the friction dissipates
+        /// against, not only the chain's.
+        /// </summary>
+        public static double FrictionChange(ChainState c, double s, out double slope)
+        {
+            double change = 0.0;
+            slope = 0.0;
+            for (int k = 0; k < c.ContactCount; k++)
+            {
+                int i = c.ContactList[k];
+                if (!c.ContactActive[i] || c.ContactStaticFriction[i] == 0f) continue;
+                double zeta = Damping(c, i);
+                double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
+                double mx = c.MotionX[i], my = c.MotionY[i], mz = c.MotionZ[i];
+                double mn = mx * nx + my * ny + mz * nz;
+                double tx = mx - mn * nx, ty = my - mn * ny, tz = mz - mn * nz;
+                // the slip before the iteration: the slip now less the iteration's tangential motion
+                Slip(c, i, out double sx, out double sy, out double sz);
+                sx -= tx; sy -= ty; sz -= tz;
+                Before(c, i, out double gx, out double gy, out double gz);
+                double linear = tx * (gx + zeta * sx) + ty * (gy + zeta * sy) + tz * (gz + zeta * sz);
+                slope += linear;
+                change += s * linear + 0.5 * s * s * zeta * (tx * tx + ty * ty + tz * tz);
+            }
+            return change;
+        }
+
+        /// <summary>True when some contact of the solve is held on a surface with friction.</summary>
+        public static bool FrictionInSolve(ChainState c)
+        {
+            for (int k = 0; k < c.ContactCount; k++)
+            {
+                int i = c.ContactList[k];
+                if (c.ContactActive[i] && c.ContactStaticFriction[i] > 0f) return true;
+            }
+            return false;
+        }
+
+        /// <summary>Held contact i's contact impulse before this iteration (N·s²), along its tangent plane: the substep's less the iteration's m·motion − pull.</summary>
+        private static void Before(ChainState c, int i, out double gx, out double gy, out double gz)
+        {
+            RecordedIterationImpulse(c, i, out double ix, out double iy, out double iz);
+            gx = c.ContactImpulseX[i] - ix; gy = c.ContactImpulseY[i] - iy; gz = c.ContactImpulseZ[i] - iz;
+            double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
+            double along = gx * nx + gy * ny + gz * nz;
+            gx -= along * nx; gy -= along * ny; gz -= along * nz;
+        }
+
+        /// <summary>Contact i's impulse of this iteration (N·s²) from its recorded motion and this iteration's pull (what <see cref="Finish"/> added).</summary>
+        private static void RecordedIterationImpulse(ChainState c, int i, out double ix, out double iy, out double iz)
+        {
+            SegmentForceSystem.Pull(c, i, out double px, out double py, out double pz);
+            IterationImpulse(c, i, 1.0 / c.InverseMass[i], c.MotionX[i], c.MotionY[i], c.MotionZ[i], px, py, pz, out ix, out iy, out iz);
+        }
+
+        /// <summary>
+        /// The line search took back (1 − s) of the iteration (<see cref="ChainLineSearch.Shorten"/>; called before it scales
+        /// the motions and steps): each contact's impulse of the iteration, its friction (the damper's −ζ·s on the shortened
+        /// slip, read after the positions are shortened: see <see cref="FinishShortened"/>) and the normal shift taken out
+        /// of the solve displacement shrink with it.
+        /// </summary>
+        public static void Shorten(ChainState c, double s)
+        {
+            double back = 1.0 - s;
+            for (int k = 0; k < c.ContactCount; k++)
+            {
+                int i = c.ContactList[k];
+                RecordedIterationImpulse(c, i, out double ix, out double iy, out double iz);
+                c.ContactImpulseX[i] -= back * ix; c.ContactImpulseY[i] -= back * iy; c.ContactImpulseZ[i] -= back * iz;
+                double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
+                double along = back * (c.ContactShiftX[i] * nx + c.ContactShiftY[i] * ny + c.ContactShiftZ[i] * nz);
+                c.SolveDX[i] += along * nx; c.SolveDY[i] += along * ny; c.SolveDZ[i] += along * nz;
+            }
+        }
+
+        /// <summary>After <see cref="ChainLineSearch.Shorten"/> moved the particles: each held contact's friction, −ζ·s on the slip it now ends with.</summary>
+        public static void FinishShortened(ChainState c)
+        {
+            for (int k = 0; k < c.ContactCount; k++)
+            {
+                int i = c.ContactList[k];
+                double zeta = c.ContactActive[i] ? Damping(c, i) : 0.0;
+                if (!(zeta > 0.0)) continue;
+                Slip(c, i, out double sx, out double sy, out double sz);
+                c.ContactFrictionX[i] = -zeta * sx; c.ContactFrictionY[i] = -zeta * sy; c.ContactFrictionZ[i] = -zeta * sz;
+            }
         }
 
         /// <summary>

@@ -88,14 +88,10 @@ namespace HookeRope.Solver
             double nonlinear = Apply(c, contacts, tensionOnly, out bool unconverged);
             violent = nonlinear > NonlinearTolerance;
             shortened = false;
-            if (contacts && HoldsWithFriction(c))
-            {
-                // friction in the solve: its impulses were recorded for the full Newton step (ChainContacts.Finish) and the
-                // line search's objective has none, so such an iteration keeps its step and the plain convergence test
-                violent = false;
-                unconverged = nonlinear > NonlinearTolerance;
-            }
-            else if (violent)
+            // an iteration with friction in it takes the same tests as any other: the energy its length errors leave, and
+            // the line search when violent, whose objective then holds the friction dampers' ½ζ|s|² (ChainContacts.FrictionChange)
+            // and whose shortened step shortens the contacts' impulses and friction with it (ChainContacts.Shorten)
+            if (violent)
             {
                 double step = ChainLineSearch.Backtrack(c, tensionOnly);
                 shortened = step < 1.0;
@@ -104,17 +100,6 @@ namespace HookeRope.Solver
             }
             bool branches = c.Plasticity != null && c.Plasticity.UpdateBranches(c, invH2);
             return EstimateTooLow(c, invH2) || unconverged || branches;
-        }
-
-        /// <summary>True when some contact of the solve is held on a surface with friction.</summary>
-        private static bool HoldsWithFriction(ChainState c)
-        {
-            for (int k = 0; k < c.ContactCount; k++)
-            {
-                int i = c.ContactList[k];
-                if (c.ContactActive[i] && c.ContactStaticFriction[i] > 0f) return true;
-            }
-            return false;
         }
 
         private static void ClearForces(ChainState c)
