@@ -119,6 +119,40 @@ namespace HookeRope.Solver
         }
 
         /// <summary>
+        /// After a BDF2 substep's velocities (invH = 1/h, 1/s; <paramref name="bdf2"/>: the substep ran BDF2): every dynamic
+        /// particle resting on a collider (the collision passes pushed it out in this substep and the one before,
+        /// <see cref="ChainState.ContactLoad"/> &gt; 0, <see cref="ChainState.ContactResting"/>) with a contact of the current set loses the part of its
+        /// velocity into the contact's surface, relative to the surface (v·n &lt; u·n; n: the contact's normal, u: the
+        /// surface's velocity at the contact), the inelastic contact at the velocity level, with the history boosted by the same change
+        /// (<see cref="BoostHistory"/>; after the positions are committed). The push-out enters the velocity as a backward-Euler kick
+        /// c/h, so BDF2's velocity v = (4v_n − v_{n−1})/3 + … of a particle held at rest on a surface converges to
+        /// h·g_n/2 into it (g_n: its acceleration onto the surface) while its position stands still: 6.5 mm/s at h = 1/720 s
+        /// under gravity, 9·10⁻⁷ J on a 45 g particle that never decays. Backward Euler's velocity d/h of a particle on the
+        /// surface has no such part. A new contact (an impact) is left alone: its kick c/h already ends it inelastically.
+        /// Every substep of a second-order run with colliders records which particles the passes pushed (the next one's
+        /// <see cref="ChainState.ContactResting"/>).
+        /// </summary>
+        private void ClampIntoSurface(double invH, bool bdf2)
+        {
+            bool[] resting = chain.ContactResting;
+            float[] load = chain.ContactLoad;
+            for (int k = 0; bdf2 && k < chain.ContactCount; k++)
+            {
+                int i = chain.ContactList[k];
+                if (chain.Kinematic[i] || !(load[i] > 0f) || !resting[i]) continue;
+                double nx = chain.ContactNX[i], ny = chain.ContactNY[i], nz = chain.ContactNZ[i];
+                double into = (chain.VelX[i] - chain.ContactSurfaceX[i] * invH) * nx + (chain.VelY[i] - chain.ContactSurfaceY[i] * invH) * ny
+                    + (chain.VelZ[i] - chain.ContactSurfaceZ[i] * invH) * nz;
+                if (!(into < 0.0)) continue;
+                chain.VelX[i] -= into * nx; chain.VelY[i] -= into * ny; chain.VelZ[i] -= into * nz;
+                // the history takes the same change (a Galilean boost): without it BDF2's memory v − v_prev would carry the
+                // removed part back out, and a particle that hit the surface at 1 m/s would leave it at 6 cm/s
+                BoostHistory(i, -into * nx, -into * ny, -into * nz);
+            }
+            for (int i = 0; i < chain.ParticleCount; i++) resting[i] = load[i] > 0f;
+        }
+
+        /// <summary>
         /// The host changed particle i's velocity by (dx, dy, dz) m/s: the same change is applied to its history (v_prev, and
         /// d_prev = x_n − x_{n−1} by h·Δv), a Galilean boost that keeps BDF2's acceleration memory. A moved position needs
         /// nothing: d_prev is a difference.
@@ -159,8 +193,11 @@ namespace HookeRope.Solver
         /// <summary>
         /// Velocities of a second-order run: v = base + d/h + κ·Δ/h (κ = 1/2 for BDF2, 0 for a backward-Euler substep),
         /// x = x_prev + d (h s); violent: the next substep restarts with backward Euler. A non-finite result falls back to the last good position at rest.
+        /// <para>With colliders (<paramref name="contacts"/>), a BDF2 substep then takes from each particle the collision passes
+        /// moved (push-out) the part of its velocity that points into its contact's surface, relative to the surface
+        /// (<see cref="ClampIntoSurface"/>).</para>
         /// </summary>
-        private void UpdateVelocitiesSecondOrder(TimeIntegrator scheme, double h, bool violent)
+        private void UpdateVelocitiesSecondOrder(TimeIntegrator scheme, double h, bool violent, bool contacts)
         {
             int n = chain.ParticleCount;
             // spans of exactly n entries (the loop bound): indexed without bounds checks
@@ -195,6 +232,7 @@ namespace HookeRope.Solver
             // a violent substep (see ViolentStrain) restarts the history: the next substep is backward Euler
             historyValid = !violent;
             historyStep = h;
+            if (contacts) ClampIntoSurface(invH, scheme == TimeIntegrator.Bdf2);
         }
     }
 }

@@ -67,7 +67,7 @@ namespace HookeRope.Solver
                 if (viscousDrag) FoldViscousDrag(hEff);
                 bool violentSolve = SolvePhase(h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder);
                 if (viscousDrag) UnfoldViscousDrag();
-                if (secondOrder) UpdateVelocitiesSecondOrder(scheme, hd, violentSolve || Violent());
+                if (secondOrder) UpdateVelocitiesSecondOrder(scheme, hd, violentSolve || Violent(), hasColliders);
                 else UpdateVelocities(hd);
                 if (drag) AccumulateDragWork();
                 FinishPhase(hd, hEff, g, k == 0);

@@ -36,14 +36,18 @@ namespace HookeRope.Lab.Stability
             "the folded segments (3.3 mm on a 3.9 mm segment that reads −0.03 N) store ½e²/α as elastic energy (151 J; the " +
             "other gains 3.3 J of motion); the damped 256-segment steel rod gains 0.29 J of elastic energy in one host step of " +
             "5 violent substeps, its whipping free end shortened by 15 µm at +0.05 N; a 45 t load on a 2-segment steel rod " +
-            "hitting the sphere at 1/30 s with backward Euler gains 9.4 kJ of elastic energy in its last step";
+            "hitting the sphere at 1/30 s with backward Euler gains 9.4 kJ of elastic energy in its last step; since " +
+            "Rope.ClampIntoSurface the undamped 256-segment steel rod at 1/90 s with BDF2 gains 0.080 J and the damped 1 GPa one " +
+            "0.015 J of elastic energy (their twins, the damped steel rod and the undamped 1 GPa one, failed before)";
 
         /// <summary>The collision pass after the last iteration pushes particles out of the collider without the chain.</summary>
         public const string Push =
             "push after the solve: the collision pass after the last chain iteration pushes particles out of the sphere " +
             "(ContactPass.LastIteration) without the chain, storing ½δ²/α in the segments at the pushed particle (1 µm on a " +
-            "6 cm steel segment is 0.1 mJ) that the next substep releases, and keeps a rope resting on the sphere from coming " +
-            "quite to rest; solving again after the push was tried and failed more cases";
+            "6 cm steel segment is 0.1 mJ) that the next substep releases; solving again after the push was tried and failed " +
+            "more cases (the 2-segment ropes resting on the sphere that did not come quite to rest, 8.1e-7 – 9.0e-7 J, read " +
+            "BDF2's steady velocity h·g_n/2 into the surface at a pushed particle that stood still, and now come to rest: " +
+            "Rope.ClampIntoSurface)";
 
         /// <summary>
         /// The limit a failing case falls under, or null (an undocumented failure, or a case that passed). Non-finite
@@ -54,8 +58,7 @@ namespace HookeRope.Lab.Stability
             if (!o.Failed || !o.Finite || o.Escaped || o.NotRecovered) return null;
             GridCase c = o.Case;
             if (c.Collider && c.Friction > 0f) return Friction;
-            // a rod's failure is an energy gain of a rope that pushed; a bilateral rope resting on the sphere that does not
-            // come quite to rest fails as its tension-only twin does (the 2-segment cases: 8.96e-7 J against 8.88e-7 J), under Push
+            // a rod's failure is an energy gain of a rope that pushed
             if (c.Tension == TensionModel.Bilateral && o.LargestPush > 0.0 && (o.GainedEnergy || !c.Collider)) return Rod;
             if (c.Collider) return Push;
             return null;
