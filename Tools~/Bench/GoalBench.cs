@@ -24,7 +24,7 @@ namespace HookeRope.Bench
                 process.Refresh();
                 TimeSpan cpuBefore = process.TotalProcessorTime;
                 var total = Stopwatch.StartNew();
-                double step = 0.0, mesh = 0.0;
+                double step = 0.0, mesh = 0.0, vertices = 0.0;
                 while (samples.Count < 15 || total.Elapsed.TotalSeconds < seconds)
                 {
                     watch.Restart();
@@ -36,13 +36,15 @@ namespace HookeRope.Bench
                         step += world.GetLastStepMilliseconds(i);
                         mesh += world.GetLastFillMilliseconds(i);
                     }
+                    vertices += MeanVertices(world);
                     if (samples.Count >= 2000) break;
                 }
                 row.StepMsPerFrame = step / samples.Count;
                 row.MeshMsPerFrame = mesh / samples.Count;
                 process.Refresh();
                 row.CpuMsPerFrame = (process.TotalProcessorTime - cpuBefore).TotalMilliseconds / samples.Count;
-                row.VerticesPerRope = MeanVertices(world);
+                row.VerticesPerRope = vertices / samples.Count;
+                row.LastFrame = GoalScene.WarmUpFrames + samples.Count;
                 samples.Sort();
                 row.MsPerFrame = samples[samples.Count / 2];
                 row.MinMsPerFrame = samples[0];

@@ -29,8 +29,8 @@ namespace HookeRope.Bench
             Console.WriteLine("step ms / mesh ms = thread time of the ropes' steps / mesh fills per frame, summed over the ropes (all workers)");
             Console.WriteLine();
             GoalBench.WarmUp(quick ? 1.0 : 3.0);
-            string header = string.Format(c, "{0,-20} {1,6} {2,8} {3,9} {4,5} {5,7} {6,10} {7,10} {8,10} {9,9} {10,9} {11,10} {12,11} {13,10} {14,6}  {15}",
-                "row", "ropes", "segments", "substeps", "sides", "workers", "ms/frame", "min ms", "cpu ms", "step ms", "mesh ms", "ns/unit", "instr/unit", "verts/rope", "load", "against baseline");
+            string header = string.Format(c, "{0,-20} {1,6} {2,8} {3,9} {4,5} {5,7} {6,10} {7,10} {8,10} {9,9} {10,9} {11,10} {12,11} {13,10} {14,6} {15,6}  {16}",
+                "row", "ropes", "segments", "substeps", "sides", "workers", "ms/frame", "min ms", "cpu ms", "step ms", "mesh ms", "ns/unit", "instr/unit", "verts/rope", "frame", "load", "against baseline");
             Console.WriteLine(header);
             Console.WriteLine(new string('-', header.Length + 10));
             var rows = new List<GoalRow>();
@@ -43,10 +43,10 @@ namespace HookeRope.Bench
                 string verdict = Baseline.Compare(row, stored);
                 if (verdict.StartsWith("REGRESSION", StringComparison.Ordinal)) regressions++;
                 rows.Add(row);
-                Console.WriteLine(string.Format(c, "{0,-20} {1,6} {2,8} {3,9} {4,5} {5,7} {6,10:F3} {7,10:F3} {8,10:F3} {9,9:F3} {10,9:F3} {11,10:F1} {12,11} {13,10:F0} {14,6:F2}  {15}",
+                Console.WriteLine(string.Format(c, "{0,-20} {1,6} {2,8} {3,9} {4,5} {5,7} {6,10:F3} {7,10:F3} {8,10:F3} {9,9:F3} {10,9:F3} {11,10:F1} {12,11} {13,10:F0} {14,6} {15,6:F2}  {16}",
                     row.Id, row.Ropes, row.Segments, row.Substeps, row.MeshSides, row.Workers, row.MsPerFrame, row.MinMsPerFrame, row.CpuMsPerFrame,
                     row.StepMsPerFrame, row.MeshMsPerFrame, row.NsPerUnit,
-                    row.InstructionsPerUnit > 0 ? row.InstructionsPerUnit.ToString("F0", c) : "-", row.VerticesPerRope, row.LoadAverage, verdict));
+                    row.InstructionsPerUnit > 0 ? row.InstructionsPerUnit.ToString("F0", c) : "-", row.VerticesPerRope, row.LastFrame, row.LoadAverage, verdict));
             }
             var one = rows.Find(r => r.Id == "goal 100x64 w1");
             var two = rows.Find(r => r.Id == "goal 100x64 w2");
@@ -56,6 +56,8 @@ namespace HookeRope.Bench
             if (one.InstructionsPerUnit > 0 && two.InstructionsPerUnit > 0)
                 Console.WriteLine(string.Format(c, "instructions per unit, 2 workers / 1 worker: {0:F3} (threading overhead)", two.InstructionsPerUnit / one.InstructionsPerUnit));
             Console.WriteLine("wall-clock rows are medians on whatever load the machine has (see 'load'); compare instruction counts for ratios.");
+            Console.WriteLine("verts/rope = mean over the measured frames; frame = the frame of the lanyards' drop the row ended at (rows that end at");
+            Console.WriteLine("different frames draw different ring budgets: the mesh columns compare only between rows ending near the same frame).");
             if (save)
             {
                 Baseline.Save(baselinePath, rows);

@@ -29,8 +29,16 @@ namespace HookeRope.Bench
         public double NsPerUnit { get; set; }
         /// <summary>Instructions per unit from callgrind (all threads), or 0 when not measured.</summary>
         public double InstructionsPerUnit { get; set; }
-        /// <summary>Mean tube-mesh vertices per rope at the end of the measurement (adaptive rings: the rope's shape sets it), or 0 when not recorded.</summary>
+        /// <summary>
+        /// Mean tube-mesh vertices per rope over the measured frames (adaptive rings: the rope's shape sets it, and the
+        /// lanyards dropped from straight need 1 … 6 rings per segment as the drop's waves pass), or 0 when not recorded.
+        /// </summary>
         public double VerticesPerRope { get; set; }
+        /// <summary>
+        /// Frame of the drop the measurement ended at (the 20 warm-up frames included): rows that end at different frames
+        /// draw different ring budgets, so compare the mesh columns only between rows that end near the same frame.
+        /// </summary>
+        public int LastFrame { get; set; }
         /// <summary>1-minute load average while measured.</summary>
         public double LoadAverage { get; set; }
 

@@ -281,16 +281,40 @@ namespace HookeRope.Geometry
             var a2 = new Vector4(0f, 0f, 0f, ringV[k]);
             var b2 = new Vector4(bz, 0f, 0f, 0f);
             var c2 = new Vector4(-nz, 0f, 0f, 0f);
-            Span<Vector4> lanes = MemoryMarshal.Cast<TubeVertex, Vector4>(ring);
-            ReadOnlySpan<Vector4> cs = cosLanes, sn = sinLanes, us = uLanes;
-            int count = Math.Min(ring.Length, cs.Length);
-            for (int i = 0, j = 0; i < count; i++, j += 3)
+            // one table entry and one vertex per side, read and written through refs: the loop runs over the vertices'
+            // span, so its index needs no range check there and one for the side table (six before, one per lane and table)
+            ReadOnlySpan<SideLanes> sides = sideLanes;
+            Span<VertexLanes> vertices = MemoryMarshal.Cast<TubeVertex, VertexLanes>(ring);
+            if (vertices.Length > sides.Length) vertices = vertices.Slice(0, sides.Length);
+            for (int i = 0; i < vertices.Length; i++)
             {
-                Vector4 ci = cs[i], si = sn[i];
-                lanes[j + 2] = (b2 * ci + c2 * si) + (a2 + us[i]);
-                lanes[j] = ((b0 * ci + c0 * si) + a0) + o0;
-                lanes[j + 1] = (b1 * ci + c1 * si) + a1;
+                ref readonly SideLanes side = ref sides[i];
+                ref VertexLanes vertex = ref vertices[i];
+                Vector4 ci = side.Cos, si = side.Sin;
+                vertex.Last = (b2 * ci + c2 * si) + (a2 + side.U);
+                vertex.First = ((b0 * ci + c0 * si) + a0) + o0;
+                vertex.Middle = (b1 * ci + c1 * si) + a1;
             }
+        }
+
+        /// <summary>The ring kernel's table entry of one side: cos φ and sin φ in every lane, and (0, 1, u, 0) for the last lane.</summary>
+        private readonly struct SideLanes
+        {
+            public readonly Vector4 Cos, Sin, U;
+
+            public SideLanes(Vector4 cos, Vector4 sin, Vector4 u)
+            {
+                Cos = cos;
+                Sin = sin;
+                U = u;
+            }
+        }
+
+        /// <summary>A <see cref="TubeVertex"/> as the ring kernel writes it: position.xyz normal.x | normal.yz tangent.xy | tangent.zw u v.</summary>
+        [StructLayout(LayoutKind.Sequential)]
+        private struct VertexLanes
+        {
+            public Vector4 First, Middle, Last;
         }
 
         /// <summary>

@@ -56,7 +56,7 @@ namespace HookeRope.Geometry
         private readonly float[] cos;
         private readonly float[] sin;
         private readonly float[] around;
-        private readonly Vector4[] cosLanes, sinLanes, uLanes;
+        private readonly SideLanes[] sideLanes;
         private readonly TubeVertex[] capRim;
         private readonly double[] restArc;
         private readonly float[] particleRadii;
@@ -118,15 +118,9 @@ namespace HookeRope.Geometry
                 sin[i] = i == radial ? 0f : (float)Math.Sin(angle);
                 around[i] = (float)i / radial;
             }
-            cosLanes = new Vector4[radial + 1];
-            sinLanes = new Vector4[radial + 1];
-            uLanes = new Vector4[radial + 1];
+            sideLanes = new SideLanes[radial + 1];
             for (int i = 0; i <= radial; i++)
-            {
-                cosLanes[i] = new Vector4(cos[i]);
-                sinLanes[i] = new Vector4(sin[i]);
-                uLanes[i] = new Vector4(0f, 1f, around[i], 0f);
-            }
+                sideLanes[i] = new SideLanes(new Vector4(cos[i]), new Vector4(sin[i]), new Vector4(0f, 1f, around[i], 0f));
             capRim = new TubeVertex[radial + 1];
             int n = layout.SegmentCount;
             restArc = new double[n + 1];
