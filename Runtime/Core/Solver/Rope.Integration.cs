@@ -23,7 +23,7 @@ namespace HookeRope.Solver
         /// prediction and the solve, nor after the solve (no colliders, no drag). Then the solve displacement Δ needs no
         /// passes of its own (<see cref="TrackSolveDisplacement"/>'s two per iteration), with the same arithmetic: a free
         /// particle's start mark is implied by its prediction (D + DLow = PredictedD + 0 when the solve starts), a kinematic
-        /// one's is stored by the prediction (0) and by <see cref="MovePins"/> (the pinned particles are exactly the kinematic
+        /// one's is stored by the prediction (0) and after <see cref="MovePins"/> (<see cref="MarkPinnedSolveStarts"/>; the pinned particles are exactly the kinematic
         /// ones, <see cref="RefreshKinematic"/>), and the last end mark is taken in <see cref="UpdateVelocitiesSecondOrder"/>
         /// (<see cref="solveEndPending"/>).
         /// </summary>
@@ -254,12 +254,17 @@ namespace HookeRope.Solver
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         private static double StartMark(float d, float low) => 0.0 + -1.0 * ((double)d + low);
 
-        /// <summary>Δ's start mark of particle i (after <see cref="MovePins"/> placed it; see <see cref="solveMarksFused"/>).</summary>
-        private void MarkSolveStart(int i)
+        /// <summary>Δ's start mark of every particle <see cref="MovePins"/> placed (the rigid pins; see <see cref="solveMarksFused"/>).</summary>
+        private void MarkPinnedSolveStarts()
         {
-            chain.SolveDX[i] = StartMark(chain.DX[i], chain.DLowX[i]);
-            chain.SolveDY[i] = StartMark(chain.DY[i], chain.DLowY[i]);
-            chain.SolveDZ[i] = StartMark(chain.DZ[i], chain.DLowZ[i]);
+            for (int p = 0; p < pinCount; p++)
+            {
+                if (pinBroken[p] || pinCompliance[p] != 0f) continue;
+                int i = pinParticle[p];
+                chain.SolveDX[i] = StartMark(chain.DX[i], chain.DLowX[i]);
+                chain.SolveDY[i] = StartMark(chain.DY[i], chain.DLowY[i]);
+                chain.SolveDZ[i] = StartMark(chain.DZ[i], chain.DLowZ[i]);
+            }
         }
 
         /// <summary>

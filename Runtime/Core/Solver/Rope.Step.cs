@@ -114,7 +114,8 @@ namespace HookeRope.Solver
             }
             else if (secondOrder) PredictSecondOrder<Unsized>(scheme, hd, g, solveMarksFused);
             else Predict<Unsized>(hd, g);
-            MovePins(t, solveMarksFused);
+            MovePins(t);
+            if (solveMarksFused) MarkPinnedSolveStarts();
             // cleared in loops: for the short arrays of a rope a call to Array.Clear costs more than the stores
             Span<double> lambda = ChainState.Exactly(chain.Lambda, chain.SegmentCount);
             for (int j = 0; j < lambda.Length; j++) lambda[j] = 0.0;
@@ -257,8 +258,7 @@ namespace HookeRope.Solver
             return size;
         }
 
-        /// <summary>Rigid pins onto their targets at fraction t of the host step; markSolveStart: the pinned particle's solve start mark follows its new displacement.</summary>
-        private void MovePins(float t, bool markSolveStart)
+        private void MovePins(float t)
         {
             for (int p = 0; p < pinCount; p++)
             {
@@ -267,7 +267,6 @@ namespace HookeRope.Solver
                 Float3 target = PinTarget(p, t);
                 chain.SetDisplacement(i, (double)target.X - chain.PrevX[i] - chain.LowX[i], (double)target.Y - chain.PrevY[i] - chain.LowY[i],
                     (double)target.Z - chain.PrevZ[i] - chain.LowZ[i]);
-                if (markSolveStart) MarkSolveStart(i);
             }
         }
 
