@@ -116,9 +116,14 @@ namespace HookeRope.Solver
             else Predict<Unsized>(hd, g);
             MovePins(t);
             if (solveMarksFused) MarkPinnedSolveStarts();
-            // cleared in loops: for the short arrays of a rope a call to Array.Clear costs more than the stores
-            Span<double> lambda = ChainState.Exactly(chain.Lambda, chain.SegmentCount);
-            for (int j = 0; j < lambda.Length; j++) lambda[j] = 0.0;
+            // cleared in loops: for the short arrays of a rope a call to Array.Clear costs more than the stores. The exact
+            // solve writes every λ in each of its iterations (ExactChainSolver.Apply, at least one per substep) and nothing
+            // reads λ before: only the Gauss–Seidel sweep accumulates it from 0
+            if (settings.Solver != ConstraintSolverKind.ExactChain)
+            {
+                Span<double> lambda = ChainState.Exactly(chain.Lambda, chain.SegmentCount);
+                for (int j = 0; j < lambda.Length; j++) lambda[j] = 0.0;
+            }
             for (int b = 0; b < pinCount * 3; b++) pinLambda[b] = 0.0;
         }
 
