@@ -1,5 +1,6 @@
 using System;
 using HookeRope.Mathematics;
+using HookeRope.Radius;
 using HookeRope.Solver;
 
 namespace HookeRope.Kernels
@@ -35,8 +36,25 @@ namespace HookeRope.Kernels
         {
             "gs-be-chain16", "gs-bdf2-load64", "gs-bilateral-softpin", "gs-plastic-absorber", "gs-drag-wind",
             "exact-bdf2-chain16", "exact-be-load64", "exact-bdf2-swing256", "exact-plastic-neck", "exact-drag-plane", "gs-plane",
-            "exact-bilateral-softpin",
+            "exact-bilateral-softpin", "exact-goal-lanyard",
         };
+
+        /// <summary>
+        /// The simulation a scene steps through <see cref="RopeSimulation.Step"/> (radius model and read-outs included),
+        /// or null for the scenes that step their <see cref="Rope"/> alone. <c>exact-goal-lanyard</c> is one lanyard of
+        /// issue 18's goal scene (Tools~/Bench/GoalScene.cs, without its mesh): 64 segments at the default settings (exact
+        /// chain, BDF2, 8 substeps × 1 iteration) and the default radius model, pinned at both ends 1.8 m apart, sagging.
+        /// </summary>
+        public static RopeSimulation Simulation(string name)
+        {
+            if (name != "exact-goal-lanyard") return null;
+            var start = new Float3(0f, 2f, 0f);
+            var end = new Float3(1.8f, 2f, 0f);
+            var simulation = new RopeSimulation(new RopeSettings { SegmentCount = 64 }, start, end, new RadiusSettings());
+            simulation.Rope.AddPin(0, start);
+            simulation.Rope.AddPin(64, end);
+            return simulation;
+        }
 
         /// <summary>
         /// A scene by name (see <see cref="Names"/>), or <c>gs-load:N</c> / <c>exact-load:N</c>: N segments of 0.1 m hanging

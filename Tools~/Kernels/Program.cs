@@ -22,9 +22,10 @@ namespace HookeRope.Kernels
         {
             if (args.Length == 3 && args[0] == "run")
             {
-                Rope rope = KernelScene.Build(args[1]);
+                RopeSimulation simulation = KernelScene.Simulation(args[1]);
+                Rope rope = simulation != null ? simulation.Rope : KernelScene.Build(args[1]);
                 int steps = int.Parse(args[2], CultureInfo.InvariantCulture);
-                for (int i = 0; i < steps; i++) rope.Step(KernelScene.HostStep);
+                for (int i = 0; i < steps; i++) Step(simulation, rope);
                 Console.WriteLine(args[1] + " " + steps + " steps: " + Hash(rope).ToString("x16", CultureInfo.InvariantCulture));
                 return 0;
             }
@@ -33,8 +34,9 @@ namespace HookeRope.Kernels
                 int steps = args.Length > 1 ? int.Parse(args[1], CultureInfo.InvariantCulture) : 900;
                 foreach (string name in KernelScene.Names)
                 {
-                    Rope rope = KernelScene.Build(name);
-                    for (int i = 0; i < steps; i++) rope.Step(KernelScene.HostStep);
+                    RopeSimulation simulation = KernelScene.Simulation(name);
+                    Rope rope = simulation != null ? simulation.Rope : KernelScene.Build(name);
+                    for (int i = 0; i < steps; i++) Step(simulation, rope);
                     Console.WriteLine(name.PadRight(24) + Hash(rope).ToString("x16", CultureInfo.InvariantCulture));
                 }
                 return 0;
@@ -42,6 +44,13 @@ namespace HookeRope.Kernels
             if (args.Length >= 1 && args[0] == "time") return KernelTimer.Execute(args.Length > 1 && args[1] == "--quick");
             Console.Error.WriteLine("usage: run SCENE STEPS | hash [STEPS] | time [--quick]   (scenes: " + string.Join(", ", KernelScene.Names) + ")");
             return 2;
+        }
+
+        /// <summary>One host step: through the simulation when the scene has one (radius model, read-outs), else the rope's alone.</summary>
+        private static void Step(RopeSimulation simulation, Rope rope)
+        {
+            if (simulation != null) simulation.Step(KernelScene.HostStep);
+            else rope.Step(KernelScene.HostStep);
         }
 
         /// <summary>FNV-1a over the bits of every position, velocity and tension.</summary>

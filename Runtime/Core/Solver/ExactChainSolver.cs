@@ -85,7 +85,7 @@ namespace HookeRope.Solver
                 ChainContacts.DropContactsWithoutMobility(c);
             }
             SolveActiveSet(c, tensionOnly, contacts, first);
-            double nonlinear = Apply(c, contacts, tensionOnly, out bool unconverged);
+            double nonlinear = Apply(c, contacts, tensionOnly, invH2, out bool unconverged, out bool estimateTooLow);
             violent = nonlinear > NonlinearTolerance;
             shortened = false;
             // an iteration with friction in it takes the same tests as any other: the energy its length errors leave, and
@@ -99,7 +99,8 @@ namespace HookeRope.Solver
                 unconverged = true;
             }
             bool branches = c.Plasticity != null && c.Plasticity.UpdateBranches(c, invH2);
-            return EstimateTooLow(c, invH2) || unconverged || branches;
+            // estimateTooLow is Apply's; a shortened step changed the forces after it, but then unconverged is true anyway
+            return estimateTooLow || unconverged || branches;
         }
 
         private static void ClearForces(ChainState c)
@@ -306,8 +307,18 @@ namespace HookeRope.Solver
         /// <summary>Stretch (m) segment j would have after this solution: n·(R + its ends' relative motion).</summary>
         private static double StretchAfter(ChainState c, int j, double nx, double ny, double nz)
         {
-            ChainContacts.Motion(c, j, out double ax, out double ay, out double az);
-            ChainContacts.Motion(c, j + 1, out double bx, out double by, out double bz);
+            double ax, ay, az, bx, by, bz;
+            if (c.ContactCount == 0)
+            {
+                // no contact: the motion is W_i (pull) alone (ChainContacts.Motion adds nothing), inlined
+                SegmentForceSystem.Motion(c, j, out ax, out ay, out az);
+                SegmentForceSystem.Motion(c, j + 1, out bx, out by, out bz);
+            }
+            else
+            {
+                ChainContacts.Motion(c, j, out ax, out ay, out az);
+                ChainContacts.Motion(c, j + 1, out bx, out by, out bz);
+            }
             return nx * (c.ResidualX[j] + bx - ax) + ny * (c.ResidualY[j] + by - ay) + nz * (c.ResidualZ[j] + bz - az);
         }
 
@@ -321,7 +332,7 @@ namespace HookeRope.Solver
         /// when some active segment's error exceeds NonlinearTolerance·L, a released one is stretched by that much, or the
         /// energy the errors above round-off leave in the segments is too large (<see cref="Mismatched"/>).
         /// </summary>
-        private static double Apply(ChainState c, bool contacts, bool tensionOnly, out bool unconverged)
+        private static double Apply(ChainState c, bool contacts, bool tensionOnly, double invH2, out bool unconverged, out bool estimateTooLow)
         {
             if (contacts) MoveParticles<SegmentForceSystem.WithContacts>(c);
             else MoveParticles<SegmentForceSystem.NoContacts>(c);
@@ -334,9 +345,11 @@ namespace HookeRope.Solver
             Span<double> fx = ChainState.Exactly(c.ForceX, s), fy = ChainState.Exactly(c.ForceY, s), fz = ChainState.Exactly(c.ForceZ, s);
             Span<double> lambda = ChainState.Exactly(c.Lambda, s);
             ReadOnlySpan<bool> assembled = ChainState.Exactly(c.Assembled, s);
+            ReadOnlySpan<double> estimate = ChainState.Exactly(c.EstimatedTension, s);
             double floor = RoundOffFloor * c.Size, worst = 0.0;
             bool mismatched = false;
             unconverged = false;
+            estimateTooLow = false;
             for (int j = 0; j < s; j++)
             {
                 double gx = fx[j] + sx[j], gy = fy[j] + sy[j], gz = fz[j] + sz[j];
@@ -346,6 +359,9 @@ namespace HookeRope.Solver
                 double e;
                 if (active[j])
                 {
+                    // the tension-estimate test (see Iterate): the found tension −λ/h² above twice the estimate
+                    double found = -l * invH2;
+                    if (found > 2.0 * estimate[j] && EstimateTooLow(c, j, found, invH2)) estimateTooLow = true;
                     e = error[j];
                     // a pushing (bilateral) segment has no geometric stiffness in the system (see Assemble): it may add
                     // iterations, but it is not a violent linearisation and keeps no energy test (counting it in either was
@@ -496,24 +512,15 @@ namespace HookeRope.Solver
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         private static double AtLeast(double value, double floor) => value < floor ? floor : value;
 
-        /// <summary>See <see cref="Iterate"/>: the estimated tension was below half the result where 4·T·h²·max(w)/l &gt; 1.</summary>
-        private static bool EstimateTooLow(ChainState c, double invH2)
+        /// <summary>
+        /// See <see cref="Iterate"/>: active segment j's tension found (N), above twice its estimate, governs its transverse
+        /// response, 4·T·h²·max(w)/l &gt; 1 (invH2 = 1/h²). Out of line: <see cref="Apply"/>'s loop calls it only then.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
+        private static bool EstimateTooLow(ChainState c, int j, double found, double invH2)
         {
-            int s = c.SegmentCount;
-            // spans of exactly s entries (the loop bound): indexed without bounds checks
-            ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
-            ReadOnlySpan<double> lambda = ChainState.Exactly(c.Lambda, s), estimate = ChainState.Exactly(c.EstimatedTension, s);
-            ReadOnlySpan<float> wA = ChainState.Exactly(c.InverseMass, s), wB = ChainState.Shifted(c.InverseMass, s);
-            ReadOnlySpan<float> length = ChainState.Exactly(c.Length, s), rest = ChainState.Exactly(c.RestLength, s);
-            for (int j = 0; j < s; j++)
-            {
-                if (!active[j]) continue;
-                double found = -lambda[j] * invH2;
-                if (!(found > 2.0 * estimate[j])) continue;
-                double w = Math.Max(wA[j], wB[j]);
-                if (4.0 * found * w > invH2 * Math.Max(length[j], 1e-6 * rest[j])) return true;
-            }
-            return false;
+            double w = Math.Max(c.InverseMass[j], c.InverseMass[j + 1]);
+            return 4.0 * found * w > invH2 * Math.Max(c.Length[j], 1e-6 * c.RestLength[j]);
         }
     }
 }

@@ -17,6 +17,23 @@ namespace HookeRope.Solver
     {
         private bool historyValid;
         private double historyStep;
+
+        /// <summary>
+        /// True for a substep of a second-order run in which nothing but the rigid pins moves a particle between the
+        /// prediction and the solve, nor after the solve (no colliders, no drag). Then the solve displacement Δ needs no
+        /// passes of its own (<see cref="TrackSolveDisplacement"/>'s two per iteration), with the same arithmetic: a free
+        /// particle's start mark is implied by its prediction (D + DLow = PredictedD + 0 when the solve starts), a kinematic
+        /// one's is stored by the prediction (0) and after <see cref="MovePins"/> (<see cref="MarkPinnedSolveStarts"/>; the pinned particles are exactly the kinematic
+        /// ones, <see cref="RefreshKinematic"/>), and the last end mark is taken in <see cref="UpdateVelocitiesSecondOrder"/>
+        /// (<see cref="solveEndPending"/>).
+        /// </summary>
+        private bool solveMarksFused;
+
+        /// <summary>True when the solve's last end mark is left to the velocity pass (see <see cref="solveMarksFused"/>).</summary>
+        private bool solveEndPending;
+
+        /// <summary>True while a free particle's Δ start mark is implied by its prediction, not stored (the first iteration of a substep with <see cref="solveMarksFused"/>).</summary>
+        private bool solveStartImplied;
         /// <summary>
         /// Change of strain (dimensionless) within one substep beyond which the substep counts as violent (a teleported
         /// anchor, a rope released far stretched): the history restarts and the next substep is backward Euler. A
@@ -63,7 +80,7 @@ namespace HookeRope.Solver
         /// Δ = 0; kinematic particles do not move here (the pins place them). A backward-Euler substep predicts d = h·v + h²·g
         /// with base v + h·g − d/h (v = d/h of the unrounded prediction plus what moved the particle since).
         /// </summary>
-        private void PredictSecondOrder<TSize>(TimeIntegrator scheme, double h, Float3 g) where TSize : struct
+        private void PredictSecondOrder<TSize>(TimeIntegrator scheme, double h, Float3 g, bool markSolveStart) where TSize : struct
         {
             bool measureSize = typeof(TSize) == typeof(Sized); // ChainState.Size for the exact solve only (see Predict)
             int n = chain.ParticleCount;
@@ -77,6 +94,7 @@ namespace HookeRope.Solver
             Span<double> bx = ChainState.Exactly(chain.BaseVelX, n), by = ChainState.Exactly(chain.BaseVelY, n), bz = ChainState.Exactly(chain.BaseVelZ, n);
             Span<float> qx = ChainState.Exactly(chain.PredictedDX, n), qy = ChainState.Exactly(chain.PredictedDY, n), qz = ChainState.Exactly(chain.PredictedDZ, n);
             ReadOnlySpan<bool> kinematic = ChainState.Exactly(chain.Kinematic, n);
+            Span<double> sx = ChainState.Exactly(chain.SolveDX, n), sy = ChainState.Exactly(chain.SolveDY, n), sz = ChainState.Exactly(chain.SolveDZ, n);
             bool bdf2 = scheme == TimeIntegrator.Bdf2;
             double invH = 1.0 / h, h2 = h * h, c = 4.0 * h2 / 9.0, e = 2.0 * h / 3.0;
             double gx = g.X, gy = g.Y, gz = g.Z;
@@ -91,6 +109,8 @@ namespace HookeRope.Solver
                 {
                     ox = 0f; oy = 0f; oz = 0f;
                     bx[i] = 0.0; by[i] = 0.0; bz[i] = 0.0;
+                    // a kinematic particle's Δ start mark is stored (a pin may move it next, see solveMarksFused)
+                    if (markSolveStart) { sx[i] = StartMark(0f, 0f); sy[i] = StartMark(0f, 0f); sz[i] = StartMark(0f, 0f); }
                 }
                 else if (bdf2)
                 {
@@ -117,6 +137,122 @@ namespace HookeRope.Solver
             chain.Size = size;
             // Δ (SolveDX/Y/Z) starts from 0 at the substep's first mark (TrackSolveDisplacement's start): no clearing pass
         }
+
+        /// <summary>
+        /// The host changed particle i's velocity by (dx, dy, dz) m/s: the same change is applied to its history (v_prev, and
+        /// d_prev = x_n − x_{n−1} by h·Δv), a Galilean boost that keeps BDF2's acceleration memory. A moved position needs
+        /// nothing: d_prev is a difference.
+        /// </summary>
+        private void BoostHistory(int i, double dx, double dy, double dz)
+        {
+            chain.PrevVelX[i] += dx; chain.PrevVelY[i] += dy; chain.PrevVelZ[i] += dz;
+            double h = historyStep;
+            chain.AddDisplacement(i, dx * h, dy * h, dz * h);
+        }
+
+        /// <summary>
+        /// Marks the start (sign −1) or the end (+1) of a chain solve: Δ accumulates the displacement it applies.
+        /// <paramref name="start"/>: the substep's first mark, where Δ starts from 0 (written, not read: the prediction does
+        /// not clear it; 0 + x keeps the bits the cleared sum gave, +0 for a zero displacement).
+        /// </summary>
+        private void TrackSolveDisplacement(double sign, bool start)
+        {
+            int n = chain.ParticleCount;
+            // spans of exactly n entries (the loop bound): indexed without bounds checks
+            ReadOnlySpan<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
+            ReadOnlySpan<float> lx = ChainState.Exactly(chain.DLowX, n), ly = ChainState.Exactly(chain.DLowY, n), lz = ChainState.Exactly(chain.DLowZ, n);
+            Span<double> sx = ChainState.Exactly(chain.SolveDX, n), sy = ChainState.Exactly(chain.SolveDY, n), sz = ChainState.Exactly(chain.SolveDZ, n);
+            if (start)
+            {
+                // sign −1 at the substep's first mark: StartMark's arithmetic
+                for (int i = 0; i < n; i++)
+                {
+                    sx[i] = 0.0 + sign * ((double)dx[i] + lx[i]); sy[i] = 0.0 + sign * ((double)dy[i] + ly[i]); sz[i] = 0.0 + sign * ((double)dz[i] + lz[i]);
+                }
+                return;
+            }
+            for (int i = 0; i < n; i++)
+            {
+                sx[i] += sign * ((double)dx[i] + lx[i]); sy[i] += sign * ((double)dy[i] + ly[i]); sz[i] += sign * ((double)dz[i] + lz[i]);
+            }
+        }
+
+        /// <summary>
+        /// The end mark of a substep's first iteration when it is not the last and its start mark is implied (see
+        /// <see cref="solveMarksFused"/>): Δ = start + 1·(D + DLow), the start being a free particle's 0 − (PredictedD + 0).
+        /// </summary>
+        private void TrackSolveEndFromPrediction()
+        {
+            int n = chain.ParticleCount;
+            // spans of exactly n entries (the loop bound): indexed without bounds checks
+            ReadOnlySpan<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
+            ReadOnlySpan<float> lx = ChainState.Exactly(chain.DLowX, n), ly = ChainState.Exactly(chain.DLowY, n), lz = ChainState.Exactly(chain.DLowZ, n);
+            ReadOnlySpan<float> qx = ChainState.Exactly(chain.PredictedDX, n), qy = ChainState.Exactly(chain.PredictedDY, n), qz = ChainState.Exactly(chain.PredictedDZ, n);
+            ReadOnlySpan<bool> kinematic = ChainState.Exactly(chain.Kinematic, n);
+            Span<double> sx = ChainState.Exactly(chain.SolveDX, n), sy = ChainState.Exactly(chain.SolveDY, n), sz = ChainState.Exactly(chain.SolveDZ, n);
+            for (int i = 0; i < n; i++)
+            {
+                if (!kinematic[i]) { sx[i] = StartMark(qx[i], 0f); sy[i] = StartMark(qy[i], 0f); sz[i] = StartMark(qz[i], 0f); }
+                sx[i] += 1.0 * ((double)dx[i] + lx[i]); sy[i] += 1.0 * ((double)dy[i] + ly[i]); sz[i] += 1.0 * ((double)dz[i] + lz[i]);
+            }
+        }
+
+        /// <summary>Velocities from Δ as stored (<see cref="SecondOrderVelocities{TMark}"/>).</summary>
+        private struct StoredMarks { }
+
+        /// <summary>Velocities that take the solve's last end mark, Δ = stored + 1·d (see <see cref="solveMarksFused"/>).</summary>
+        private struct PendingEndMark { }
+
+        /// <summary>Velocities that take the last end mark onto a free particle's implied start mark (a substep of one iteration, see <see cref="solveMarksFused"/>).</summary>
+        private struct ImpliedStartMark { }
+
+        /// <summary>
+        /// The velocity loop of <see cref="UpdateVelocitiesSecondOrder"/>; TMark (<see cref="StoredMarks"/>,
+        /// <see cref="PendingEndMark"/>, <see cref="ImpliedStartMark"/>) says where Δ comes from: the JIT compiles one body
+        /// each and folds the tests. Δ is not read after this pass, so a mark taken here is not stored.
+        /// </summary>
+        private void SecondOrderVelocities<TMark>(TimeIntegrator scheme, double h) where TMark : struct
+        {
+            int n = chain.ParticleCount;
+            // spans of exactly n entries (the loop bound): indexed without bounds checks
+            ReadOnlySpan<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
+            ReadOnlySpan<float> lx = ChainState.Exactly(chain.DLowX, n), ly = ChainState.Exactly(chain.DLowY, n), lz = ChainState.Exactly(chain.DLowZ, n);
+            ReadOnlySpan<double> bx = ChainState.Exactly(chain.BaseVelX, n), by = ChainState.Exactly(chain.BaseVelY, n), bz = ChainState.Exactly(chain.BaseVelZ, n);
+            ReadOnlySpan<double> sx = ChainState.Exactly(chain.SolveDX, n), sy = ChainState.Exactly(chain.SolveDY, n), sz = ChainState.Exactly(chain.SolveDZ, n);
+            Span<double> wx = ChainState.Exactly(chain.PrevVelX, n), wy = ChainState.Exactly(chain.PrevVelY, n), wz = ChainState.Exactly(chain.PrevVelZ, n);
+            ReadOnlySpan<float> qx = ChainState.Exactly(chain.PredictedDX, n), qy = ChainState.Exactly(chain.PredictedDY, n), qz = ChainState.Exactly(chain.PredictedDZ, n);
+            Span<double> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
+            ReadOnlySpan<bool> kinematic = ChainState.Exactly(chain.Kinematic, n);
+            double invH = 1.0 / h, k = scheme == TimeIntegrator.Bdf2 ? 0.5 * invH : 0.0;
+            for (int i = 0; i < n; i++)
+            {
+                // d = D + DLow (ChainState.Displacement)
+                double mx = (double)dx[i] + lx[i], my = (double)dy[i] + ly[i], mz = (double)dz[i] + lz[i];
+                double ex, ey, ez;
+                // Δ: stored, or TrackSolveDisplacement's last end mark Δ += 1·d taken here (onto a free particle's implied
+                // start mark 0 − (PredictedD + 0) after a single iteration)
+                if (typeof(TMark) == typeof(ImpliedStartMark) && !kinematic[i]) { ex = StartMark(qx[i], 0f); ey = StartMark(qy[i], 0f); ez = StartMark(qz[i], 0f); }
+                else { ex = sx[i]; ey = sy[i]; ez = sz[i]; }
+                if (typeof(TMark) != typeof(StoredMarks)) { ex += 1.0 * mx; ey += 1.0 * my; ez += 1.0 * mz; }
+                // what moved the particle besides the prediction and the chain solve (collider push-out, friction, a pin
+                // target) is a velocity kick c/h, as in backward Euler; boosting the history by it too (v_prev += c/h) makes
+                // the next prediction carry it exactly once instead of 11/9 times
+                double cx = mx - qx[i] - ex, cy = my - qy[i] - ey, cz = mz - qz[i] - ez;
+                if (kinematic[i])
+                {
+                    wx[i] = mx * invH; wy[i] = my * invH; wz[i] = mz * invH;
+                }
+                else if (cx != 0.0 || cy != 0.0 || cz != 0.0)
+                {
+                    wx[i] += cx * invH; wy[i] += cy * invH; wz[i] += cz * invH;
+                }
+                vx[i] = bx[i] + mx * invH + k * ex; vy[i] = by[i] + my * invH + k * ey; vz[i] = bz[i] + mz * invH + k * ez;
+            }
+        }
+
+        /// <summary>Δ's start mark of one coordinate, 0 − (D + DLow), as the substep's first <see cref="TrackSolveDisplacement"/> writes it.</summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static double StartMark(float d, float low) => 0.0 + -1.0 * ((double)d + low);
 
         /// <summary>
         /// After a BDF2 substep's velocities (invH = 1/h, 1/s; <paramref name="bdf2"/>: the substep ran BDF2): every dynamic
@@ -152,41 +288,16 @@ namespace HookeRope.Solver
             for (int i = 0; i < chain.ParticleCount; i++) resting[i] = load[i] > 0f;
         }
 
-        /// <summary>
-        /// The host changed particle i's velocity by (dx, dy, dz) m/s: the same change is applied to its history (v_prev, and
-        /// d_prev = x_n − x_{n−1} by h·Δv), a Galilean boost that keeps BDF2's acceleration memory. A moved position needs
-        /// nothing: d_prev is a difference.
-        /// </summary>
-        private void BoostHistory(int i, double dx, double dy, double dz)
+        /// <summary>Δ's start mark of every particle <see cref="MovePins"/> placed (the rigid pins; see <see cref="solveMarksFused"/>).</summary>
+        private void MarkPinnedSolveStarts()
         {
-            chain.PrevVelX[i] += dx; chain.PrevVelY[i] += dy; chain.PrevVelZ[i] += dz;
-            double h = historyStep;
-            chain.AddDisplacement(i, dx * h, dy * h, dz * h);
-        }
-
-        /// <summary>
-        /// Marks the start (sign −1) or the end (+1) of a chain solve: Δ accumulates the displacement it applies.
-        /// <paramref name="start"/>: the substep's first mark, where Δ starts from 0 (written, not read: the prediction does
-        /// not clear it; 0 + x keeps the bits the cleared sum gave, +0 for a zero displacement).
-        /// </summary>
-        private void TrackSolveDisplacement(double sign, bool start)
-        {
-            int n = chain.ParticleCount;
-            // spans of exactly n entries (the loop bound): indexed without bounds checks
-            ReadOnlySpan<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
-            ReadOnlySpan<float> lx = ChainState.Exactly(chain.DLowX, n), ly = ChainState.Exactly(chain.DLowY, n), lz = ChainState.Exactly(chain.DLowZ, n);
-            Span<double> sx = ChainState.Exactly(chain.SolveDX, n), sy = ChainState.Exactly(chain.SolveDY, n), sz = ChainState.Exactly(chain.SolveDZ, n);
-            if (start)
+            for (int p = 0; p < pinCount; p++)
             {
-                for (int i = 0; i < n; i++)
-                {
-                    sx[i] = 0.0 + sign * ((double)dx[i] + lx[i]); sy[i] = 0.0 + sign * ((double)dy[i] + ly[i]); sz[i] = 0.0 + sign * ((double)dz[i] + lz[i]);
-                }
-                return;
-            }
-            for (int i = 0; i < n; i++)
-            {
-                sx[i] += sign * ((double)dx[i] + lx[i]); sy[i] += sign * ((double)dy[i] + ly[i]); sz[i] += sign * ((double)dz[i] + lz[i]);
+                if (pinBroken[p] || pinCompliance[p] != 0f) continue;
+                int i = pinParticle[p];
+                chain.SolveDX[i] = StartMark(chain.DX[i], chain.DLowX[i]);
+                chain.SolveDY[i] = StartMark(chain.DY[i], chain.DLowY[i]);
+                chain.SolveDZ[i] = StartMark(chain.DZ[i], chain.DLowZ[i]);
             }
         }
 
@@ -199,40 +310,17 @@ namespace HookeRope.Solver
         /// </summary>
         private void UpdateVelocitiesSecondOrder(TimeIntegrator scheme, double h, bool violent, bool contacts)
         {
-            int n = chain.ParticleCount;
-            // spans of exactly n entries (the loop bound): indexed without bounds checks
-            ReadOnlySpan<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
-            ReadOnlySpan<float> lx = ChainState.Exactly(chain.DLowX, n), ly = ChainState.Exactly(chain.DLowY, n), lz = ChainState.Exactly(chain.DLowZ, n);
-            ReadOnlySpan<double> bx = ChainState.Exactly(chain.BaseVelX, n), by = ChainState.Exactly(chain.BaseVelY, n), bz = ChainState.Exactly(chain.BaseVelZ, n);
-            ReadOnlySpan<double> sx = ChainState.Exactly(chain.SolveDX, n), sy = ChainState.Exactly(chain.SolveDY, n), sz = ChainState.Exactly(chain.SolveDZ, n);
-            Span<double> wx = ChainState.Exactly(chain.PrevVelX, n), wy = ChainState.Exactly(chain.PrevVelY, n), wz = ChainState.Exactly(chain.PrevVelZ, n);
-            ReadOnlySpan<float> qx = ChainState.Exactly(chain.PredictedDX, n), qy = ChainState.Exactly(chain.PredictedDY, n), qz = ChainState.Exactly(chain.PredictedDZ, n);
-            Span<double> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
-            ReadOnlySpan<bool> kinematic = ChainState.Exactly(chain.Kinematic, n);
-            double invH = 1.0 / h, k = scheme == TimeIntegrator.Bdf2 ? 0.5 * invH : 0.0;
-            for (int i = 0; i < n; i++)
-            {
-                // d = D + DLow (ChainState.Displacement)
-                double mx = (double)dx[i] + lx[i], my = (double)dy[i] + ly[i], mz = (double)dz[i] + lz[i];
-                // what moved the particle besides the prediction and the chain solve (collider push-out, friction, a pin
-                // target) is a velocity kick c/h, as in backward Euler; boosting the history by it too (v_prev += c/h) makes
-                // the next prediction carry it exactly once instead of 11/9 times
-                double cx = mx - qx[i] - sx[i], cy = my - qy[i] - sy[i], cz = mz - qz[i] - sz[i];
-                if (kinematic[i])
-                {
-                    wx[i] = mx * invH; wy[i] = my * invH; wz[i] = mz * invH;
-                }
-                else if (cx != 0.0 || cy != 0.0 || cz != 0.0)
-                {
-                    wx[i] += cx * invH; wy[i] += cy * invH; wz[i] += cz * invH;
-                }
-                vx[i] = bx[i] + mx * invH + k * sx[i]; vy[i] = by[i] + my * invH + k * sy[i]; vz[i] = bz[i] + mz * invH + k * sz[i];
-            }
+            // Δ as stored, or with the solve's last end mark taken here (see solveMarksFused): one loop body for each
+            if (!solveEndPending) SecondOrderVelocities<StoredMarks>(scheme, h);
+            else if (solveStartImplied) SecondOrderVelocities<ImpliedStartMark>(scheme, h);
+            else SecondOrderVelocities<PendingEndMark>(scheme, h);
+            solveEndPending = false;
+            solveStartImplied = false;
             CommitPositions();
             // a violent substep (see ViolentStrain) restarts the history: the next substep is backward Euler
             historyValid = !violent;
             historyStep = h;
-            if (contacts) ClampIntoSurface(invH, scheme == TimeIntegrator.Bdf2);
+            if (contacts) ClampIntoSurface(1.0 / h, scheme == TimeIntegrator.Bdf2);
         }
     }
 }

@@ -60,6 +60,9 @@ namespace HookeRope.Solver
                 chain.Bdf2Substep = scheme == TimeIntegrator.Bdf2;
                 chain.Substep = hd;
                 chain.ContactImpulseScale = (hEff / hd) * (hEff / hd);
+                // nothing moves a particle between the prediction and the solve but the rigid pins: the prediction (and the
+                // pins) write the solve's start mark, and the last iteration leaves its end mark to the velocity pass
+                solveMarksFused = secondOrder && !drag && !hasColliders;
                 PredictPhase(t, hostDeltaTime, secondOrder, scheme, h, hd, g);
                 if (drag) PredictDrag(secondOrder, scheme == TimeIntegrator.Bdf2, h, hd, hEff, g);
                 // push the prediction out of the colliders and find the contacts the chain solve folds in
@@ -101,19 +104,26 @@ namespace HookeRope.Solver
         /// </summary>
         private void PredictPhase(float t, float hostDeltaTime, bool secondOrder, TimeIntegrator scheme, float h, double hd, Float3 g)
         {
+            // solveMarksFused: the prediction writes the first iteration's start mark of the solve displacement Δ (BDF2)
             if (colliders.Count > 0) colliders.PrepareSubstep(t, hostDeltaTime);
             // the largest coordinate (ChainState.Size) is the exact solve's round-off floor: the Gauss–Seidel sweep skips it
             if (settings.Solver == ConstraintSolverKind.ExactChain)
             {
-                if (secondOrder) PredictSecondOrder<Sized>(scheme, hd, g);
+                if (secondOrder) PredictSecondOrder<Sized>(scheme, hd, g, solveMarksFused);
                 else Predict<Sized>(hd, g);
             }
-            else if (secondOrder) PredictSecondOrder<Unsized>(scheme, hd, g);
+            else if (secondOrder) PredictSecondOrder<Unsized>(scheme, hd, g, solveMarksFused);
             else Predict<Unsized>(hd, g);
             MovePins(t);
-            // cleared in loops: for the short arrays of a rope a call to Array.Clear costs more than the stores
-            Span<double> lambda = ChainState.Exactly(chain.Lambda, chain.SegmentCount);
-            for (int j = 0; j < lambda.Length; j++) lambda[j] = 0.0;
+            if (solveMarksFused) MarkPinnedSolveStarts();
+            // cleared in loops: for the short arrays of a rope a call to Array.Clear costs more than the stores. The exact
+            // solve writes every λ in each of its iterations (ExactChainSolver.Apply, at least one per substep) and nothing
+            // reads λ before: only the Gauss–Seidel sweep accumulates it from 0
+            if (settings.Solver != ConstraintSolverKind.ExactChain)
+            {
+                Span<double> lambda = ChainState.Exactly(chain.Lambda, chain.SegmentCount);
+                for (int j = 0; j < lambda.Length; j++) lambda[j] = 0.0;
+            }
             for (int b = 0; b < pinCount * 3; b++) pinLambda[b] = 0.0;
         }
 
@@ -158,9 +168,12 @@ namespace HookeRope.Solver
             double solveBeta = beta * (hEff / hd);
             int total = iterations, cap = MaxNewtonIterations;
             bool unconverged = false;
+            solveEndPending = false;
+            solveStartImplied = trackSolve && solveMarksFused;
             for (int it = 0; it < total; it++)
             {
-                if (trackSolve) TrackSolveDisplacement(-1.0, it == 0);
+                // the first start mark is implied by the prediction when the marks are fused (see solveMarksFused)
+                if (trackSolve && !(it == 0 && solveMarksFused)) TrackSolveDisplacement(-1.0, it == 0);
                 bool softPins = hasCompliantPins && ProjectCompliantPins(hEff, t);
                 if (exact)
                 {
@@ -173,7 +186,10 @@ namespace HookeRope.Solver
                 {
                     GaussSeidelSolver.Iterate(chain, hEff, solveBeta, tensionOnly);
                 }
-                if (trackSolve) TrackSolveDisplacement(1.0, false);
+                // the last iteration's end mark: in the velocity pass when nothing moves the particles after it (solveMarksFused)
+                if (trackSolve && solveMarksFused && it == total - 1) solveEndPending = true;
+                else if (trackSolve && solveStartImplied) { TrackSolveEndFromPrediction(); solveStartImplied = false; }
+                else if (trackSolve) TrackSolveDisplacement(1.0, false);
                 if (softPins) ReleaseCompliantPins(hEff, t);
                 CollidePhase(h, it == total - 1 ? ContactPass.LastIteration : ContactPass.BetweenIterations);
             }

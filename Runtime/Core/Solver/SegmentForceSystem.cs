@@ -245,6 +245,7 @@ namespace HookeRope.Solver
         }
 
         /// <summary>Particle i's motion W_i (pull) under this solution (m), without a held contact's gap allowance.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static void Motion(ChainState c, int i, out double mx, out double my, out double mz)
         {
             Pull(c, i, out double px, out double py, out double pz);
