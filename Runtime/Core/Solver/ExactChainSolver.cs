@@ -120,7 +120,8 @@ namespace HookeRope.Solver
         /// Per segment: direction n and length l of the live positions, the compliances (damping folded in as XPBD's
         /// eq. 26: α̃' = α̃/(1 + γ), rest length shifted by the substep's stretch rate), the tension estimate of the
         /// geometric stiffness and the residual R = d − (L' + α̃'|Λ|)·ê of the accumulated force Λ (ê its direction, signed
-        /// along n; n while Λ = 0). A segment with no mobility and no compliance is not in the system.
+        /// along n; n while Λ = 0, and n for a bilateral segment with no geometric stiffness in the system). A segment with
+        /// no mobility and no compliance is not in the system.
         /// </summary>
         private static void Assemble(ChainState c, double invH2, double gammaAll, bool first, bool tensionOnly)
         {
@@ -201,7 +202,14 @@ namespace HookeRope.Solver
                 // axial: the transverse compliance at its cap), not +|T|/l, which is off by twice as much the other way and
                 // made the pushing rods of the stability grid gain energy (solver.md, "Rods in compression")
                 bool pushing = !tensionOnly && (first ? lastTension[j] < 0f : signed < 0.0);
-                transverse[j] = !pushing && geometric < cap * tension ? geometric / tension : cap;
+                bool axialOnly = pushing || !(geometric < cap * tension);
+                transverse[j] = axialOnly ? cap : geometric / tension;
+                // a bilateral segment with (almost) no geometric stiffness in the system, pushing or nearly slack, has no
+                // transverse residual the solve corrects: the direction of its force from earlier iterations can lag the
+                // segment by θ, and a residual along it asks for the length L·cos θ (a 256-segment rod's free end converged
+                // 0.27 mm short of 3.9 mm at +0.025 N: 0.73 J). Its residual is taken along the segment (solver.md, "Rods in
+                // compression"); a tension-only one keeps it along its force
+                if (axialOnly && !tensionOnly) { ex = nx; ey = ny; ez = nz; }
                 axial[j] = alphaTilde;
                 effectiveRest[j] = restEffective;
                 assembled[j] = true;
