@@ -215,6 +215,18 @@ namespace HookeRope.Solver
                 double normal = gx * nx + gy * ny + gz * nz;
                 // a contact held through the first iteration stays held in the later ones (on the surface it does no work
                 // even where it would pull; giving its impulse back would move the particle by the chain's whole pull)
+                if (first && normal < -NegligibleNormal * c.ContactNormalScale && Damping(c, i) > 0.0)
+                {
+                    // friction first: a contact the chain pulls has no cone, so it loses its friction and the system is
+                    // solved again; it is released only if it still pulls without friction
+                    c.ContactDamping[i] = 0.0;
+                    c.ContactSliding[i] = true;
+                    c.ContactSticking[i] = false;
+                    Reshift(c, i);
+                    changed = true;
+                    frictionChanged = true;
+                    continue;
+                }
                 if (first && normal < -NegligibleNormal * c.ContactNormalScale)
                 {
                     c.ContactActive[i] = false;
