@@ -10,19 +10,16 @@ namespace HookeRope.Lab.Stability
     public static class GridLimits
     {
         /// <summary>
-        /// A stiff rope held on a sphere with friction at 1/90 s: elastic energy the friction-held iterations leave, its cause
-        /// not isolated (the frictionless twins of two of the cases fail under <see cref="Push"/>).
+        /// A stiff rope held on a sphere with friction at 1/90 s: elastic energy left in one case whose frictionless twin fails
+        /// under <see cref="Push"/>.
         /// </summary>
         public const string Friction =
             "friction on a stiff rope: Coulomb friction is inside the exact chain solve (ChainContacts); since friction-held " +
-            "iterations take the energy test and the line search like any other (its objective with the friction dampers' " +
-            "½ζ|s|², a direction that is no descent direction shortened, a contact without friction resuming at its cone's " +
-            "damper, not the sticking one) 7 cases remain, was 17 (largest gain 0.86 J, was 1.76 MJ): a 200 GPa, 16-segment " +
-            "rope on the sphere at 1/90 s (load ratio 1 and 10³, both integrators) gains 0.013–0.86 J, all of it elastic " +
-            "(motion alone at most 0.043 J); the frictionless twins of two of them (ratio 1, tension-only) fail under the push " +
-            "after the solve (0.040 and 0.056 J); not isolated further (seen in traces of the cases fixed: a contact held on the " +
-            "sphere after the first iteration pulling, normal impulse < 0, since later iterations release none, and friction " +
-            "passes ending at 64 with a contact still cycling)";
+            "iterations take the energy test and the line search like any other, and a contact the chain pulls in the first " +
+            "iteration loses its friction before the active set may release it (ChainContacts.Update), 1 case remains, was 7 " +
+            "(17 before the line search): the 200 GPa, 16-segment, load ratio 1 rope on the sphere at 1/90 s, backward " +
+            "Euler, tension-only gains 0.46 J, all of it elastic (was 0.62 J); its frictionless twin fails under the push " +
+            "after the solve (0.040 J)";
 
         /// <summary>
         /// A bilateral chain that pushes and folds against the sphere: its violent substeps do not converge, and the length
