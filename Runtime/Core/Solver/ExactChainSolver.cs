@@ -85,6 +85,9 @@ namespace HookeRope.Solver
                 ChainContacts.DropContactsWithoutMobility(c);
             }
             SolveActiveSet(c, tensionOnly, contacts, first);
+            // a contact released in this substep stays free in its active-set passes; if the solution drives it back into the
+            // surface, another iteration follows, whose detection holds it where the collision pass put it
+            bool reentered = contacts && ChainContacts.ReleasedInside(c);
             double nonlinear = Apply(c, contacts, tensionOnly, invH2, out bool unconverged, out bool estimateTooLow);
             violent = nonlinear > NonlinearTolerance;
             shortened = false;
@@ -100,7 +103,7 @@ namespace HookeRope.Solver
             }
             bool branches = c.Plasticity != null && c.Plasticity.UpdateBranches(c, invH2);
             // estimateTooLow is Apply's; a shortened step changed the forces after it, but then unconverged is true anyway
-            return estimateTooLow || unconverged || branches;
+            return estimateTooLow || unconverged || branches || reentered;
         }
 
         private static void ClearForces(ChainState c)
