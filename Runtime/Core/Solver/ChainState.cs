@@ -85,6 +85,7 @@ namespace HookeRope.Solver
         public float[] ContactGap;                      // m, distance − radius (≥ 0) when the contact was detected
         public float[] ContactLoad;                     // m, normal correction the contact took this substep (friction limit)
         public bool[] ContactResting;                   // the collision passes pushed the particle out in the substep before too (Rope.ClampIntoSurface)
+        public bool[] ContactNear;                      // the particle was in the contact set at the end of the substep before (Rope.NewImpact)
         public int[] ContactCollider;                   // collider index, −1 = no contact
         public bool[] ContactActive;                    // contact used by the current chain solve (tangent-plane mass)
         public int[] ContactList;                       // particles with ContactCollider ≥ 0, first ContactCount entries
@@ -160,7 +161,7 @@ namespace HookeRope.Solver
             if (ContactCollider != null) return;
             int n = ParticleCount;
             ContactNX = new float[n]; ContactNY = new float[n]; ContactNZ = new float[n];
-            ContactGap = new float[n]; ContactLoad = new float[n]; ContactResting = new bool[n];
+            ContactGap = new float[n]; ContactLoad = new float[n]; ContactResting = new bool[n]; ContactNear = new bool[n];
             ContactCollider = new int[n]; ContactActive = new bool[n]; ContactList = new int[n];
             ContactSticking = new bool[n]; ContactSliding = new bool[n]; ContactStopped = new bool[n]; ContactMobility = new double[n];
             ContactShiftX = new double[n]; ContactShiftY = new double[n]; ContactShiftZ = new double[n];

@@ -67,9 +67,26 @@ namespace HookeRope.Solver
                 if (drag) PredictDrag(secondOrder, scheme == TimeIntegrator.Bdf2, h, hd, hEff, g);
                 // push the prediction out of the colliders and find the contacts the chain solve folds in
                 CollidePhase(h, ContactPass.StartOfSubstep);
+                bool impact = scheme == TimeIntegrator.Bdf2 && hasColliders && NewImpact();
                 if (viscousDrag) FoldViscousDrag(hEff);
+                int unconvergedBefore = reportUnconverged;
                 bool violentSolve = SolvePhase(h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder);
                 if (viscousDrag) UnfoldViscousDrag();
+                if (impact && violentSolve && reportUnconverged > unconvergedBefore)
+                {
+                    // an impact left the BDF2 solve violent and unconverged: the substep runs again as backward Euler from
+                    // its start (x_n and v_n are not written before the velocities; see NewImpact); the report counts both solves
+                    scheme = TimeIntegrator.BackwardEuler;
+                    hEff = EffectiveStep(scheme, hd);
+                    chain.Bdf2Substep = false;
+                    chain.ContactImpulseScale = 1.0;
+                    PredictPhase(t, hostDeltaTime, secondOrder, scheme, h, hd, g);
+                    if (drag) PredictDrag(secondOrder, false, h, hd, hEff, g);
+                    CollidePhase(h, ContactPass.StartOfSubstep);
+                    if (viscousDrag) FoldViscousDrag(hEff);
+                    violentSolve = SolvePhase(h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder);
+                    if (viscousDrag) UnfoldViscousDrag();
+                }
                 if (secondOrder) UpdateVelocitiesSecondOrder(scheme, hd, violentSolve || Violent(), hasColliders);
                 else UpdateVelocities(hd);
                 if (drag) AccumulateDragWork();

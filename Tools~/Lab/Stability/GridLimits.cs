@@ -28,11 +28,12 @@ namespace HookeRope.Lab.Stability
         public const string Rod =
             "rod in compression: a pushing bilateral segment takes no geometric stiffness in the exact solve (ExactChainSolver." +
             "Assemble: its exact −|T|/l makes the implicit step's energy non-convex across it), so the iteration converges only " +
-            "linearly where a pushing chain folds: the two undamped 1 GPa 256-segment rods folding against the sphere (BDF2) " +
-            "gain 0.2 J of motion (1/90 s) and 14.8 J, 2.1 J of it motion (1/30 s, load ratio 10³, in violent substeps of up to " +
-            "32 iterations); taking a pure-axial segment's residual along the segment instead of along its lagging force " +
-            "(solver.md, \"Rods in compression\") removed the 151 J its fold stored at 1/90 s and passed the 45 t load on a " +
-            "2-segment steel rod hitting the sphere (+9.4 kJ) and the damped 256-segment steel rod (+0.226 J); negative " +
+            "linearly where a pushing chain folds; no grid case fails under it since a BDF2 substep whose impact left the solve " +
+            "violent and unconverged runs again as backward Euler (Rope.NewImpact: the undamped 1 GPa 256-segment rod with a 10³ " +
+            "load hitting the sphere at 1/30 s gained 14.8 J, 2.1 J of it motion, in violent substeps of up to 32 iterations, " +
+            "its tension-only twin 0.63 J); taking a pure-axial segment's residual along the segment instead of along its " +
+            "lagging force (solver.md, \"Rods in compression\") removed the 151 J its fold stored at 1/90 s and passed the 45 t " +
+            "load on a 2-segment steel rod hitting the sphere (+9.4 kJ) and the damped 256-segment steel rod (+0.226 J); negative " +
             "geometric stiffness bounded to keep the Newton matrix positive definite, and a line search on every iteration of a " +
             "violent substep, were measured and failed more cases";
 
