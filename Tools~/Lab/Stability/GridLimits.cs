@@ -37,16 +37,20 @@ namespace HookeRope.Lab.Stability
             "geometric stiffness bounded to keep the Newton matrix positive definite, and a line search on every iteration of a " +
             "violent substep, were measured and failed more cases";
 
-        /// <summary>The collision pass after the last iteration pushes particles out of the collider without the chain.</summary>
+        /// <summary>
+        /// The collision pass after the last iteration pushes particles out of the collider without the chain: no case left in
+        /// the full sweep.
+        /// </summary>
         public const string Push =
             "push after the solve: the collision pass after the last chain iteration pushes particles out of the sphere " +
             "(ContactPass.LastIteration) without the chain, storing ½δ²/α in the segments at the pushed particle (1 µm on a " +
             "6 cm steel segment is 0.1 mJ) that the next substep releases; a contact the first iteration released stays free " +
             "in the substep, and where the solve drove it back into the sphere (up to 67 µm on the 200 GPa 16-segment rope at " +
             "1/90 s, 0.046 J in its positions against 3e-8 J in its tensions) the solver now iterates again, so the detection " +
-            "holds it (ChainContacts.ReleasedInside: both 16-segment cases pass, was +0.0395 J and +0.0505 J); 1 case " +
-            "remains, the 1 GPa 256-segment rope with 10³ at 1/30 s (BDF2, tension-only, +0.628 J, 0.627 J of it motion); " +
-            "solving again after the push was tried and failed more cases (the 2-segment ropes resting on the sphere that did not come quite to rest, 8.1e-7 – 9.0e-7 J, read " +
+            "holds it (ChainContacts.ReleasedInside: both 16-segment cases pass, was +0.0395 J and +0.0505 J); no case " +
+            "remains: the last, the 1 GPa 256-segment rope with 10³ at 1/30 s (BDF2, tension-only, +0.628 J, 0.627 J of it " +
+            "motion), passes since a BDF2 substep whose impact left the solve violent and unconverged runs again as backward " +
+            "Euler (Rope.NewImpact); solving again after the push was tried and failed more cases (the 2-segment ropes resting on the sphere that did not come quite to rest, 8.1e-7 – 9.0e-7 J, read " +
             "BDF2's steady velocity h·g_n/2 into the surface at a pushed particle that stood still, and now come to rest: " +
             "Rope.ClampIntoSurface)";
 
