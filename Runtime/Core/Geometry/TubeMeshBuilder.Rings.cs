@@ -256,7 +256,8 @@ namespace HookeRope.Geometry
         /// A, B, C worked out once per ring (position: c, r·n, r·b, then + the frame origin o; normal: −slope·t, n, b, all over sqrt(1 + slope²);
         /// tangent: 0, b, −n). The 48-byte vertex is three 4-float lanes (position.xyz normal.x | normal.yz tangent.xy |
         /// tangent.zw u v), so a vertex is 6 multiplications, 8 additions and 3 stores of 4-float vectors, read from the
-        /// side tables (cos, sin, u) made once per builder, written in place in SetVertexBufferData's layout.
+        /// side table (<see cref="SideLanes"/>: cos, sin and u of each side) made once per builder, written in place in
+        /// SetVertexBufferData's layout.
         /// </summary>
         private void WriteRing(int k, Span<TubeVertex> ring)
         {
@@ -282,7 +283,7 @@ namespace HookeRope.Geometry
             var b2 = new Vector4(bz, 0f, 0f, 0f);
             var c2 = new Vector4(-nz, 0f, 0f, 0f);
             // one table entry and one vertex per side, read and written through refs: the loop runs over the vertices'
-            // span, so its index needs no range check there and one for the side table (six before, one per lane and table)
+            // span, so its index is range-checked only against the side table (once per side, not once per lane)
             ReadOnlySpan<SideLanes> sides = sideLanes;
             Span<VertexLanes> vertices = MemoryMarshal.Cast<TubeVertex, VertexLanes>(ring);
             if (vertices.Length > sides.Length) vertices = vertices.Slice(0, sides.Length);

@@ -55,7 +55,6 @@ namespace HookeRope.Geometry
         private readonly int fibreCount;
         private readonly float[] cos;
         private readonly float[] sin;
-        private readonly float[] around;
         private readonly SideLanes[] sideLanes;
         private readonly TubeVertex[] capRim;
         private readonly double[] restArc;
@@ -110,17 +109,16 @@ namespace HookeRope.Geometry
             fibreCount = settings.Burr.FibreCount(restRadius, radial);
             cos = new float[radial + 1];
             sin = new float[radial + 1];
-            around = new float[radial + 1];
             for (int i = 0; i <= radial; i++)
             {
                 double angle = 2.0 * Math.PI * i / radial;
                 cos[i] = i == radial ? 1f : (float)Math.Cos(angle);
                 sin[i] = i == radial ? 0f : (float)Math.Sin(angle);
-                around[i] = (float)i / radial;
             }
+            // the u coordinate i/radial around the ring is only read through the side table
             sideLanes = new SideLanes[radial + 1];
             for (int i = 0; i <= radial; i++)
-                sideLanes[i] = new SideLanes(new Vector4(cos[i]), new Vector4(sin[i]), new Vector4(0f, 1f, around[i], 0f));
+                sideLanes[i] = new SideLanes(new Vector4(cos[i]), new Vector4(sin[i]), new Vector4(0f, 1f, (float)i / radial, 0f));
             capRim = new TubeVertex[radial + 1];
             int n = layout.SegmentCount;
             restArc = new double[n + 1];

@@ -179,13 +179,13 @@ namespace HookeRope.Solver
         /// The active-set pass over the contacts after a solve: a held contact whose normal impulse over the substep would
         /// pull is released (and gives back the impulse of the substep's earlier passes) and stays free for the rest of the
         /// substep, once it pulls without friction (one with a friction damper first loses it: a pulled contact has no cone,
-        /// and the damper held it along the surface in the solve that said it pulls); a free one whose motion takes it past its gap (by more than <see cref="HoldTolerance"/>) is held again
-        /// with the friction it had; and each held contact's friction is moved to its cone (<see cref="Coulomb"/>).
-        /// Returns true when some state changed, so the system must be solved again (<paramref name="frictionChanged"/>: some
-        /// friction did). Contacts are released only in the
-        /// substep's <paramref name="first"/> iteration: in a later one a held contact has taken the chain's whole pull so
-        /// far, and a release would give it back as a displacement far outside the linearisation (a light particle under a
-        /// taut rope's pull would move metres).
+        /// and the damper held it along the surface in the solve that said it pulls); a free one whose motion takes it past
+        /// its gap (by more than <see cref="HoldTolerance"/>) is held again with the friction it had; and each held contact's
+        /// friction is moved to its cone (<see cref="Coulomb"/>). Returns true when some state changed, so the system must be
+        /// solved again (<paramref name="frictionChanged"/>: some friction did). Contacts are released only in the substep's
+        /// <paramref name="first"/> iteration: in a later one a held contact has taken the chain's whole pull so far, and a
+        /// release would give it back as a displacement far outside the linearisation (a light particle under a taut rope's
+        /// pull would move metres).
         /// </summary>
         public static bool Update(ChainState c, bool first, out bool frictionChanged)
         {
@@ -216,23 +216,23 @@ namespace HookeRope.Solver
                 double normal = gx * nx + gy * ny + gz * nz;
                 // a contact held through the first iteration stays held in the later ones (on the surface it does no work
                 // even where it would pull; giving its impulse back would move the particle by the chain's whole pull)
-                if (first && normal < -NegligibleNormal * c.ContactNormalScale && Damping(c, i) > 0.0)
-                {
-                    // friction first: a contact the chain pulls has no cone, so it loses its friction and the system is
-                    // solved again; it is released only if it still pulls without friction (released with the damper, both
-                    // contacts of a 200 GPa rope on the sphere ended inside it and the push after the solve stored 1.0 J)
-                    c.ContactDamping[i] = 0.0;
-                    c.ContactSliding[i] = true;
-                    c.ContactSticking[i] = false;
-                    Reshift(c, i);
-                    changed = true;
-                    frictionChanged = true;
-                    continue;
-                }
                 if (first && normal < -NegligibleNormal * c.ContactNormalScale)
                 {
-                    c.ContactActive[i] = false;
-                    c.ContactStopped[i] = true;
+                    if (Damping(c, i) > 0.0)
+                    {
+                        // friction first: a contact the chain pulls has no cone, so it loses its friction and the system is
+                        // solved again; it is released only if it still pulls without friction (released with the damper, both
+                        // contacts of a 200 GPa rope on the sphere ended inside it and the push after the solve stored 1.0 J)
+                        c.ContactDamping[i] = 0.0;
+                        c.ContactSliding[i] = true;
+                        c.ContactSticking[i] = false;
+                        frictionChanged = true;
+                    }
+                    else
+                    {
+                        c.ContactActive[i] = false;
+                        c.ContactStopped[i] = true;
+                    }
                     Reshift(c, i);
                     changed = true;
                     continue;

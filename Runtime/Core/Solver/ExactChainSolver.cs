@@ -70,8 +70,11 @@ namespace HookeRope.Solver
         /// tension the geometric stiffness was estimated with was less than half the tension found on some segment whose
         /// transverse response it governs (4·T·h²·w/l &gt; 1); the iteration moved some segment's ends across it by so
         /// much that its length is off the linearisation by more than a converged chain allows (<see cref="Apply"/>); a
-        /// released tension-only segment ended stretched; or the line search shortened the step. <paramref name="violent"/>: the linearisation was off by more than <see cref="NonlinearTolerance"/> (its
-        /// step went through <see cref="ChainLineSearch"/>), or a released segment ended stretched by more than that.
+        /// released tension-only segment ended stretched; the step went through the line search; a plastic segment changed
+        /// branch; or a contact released in this substep was driven back into its surface
+        /// (<see cref="ChainContacts.ReleasedInside"/>). <paramref name="violent"/>: the linearisation was off by more than
+        /// <see cref="NonlinearTolerance"/> (its step went through <see cref="ChainLineSearch"/>), or a released segment ended
+        /// stretched by more than that; <paramref name="shortened"/>: the line search took a step below 1.
         /// </summary>
         public static bool Iterate(ChainState c, double h, double beta, bool tensionOnly, bool first, out bool violent, out bool shortened)
         {
@@ -342,6 +345,8 @@ namespace HookeRope.Solver
         /// or a released (tension-only) segment's stretch beyond its rest length — and sets <paramref name="unconverged"/>
         /// when some active segment's error exceeds NonlinearTolerance·L, a released one is stretched by that much, or the
         /// energy the errors above round-off leave in the segments is too large (<see cref="Mismatched"/>).
+        /// <paramref name="estimateTooLow"/>: the tension-estimate test of <see cref="Iterate"/> failed on some active segment
+        /// (<see cref="EstimateTooLow"/>, on the forces of the full step; invH2 = 1/h², 1/s²).
         /// </summary>
         private static double Apply(ChainState c, bool contacts, bool tensionOnly, double invH2, out bool unconverged, out bool estimateTooLow)
         {

@@ -293,7 +293,9 @@ namespace HookeRope.Solver
         {
             bool[] resting = chain.ContactResting;
             float[] load = chain.ContactLoad;
-            for (int k = 0; bdf2 && k < chain.ContactCount; k++)
+            // a backward-Euler substep has no BDF2 history to clamp: it only records the pushed particles (below)
+            int clamped = bdf2 ? chain.ContactCount : 0;
+            for (int k = 0; k < clamped; k++)
             {
                 int i = chain.ContactList[k];
                 if (chain.Kinematic[i] || !(load[i] > 0f) || !resting[i]) continue;

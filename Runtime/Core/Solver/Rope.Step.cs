@@ -56,36 +56,22 @@ namespace HookeRope.Solver
                 TimeIntegrator scheme = SubstepScheme(integrator, hd);
                 // friction in contact: backward Euler (see HeldWithFriction)
                 if (scheme == TimeIntegrator.Bdf2 && exact && chain.HeldWithFriction) scheme = TimeIntegrator.BackwardEuler;
-                double hEff = EffectiveStep(scheme, hd);
-                chain.Bdf2Substep = scheme == TimeIntegrator.Bdf2;
-                chain.Substep = hd;
-                chain.ContactImpulseScale = (hEff / hd) * (hEff / hd);
+                double hEff = BeginSubstep(scheme, hd);
                 // nothing moves a particle between the prediction and the solve but the rigid pins: the prediction (and the
                 // pins) write the solve's start mark, and the last iteration leaves its end mark to the velocity pass
                 solveMarksFused = secondOrder && !drag && !hasColliders;
-                PredictPhase(t, hostDeltaTime, secondOrder, scheme, h, hd, g);
-                if (drag) PredictDrag(secondOrder, scheme == TimeIntegrator.Bdf2, h, hd, hEff, g);
-                // push the prediction out of the colliders and find the contacts the chain solve folds in
-                CollidePhase(h, ContactPass.StartOfSubstep);
+                PredictAndCollide(t, hostDeltaTime, secondOrder, scheme, h, hd, hEff, g, drag);
                 bool impact = scheme == TimeIntegrator.Bdf2 && hasColliders && NewImpact();
-                if (viscousDrag) FoldViscousDrag(hEff);
                 int unconvergedBefore = reportUnconverged;
-                bool violentSolve = SolvePhase(h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder);
-                if (viscousDrag) UnfoldViscousDrag();
+                bool violentSolve = SolveWithViscousDrag(h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder, viscousDrag);
                 if (impact && violentSolve && reportUnconverged > unconvergedBefore)
                 {
                     // an impact left the BDF2 solve violent and unconverged: the substep runs again as backward Euler from
                     // its start (x_n and v_n are not written before the velocities; see NewImpact); the report counts both solves
                     scheme = TimeIntegrator.BackwardEuler;
-                    hEff = EffectiveStep(scheme, hd);
-                    chain.Bdf2Substep = false;
-                    chain.ContactImpulseScale = 1.0;
-                    PredictPhase(t, hostDeltaTime, secondOrder, scheme, h, hd, g);
-                    if (drag) PredictDrag(secondOrder, false, h, hd, hEff, g);
-                    CollidePhase(h, ContactPass.StartOfSubstep);
-                    if (viscousDrag) FoldViscousDrag(hEff);
-                    violentSolve = SolvePhase(h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder);
-                    if (viscousDrag) UnfoldViscousDrag();
+                    hEff = BeginSubstep(scheme, hd);
+                    PredictAndCollide(t, hostDeltaTime, secondOrder, scheme, h, hd, hEff, g, drag);
+                    violentSolve = SolveWithViscousDrag(h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder, viscousDrag);
                 }
                 if (secondOrder) UpdateVelocitiesSecondOrder(scheme, hd, violentSolve || Violent(), hasColliders);
                 else UpdateVelocities(hd);
@@ -115,9 +101,43 @@ namespace HookeRope.Solver
         }
 
         /// <summary>
+        /// Sets the chain up for substep hd (s) under scheme (its flag, the substep, the contact impulse scale (h_eff/h)²) and
+        /// returns the scheme's effective step h_eff (s).
+        /// </summary>
+        private double BeginSubstep(TimeIntegrator scheme, double hd)
+        {
+            double hEff = EffectiveStep(scheme, hd);
+            chain.Bdf2Substep = scheme == TimeIntegrator.Bdf2;
+            chain.Substep = hd;
+            chain.ContactImpulseScale = (hEff / hd) * (hEff / hd);
+            return hEff;
+        }
+
+        /// <summary>
+        /// Phases 1 and 2 of a substep under scheme (h s, hd the same in double, h_eff s): the prediction (<see cref="PredictPhase"/>,
+        /// with the drag's when <paramref name="drag"/>), then the collision pass that pushes it out of the colliders and finds
+        /// the contacts the chain solve folds in.
+        /// </summary>
+        private void PredictAndCollide(float t, float hostDeltaTime, bool secondOrder, TimeIntegrator scheme, float h, double hd, double hEff, Float3 g, bool drag)
+        {
+            PredictPhase(t, hostDeltaTime, secondOrder, scheme, h, hd, g);
+            if (drag) PredictDrag(secondOrder, scheme == TimeIntegrator.Bdf2, h, hd, hEff, g);
+            CollidePhase(h, ContactPass.StartOfSubstep);
+        }
+
+        /// <summary><see cref="SolvePhase"/> with the viscous drag folded into the solve around it when <paramref name="viscousDrag"/>. Returns true for a violent substep.</summary>
+        private bool SolveWithViscousDrag(float h, double hd, double hEff, float t, double beta, bool tensionOnly, bool exact, int iterations, bool hasCompliantPins, bool trackSolve, bool viscousDrag)
+        {
+            if (viscousDrag) FoldViscousDrag(hEff);
+            bool violent = SolvePhase(h, hd, hEff, t, beta, tensionOnly, exact, iterations, hasCompliantPins, trackSolve);
+            if (viscousDrag) UnfoldViscousDrag();
+            return violent;
+        }
+
+        /// <summary>
         /// Phase 1 of a substep (fraction t of the host step, h s; hd the same in double): collider poses, prediction under
-        /// gravity (a second-order run: the scheme's, <see cref="PredictSecondOrder"/>), rigid pins on their targets,
-        /// multipliers cleared.
+        /// gravity (a second-order run: the scheme's, <see cref="PredictSecondOrder"/>), rigid pins on their targets, the
+        /// pins' multipliers cleared and, for the Gauss–Seidel sweep, the segments' (the exact solve writes its own).
         /// </summary>
         private void PredictPhase(float t, float hostDeltaTime, bool secondOrder, TimeIntegrator scheme, float h, double hd, Float3 g)
         {
