@@ -79,7 +79,7 @@ namespace HookeRope.Lab.Commands
             var stabilityOut = OutOption();
             var stabilityQuick = new Option<bool>("--quick") { Description = "Reduced sweep for CI." };
             var stabilityQuiet = QuietOption();
-            var stabilityFull = new Option<bool>("--full") { Description = "The integrator stability grid (1 752 cases: both integrators, both tension models, with and without a collider, friction, settle, 1 km teleport); exit 1 on a failure outside the documented domain limits." };
+            var stabilityFull = new Option<bool>("--full") { Description = "The integrator stability grid (1 752 cases: both integrators, both tension models, with and without a collider, friction, settle, 1 km teleport); exit 1 on any failing case (the documented domain limits name known causes, they do not excuse a failure)." };
             var stabilityGrid = new Option<bool>("--grid") { Description = "The CI subset of the integrator grid (--full runs all of it)." };
             var stabilityMatch = new Option<string>("--match") { Description = "With --full or --grid: only the cases whose description contains this text (e.g. \"2 seg, stretch 10\"; alternatives separated by '|', one ending in '$' the whole description)." };
             var stability = new Command("stability", "Sweep of stiff and extreme cases; exit code 1 if any case fails.")
