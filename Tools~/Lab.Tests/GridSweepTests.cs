@@ -20,19 +20,12 @@ namespace HookeRope.Lab.Tests
             var cases = GridSweep.Cases(false);
             Assert.That(cases.Count, Is.EqualTo(114));
             var outcomes = GridSweep.RunAll(cases);
-            int limited = 0;
             foreach (var o in outcomes)
             {
                 Assert.That(o.Finite, Is.True, o.Case.ToString());
-                Assert.That(o.Undocumented, Is.False, o.Case + ": " + o.Reason);
-                Assert.That(o.Failed, Is.False, o.Case + ": " + o.Reason + " [" + o.Limit + "]");
-                if (o.Failed)
-                {
-                    limited++;
-                    TestContext.WriteLine($"{o.Case}: {o.Reason} [{o.Limit.Substring(0, o.Limit.IndexOf(':'))}]");
-                }
+                // a failure fails the test, under a documented limit (its known cause, named in the message) or not
+                Assert.That(o.Failed, Is.False, o.Case + ": " + o.Reason + " [" + (o.Limit ?? "undocumented") + "]");
             }
-            TestContext.WriteLine($"{limited} of {cases.Count} within documented limits");
         }
 
         [Test]
