@@ -56,17 +56,7 @@ namespace HookeRope.Tests.Core.Geometry
             sim.Rope.AddPin(0, start);
             sim.Rope.AddPin(64, end);
             for (int i = 0; i < frames; i++) sim.Step(1f / 90f);
-            return FromRope(sim.Rope);
-        }
-
-        private static RopeShape FromRope(Rope rope)
-        {
-            var shape = new RopeShape(rope.SegmentCount, 0f);
-            rope.PositionX.CopyTo(shape.X);
-            rope.PositionY.CopyTo(shape.Y);
-            rope.PositionZ.CopyTo(shape.Z);
-            rope.RestLengths.CopyTo(shape.Rest);
-            return shape;
+            return RopeShape.FromRope(sim.Rope);
         }
 
         /// <summary>A sine wave of 3 periods (amplitude 0.1 m) over 48 segments of 5 cm.</summary>
