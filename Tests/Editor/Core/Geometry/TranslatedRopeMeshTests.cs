@@ -1,7 +1,5 @@
 using System;
 using HookeRope.Geometry;
-using HookeRope.Mathematics;
-using HookeRope.Radius;
 using HookeRope.Solver;
 using HookeRope.World;
 using NUnit.Framework;
@@ -28,13 +26,8 @@ namespace HookeRope.Tests.Core.Geometry
 
         private static RopeSimulation Lanyard(float x)
         {
-            var settings = new RopeSettings { SegmentCount = Segments };
-            var start = new Float3(x, 2f, 0f);
-            var end = new Float3(x + Span, 2f, 0f);
-            var simulation = new RopeSimulation(settings, start, end, new RadiusSettings());
+            RopeSimulation simulation = GoalLanyard.Pinned(new RopeSettings { SegmentCount = Segments }, x, Span);
             simulation.MeshSettings.RadialSegments = Sides;
-            simulation.Rope.AddPin(0, start);
-            simulation.Rope.AddPin(Segments, end);
             return simulation;
         }
 
