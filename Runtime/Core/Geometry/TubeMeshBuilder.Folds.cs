@@ -222,10 +222,11 @@ namespace HookeRope.Geometry
             gap[first] = 0f;
             const float skew2 = SkewLimit * SkewLimit;
             const float margin2 = CrossingMargin * CrossingMargin;
-            Float3 c0 = ringCentres[first], t0 = ringTangents[first];
+            Float3 c1 = ringCentres[first], t1 = ringTangents[first];
             for (int k = first + 1; k <= last; k++)
             {
-                Float3 c1 = ringCentres[k], t1 = ringTangents[k];
+                Float3 c0 = c1, t0 = t1;
+                c1 = ringCentres[k]; t1 = ringTangents[k];
                 float sx = c1.X - c0.X, sy = c1.Y - c0.Y, sz = c1.Z - c0.Z;
                 float gap2 = sx * sx + sy * sy + sz * sz;
                 gap[k] = gap2;
@@ -238,12 +239,10 @@ namespace HookeRope.Geometry
                     // only where a fold tip's repair could not part them (non-finite geometry): drawn as tips
                     tips[k - 1] = true;
                     tips[k] = true;
-                    c0 = c1; t0 = t1;
                     continue;
                 }
                 float nx = t0.Y * t1.Z - t0.Z * t1.Y, ny = t0.Z * t1.X - t0.X * t1.Z, nz = t0.X * t1.Y - t0.Y * t1.X;
                 float sine2 = nx * nx + ny * ny + nz * nz;
-                c0 = c1; t0 = t1;
                 if (!(sine2 > 0f)) continue;
                 float scale = margin2 / sine2;
                 float capNext = ahead * ahead * scale, capPrevious = behind * behind * scale;

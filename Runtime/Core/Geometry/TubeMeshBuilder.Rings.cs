@@ -142,7 +142,8 @@ namespace HookeRope.Geometry
             Float3 span = c[last] - c[first];
             float px = span.X, py = span.Y, pz = span.Z;
             if (!Normalize(ref px, ref py, ref pz)) { px = 1f; py = 0f; pz = 0f; }
-            float nx = 0f, ny = 0f, nz = 0f, qx = 0f, qy = 0f, qz = 0f;
+            // (px, py, pz): ring k − 1's tangent, before the first ring the piece's direction (the last fallback)
+            float nx = 0f, ny = 0f, nz = 0f;
             bool moved = false;
             for (int k = first; k <= last; k++)
             {
@@ -166,8 +167,8 @@ namespace HookeRope.Geometry
                 }
                 if (!found) { tx = px; ty = py; tz = pz; }
                 tip[k] = false;
-                // ring k − 1's tangent is (qx, qy, qz), its centre behind
-                if (k > first && !ClearOfFold(k, behind, here, qx, qy, qz, tx, ty, tz) && RepairFold(k, ref tx, ref ty, ref tz)) moved = true;
+                // ring k − 1's tangent is (px, py, pz), its centre behind
+                if (k > first && !ClearOfFold(k, behind, here, px, py, pz, tx, ty, tz) && RepairFold(k, ref tx, ref ty, ref tz)) moved = true;
                 if (k == first)
                 {
                     Float3 seed = particleNormal[a];
@@ -177,11 +178,10 @@ namespace HookeRope.Geometry
                 }
                 else
                 {
-                    FrameTransport.Transport(ref nx, ref ny, ref nz, qx, qy, qz, tx, ty, tz);
+                    FrameTransport.Transport(ref nx, ref ny, ref nz, px, py, pz, tx, ty, tz);
                 }
                 tangent[k] = new Float3(tx, ty, tz);
                 normal[k] = new Float3(nx, ny, nz);
-                qx = tx; qy = ty; qz = tz;
                 px = tx; py = ty; pz = tz;
             }
             for (int j = a; j <= b; j++)

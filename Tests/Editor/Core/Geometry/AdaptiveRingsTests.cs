@@ -49,24 +49,9 @@ namespace HookeRope.Tests.Core.Geometry
         /// </summary>
         internal static RopeShape Lanyard(int frames = 180)
         {
-            var settings = new RopeSettings { SegmentCount = 64, Integrator = TimeIntegrator.BackwardEuler };
-            var start = new Float3(0f, 2f, 0f);
-            var end = new Float3(1.8f, 2f, 0f);
-            var sim = new RopeSimulation(settings, start, end, new RadiusSettings());
-            sim.Rope.AddPin(0, start);
-            sim.Rope.AddPin(64, end);
+            var sim = GoalLanyard.Pinned(new RopeSettings { SegmentCount = 64, Integrator = TimeIntegrator.BackwardEuler }, 0f, 1.8f);
             for (int i = 0; i < frames; i++) sim.Step(1f / 90f);
-            return FromRope(sim.Rope);
-        }
-
-        private static RopeShape FromRope(Rope rope)
-        {
-            var shape = new RopeShape(rope.SegmentCount, 0f);
-            rope.PositionX.CopyTo(shape.X);
-            rope.PositionY.CopyTo(shape.Y);
-            rope.PositionZ.CopyTo(shape.Z);
-            rope.RestLengths.CopyTo(shape.Rest);
-            return shape;
+            return RopeShape.FromRope(sim.Rope);
         }
 
         /// <summary>A sine wave of 3 periods (amplitude 0.1 m) over 48 segments of 5 cm.</summary>

@@ -179,6 +179,23 @@ namespace HookeRope.Tests.Core.Geometry
             return crossings;
         }
 
+        /// <summary>True when every one of the 12 floats of <paramref name="a"/> and <paramref name="b"/> has the same bits.</summary>
+        public static bool SameBits(in TubeVertex a, in TubeVertex b) =>
+            Bits(a.PX) == Bits(b.PX) && Bits(a.PY) == Bits(b.PY) && Bits(a.PZ) == Bits(b.PZ)
+            && Bits(a.NX) == Bits(b.NX) && Bits(a.NY) == Bits(b.NY) && Bits(a.NZ) == Bits(b.NZ)
+            && Bits(a.TX) == Bits(b.TX) && Bits(a.TY) == Bits(b.TY) && Bits(a.TZ) == Bits(b.TZ) && Bits(a.TW) == Bits(b.TW)
+            && Bits(a.U) == Bits(b.U) && Bits(a.V) == Bits(b.V);
+
+        /// <summary>Vertices among the first <paramref name="count"/> of <paramref name="a"/> and <paramref name="b"/> whose bits differ (<see cref="SameBits"/>).</summary>
+        public static int DifferingVertices(TubeVertex[] a, TubeVertex[] b, int count)
+        {
+            int differing = 0;
+            for (int k = 0; k < count; k++) if (!SameBits(a[k], b[k])) differing++;
+            return differing;
+        }
+
+        private static int Bits(float v) => BitConverter.SingleToInt32Bits(v);
+
         /// <summary>True when every float of the first <paramref name="count"/> vertices is finite and every normal and tangent is unit length within 1e-3.</summary>
         public static bool AllFiniteAndUnit(TubeVertex[] vertices, int count)
         {

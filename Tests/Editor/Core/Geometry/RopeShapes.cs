@@ -1,4 +1,5 @@
 using System;
+using HookeRope.Solver;
 
 namespace HookeRope.Tests.Core.Geometry
 {
@@ -17,6 +18,17 @@ namespace HookeRope.Tests.Core.Geometry
         }
 
         public int Segments => Rest.Length;
+
+        /// <summary>A copy of <paramref name="rope"/>'s particle positions and rest lengths.</summary>
+        public static RopeShape FromRope(Rope rope)
+        {
+            var shape = new RopeShape(rope.SegmentCount, 0f);
+            rope.PositionX.CopyTo(shape.X);
+            rope.PositionY.CopyTo(shape.Y);
+            rope.PositionZ.CopyTo(shape.Z);
+            rope.RestLengths.CopyTo(shape.Rest);
+            return shape;
+        }
 
         public static RopeShape Straight(int segments, float restLength, float stretch, float dx, float dy, float dz, float ox = 0f, float oy = 0f, float oz = 0f)
         {

@@ -1,7 +1,5 @@
 using System;
 using HookeRope.Geometry;
-using HookeRope.Mathematics;
-using HookeRope.Radius;
 using HookeRope.Solver;
 using HookeRope.World;
 using NUnit.Framework;
@@ -28,13 +26,8 @@ namespace HookeRope.Tests.Core.Geometry
 
         private static RopeSimulation Lanyard(float x)
         {
-            var settings = new RopeSettings { SegmentCount = Segments };
-            var start = new Float3(x, 2f, 0f);
-            var end = new Float3(x + Span, 2f, 0f);
-            var simulation = new RopeSimulation(settings, start, end, new RadiusSettings());
+            RopeSimulation simulation = GoalLanyard.Pinned(new RopeSettings { SegmentCount = Segments }, x, Span);
             simulation.MeshSettings.RadialSegments = Sides;
-            simulation.Rope.AddPin(0, start);
-            simulation.Rope.AddPin(Segments, end);
             return simulation;
         }
 
@@ -58,7 +51,7 @@ namespace HookeRope.Tests.Core.Geometry
                         RopeMeshSlot far = world.GetMeshSlot(r);
                         Assert.That(far.Update.VertexCount, Is.EqualTo(vertices), $"vertices at {offsets[r]} m, frame {frame}");
                         Assert.That(far.Update.IndexCount, Is.EqualTo(indices), $"indices at {offsets[r]} m, frame {frame}");
-                        Assert.That(DifferingVertices(origin.Vertices, far.Vertices, vertices), Is.EqualTo(0), $"differing vertices at {offsets[r]} m, frame {frame}");
+                        Assert.That(MeshChecks.DifferingVertices(origin.Vertices, far.Vertices, vertices), Is.EqualTo(0), $"differing vertices at {offsets[r]} m, frame {frame}");
                         Assert.That(DifferingIndices(origin.Indices, far.Indices, indices), Is.EqualTo(0), $"differing indices at {offsets[r]} m, frame {frame}");
                     }
                 }
@@ -82,12 +75,7 @@ namespace HookeRope.Tests.Core.Geometry
             foreach (int until in new[] { 30, 60, 120, 200 })
             {
                 while (frame < until) { simulation.Step(1f / 90f); frame++; }
-                Rope rope = simulation.Rope;
-                var shape = new RopeShape(Segments, 0f);
-                rope.PositionX.CopyTo(shape.X);
-                rope.PositionY.CopyTo(shape.Y);
-                rope.PositionZ.CopyTo(shape.Z);
-                rope.RestLengths.CopyTo(shape.Rest);
+                RopeShape shape = RopeShape.FromRope(simulation.Rope);
                 var shifted = new RopeShape(Segments, 0f);
                 for (int i = 0; i <= Segments; i++) { shifted.X[i] = shape.X[i] + offset; shifted.Y[i] = shape.Y[i]; shifted.Z[i] = shape.Z[i]; }
                 Array.Copy(shape.Rest, shifted.Rest, Segments);
@@ -127,21 +115,6 @@ namespace HookeRope.Tests.Core.Geometry
             for (int j = 0; j < Segments; j++)
                 if (a.RingsIn(j) != b.RingsIn(j)) return false;
             return true;
-        }
-
-        private static int DifferingVertices(TubeVertex[] a, TubeVertex[] b, int count)
-        {
-            int differing = 0;
-            for (int k = 0; k < count; k++)
-            {
-                TubeVertex p = a[k], q = b[k];
-                if (Bits(p.PX) != Bits(q.PX) || Bits(p.PY) != Bits(q.PY) || Bits(p.PZ) != Bits(q.PZ)
-                    || Bits(p.NX) != Bits(q.NX) || Bits(p.NY) != Bits(q.NY) || Bits(p.NZ) != Bits(q.NZ)
-                    || Bits(p.TX) != Bits(q.TX) || Bits(p.TY) != Bits(q.TY) || Bits(p.TZ) != Bits(q.TZ) || Bits(p.TW) != Bits(q.TW)
-                    || Bits(p.U) != Bits(q.U) || Bits(p.V) != Bits(q.V))
-                    differing++;
-            }
-            return differing;
         }
 
         private static int DifferingIndices(int[] a, int[] b, int count)

@@ -110,9 +110,7 @@ namespace HookeRope.Tests.Core.Geometry
                 Assert.That(a.IndexCount, Is.EqualTo(b.IndexCount));
                 Assert.That(Bits(a.BoundsMin), Is.EqualTo(Bits(b.BoundsMin)), "bounds of build " + f);
                 Assert.That(Bits(a.BoundsMax), Is.EqualTo(Bits(b.BoundsMax)));
-                int differing = 0;
-                for (int v = 0; v < a.VertexCount; v++)
-                    if (!SameBits(vertices[v], referenceVertices[v])) differing++;
+                int differing = MeshChecks.DifferingVertices(vertices, referenceVertices, a.VertexCount);
                 Assert.That(differing, Is.EqualTo(0), "vertices differing from the full rebuild at build " + f + " (" + frame.Expected + ")");
                 for (int k = 0; k < a.IndexCount; k++)
                     if (indices[k] != referenceIndices[k]) Assert.Fail("index " + k + " differs at build " + f);
@@ -127,15 +125,6 @@ namespace HookeRope.Tests.Core.Geometry
             int n = layout.SegmentCount;
             for (int k = 0; k < radii.Length; k++) radii[k] = Radius(profile, (layout.RingSegments[k] + layout.RingFractions[k]) / n);
             return builder.BuildWithRingRadii(shape.X, shape.Y, shape.Z, shape.Rest, radii, broken, vertices, indices);
-        }
-
-        private static bool SameBits(TubeVertex a, TubeVertex b)
-        {
-            float[] x = { a.PX, a.PY, a.PZ, a.NX, a.NY, a.NZ, a.TX, a.TY, a.TZ, a.TW, a.U, a.V };
-            float[] y = { b.PX, b.PY, b.PZ, b.NX, b.NY, b.NZ, b.TX, b.TY, b.TZ, b.TW, b.U, b.V };
-            for (int i = 0; i < x.Length; i++)
-                if (BitConverter.SingleToInt32Bits(x[i]) != BitConverter.SingleToInt32Bits(y[i])) return false;
-            return true;
         }
 
         private static (int, int, int) Bits(Float3 v) =>
@@ -240,7 +229,7 @@ namespace HookeRope.Tests.Core.Geometry
                 TubeMeshUpdate ua = a.FillMesh(va, ia), ub = b.FillMesh(vb, ib);
                 Assert.That(ua.VertexCount, Is.EqualTo(ub.VertexCount));
                 for (int v = 0; v < ua.VertexCount; v++)
-                    Assert.That(SameBits(va[v], vb[v]), Is.True, "vertex " + v + " at frame " + frame);
+                    Assert.That(MeshChecks.SameBits(va[v], vb[v]), Is.True, "vertex " + v + " at frame " + frame);
             }
         }
     }
