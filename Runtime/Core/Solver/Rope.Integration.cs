@@ -185,10 +185,10 @@ namespace HookeRope.Solver
             Span<double> sx = ChainState.Exactly(chain.SolveDX, n), sy = ChainState.Exactly(chain.SolveDY, n), sz = ChainState.Exactly(chain.SolveDZ, n);
             if (start)
             {
-                // sign −1 at the substep's first mark: StartMark's arithmetic
+                // the substep's first mark (sign −1)
                 for (int i = 0; i < n; i++)
                 {
-                    sx[i] = 0.0 + sign * ((double)dx[i] + lx[i]); sy[i] = 0.0 + sign * ((double)dy[i] + ly[i]); sz[i] = 0.0 + sign * ((double)dz[i] + lz[i]);
+                    sx[i] = StartMark(dx[i], lx[i]); sy[i] = StartMark(dy[i], ly[i]); sz[i] = StartMark(dz[i], lz[i]);
                 }
                 return;
             }

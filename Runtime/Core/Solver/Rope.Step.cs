@@ -60,7 +60,9 @@ namespace HookeRope.Solver
                 // nothing moves a particle between the prediction and the solve but the rigid pins: the prediction (and the
                 // pins) write the solve's start mark, and the last iteration leaves its end mark to the velocity pass
                 solveMarksFused = secondOrder && !drag && !hasColliders;
-                PredictAndCollide(t, hostDeltaTime, secondOrder, scheme, h, hd, hEff, g, drag);
+                // the colliders' poses of this substep (a backward-Euler re-run below keeps them)
+                if (hasColliders) colliders.PrepareSubstep(t, hostDeltaTime);
+                PredictAndCollide(t, secondOrder, scheme, h, hd, hEff, g, drag);
                 bool impact = scheme == TimeIntegrator.Bdf2 && hasColliders && NewImpact();
                 int unconvergedBefore = reportUnconverged;
                 bool violentSolve = SolveWithViscousDrag(h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder, viscousDrag);
@@ -70,7 +72,7 @@ namespace HookeRope.Solver
                     // its start (x_n and v_n are not written before the velocities; see NewImpact); the report counts both solves
                     scheme = TimeIntegrator.BackwardEuler;
                     hEff = BeginSubstep(scheme, hd);
-                    PredictAndCollide(t, hostDeltaTime, secondOrder, scheme, h, hd, hEff, g, drag);
+                    PredictAndCollide(t, secondOrder, scheme, h, hd, hEff, g, drag);
                     violentSolve = SolveWithViscousDrag(h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder, viscousDrag);
                 }
                 if (secondOrder) UpdateVelocitiesSecondOrder(scheme, hd, violentSolve || Violent(), hasColliders);
@@ -118,9 +120,9 @@ namespace HookeRope.Solver
         /// with the drag's when <paramref name="drag"/>), then the collision pass that pushes it out of the colliders and finds
         /// the contacts the chain solve folds in.
         /// </summary>
-        private void PredictAndCollide(float t, float hostDeltaTime, bool secondOrder, TimeIntegrator scheme, float h, double hd, double hEff, Float3 g, bool drag)
+        private void PredictAndCollide(float t, bool secondOrder, TimeIntegrator scheme, float h, double hd, double hEff, Float3 g, bool drag)
         {
-            PredictPhase(t, hostDeltaTime, secondOrder, scheme, h, hd, g);
+            PredictPhase(t, secondOrder, scheme, h, hd, g);
             if (drag) PredictDrag(secondOrder, scheme == TimeIntegrator.Bdf2, h, hd, hEff, g);
             CollidePhase(h, ContactPass.StartOfSubstep);
         }
@@ -135,14 +137,13 @@ namespace HookeRope.Solver
         }
 
         /// <summary>
-        /// Phase 1 of a substep (fraction t of the host step, h s; hd the same in double): collider poses, prediction under
+        /// Phase 1 of a substep (fraction t of the host step, h s; hd the same in double; the colliders' poses are set before it): prediction under
         /// gravity (a second-order run: the scheme's, <see cref="PredictSecondOrder"/>), rigid pins on their targets, the
         /// pins' multipliers cleared and, for the Gauss–Seidel sweep, the segments' (the exact solve writes its own).
         /// </summary>
-        private void PredictPhase(float t, float hostDeltaTime, bool secondOrder, TimeIntegrator scheme, float h, double hd, Float3 g)
+        private void PredictPhase(float t, bool secondOrder, TimeIntegrator scheme, float h, double hd, Float3 g)
         {
             // solveMarksFused: the prediction writes the first iteration's start mark of the solve displacement Δ (BDF2)
-            if (colliders.Count > 0) colliders.PrepareSubstep(t, hostDeltaTime);
             // the largest coordinate (ChainState.Size) is the exact solve's round-off floor: the Gauss–Seidel sweep skips it
             if (settings.Solver == ConstraintSolverKind.ExactChain)
             {

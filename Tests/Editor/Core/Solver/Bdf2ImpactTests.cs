@@ -29,11 +29,10 @@ namespace HookeRope.Tests.Solver
             settings.DragCoefficient = 0f;
             settings.Tension = tension;
             settings.Integrator = integrator;
-            var rope = new Rope(settings, Float3.Zero, new Float3(0.5f * Length, -0.8660254f * Length, 0f));
-            rope.AddPin(0, Float3.Zero);
+            Rope rope = RopeTestKit.ReleasedAt30Degrees(settings);
             float particle = settings.LinearDensity * Length / Segments;
             rope.AddLoad(rope.ParticleCount - 1, particle * 1e3f);
-            rope.AddCollider(ColliderShape.Sphere(new Float3(0f, -0.6f * Length, 0f), 0.1f * Length, 0f));
+            RopeTestKit.AddGridSphere(rope, 0f);
             return rope;
         }
 
@@ -41,16 +40,14 @@ namespace HookeRope.Tests.Solver
         static void Run(TimeIntegrator integrator, TensionModel tension, out double gain, out double lost, out long unconverged)
         {
             Rope rope = SwingIntoSphere(integrator, tension);
-            rope.ElasticEnergyBounds(out _, out double upper);
-            double start = rope.KineticEnergy() + rope.GravitationalEnergy() + upper, now = start;
+            double start = RopeTestKit.TotalEnergy(rope, upper: true), now = start;
             gain = double.MinValue;
             unconverged = 0;
             for (int k = 0; k < HostSteps; k++)
             {
                 unconverged += rope.Step(HostStep).UnconvergedSubsteps;
                 Assert.That(RopeTestKit.AllFinite(rope), Is.True);
-                rope.ElasticEnergyBounds(out double lower, out _);
-                now = rope.KineticEnergy() + rope.GravitationalEnergy() + lower;
+                now = RopeTestKit.TotalEnergy(rope, upper: false);
                 gain = Math.Max(gain, now - start);
             }
             lost = start - now;

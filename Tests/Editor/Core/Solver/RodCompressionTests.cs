@@ -32,12 +32,6 @@ namespace HookeRope.Tests.Solver
             return rope;
         }
 
-        private static double Total(Rope rope, bool upper)
-        {
-            rope.ElasticEnergyBounds(out double lower, out double higher);
-            return rope.KineticEnergy() + rope.GravitationalEnergy() + (upper ? higher : lower);
-        }
-
         /// <summary>
         /// Runs the rope for <paramref name="steps"/> host steps (a drag rate k &gt; 0 multiplies every free particle's
         /// velocity by e^{−kΔt} after each, as the grid's settle cases do); returns the largest excess of the total energy
@@ -45,7 +39,7 @@ namespace HookeRope.Tests.Solver
         /// </summary>
         private static double LargestExcess(Rope rope, int steps, double drag, out double gain, out double largestPush)
         {
-            double ceiling = Total(rope, upper: true), allowance = 0.0, excess = double.NegativeInfinity;
+            double ceiling = RopeTestKit.TotalEnergy(rope, upper: true), allowance = 0.0, excess = double.NegativeInfinity;
             float decay = (float)Math.Exp(-drag * RopeTestKit.HostStep);
             gain = double.NegativeInfinity;
             largestPush = 0.0;
@@ -74,7 +68,7 @@ namespace HookeRope.Tests.Solver
             // 0.58 s, ½C²/α = 0.25 J of elastic energy the motion never had (0.197 J above the energy put in).
             Rope rope = GridRod(2e11f, 16, 1f, 1f, TimeIntegrator.BackwardEuler, 0.05f);
             double alpha = 1.0 / 16 / rope.Settings.AxialStiffness, worst = 0.0;
-            double ceiling = Total(rope, upper: true);
+            double ceiling = RopeTestKit.TotalEnergy(rope, upper: true);
             float decay = (float)Math.Exp(-Math.Sqrt(9.81) * RopeTestKit.HostStep);
             for (int s = 0; s < 135; s++)
             {
@@ -87,7 +81,7 @@ namespace HookeRope.Tests.Solver
                     worst = Math.Max(worst, Math.Abs(l - 1.0 / 16 - alpha * rope.Tensions[j]));
                 }
             }
-            double final = Total(rope, upper: false);
+            double final = RopeTestKit.TotalEnergy(rope, upper: false);
             TestContext.WriteLine($"largest |l − L − αT| {worst:G3} m over 1.5 s; total energy {final - ceiling:G4} J from the energy put in");
             Assert.That(worst, Is.LessThan(2e-6), "no segment drifts from the length its force implies");
             Assert.That(final, Is.LessThan(ceiling), "the damped rod only loses energy");
@@ -125,7 +119,7 @@ namespace HookeRope.Tests.Solver
             double omega = Math.Sqrt(k / (1.0 + ropeMass / 3.0)), period = 2.0 * Math.PI / omega;
             // the energy is known within the elastic bounds (|F|·ε per segment each way, ε = 8 ulps of 1 m): a gain compares
             // the lower bound now with the upper one at the start, a loss the upper bound now with the lower one at the start
-            double start = Total(rope, upper: true), startLower = Total(rope, upper: false);
+            double start = RopeTestKit.TotalEnergy(rope, upper: true), startLower = RopeTestKit.TotalEnergy(rope, upper: false);
             double lowest = double.PositiveInfinity, highest = double.NegativeInfinity;
             double previous = rope.GetPosition(end).X - 1.0, firstCrossing = -1.0, lastCrossing = -1.0, maxStretch = 0.0;
             int crossings = 0, steps = (int)Math.Ceiling(4.0 / RopeTestKit.HostStep);
@@ -143,8 +137,8 @@ namespace HookeRope.Tests.Solver
                     crossings++;
                 }
                 previous = x;
-                lowest = Math.Min(lowest, Total(rope, upper: true));
-                highest = Math.Max(highest, Total(rope, upper: false));
+                lowest = Math.Min(lowest, RopeTestKit.TotalEnergy(rope, upper: true));
+                highest = Math.Max(highest, RopeTestKit.TotalEnergy(rope, upper: false));
             }
             double measured = (lastCrossing - firstCrossing) / (crossings - 1);
             // BDF2's energy loss for ẍ = −ω²x is (ωh)⁴ per substep to leading order (|ρ|² = 1 − (ωh)⁴ + …): 4 s × 720/s

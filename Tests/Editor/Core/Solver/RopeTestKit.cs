@@ -61,6 +61,22 @@ namespace HookeRope.Tests.Solver
             return rope;
         }
 
+        /// <summary>
+        /// The stability grid's sphere for a 1 m rope of <see cref="ReleasedAt30Degrees"/> to swing onto: R 0.1 m, centred
+        /// 0.6 m below the pin, friction coefficient <paramref name="friction"/>.
+        /// </summary>
+        public static void AddGridSphere(Rope rope, float friction) => rope.AddCollider(ColliderShape.Sphere(new Float3(0f, -0.6f, 0f), 0.1f, friction));
+
+        /// <summary>
+        /// Kinetic + gravitational + the least (or, <paramref name="upper"/>, the most) elastic energy any state within
+        /// float32 round-off of the rope's stores (<see cref="Rope.ElasticEnergyBounds"/>), J.
+        /// </summary>
+        public static double TotalEnergy(Rope rope, bool upper)
+        {
+            rope.ElasticEnergyBounds(out double lower, out double higher);
+            return rope.KineticEnergy() + rope.GravitationalEnergy() + (upper ? higher : lower);
+        }
+
         /// <summary>Segment angles (rad) from the downward vertical after 1 s (45 host steps of 1/45 s) of <see cref="ReleasedAt30Degrees"/>.</summary>
         public static double[] AnglesAfterOneSecond(RopeSettings settings)
         {

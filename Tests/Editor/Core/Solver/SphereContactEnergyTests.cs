@@ -21,9 +21,8 @@ namespace HookeRope.Tests.Solver
         {
             var settings = RopeTestKit.Legacy(length: Length, segments: Segments, radius: Radius, youngsModulus: 2e11f, damping: damping);
             settings.Integrator = integrator;
-            var rope = new Rope(settings, Float3.Zero, new Float3(0.5f * Length, -0.8660254f * Length, 0f));
-            rope.AddPin(0, Float3.Zero);
-            rope.AddCollider(ColliderShape.Sphere(new Float3(0f, -0.6f * Length, 0f), SphereRadius * Length, 0f));
+            Rope rope = RopeTestKit.ReleasedAt30Degrees(settings);
+            RopeTestKit.AddGridSphere(rope, 0f);
             return rope;
         }
 
@@ -82,12 +81,10 @@ namespace HookeRope.Tests.Solver
             var settings = RopeTestKit.Legacy(length: Length, segments: Segments, radius: Radius, youngsModulus: 2e11f);
             settings.Integrator = integrator;
             settings.Tension = TensionModel.TensionOnly;
-            var rope = new Rope(settings, Float3.Zero, new Float3(0.5f * Length, -0.8660254f * Length, 0f));
-            rope.AddPin(0, Float3.Zero);
+            Rope rope = RopeTestKit.ReleasedAt30Degrees(settings);
             rope.AddLoad(rope.ParticleCount - 1, settings.LinearDensity * Length / Segments);
-            rope.AddCollider(ColliderShape.Sphere(new Float3(0f, -0.6f * Length, 0f), SphereRadius * Length, friction));
-            rope.ElasticEnergyBounds(out _, out double upperStart);
-            double start = rope.KineticEnergy() + rope.GravitationalEnergy() + upperStart, gain = double.MinValue, excess = double.MinValue;
+            RopeTestKit.AddGridSphere(rope, friction);
+            double start = RopeTestKit.TotalEnergy(rope, upper: true), gain = double.MinValue, excess = double.MinValue;
             for (int k = 0; k < 90; k++)
             {
                 rope.Step(1f / 90f);

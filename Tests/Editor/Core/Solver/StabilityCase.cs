@@ -79,7 +79,7 @@ namespace HookeRope.Tests.Solver
             Rope rope = Build();
             int steps = (int)Math.Ceiling(seconds / HostDeltaTime);
             int teleportStep = TeleportDistance != 0f ? (int)Math.Ceiling(1.0 / HostDeltaTime) : -1;
-            var result = new StabilityResult { Finite = true, InitialEnergy = Energy(rope, upper: true), StaticElongation = StaticElongation(rope) };
+            var result = new StabilityResult { Finite = true, InitialEnergy = RopeTestKit.TotalEnergy(rope, upper: true), StaticElongation = StaticElongation(rope) };
             double ceiling = result.InitialEnergy;
             for (int s = 0; s < steps; s++)
             {
@@ -88,8 +88,8 @@ namespace HookeRope.Tests.Solver
                 // the total energy (kinetic + gravitational + elastic) against the work put in (the initial total, or the
                 // total right after the teleport); the elastic part is the least any state within float32 round-off of this
                 // one stores (now) and the most (the ceiling), so stiff segments' position round-off is not read as a gain
-                double energy = Energy(rope, upper: false);
-                if (s == teleportStep) ceiling = Math.Max(ceiling, Energy(rope, upper: true));
+                double energy = RopeTestKit.TotalEnergy(rope, upper: false);
+                if (s == teleportStep) ceiling = Math.Max(ceiling, RopeTestKit.TotalEnergy(rope, upper: true));
                 result.LargestEnergyGain = Math.Max(result.LargestEnergyGain, energy - ceiling);
                 result.LargestKineticEnergy = Math.Max(result.LargestKineticEnergy, rope.KineticEnergy());
                 result.FinalResidual = report.Residual;
@@ -104,13 +104,6 @@ namespace HookeRope.Tests.Solver
                 result.FarthestFromAnchor = Math.Max(result.FarthestFromAnchor, (rope.GetPosition(i) - anchor).Length);
             result.TopTension = rope.Tensions[0];
             return result;
-        }
-
-        /// <summary>Kinetic + gravitational + the lower (or upper) bound of the elastic energy within round-off, J.</summary>
-        private static double Energy(Rope rope, bool upper)
-        {
-            rope.ElasticEnergyBounds(out double lower, out double higher);
-            return rope.KineticEnergy() + rope.GravitationalEnergy() + (upper ? higher : lower);
         }
 
         /// <summary>Static elongation (M + m_rope/2)·g·L/(E·A) in metres of the built rope under its load.</summary>
