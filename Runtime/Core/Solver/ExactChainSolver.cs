@@ -99,9 +99,9 @@ namespace HookeRope.Solver
             // and whose shortened step shortens the contacts' impulses and friction with it (ChainContacts.Shorten)
             if (violent)
             {
-                double step = ChainLineSearch.Backtrack(c, tensionOnly);
+                double step = ChainLineSearch.Backtrack(c, tensionOnly, out bool friction);
                 shortened = step < 1.0;
-                if (shortened) ChainLineSearch.Shorten(c, step);
+                if (shortened) ChainLineSearch.Shorten(c, step, friction);
                 unconverged = true;
             }
             bool branches = c.Plasticity != null && c.Plasticity.UpdateBranches(c, invH2);
