@@ -266,7 +266,8 @@ namespace HookeRope.Solver
             {
                 SegmentForceSystem.Solve(c, from);
                 if ((!tensionOnly && !contacts) || pass >= MaxFrictionPasses || (pass >= MaxPasses && !frictionMoving)) return;
-                from = c.SegmentCount;
+                // from: the tension-only pass's first changed row, 0 once the contacts may have changed (without tensionOnly
+                // there are contacts, so every path past the return above sets it)
                 bool changed = tensionOnly && UpdateTensionOnlySet(c, out from);
                 if (contacts)
                 {
