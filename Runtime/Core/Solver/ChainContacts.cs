@@ -168,6 +168,7 @@ namespace HookeRope.Solver
         }
 
         /// <summary>Particle i's motion (m) under this solution: W_i·pull, plus the displacement its contact prescribes when it is in the contact set.</summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         public static void Motion(ChainState c, int i, out double mx, out double my, out double mz)
         {
             SegmentForceSystem.Motion(c, i, out mx, out my, out mz);

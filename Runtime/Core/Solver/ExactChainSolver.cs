@@ -322,18 +322,9 @@ namespace HookeRope.Solver
         /// <summary>Stretch (m) segment j would have after this solution: n·(R + its ends' relative motion).</summary>
         private static double StretchAfter(ChainState c, int j, double nx, double ny, double nz)
         {
-            double ax, ay, az, bx, by, bz;
-            if (c.ContactCount == 0)
-            {
-                // no contact: the motion is W_i (pull) alone (ChainContacts.Motion adds nothing), inlined
-                SegmentForceSystem.Motion(c, j, out ax, out ay, out az);
-                SegmentForceSystem.Motion(c, j + 1, out bx, out by, out bz);
-            }
-            else
-            {
-                ChainContacts.Motion(c, j, out ax, out ay, out az);
-                ChainContacts.Motion(c, j + 1, out bx, out by, out bz);
-            }
+            // inlined, with its no-contact return (the motion is W_i·pull alone)
+            ChainContacts.Motion(c, j, out double ax, out double ay, out double az);
+            ChainContacts.Motion(c, j + 1, out double bx, out double by, out double bz);
             return nx * (c.ResidualX[j] + bx - ax) + ny * (c.ResidualY[j] + by - ay) + nz * (c.ResidualZ[j] + bz - az);
         }
 
