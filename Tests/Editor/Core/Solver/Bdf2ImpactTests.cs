@@ -29,8 +29,7 @@ namespace HookeRope.Tests.Solver
             settings.DragCoefficient = 0f;
             settings.Tension = tension;
             settings.Integrator = integrator;
-            var rope = new Rope(settings, Float3.Zero, new Float3(0.5f * Length, -0.8660254f * Length, 0f));
-            rope.AddPin(0, Float3.Zero);
+            var rope = RopeTestKit.ReleasedAt30Degrees(settings);
             float particle = settings.LinearDensity * Length / Segments;
             rope.AddLoad(rope.ParticleCount - 1, particle * 1e3f);
             rope.AddCollider(ColliderShape.Sphere(new Float3(0f, -0.6f * Length, 0f), 0.1f * Length, 0f));

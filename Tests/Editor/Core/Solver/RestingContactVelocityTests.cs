@@ -56,8 +56,7 @@ namespace HookeRope.Tests.Solver
             // β 0.05 s and the grid's drag (every velocity × exp(−k·Δt) after each step, k = √(g/ℓ)) for 25/k s
             var settings = RopeTestKit.Legacy(length: 1f, segments: 2, youngsModulus: youngsModulus, damping: 0.05f);
             settings.Integrator = TimeIntegrator.Bdf2;
-            var rope = new Rope(settings, Float3.Zero, new Float3(0.5f, -0.8660254f, 0f));
-            rope.AddPin(0, Float3.Zero);
+            var rope = RopeTestKit.ReleasedAt30Degrees(settings);
             rope.AddLoad(2, settings.LinearDensity * 0.5f);
             rope.AddCollider(ColliderShape.Sphere(new Float3(0f, -0.6f, 0f), 0.1f, 0f));
             double area = Math.PI * 0.005 * 0.005, mass = 1140.0 * area, load = mass / 2.0;

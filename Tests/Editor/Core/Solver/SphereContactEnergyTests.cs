@@ -21,8 +21,7 @@ namespace HookeRope.Tests.Solver
         {
             var settings = RopeTestKit.Legacy(length: Length, segments: Segments, radius: Radius, youngsModulus: 2e11f, damping: damping);
             settings.Integrator = integrator;
-            var rope = new Rope(settings, Float3.Zero, new Float3(0.5f * Length, -0.8660254f * Length, 0f));
-            rope.AddPin(0, Float3.Zero);
+            var rope = RopeTestKit.ReleasedAt30Degrees(settings);
             rope.AddCollider(ColliderShape.Sphere(new Float3(0f, -0.6f * Length, 0f), SphereRadius * Length, 0f));
             return rope;
         }
@@ -82,8 +81,7 @@ namespace HookeRope.Tests.Solver
             var settings = RopeTestKit.Legacy(length: Length, segments: Segments, radius: Radius, youngsModulus: 2e11f);
             settings.Integrator = integrator;
             settings.Tension = TensionModel.TensionOnly;
-            var rope = new Rope(settings, Float3.Zero, new Float3(0.5f * Length, -0.8660254f * Length, 0f));
-            rope.AddPin(0, Float3.Zero);
+            var rope = RopeTestKit.ReleasedAt30Degrees(settings);
             rope.AddLoad(rope.ParticleCount - 1, settings.LinearDensity * Length / Segments);
             rope.AddCollider(ColliderShape.Sphere(new Float3(0f, -0.6f * Length, 0f), SphereRadius * Length, friction));
             rope.ElasticEnergyBounds(out _, out double upperStart);
