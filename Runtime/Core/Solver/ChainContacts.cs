@@ -124,10 +124,17 @@ namespace HookeRope.Solver
         /// <summary>The friction impulse (N·s²) contact i has applied so far in the substep, in its current tangent plane.</summary>
         private static void Friction(ChainState c, int i, out double fx, out double fy, out double fz)
         {
-            double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
             fx = c.ContactFrictionX[i]; fy = c.ContactFrictionY[i]; fz = c.ContactFrictionZ[i];
-            double along = fx * nx + fy * ny + fz * nz;
-            fx -= along * nx; fy -= along * ny; fz -= along * nz;
+            Tangential(c, i, ref fx, ref fy, ref fz);
+        }
+
+        /// <summary>Takes out of (x, y, z) its part along contact i's normal c: v − (v·c)c, the part in its tangent plane.</summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static void Tangential(ChainState c, int i, ref double x, ref double y, ref double z)
+        {
+            double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
+            double along = x * nx + y * ny + z * nz;
+            x -= along * nx; y -= along * ny; z -= along * nz;
         }
 
         /// <summary>
@@ -137,11 +144,8 @@ namespace HookeRope.Solver
         /// </summary>
         private static void Slip(ChainState c, int i, out double sx, out double sy, out double sz)
         {
-            double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
-            double qx = c.ContactSurfaceX[i], qy = c.ContactSurfaceY[i], qz = c.ContactSurfaceZ[i];
-            double rx = c.DX[i] - qx, ry = c.DY[i] - qy, rz = c.DZ[i] - qz;
-            double along = rx * nx + ry * ny + rz * nz;
-            sx = rx - along * nx; sy = ry - along * ny; sz = rz - along * nz;
+            sx = c.DX[i] - (double)c.ContactSurfaceX[i]; sy = c.DY[i] - (double)c.ContactSurfaceY[i]; sz = c.DZ[i] - (double)c.ContactSurfaceZ[i];
+            Tangential(c, i, ref sx, ref sy, ref sz);
         }
 
         /// <summary>The slip (m) contact i makes under this solution: the one so far plus the motion's part along the surface.</summary>
@@ -168,6 +172,7 @@ namespace HookeRope.Solver
         }
 
         /// <summary>Particle i's motion (m) under this solution: W_i·pull, plus the displacement its contact prescribes when it is in the contact set.</summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         public static void Motion(ChainState c, int i, out double mx, out double my, out double mz)
         {
             SegmentForceSystem.Motion(c, i, out mx, out my, out mz);
@@ -472,10 +477,8 @@ namespace HookeRope.Solver
                 int i = c.ContactList[k];
                 if (!c.ContactActive[i] || c.ContactStaticFriction[i] == 0f) continue;
                 double zeta = Damping(c, i);
-                double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
-                double mx = c.MotionX[i], my = c.MotionY[i], mz = c.MotionZ[i];
-                double mn = mx * nx + my * ny + mz * nz;
-                double tx = mx - mn * nx, ty = my - mn * ny, tz = mz - mn * nz;
+                double tx = c.MotionX[i], ty = c.MotionY[i], tz = c.MotionZ[i];
+                Tangential(c, i, ref tx, ref ty, ref tz);
                 // the slip before the iteration: the slip now less the iteration's tangential motion
                 Slip(c, i, out double sx, out double sy, out double sz);
                 sx -= tx; sy -= ty; sz -= tz;
@@ -503,9 +506,7 @@ namespace HookeRope.Solver
         {
             RecordedIterationImpulse(c, i, out double ix, out double iy, out double iz);
             gx = c.ContactImpulseX[i] - ix; gy = c.ContactImpulseY[i] - iy; gz = c.ContactImpulseZ[i] - iz;
-            double nx = c.ContactNX[i], ny = c.ContactNY[i], nz = c.ContactNZ[i];
-            double along = gx * nx + gy * ny + gz * nz;
-            gx -= along * nx; gy -= along * ny; gz -= along * nz;
+            Tangential(c, i, ref gx, ref gy, ref gz);
         }
 
         /// <summary>Contact i's impulse of this iteration (N·s²) from its recorded motion and this iteration's pull (what <see cref="Finish"/> added).</summary>

@@ -20,11 +20,15 @@ namespace HookeRope.Solver
         /// <summary>Armijo constant: the accepted step decreases Φ by at least this fraction of the linear prediction.</summary>
         public const double Sufficient = 1e-4;
 
-        /// <summary>The step s ∈ (0, 1] along the iteration's motion (1: the full Newton step).</summary>
-        public static double Backtrack(ChainState c, bool tensionOnly)
+        /// <summary>
+        /// The step s ∈ (0, 1] along the iteration's motion (1: the full Newton step). <paramref name="friction"/>: some contact
+        /// of the solve is held with friction (<see cref="ChainContacts.FrictionInSolve"/>), for <see cref="Shorten"/>.
+        /// </summary>
+        public static double Backtrack(ChainState c, bool tensionOnly, out bool friction)
         {
+            friction = false;
             if (c.RigidInSolve) return 1.0;
-            bool friction = c.ContactCount > 0 && ChainContacts.FrictionInSolve(c);
+            friction = c.ContactCount > 0 && ChainContacts.FrictionInSolve(c);
             double slope = Slope(c, tensionOnly, friction);
             if (!(slope < 0.0))
             {
@@ -44,12 +48,14 @@ namespace HookeRope.Solver
             return s;
         }
 
-        /// <summary>Takes back (1 − s) of the iteration: positions, accumulated forces, multipliers.</summary>
-        public static void Shorten(ChainState c, double s)
+        /// <summary>
+        /// Takes back (1 − s) of the iteration: positions, accumulated forces, multipliers; with <paramref name="friction"/>
+        /// (<see cref="Backtrack"/>'s) the contacts' impulses and friction too.
+        /// </summary>
+        public static void Shorten(ChainState c, double s, bool friction)
         {
             double back = 1.0 - s;
             int n = c.ParticleCount;
-            bool friction = c.ContactCount > 0 && ChainContacts.FrictionInSolve(c);
             if (friction) ChainContacts.Shorten(c, s);
             for (int i = 0; i < n; i++)
             {

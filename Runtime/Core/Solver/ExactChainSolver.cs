@@ -99,9 +99,9 @@ namespace HookeRope.Solver
             // and whose shortened step shortens the contacts' impulses and friction with it (ChainContacts.Shorten)
             if (violent)
             {
-                double step = ChainLineSearch.Backtrack(c, tensionOnly);
+                double step = ChainLineSearch.Backtrack(c, tensionOnly, out bool friction);
                 shortened = step < 1.0;
-                if (shortened) ChainLineSearch.Shorten(c, step);
+                if (shortened) ChainLineSearch.Shorten(c, step, friction);
                 unconverged = true;
             }
             bool branches = c.Plasticity != null && c.Plasticity.UpdateBranches(c, invH2);
@@ -266,7 +266,8 @@ namespace HookeRope.Solver
             {
                 SegmentForceSystem.Solve(c, from);
                 if ((!tensionOnly && !contacts) || pass >= MaxFrictionPasses || (pass >= MaxPasses && !frictionMoving)) return;
-                from = c.SegmentCount;
+                // from: the tension-only pass's first changed row, 0 once the contacts may have changed (without tensionOnly
+                // there are contacts, so every path past the return above sets it)
                 bool changed = tensionOnly && UpdateTensionOnlySet(c, out from);
                 if (contacts)
                 {
@@ -321,18 +322,9 @@ namespace HookeRope.Solver
         /// <summary>Stretch (m) segment j would have after this solution: n·(R + its ends' relative motion).</summary>
         private static double StretchAfter(ChainState c, int j, double nx, double ny, double nz)
         {
-            double ax, ay, az, bx, by, bz;
-            if (c.ContactCount == 0)
-            {
-                // no contact: the motion is W_i (pull) alone (ChainContacts.Motion adds nothing), inlined
-                SegmentForceSystem.Motion(c, j, out ax, out ay, out az);
-                SegmentForceSystem.Motion(c, j + 1, out bx, out by, out bz);
-            }
-            else
-            {
-                ChainContacts.Motion(c, j, out ax, out ay, out az);
-                ChainContacts.Motion(c, j + 1, out bx, out by, out bz);
-            }
+            // inlined, with its no-contact return (the motion is W_i·pull alone)
+            ChainContacts.Motion(c, j, out double ax, out double ay, out double az);
+            ChainContacts.Motion(c, j + 1, out double bx, out double by, out double bz);
             return nx * (c.ResidualX[j] + bx - ax) + ny * (c.ResidualY[j] + by - ay) + nz * (c.ResidualZ[j] + bz - az);
         }
 
