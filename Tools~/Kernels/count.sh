@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Instructions per simulated second of one kernel scene, native code (NativeAOT) under callgrind.
 #   bash "Tools~/Kernels/count.sh" SCENE [SHORT LONG] [--annotate]
+# KERNELS_ISA=x86-64-v3 publishes for AVX2 (Vector<double> of 4 lanes, as the JIT uses on these machines); unset, the
+# NativeAOT default (x86-64-v2: 128-bit vectors), which every count recorded before 2026-12-02 used.
 # Publishes the probe ahead-of-time (once per call), strips its DWARF (valgrind cannot read the DWARF 5 the AOT
 # toolchain writes), runs `run SCENE SHORT` and `run SCENE LONG` under callgrind and prints
 # (Ir_long − Ir_short) · 90 / (LONG − SHORT): start-up and scene building cancel; for the 16-segment chains also the
@@ -10,7 +12,9 @@ set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 scene="${1:?scene name}"; short="${2:-20}"; long="${3:-200}"; annotate="${4:-}"
 out="${KERNELS_OUT:-/tmp/hookerope-kernels-$(id -u)}"
-dotnet publish "$here/HookeRope.Kernels.csproj" -c Release -r linux-x64 -o "$out/publish" -nologo -v quiet >/dev/null
+isa=()
+if [ -n "${KERNELS_ISA:-}" ]; then isa=("-p:IlcInstructionSet=$KERNELS_ISA"); fi
+dotnet publish "$here/HookeRope.Kernels.csproj" -c Release -r linux-x64 -o "$out/publish" -nologo -v quiet "${isa[@]}" >/dev/null
 objcopy --strip-debug "$out/publish/HookeRope.Kernels" "$out/probe"
 count() {
   valgrind --tool=callgrind --callgrind-out-file="$out/cg.$1" "$out/probe" run "$scene" "$1" 2>&1 >/dev/null | sed -n 's/.*Collected : \([0-9]*\).*/\1/p'
