@@ -322,6 +322,17 @@ namespace HookeRope.Solver
             return values.AsSpan(0, n);
         }
 
+        /// <summary>
+        /// The entries from … from + count − 1 of an array as a span of count (see <see cref="Exactly"/>): a loop over part of
+        /// the particles or segments bounded by count indexes it without bounds checks.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static Span<T> Range<T>(T[] values, int from, int count)
+        {
+            if (values == null) ThrowSizes();
+            return values.AsSpan(from, count);
+        }
+
         /// <summary>The entries j + 1 … j + n of an array as a span of n (see <see cref="Exactly"/>): a segment's second particle at index j.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         public static Span<T> Shifted<T>(T[] values, int n)

@@ -47,15 +47,17 @@ namespace HookeRope.Solver
         /// True when some intact segment's length at the solve's linearisation point differs from its length at the start
         /// of the substep by more than <see cref="ViolentStrain"/>·L.
         /// </summary>
-        private bool Violent()
+        private bool Violent() => VectorPath.Enabled && chain.BrokenCount == 0 ? ViolentLanes() : ViolentRange(0, chain.SegmentCount);
+
+        /// <summary><see cref="Violent"/> for the segments from … from + count − 1.</summary>
+        private bool ViolentRange(int from, int count)
         {
-            int s = chain.SegmentCount;
-            // spans of exactly s entries (the loop bound), B for particle j + 1: indexed without bounds checks
-            ReadOnlySpan<float> length = ChainState.Exactly(chain.Length, s), rest = ChainState.Exactly(chain.RestLength, s);
-            ReadOnlySpan<float> xA = ChainState.Exactly(chain.PrevX, s), yA = ChainState.Exactly(chain.PrevY, s), zA = ChainState.Exactly(chain.PrevZ, s);
-            ReadOnlySpan<float> xB = ChainState.Shifted(chain.PrevX, s), yB = ChainState.Shifted(chain.PrevY, s), zB = ChainState.Shifted(chain.PrevZ, s);
-            ReadOnlySpan<bool> broken = ChainState.Exactly(chain.Broken, s);
-            for (int j = 0; j < s; j++)
+            // spans of exactly count entries (the loop bound), B for particle j + 1: indexed without bounds checks
+            ReadOnlySpan<float> length = ChainState.Range(chain.Length, from, count), rest = ChainState.Range(chain.RestLength, from, count);
+            ReadOnlySpan<float> xA = ChainState.Range(chain.PrevX, from, count), yA = ChainState.Range(chain.PrevY, from, count), zA = ChainState.Range(chain.PrevZ, from, count);
+            ReadOnlySpan<float> xB = ChainState.Range(chain.PrevX, from + 1, count), yB = ChainState.Range(chain.PrevY, from + 1, count), zB = ChainState.Range(chain.PrevZ, from + 1, count);
+            ReadOnlySpan<bool> broken = ChainState.Range(chain.Broken, from, count);
+            for (int j = 0; j < count; j++)
             {
                 if (broken[j]) continue;
                 float dx = xB[j] - xA[j], dy = yB[j] - yA[j], dz = zB[j] - zA[j];
@@ -103,23 +105,34 @@ namespace HookeRope.Solver
         /// </summary>
         private void PredictSecondOrder<TSize>(TimeIntegrator scheme, double h, Float3 g, bool markSolveStart) where TSize : struct
         {
+            // ChainState.Size for the exact solve only (see Predict); BDF2 on lanes where VectorPath.Enabled (Rope.Lanes)
+            chain.Size = scheme == TimeIntegrator.Bdf2 && VectorPath.Enabled
+                ? PredictSecondOrderLanes<TSize>(h, g, markSolveStart)
+                : PredictSecondOrderRange<TSize>(scheme, h, g, markSolveStart, 0, chain.ParticleCount, 0f);
+            // Δ (SolveDX/Y/Z) starts from 0 at the substep's first mark (TrackSolveDisplacement's start): no clearing pass
+        }
+
+        /// <summary>
+        /// <see cref="PredictSecondOrder{TSize}"/> for the particles from … from + count − 1; returns size raised to their
+        /// coordinates' largest magnitude (TSize <see cref="Sized"/>).
+        /// </summary>
+        private float PredictSecondOrderRange<TSize>(TimeIntegrator scheme, double h, Float3 g, bool markSolveStart, int from, int n, float size) where TSize : struct
+        {
             bool measureSize = typeof(TSize) == typeof(Sized); // ChainState.Size for the exact solve only (see Predict)
-            int n = chain.ParticleCount;
             // spans of exactly n entries (the loop bound): indexed without bounds checks
-            ReadOnlySpan<float> x = ChainState.Exactly(chain.X, n), y = ChainState.Exactly(chain.Y, n), z = ChainState.Exactly(chain.Z, n);
-            Span<float> px = ChainState.Exactly(chain.PrevX, n), py = ChainState.Exactly(chain.PrevY, n), pz = ChainState.Exactly(chain.PrevZ, n);
-            ReadOnlySpan<double> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
-            Span<double> ux = ChainState.Exactly(chain.PrevVelX, n), uy = ChainState.Exactly(chain.PrevVelY, n), uz = ChainState.Exactly(chain.PrevVelZ, n);
-            Span<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
-            Span<float> lx = ChainState.Exactly(chain.DLowX, n), ly = ChainState.Exactly(chain.DLowY, n), lz = ChainState.Exactly(chain.DLowZ, n);
-            Span<double> bx = ChainState.Exactly(chain.BaseVelX, n), by = ChainState.Exactly(chain.BaseVelY, n), bz = ChainState.Exactly(chain.BaseVelZ, n);
-            Span<float> qx = ChainState.Exactly(chain.PredictedDX, n), qy = ChainState.Exactly(chain.PredictedDY, n), qz = ChainState.Exactly(chain.PredictedDZ, n);
-            ReadOnlySpan<bool> kinematic = ChainState.Exactly(chain.Kinematic, n);
-            Span<double> sx = ChainState.Exactly(chain.SolveDX, n), sy = ChainState.Exactly(chain.SolveDY, n), sz = ChainState.Exactly(chain.SolveDZ, n);
+            ReadOnlySpan<float> x = ChainState.Range(chain.X, from, n), y = ChainState.Range(chain.Y, from, n), z = ChainState.Range(chain.Z, from, n);
+            Span<float> px = ChainState.Range(chain.PrevX, from, n), py = ChainState.Range(chain.PrevY, from, n), pz = ChainState.Range(chain.PrevZ, from, n);
+            ReadOnlySpan<double> vx = ChainState.Range(chain.VelX, from, n), vy = ChainState.Range(chain.VelY, from, n), vz = ChainState.Range(chain.VelZ, from, n);
+            Span<double> ux = ChainState.Range(chain.PrevVelX, from, n), uy = ChainState.Range(chain.PrevVelY, from, n), uz = ChainState.Range(chain.PrevVelZ, from, n);
+            Span<float> dx = ChainState.Range(chain.DX, from, n), dy = ChainState.Range(chain.DY, from, n), dz = ChainState.Range(chain.DZ, from, n);
+            Span<float> lx = ChainState.Range(chain.DLowX, from, n), ly = ChainState.Range(chain.DLowY, from, n), lz = ChainState.Range(chain.DLowZ, from, n);
+            Span<double> bx = ChainState.Range(chain.BaseVelX, from, n), by = ChainState.Range(chain.BaseVelY, from, n), bz = ChainState.Range(chain.BaseVelZ, from, n);
+            Span<float> qx = ChainState.Range(chain.PredictedDX, from, n), qy = ChainState.Range(chain.PredictedDY, from, n), qz = ChainState.Range(chain.PredictedDZ, from, n);
+            ReadOnlySpan<bool> kinematic = ChainState.Range(chain.Kinematic, from, n);
+            Span<double> sx = ChainState.Range(chain.SolveDX, from, n), sy = ChainState.Range(chain.SolveDY, from, n), sz = ChainState.Range(chain.SolveDZ, from, n);
             bool bdf2 = scheme == TimeIntegrator.Bdf2;
             double invH = 1.0 / h, h2 = h * h, c = 4.0 * h2 / 9.0, e = 2.0 * h / 3.0;
             double gx = g.X, gy = g.Y, gz = g.Z;
-            float size = 0f;
             for (int i = 0; i < n; i++)
             {
                 px[i] = x[i]; py[i] = y[i]; pz[i] = z[i];
@@ -155,8 +168,7 @@ namespace HookeRope.Solver
                 ux[i] = wx; uy[i] = wy; uz[i] = wz;
                 qx[i] = ox; qy[i] = oy; qz[i] = oz;
             }
-            chain.Size = size;
-            // Δ (SolveDX/Y/Z) starts from 0 at the substep's first mark (TrackSolveDisplacement's start): no clearing pass
+            return size;
         }
 
         /// <summary>
@@ -234,16 +246,23 @@ namespace HookeRope.Solver
         /// </summary>
         private void SecondOrderVelocities<TMark>(TimeIntegrator scheme, double h) where TMark : struct
         {
-            int n = chain.ParticleCount;
+            // on lanes where VectorPath.Enabled (Rope.Lanes)
+            if (VectorPath.Enabled) SecondOrderVelocityLanes<TMark>(scheme, h);
+            else SecondOrderVelocitiesRange<TMark>(scheme, h, 0, chain.ParticleCount);
+        }
+
+        /// <summary><see cref="SecondOrderVelocities{TMark}"/> for the particles from … from + n − 1.</summary>
+        private void SecondOrderVelocitiesRange<TMark>(TimeIntegrator scheme, double h, int from, int n) where TMark : struct
+        {
             // spans of exactly n entries (the loop bound): indexed without bounds checks
-            ReadOnlySpan<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
-            ReadOnlySpan<float> lx = ChainState.Exactly(chain.DLowX, n), ly = ChainState.Exactly(chain.DLowY, n), lz = ChainState.Exactly(chain.DLowZ, n);
-            ReadOnlySpan<double> bx = ChainState.Exactly(chain.BaseVelX, n), by = ChainState.Exactly(chain.BaseVelY, n), bz = ChainState.Exactly(chain.BaseVelZ, n);
-            ReadOnlySpan<double> sx = ChainState.Exactly(chain.SolveDX, n), sy = ChainState.Exactly(chain.SolveDY, n), sz = ChainState.Exactly(chain.SolveDZ, n);
-            Span<double> wx = ChainState.Exactly(chain.PrevVelX, n), wy = ChainState.Exactly(chain.PrevVelY, n), wz = ChainState.Exactly(chain.PrevVelZ, n);
-            ReadOnlySpan<float> qx = ChainState.Exactly(chain.PredictedDX, n), qy = ChainState.Exactly(chain.PredictedDY, n), qz = ChainState.Exactly(chain.PredictedDZ, n);
-            Span<double> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
-            ReadOnlySpan<bool> kinematic = ChainState.Exactly(chain.Kinematic, n);
+            ReadOnlySpan<float> dx = ChainState.Range(chain.DX, from, n), dy = ChainState.Range(chain.DY, from, n), dz = ChainState.Range(chain.DZ, from, n);
+            ReadOnlySpan<float> lx = ChainState.Range(chain.DLowX, from, n), ly = ChainState.Range(chain.DLowY, from, n), lz = ChainState.Range(chain.DLowZ, from, n);
+            ReadOnlySpan<double> bx = ChainState.Range(chain.BaseVelX, from, n), by = ChainState.Range(chain.BaseVelY, from, n), bz = ChainState.Range(chain.BaseVelZ, from, n);
+            ReadOnlySpan<double> sx = ChainState.Range(chain.SolveDX, from, n), sy = ChainState.Range(chain.SolveDY, from, n), sz = ChainState.Range(chain.SolveDZ, from, n);
+            Span<double> wx = ChainState.Range(chain.PrevVelX, from, n), wy = ChainState.Range(chain.PrevVelY, from, n), wz = ChainState.Range(chain.PrevVelZ, from, n);
+            ReadOnlySpan<float> qx = ChainState.Range(chain.PredictedDX, from, n), qy = ChainState.Range(chain.PredictedDY, from, n), qz = ChainState.Range(chain.PredictedDZ, from, n);
+            Span<double> vx = ChainState.Range(chain.VelX, from, n), vy = ChainState.Range(chain.VelY, from, n), vz = ChainState.Range(chain.VelZ, from, n);
+            ReadOnlySpan<bool> kinematic = ChainState.Range(chain.Kinematic, from, n);
             double invH = 1.0 / h, k = scheme == TimeIntegrator.Bdf2 ? 0.5 * invH : 0.0;
             for (int i = 0; i < n; i++)
             {

@@ -407,14 +407,21 @@ namespace HookeRope.Solver
         /// </summary>
         private void CommitPositions()
         {
-            int n = chain.ParticleCount;
+            // on lanes where VectorPath.Enabled (Rope.Lanes)
+            if (VectorPath.Enabled) CommitLanes();
+            else CommitRange(0, chain.ParticleCount);
+        }
+
+        /// <summary><see cref="CommitPositions"/> for the particles from … from + n − 1.</summary>
+        private void CommitRange(int from, int n)
+        {
             // spans of exactly n entries (the loop bound): indexed without bounds checks
-            Span<float> x = ChainState.Exactly(chain.X, n), y = ChainState.Exactly(chain.Y, n), z = ChainState.Exactly(chain.Z, n);
-            ReadOnlySpan<float> px = ChainState.Exactly(chain.PrevX, n), py = ChainState.Exactly(chain.PrevY, n), pz = ChainState.Exactly(chain.PrevZ, n);
-            ReadOnlySpan<float> dx = ChainState.Exactly(chain.DX, n), dy = ChainState.Exactly(chain.DY, n), dz = ChainState.Exactly(chain.DZ, n);
-            ReadOnlySpan<float> dlx = ChainState.Exactly(chain.DLowX, n), dly = ChainState.Exactly(chain.DLowY, n), dlz = ChainState.Exactly(chain.DLowZ, n);
-            Span<float> lx = ChainState.Exactly(chain.LowX, n), ly = ChainState.Exactly(chain.LowY, n), lz = ChainState.Exactly(chain.LowZ, n);
-            ReadOnlySpan<double> vx = ChainState.Exactly(chain.VelX, n), vy = ChainState.Exactly(chain.VelY, n), vz = ChainState.Exactly(chain.VelZ, n);
+            Span<float> x = ChainState.Range(chain.X, from, n), y = ChainState.Range(chain.Y, from, n), z = ChainState.Range(chain.Z, from, n);
+            ReadOnlySpan<float> px = ChainState.Range(chain.PrevX, from, n), py = ChainState.Range(chain.PrevY, from, n), pz = ChainState.Range(chain.PrevZ, from, n);
+            ReadOnlySpan<float> dx = ChainState.Range(chain.DX, from, n), dy = ChainState.Range(chain.DY, from, n), dz = ChainState.Range(chain.DZ, from, n);
+            ReadOnlySpan<float> dlx = ChainState.Range(chain.DLowX, from, n), dly = ChainState.Range(chain.DLowY, from, n), dlz = ChainState.Range(chain.DLowZ, from, n);
+            Span<float> lx = ChainState.Range(chain.LowX, from, n), ly = ChainState.Range(chain.LowY, from, n), lz = ChainState.Range(chain.LowZ, from, n);
+            ReadOnlySpan<double> vx = ChainState.Range(chain.VelX, from, n), vy = ChainState.Range(chain.VelY, from, n), vz = ChainState.Range(chain.VelZ, from, n);
             for (int i = 0; i < n; i++)
             {
                 // x = x_prev + Low + (D + DLow)
@@ -426,7 +433,7 @@ namespace HookeRope.Solver
                     x[i] = nx; y[i] = ny; z[i] = nz;
                     lx[i] = (float)(ex - nx); ly[i] = (float)(ey - ny); lz[i] = (float)(ez - nz);
                 }
-                else RestoreParticle(i);
+                else RestoreParticle(from + i);
             }
         }
 
@@ -445,11 +452,18 @@ namespace HookeRope.Solver
         private void UpdateTensions(double h, bool firstSubstep)
         {
             double invH2 = 1.0 / (h * h);
-            int s = chain.SegmentCount;
+            // on lanes where VectorPath.Enabled and no segment is broken (Rope.Lanes)
+            if (VectorPath.Enabled && chain.BrokenCount == 0) TensionLanes(invH2, firstSubstep);
+            else TensionRange(invH2, firstSubstep, 0, chain.SegmentCount);
+        }
+
+        /// <summary><see cref="UpdateTensions"/> for the segments from … from + s − 1 (invH2 = 1/h², 1/s²).</summary>
+        private void TensionRange(double invH2, bool firstSubstep, int from, int s)
+        {
             // spans of exactly s entries (the loop bound): indexed without bounds checks
-            ReadOnlySpan<double> lambda = ChainState.Exactly(chain.Lambda, s);
-            Span<float> tension = ChainState.Exactly(chain.Tension, s), peak = ChainState.Exactly(chain.PeakTension, s), sum = ChainState.Exactly(chain.MeanTension, s);
-            ReadOnlySpan<bool> broken = ChainState.Exactly(chain.Broken, s);
+            ReadOnlySpan<double> lambda = ChainState.Range(chain.Lambda, from, s);
+            Span<float> tension = ChainState.Range(chain.Tension, from, s), peak = ChainState.Range(chain.PeakTension, from, s), sum = ChainState.Range(chain.MeanTension, from, s);
+            ReadOnlySpan<bool> broken = ChainState.Range(chain.Broken, from, s);
             // a broken segment reads 0 (skipped while none is broken); the host step's largest and summed substep tension
             // restart on its first substep
             bool intact = chain.BrokenCount == 0;

@@ -1,0 +1,348 @@
+using System;
+using System.Numerics;
+using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
+using HookeRope.Mathematics;
+
+namespace HookeRope.Solver
+{
+    /// <summary>
+    /// The <see cref="Vector{T}"/> paths of the per-particle and per-segment passes of a substep (issue 18), taken while
+    /// <see cref="VectorPath.Enabled"/>: the BDF2 prediction, the second-order velocities, the position commit, the violence
+    /// test and the tensions. A block is one <see cref="Vector{T}"/> of <see cref="float"/> (8 particles with AVX2), its
+    /// doubles two <see cref="Vector{T}"/> of <see cref="double"/>; floats are widened to double and doubles narrowed to
+    /// float exactly as the scalar casts do (IEEE conversions, round to nearest). Each lane does its scalar loop's operations
+    /// in the scalar's order (no fused multiply-add, no reassociation), so the bits are the scalar loop's. A block with a
+    /// kinematic particle takes the free particles' lanes and is then set as the scalar loop sets it (its scalar branch reads
+    /// nothing the lanes wrote); a block whose commit is not finite and the tail after the last full block run the scalar loop.
+    /// </summary>
+    public sealed partial class Rope
+    {
+        /// <summary>True when none of the flags [i, i + one float vector) is set (the bools read as one word).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static bool NoneSet(ReadOnlySpan<bool> flags, int i)
+        {
+            ReadOnlySpan<byte> bytes = MemoryMarshal.AsBytes(flags.Slice(i, Vector<float>.Count));
+            if (Vector<float>.Count == 8) return MemoryMarshal.Read<ulong>(bytes) == 0UL;
+            if (Vector<float>.Count == 4) return MemoryMarshal.Read<uint>(bytes) == 0U;
+            for (int k = 0; k < bytes.Length; k++) if (bytes[k] != 0) return false;
+            return true;
+        }
+
+        /// <summary>Δ's start mark 0 − (q + 0) per lane, as <see cref="StartMark"/> of (q, 0f) computes it.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector<double> StartMarks(Vector<double> q) => Vector<double>.Zero + new Vector<double>(-1.0) * (q + Vector<double>.Zero);
+
+        /// <summary>Sign-flipped lanes (−x exactly, as the scalar negation: not 0 − x, which turns −0 into +0).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector<double> Negated(Vector<double> x) =>
+            Vector.AsVectorDouble(Vector.Xor(Vector.AsVectorUInt64(x), new Vector<ulong>(0x8000000000000000UL)));
+
+        /// <summary>True when every lane is finite (x − x is +0 exactly for a finite x, NaN otherwise).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static bool AllFinite(Vector<double> x) => Vector.EqualsAll(x - x, Vector<double>.Zero);
+
+        /// <summary>
+        /// The BDF2 prediction (<see cref="PredictSecondOrderRange{TSize}"/> with scheme BDF2) on lanes: every full block here
+        /// (its kinematic particles then set as the scalar branch sets them), the tail by the scalar loop. Returns <see cref="ChainState.Size"/> when TSize is
+        /// <see cref="Sized"/> (the largest magnitude is the same whatever the order the coordinates are compared in).
+        /// </summary>
+        private float PredictSecondOrderLanes<TSize>(double h, Float3 g, bool markSolveStart) where TSize : struct
+        {
+            int n = chain.ParticleCount, width = Vector<float>.Count;
+            double invH = 1.0 / h, h2 = h * h, c = 4.0 * h2 / 9.0, e = 2.0 * h / 3.0;
+            ReadOnlySpan<bool> kinematic = ChainState.Exactly(chain.Kinematic, n);
+            Vector<float> lanes = Vector<float>.Zero;
+            lanes = PredictLanes<TSize>(n, chain.X, chain.PrevX, chain.VelX, chain.PrevVelX, chain.DX, chain.DLowX, chain.BaseVelX, chain.PredictedDX, invH, e, e * g.X, c * g.X, lanes);
+            lanes = PredictLanes<TSize>(n, chain.Y, chain.PrevY, chain.VelY, chain.PrevVelY, chain.DY, chain.DLowY, chain.BaseVelY, chain.PredictedDY, invH, e, e * g.Y, c * g.Y, lanes);
+            lanes = PredictLanes<TSize>(n, chain.Z, chain.PrevZ, chain.VelZ, chain.PrevVelZ, chain.DZ, chain.DLowZ, chain.BaseVelZ, chain.PredictedDZ, invH, e, e * g.Z, c * g.Z, lanes);
+            int full = n / width * width;
+            for (int start = 0; start < full; start += width)
+            {
+                if (NoneSet(kinematic, start)) continue;
+                for (int i = start; i < start + width; i++) if (kinematic[i]) PredictKinematic(i, markSolveStart);
+            }
+            float size = full < n ? PredictSecondOrderRange<TSize>(TimeIntegrator.Bdf2, h, g, markSolveStart, full, n - full, 0f) : 0f;
+            if (typeof(TSize) == typeof(Sized))
+                for (int l = 0; l < width; l++) if (lanes[l] > size) size = lanes[l];
+            return size;
+        }
+
+        /// <summary>
+        /// One coordinate of the BDF2 prediction on the full blocks, every particle as a free one (e = 2h/3; eg = e·g and cg = 4h²/9·g of
+        /// this coordinate, as the scalar loop's products): x_prev = x, v_prev = v, d = d_pred, DLow = 0, the velocity base.
+        /// Returns size raised lane by lane to the coordinates' magnitudes (TSize <see cref="Sized"/>; plain compares, as <see cref="Larger"/>).
+        /// </summary>
+        private static Vector<float> PredictLanes<TSize>(int n, float[] x, float[] px, double[] v, double[] u, float[] d, float[] low,
+            double[] b, float[] q, double invH, double e, double eg, double cg, Vector<float> size) where TSize : struct
+        {
+            ReadOnlySpan<Vector<float>> xs = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(x, n));
+            Span<Vector<float>> ps = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(px, n));
+            Span<Vector<float>> ds = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(d, n));
+            Span<Vector<float>> ls = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(low, n));
+            Span<Vector<float>> qs = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(q, n));
+            ReadOnlySpan<Vector<double>> vs = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(v, n));
+            Span<Vector<double>> us = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(u, n));
+            Span<Vector<double>> bs = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(b, n));
+            var four = new Vector<double>(4.0);
+            var three = new Vector<double>(3.0);
+            for (int k = 0; k < xs.Length; k++)
+            {
+                Vector<float> xk = xs[k];
+                ps[k] = xk;
+                if (typeof(TSize) == typeof(Sized))
+                {
+                    Vector<float> magnitude = Vector.Abs(xk);
+                    size = Vector.ConditionalSelect(Vector.GreaterThan(magnitude, size), magnitude, size);
+                }
+                int a = 2 * k, z = a + 1;
+                Vector<double> w0 = vs[a], w1 = vs[z];
+                // m = (4v − v_prev)/3; d_pred = (D + DLow)/3 + e·m + c·g, rounded to float; base = m + e·g − d_pred/h
+                Vector<double> m0 = (four * w0 - us[a]) / three, m1 = (four * w1 - us[z]) / three;
+                Vector.Widen(ds[k], out Vector<double> d0, out Vector<double> d1);
+                Vector.Widen(ls[k], out Vector<double> l0, out Vector<double> l1);
+                Vector<float> o = Vector.Narrow((d0 + l0) / three + e * m0 + new Vector<double>(cg), (d1 + l1) / three + e * m1 + new Vector<double>(cg));
+                Vector.Widen(o, out Vector<double> o0, out Vector<double> o1);
+                bs[a] = m0 + new Vector<double>(eg) - o0 * invH;
+                bs[z] = m1 + new Vector<double>(eg) - o1 * invH;
+                ds[k] = o;
+                ls[k] = Vector<float>.Zero;
+                us[a] = w0; us[z] = w1;
+                qs[k] = o;
+            }
+            return size;
+        }
+
+        /// <summary>
+        /// The scalar prediction's kinematic branch for particle i after the lanes took it as a free one (they already wrote
+        /// x_prev = x and v_prev = v): no displacement, no velocity base, and the Δ start mark when <paramref name="markSolveStart"/>.
+        /// </summary>
+        private void PredictKinematic(int i, bool markSolveStart)
+        {
+            chain.DX[i] = 0f; chain.DY[i] = 0f; chain.DZ[i] = 0f;
+            chain.DLowX[i] = 0f; chain.DLowY[i] = 0f; chain.DLowZ[i] = 0f;
+            chain.PredictedDX[i] = 0f; chain.PredictedDY[i] = 0f; chain.PredictedDZ[i] = 0f;
+            chain.BaseVelX[i] = 0.0; chain.BaseVelY[i] = 0.0; chain.BaseVelZ[i] = 0.0;
+            if (markSolveStart) { chain.SolveDX[i] = StartMark(0f, 0f); chain.SolveDY[i] = StartMark(0f, 0f); chain.SolveDZ[i] = StartMark(0f, 0f); }
+        }
+
+        /// <summary>
+        /// <see cref="SecondOrderVelocitiesRange{TMark}"/> on lanes: every full block here as free particles, then each
+        /// kinematic particle as the scalar branch sets it (<see cref="KinematicVelocity{TMark}"/>), the tail by the scalar loop.
+        /// </summary>
+        private void SecondOrderVelocityLanes<TMark>(TimeIntegrator scheme, double h) where TMark : struct
+        {
+            int n = chain.ParticleCount, width = Vector<float>.Count;
+            double invH = 1.0 / h, k = scheme == TimeIntegrator.Bdf2 ? 0.5 * invH : 0.0;
+            ReadOnlySpan<bool> kinematic = ChainState.Exactly(chain.Kinematic, n);
+            ReadOnlySpan<Vector<float>> dx = Floats(chain.DX, n), dy = Floats(chain.DY, n), dz = Floats(chain.DZ, n);
+            ReadOnlySpan<Vector<float>> lx = Floats(chain.DLowX, n), ly = Floats(chain.DLowY, n), lz = Floats(chain.DLowZ, n);
+            ReadOnlySpan<Vector<float>> qx = Floats(chain.PredictedDX, n), qy = Floats(chain.PredictedDY, n), qz = Floats(chain.PredictedDZ, n);
+            Span<Vector<double>> wx = Doubles(chain.PrevVelX, n), wy = Doubles(chain.PrevVelY, n), wz = Doubles(chain.PrevVelZ, n);
+            ReadOnlySpan<Vector<double>> sx = Doubles(chain.SolveDX, n), sy = Doubles(chain.SolveDY, n), sz = Doubles(chain.SolveDZ, n);
+            ReadOnlySpan<Vector<double>> bx = Doubles(chain.BaseVelX, n), by = Doubles(chain.BaseVelY, n), bz = Doubles(chain.BaseVelZ, n);
+            Span<Vector<double>> vx = Doubles(chain.VelX, n), vy = Doubles(chain.VelY, n), vz = Doubles(chain.VelZ, n);
+            for (int b = 0; b < dx.Length; b++)
+            {
+                int a = 2 * b, z = a + 1;
+                VelocityLanes<TMark>(b, dx[b], lx[b], qx[b], sx, bx, vx, invH, k, out Vector<double> cx0, out Vector<double> cx1);
+                VelocityLanes<TMark>(b, dy[b], ly[b], qy[b], sy, by, vy, invH, k, out Vector<double> cy0, out Vector<double> cy1);
+                VelocityLanes<TMark>(b, dz[b], lz[b], qz[b], sz, bz, vz, invH, k, out Vector<double> cz0, out Vector<double> cz1);
+                // the history boost v_prev += c/h of a particle some push moved (c ≠ 0 in any coordinate), as the scalar branch
+                Vector<long> still0 = Vector.Equals(cx0, Vector<double>.Zero) & Vector.Equals(cy0, Vector<double>.Zero) & Vector.Equals(cz0, Vector<double>.Zero);
+                Vector<long> still1 = Vector.Equals(cx1, Vector<double>.Zero) & Vector.Equals(cy1, Vector<double>.Zero) & Vector.Equals(cz1, Vector<double>.Zero);
+                wx[a] = Vector.ConditionalSelect(still0, wx[a], wx[a] + cx0 * invH); wx[z] = Vector.ConditionalSelect(still1, wx[z], wx[z] + cx1 * invH);
+                wy[a] = Vector.ConditionalSelect(still0, wy[a], wy[a] + cy0 * invH); wy[z] = Vector.ConditionalSelect(still1, wy[z], wy[z] + cy1 * invH);
+                wz[a] = Vector.ConditionalSelect(still0, wz[a], wz[a] + cz0 * invH); wz[z] = Vector.ConditionalSelect(still1, wz[z], wz[z] + cz1 * invH);
+            }
+            int full = dx.Length * width;
+            for (int start = 0; start < full; start += width)
+            {
+                if (NoneSet(kinematic, start)) continue;
+                for (int i = start; i < start + width; i++) if (kinematic[i]) KinematicVelocity<TMark>(i, invH, k);
+            }
+            if (full < n) SecondOrderVelocitiesRange<TMark>(scheme, h, full, n - full);
+        }
+
+        /// <summary>
+        /// The scalar velocity loop's kinematic branch for particle i (its Δ as stored, with the last end mark unless TMark is
+        /// <see cref="StoredMarks"/>; v_prev = d/h), after the lanes took it as a free one (they read nothing it writes).
+        /// </summary>
+        private void KinematicVelocity<TMark>(int i, double invH, double k) where TMark : struct
+        {
+            double mx = (double)chain.DX[i] + chain.DLowX[i], my = (double)chain.DY[i] + chain.DLowY[i], mz = (double)chain.DZ[i] + chain.DLowZ[i];
+            double ex = chain.SolveDX[i], ey = chain.SolveDY[i], ez = chain.SolveDZ[i];
+            if (typeof(TMark) != typeof(StoredMarks)) { ex += 1.0 * mx; ey += 1.0 * my; ez += 1.0 * mz; }
+            chain.PrevVelX[i] = mx * invH; chain.PrevVelY[i] = my * invH; chain.PrevVelZ[i] = mz * invH;
+            chain.VelX[i] = chain.BaseVelX[i] + mx * invH + k * ex; chain.VelY[i] = chain.BaseVelY[i] + my * invH + k * ey;
+            chain.VelZ[i] = chain.BaseVelZ[i] + mz * invH + k * ez;
+        }
+
+        /// <summary>
+        /// One coordinate of a block of free particles' second-order velocities: d = D + DLow, Δ (stored or marked as TMark says),
+        /// the push c = d − d_pred − Δ (returned) and v = base + d/h + κ·Δ (κ = k).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void VelocityLanes<TMark>(int b, Vector<float> d, Vector<float> low, Vector<float> q, ReadOnlySpan<Vector<double>> s,
+            ReadOnlySpan<Vector<double>> bs, Span<Vector<double>> vs, double invH, double k, out Vector<double> c0, out Vector<double> c1) where TMark : struct
+        {
+            int a = 2 * b, z = a + 1;
+            Vector.Widen(d, out Vector<double> d0, out Vector<double> d1);
+            Vector.Widen(low, out Vector<double> l0, out Vector<double> l1);
+            Vector.Widen(q, out Vector<double> q0, out Vector<double> q1);
+            Vector<double> m0 = d0 + l0, m1 = d1 + l1, e0, e1;
+            if (typeof(TMark) == typeof(ImpliedStartMark)) { e0 = StartMarks(q0); e1 = StartMarks(q1); }
+            else { e0 = s[a]; e1 = s[z]; }
+            if (typeof(TMark) != typeof(StoredMarks)) { e0 += new Vector<double>(1.0) * m0; e1 += new Vector<double>(1.0) * m1; }
+            c0 = m0 - q0 - e0; c1 = m1 - q1 - e1;
+            vs[a] = bs[a] + m0 * invH + k * e0;
+            vs[z] = bs[z] + m1 * invH + k * e1;
+        }
+
+        /// <summary>
+        /// <see cref="CommitRange"/> on lanes: x = x_prev + Low + (D + DLow) split into float and remainder, for every block whose
+        /// positions and velocities are all finite; a block with a non-finite one, and the tail, by the scalar loop (which restores it).
+        /// </summary>
+        private void CommitLanes()
+        {
+            int n = chain.ParticleCount, width = Vector<float>.Count;
+            Span<Vector<float>> x = Floats(chain.X, n), y = Floats(chain.Y, n), z = Floats(chain.Z, n);
+            Span<Vector<float>> lx = Floats(chain.LowX, n), ly = Floats(chain.LowY, n), lz = Floats(chain.LowZ, n);
+            Span<Vector<double>> vx = Doubles(chain.VelX, n), vy = Doubles(chain.VelY, n), vz = Doubles(chain.VelZ, n);
+            ReadOnlySpan<Vector<float>> px = Floats(chain.PrevX, n), py = Floats(chain.PrevY, n), pz = Floats(chain.PrevZ, n);
+            ReadOnlySpan<Vector<float>> dx = Floats(chain.DX, n), dy = Floats(chain.DY, n), dz = Floats(chain.DZ, n);
+            ReadOnlySpan<Vector<float>> rx = Floats(chain.DLowX, n), ry = Floats(chain.DLowY, n), rz = Floats(chain.DLowZ, n);
+            int blocks = x.Length;
+            for (int b = 0; b < blocks; b++)
+            {
+                int a = 2 * b, c = a + 1;
+                Vector<double> ex0, ex1, ey0, ey1, ez0, ez1;
+                Vector<float> nx = Committed(px[b], lx[b], dx[b], rx[b], out ex0, out ex1);
+                Vector<float> ny = Committed(py[b], ly[b], dy[b], ry[b], out ey0, out ey1);
+                Vector<float> nz = Committed(pz[b], lz[b], dz[b], rz[b], out ez0, out ez1);
+                Vector<float> sum = nx + ny + nz;
+                if (!(AllFinite(vx[a] + vy[a] + vz[a]) && AllFinite(vx[c] + vy[c] + vz[c]) && Vector.EqualsAll(sum - sum, Vector<float>.Zero)))
+                {
+                    CommitRange(b * width, width);
+                    continue;
+                }
+                x[b] = nx; y[b] = ny; z[b] = nz;
+                lx[b] = Remainder(ex0, ex1, nx); ly[b] = Remainder(ey0, ey1, ny); lz[b] = Remainder(ez0, ez1, nz);
+            }
+            if (blocks * width < n) CommitRange(blocks * width, n - blocks * width);
+        }
+
+        /// <summary>One coordinate of a block's committed position: e = (x_prev + Low) + (D + DLow) in double (out, two halves), rounded to float.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector<float> Committed(Vector<float> previous, Vector<float> low, Vector<float> d, Vector<float> dLow, out Vector<double> e0, out Vector<double> e1)
+        {
+            Vector.Widen(previous, out Vector<double> p0, out Vector<double> p1);
+            Vector.Widen(low, out Vector<double> l0, out Vector<double> l1);
+            Vector.Widen(d, out Vector<double> d0, out Vector<double> d1);
+            Vector.Widen(dLow, out Vector<double> r0, out Vector<double> r1);
+            e0 = p0 + l0 + (d0 + r0);
+            e1 = p1 + l1 + (d1 + r1);
+            return Vector.Narrow(e0, e1);
+        }
+
+        /// <summary>The float remainder (e − f) of a double e (two halves) below its float rounding f.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector<float> Remainder(Vector<double> e0, Vector<double> e1, Vector<float> f)
+        {
+            Vector.Widen(f, out Vector<double> f0, out Vector<double> f1);
+            return Vector.Narrow(e0 - f0, e1 - f1);
+        }
+
+        /// <summary><see cref="Violent"/> on lanes while no segment is broken: the full blocks of segments, then the scalar tail.</summary>
+        private bool ViolentLanes()
+        {
+            int s = chain.SegmentCount, width = Vector<float>.Count;
+            ReadOnlySpan<Vector<float>> length = Floats(chain.Length, s), rest = Floats(chain.RestLength, s);
+            ReadOnlySpan<Vector<float>> xA = Floats(chain.PrevX, s), yA = Floats(chain.PrevY, s), zA = Floats(chain.PrevZ, s);
+            ReadOnlySpan<Vector<float>> xB = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Shifted(chain.PrevX, s));
+            ReadOnlySpan<Vector<float>> yB = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Shifted(chain.PrevY, s));
+            ReadOnlySpan<Vector<float>> zB = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Shifted(chain.PrevZ, s));
+            var strain = new Vector<float>(ViolentStrain);
+            int blocks = length.Length;
+            for (int b = 0; b < blocks; b++)
+            {
+                Vector<float> dx = xB[b] - xA[b], dy = yB[b] - yA[b], dz = zB[b] - zA[b];
+                Vector<float> start = Vector.SquareRoot(dx * dx + dy * dy + dz * dz);
+                if (Vector.GreaterThanAny(Vector.Abs(length[b] - start), strain * rest[b])) return true;
+            }
+            return ViolentRange(blocks * width, s - blocks * width);
+        }
+
+        /// <summary>
+        /// <see cref="UpdateTensions"/> on lanes while no segment is broken (1/h² = invH2): T = −λ/h² per lane, then the host
+        /// step's largest and summed tension; the scalar tail after the last full block.
+        /// </summary>
+        private void TensionLanes(double invH2, bool firstSubstep)
+        {
+            int s = chain.SegmentCount, width = Vector<float>.Count;
+            ReadOnlySpan<Vector<double>> lambda = Doubles(chain.Lambda, s);
+            Span<Vector<float>> tension = Floats(chain.Tension, s), peak = Floats(chain.PeakTension, s), sum = Floats(chain.MeanTension, s);
+            var largest = new Vector<float>(float.MaxValue);
+            int blocks = tension.Length;
+            for (int b = 0; b < blocks; b++)
+            {
+                // (float)(−λ·invH2); non-finite reads float.MaxValue (Tension)
+                Vector<float> value = Vector.Narrow(Negated(lambda[2 * b]) * invH2, Negated(lambda[2 * b + 1]) * invH2);
+                value = Vector.ConditionalSelect(Vector.Equals(value - value, Vector<float>.Zero), value, largest);
+                tension[b] = value;
+                if (firstSubstep) { peak[b] = value; sum[b] = value; }
+                else
+                {
+                    peak[b] = Vector.ConditionalSelect(Vector.GreaterThan(value, peak[b]), value, peak[b]);
+                    sum[b] += value;
+                }
+            }
+            TensionRange(invH2, firstSubstep, blocks * width, s - blocks * width);
+        }
+
+        /// <summary>
+        /// FNV-1a over the bits of every particle's and segment's state the substep passes write (positions and their
+        /// remainders, displacements, the double velocities and the second-order history, multipliers, tensions): tests compare
+        /// it with <see cref="VectorPath.Enabled"/> off and on.
+        /// </summary>
+        internal ulong StateBits()
+        {
+            ulong h = 14695981039346656037UL;
+            float[][] floats =
+            {
+                chain.X, chain.Y, chain.Z, chain.LowX, chain.LowY, chain.LowZ, chain.PrevX, chain.PrevY, chain.PrevZ, chain.DX, chain.DY, chain.DZ,
+                chain.DLowX, chain.DLowY, chain.DLowZ, chain.PredictedDX, chain.PredictedDY, chain.PredictedDZ,
+                chain.Tension, chain.PeakTension, chain.MeanTension, chain.Length,
+            };
+            double[][] doubles =
+            {
+                chain.VelX, chain.VelY, chain.VelZ, chain.PrevVelX, chain.PrevVelY, chain.PrevVelZ, chain.BaseVelX, chain.BaseVelY, chain.BaseVelZ,
+                chain.Lambda,
+            };
+            foreach (float[] values in floats)
+                foreach (float value in values) h = Mix(h, (uint)BitConverter.SingleToInt32Bits(value));
+            foreach (double[] values in doubles)
+                foreach (double value in values)
+                {
+                    ulong bits = (ulong)BitConverter.DoubleToInt64Bits(value);
+                    h = Mix(Mix(h, (uint)bits), (uint)(bits >> 32));
+                }
+            ulong size = (ulong)BitConverter.DoubleToInt64Bits(chain.Size);
+            return Mix(Mix(h, (uint)size), (uint)(size >> 32));
+        }
+
+        private static ulong Mix(ulong h, uint bits)
+        {
+            for (int b = 0; b < 4; b++) { h ^= (bits >> (8 * b)) & 0xff; h *= 1099511628211UL; }
+            return h;
+        }
+
+        /// <summary>The first n entries of a float array as whole float vectors (the tail left out).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Span<Vector<float>> Floats(float[] values, int n) => MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(values, n));
+
+        /// <summary>The first n entries of a double array as whole double vectors (the tail left out).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Span<Vector<double>> Doubles(double[] values, int n) => MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(values, n));
+    }
+}
