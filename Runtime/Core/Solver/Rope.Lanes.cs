@@ -270,7 +270,7 @@ namespace HookeRope.Solver
                 Vector<float> start = Vector.SquareRoot(dx * dx + dy * dy + dz * dz);
                 if (Vector.GreaterThanAny(Vector.Abs(length[b] - start), strain * rest[b])) return true;
             }
-            return ViolentRange(blocks * width, s - blocks * width);
+            return blocks * width < s && ViolentRange(blocks * width, s - blocks * width);
         }
 
         /// <summary>
@@ -297,7 +297,7 @@ namespace HookeRope.Solver
                     sum[b] += value;
                 }
             }
-            TensionRange(invH2, firstSubstep, blocks * width, s - blocks * width);
+            if (blocks * width < s) TensionRange(invH2, firstSubstep, blocks * width, s - blocks * width);
         }
 
         /// <summary>
