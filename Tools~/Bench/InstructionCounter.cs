@@ -13,20 +13,6 @@ namespace HookeRope.Bench
     /// </summary>
     internal static class InstructionCounter
     {
-        /// <summary>Instructions per segment-substep (mesh included) for the goal scene, or 0 when valgrind is missing or fails.</summary>
-        public static double PerUnit(int ropes, int segments, int workers, int shortFrames, int longFrames, Action<string> log)
-        {
-            long a = Collected(ropes, segments, workers, shortFrames, log);
-            long b = Collected(ropes, segments, workers, longFrames, log);
-            if (a <= 0 || b <= a) return 0;
-            double units = (double)ropes * segments * GoalScene.Substeps * (longFrames - shortFrames);
-            return (b - a) / units;
-        }
-
-        private static long Collected(int ropes, int segments, int workers, int frames, Action<string> log) =>
-            Collected(new[] { "frames", ropes.ToString(CultureInfo.InvariantCulture), segments.ToString(CultureInfo.InvariantCulture),
-                workers.ToString(CultureInfo.InvariantCulture), frames.ToString(CultureInfo.InvariantCulture) }, log);
-
         /// <summary>
         /// Instructions callgrind collected (all threads) while this tool ran with <paramref name="toolArguments"/>
         /// (tiered compilation off), or −1 when valgrind is missing or fails.
