@@ -6,10 +6,11 @@ using System.Text.RegularExpressions;
 namespace HookeRope.Bench
 {
     /// <summary>
-    /// Instructions per unit from callgrind, stable on a loaded machine where wall-clock is not: runs this tool's
-    /// <c>frames</c> mode under <c>valgrind --tool=callgrind</c> (tiered compilation off, so every method is compiled
-    /// once, fully optimised) for a short and a long run and divides the difference of the collected instruction counts
-    /// (all threads) by the difference in work units, so start-up, JIT and scene building cancel out.
+    /// Instruction counts from callgrind of this (JIT-compiled) tool, for the mesh and collision commands: runs one of
+    /// its modes under <c>valgrind --tool=callgrind</c> (tiered compilation off) and returns the instructions collected
+    /// (all threads); callers count a short and a long run and divide the difference by the difference in work, so
+    /// start-up, JIT and scene building cancel out. The goal table's counts come from the native probe instead
+    /// (Tools~/Kernels/goal-count.sh, <see cref="GoalCounts"/>).
     /// </summary>
     internal static class InstructionCounter
     {
