@@ -129,22 +129,27 @@ namespace HookeRope.Geometry
         /// <summary>
         /// Tangents (central differences of the centres) and normals by parallel transport from the piece's first ring,
         /// whose normal is the last build's normal at that particle, re-projected only when its tangent changed (so the
-        /// tube does not spin between frames, and the same input gives the same bits). Returns true when the ring distances
-        /// it left in <see cref="slopeDistance"/> hold for <see cref="ComputeSlopes"/> (no fold tip moved a centre).
+        /// tube does not spin between frames, and the same input gives the same bits). The same loop takes each pair of
+        /// consecutive rings' fold test and geometric limits (<see cref="LimitPair"/>: the step between their centres, its
+        /// advance past both planes, the crossing caps and skew marks), which need that pair's final centres and tangents
+        /// and nothing further along; the fans next to fold tips follow (<see cref="LimitTipFans"/>) only when the piece has
+        /// a tip. Returns true when the ring distances it left in <see cref="slopeDistance"/> hold for
+        /// <see cref="ComputeSlopes"/> (no fold tip moved a centre); <paramref name="anySkewed"/> tells whether a ring was
+        /// marked skewed.
         /// </summary>
-        private bool ComputeFrames(int a, int b, int first, int last)
+        private bool ComputeFrames(int a, int b, int first, int last, out bool anySkewed)
         {
             // the ring arrays once (RepairFold writes centers[k] through the field: the same array)
             ReadOnlySpan<Float3> c = centers;
             Span<Float3> tangent = tangents, normal = normals;
-            Span<float> distance = slopeDistance;
-            Span<bool> tip = foldTip;
+            Span<float> distance = slopeDistance, cap = capSquared, gap = gapSquared;
+            Span<bool> tip = foldTip, skew = skewed;
             Float3 span = c[last] - c[first];
             float px = span.X, py = span.Y, pz = span.Z;
             if (!Normalize(ref px, ref py, ref pz)) { px = 1f; py = 0f; pz = 0f; }
             // (px, py, pz): ring k − 1's tangent, before the first ring the piece's direction (the last fallback)
             float nx = 0f, ny = 0f, nz = 0f;
-            bool moved = false;
+            bool moved = false, tips = false, skews = false;
             for (int k = first; k <= last; k++)
             {
                 Float3 here = c[k];
@@ -167,10 +172,11 @@ namespace HookeRope.Geometry
                 }
                 if (!found) { tx = px; ty = py; tz = pz; }
                 tip[k] = false;
-                // ring k − 1's tangent is (px, py, pz), its centre behind
-                if (k > first && !ClearOfFold(k, behind, here, px, py, pz, tx, ty, tz) && RepairFold(k, ref tx, ref ty, ref tz)) moved = true;
+                cap[k] = float.PositiveInfinity;
+                skew[k] = false;
                 if (k == first)
                 {
+                    gap[k] = 0f;
                     Float3 seed = particleNormal[a];
                     nx = seed.X; ny = seed.Y; nz = seed.Z;
                     if (!(particleFrameValid[a] && particleTangent[a].Equals(new Float3(tx, ty, tz))))
@@ -178,8 +184,24 @@ namespace HookeRope.Geometry
                 }
                 else
                 {
+                    // ring k − 1's tangent is (px, py, pz), its centre behind: the step s between the two centres and its
+                    // advance past both planes, for the fold test and, once the pair is final, its limits
+                    float sx = here.X - behind.X, sy = here.Y - behind.Y, sz = here.Z - behind.Z;
+                    float gap2 = sx * sx + sy * sy + sz * sz;
+                    float past = sx * px + sy * py + sz * pz, before = sx * tx + sy * ty + sz * tz;
+                    if (!ClearOfFold(k, gap2, past, before) && RepairFold(k, ref tx, ref ty, ref tz))
+                    {
+                        moved = true;
+                        Float3 now = c[k];
+                        sx = now.X - behind.X; sy = now.Y - behind.Y; sz = now.Z - behind.Z;
+                        gap2 = sx * sx + sy * sy + sz * sz;
+                        past = sx * px + sy * py + sz * pz; before = sx * tx + sy * ty + sz * tz;
+                    }
+                    gap[k] = gap2;
+                    LimitPair(k, gap2, past, before, px, py, pz, tx, ty, tz, cap, skew, tip, ref skews);
                     FrameTransport.Transport(ref nx, ref ny, ref nz, px, py, pz, tx, ty, tz);
                 }
+                tips |= tip[k];
                 tangent[k] = new Float3(tx, ty, tz);
                 normal[k] = new Float3(nx, ny, nz);
                 px = tx; py = ty; pz = tz;
@@ -191,6 +213,8 @@ namespace HookeRope.Geometry
                 particleTangent[j] = tangents[k];
                 particleFrameValid[j] = true;
             }
+            if (tips) LimitTipFans(first, last);
+            anySkewed = skews;
             // a fold tip moved a centre after its neighbours' distances were taken: ComputeSlopes measures them again
             return !moved;
         }
@@ -323,6 +347,7 @@ namespace HookeRope.Geometry
         /// square roots are one 4-lane square root (correctly rounded per lane, so the same bits as three scalar ones), and
         /// the box goes into the bounds with one comparison per axis and side (c − e ≤ c + e).
         /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         private void AddRingBounds(int k, ref Bounds bounds)
         {
             Float3 c = centers[k], t = tangents[k];
