@@ -52,17 +52,26 @@ namespace HookeRope.Geometry
             EnsureFoldStorage(size);
         }
 
+        /// <summary>
+        /// Ring centres of piece [a, b] (rings first … last) relative to the frame origin: on the particles, or on the
+        /// segment's Catmull–Rom cubic (the control points as <see cref="Vector4"/> lanes x, y, z, 0, once per segment: each
+        /// ring's centre is then four lane products and three lane sums, the scalar's operations in its order per lane).
+        /// </summary>
         private void ComputeCenters(int a, int b, int first, int last, ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z)
         {
             ReadOnlySpan<int> ringSegments = layout.RingSegments;
             ReadOnlySpan<float> ringFractions = layout.RingFractions;
+            Span<Float3> centre = centers;
+            Span<float> spacing = spacing2;
+            ReadOnlySpan<float> radius = ringRadii;
             float ox = frameOrigin.X, oy = frameOrigin.Y, oz = frameOrigin.Z;
             // fallback direction of the piece: first particle to last
             float fx = (x[b] - ox) - (x[a] - ox), fy = (y[b] - oy) - (y[a] - oy), fz = (z[b] - oz) - (z[a] - oz);
             if (!Normalize(ref fx, ref fy, ref fz) || !(float.IsFinite(fx) && float.IsFinite(fy) && float.IsFinite(fz))) { fx = 1f; fy = 0f; fz = 0f; }
             // the control points of the segment the rings are in (the rings of a segment are consecutive)
             int held = -1;
-            float p0x = 0f, p0y = 0f, p0z = 0f, p1x = 0f, p1y = 0f, p1z = 0f, p2x = 0f, p2y = 0f, p2z = 0f, p3x = 0f, p3y = 0f, p3z = 0f;
+            Vector4 p0 = default, p1 = default, p2 = default, p3 = default;
+            Float3 previous = Float3.Zero, before = Float3.Zero;
             for (int k = first; k <= last; k++)
             {
                 int j = ringSegments[k];
@@ -80,8 +89,12 @@ namespace HookeRope.Geometry
                 {
                     if (j != held)
                     {
-                        RopePieces.ControlPoints(j, a, b, x, y, z, ox, oy, oz, out p0x, out p0y, out p0z,
-                            out p1x, out p1y, out p1z, out p2x, out p2y, out p2z, out p3x, out p3y, out p3z);
+                        RopePieces.ControlPoints(j, a, b, x, y, z, ox, oy, oz, out float p0x, out float p0y, out float p0z,
+                            out float p1x, out float p1y, out float p1z, out float p2x, out float p2y, out float p2z, out float p3x, out float p3y, out float p3z);
+                        p0 = new Vector4(p0x, p0y, p0z, 0f);
+                        p1 = new Vector4(p1x, p1y, p1z, 0f);
+                        p2 = new Vector4(p2x, p2y, p2z, 0f);
+                        p3 = new Vector4(p3x, p3y, p3z, 0f);
                         held = j;
                     }
                     // uniform Catmull–Rom weights of t, as RingLayout stores the fraction (the Hermite cubic with the
@@ -91,38 +104,37 @@ namespace HookeRope.Geometry
                     float w1 = 0.5f * (2f - 5f * t2 + 3f * t3);
                     float w2 = 0.5f * (t + 4f * t2 - 3f * t3);
                     float w3 = 0.5f * (-t2 + t3);
-                    cx = p0x * w0 + p1x * w1 + p2x * w2 + p3x * w3;
-                    cy = p0y * w0 + p1y * w1 + p2y * w2 + p3y * w3;
-                    cz = p0z * w0 + p1z * w1 + p2z * w2 + p3z * w3;
+                    Vector4 c4 = p0 * w0 + p1 * w1 + p2 * w2 + p3 * w3;
+                    cx = c4.X; cy = c4.Y; cz = c4.Z;
                 }
                 if (!(float.IsFinite(cx) && float.IsFinite(cy) && float.IsFinite(cz)))
                 {
-                    Float3 previous = k > first ? centers[k - 1] : Float3.Zero;
-                    cx = previous.X; cy = previous.Y; cz = previous.Z;
+                    Float3 fallback = k > first ? previous : Float3.Zero;
+                    cx = fallback.X; cy = fallback.Y; cz = fallback.Z;
                 }
-                spacing2[k] = float.PositiveInfinity;
+                spacing[k] = float.PositiveInfinity;
                 if (k > first)
                 {
                     // a ring closer than PushDistance·r to the previous one is pushed forward (no zero-area triangles)
-                    Float3 previous = centers[k - 1];
                     float dx = cx - previous.X, dy = cy - previous.Y, dz = cz - previous.Z;
-                    float minimum = PushDistance * ringRadii[k] + 1e-7f;
+                    float minimum = PushDistance * radius[k] + 1e-7f;
                     float gap2 = dx * dx + dy * dy + dz * dz;
-                    spacing2[k] = gap2;
+                    spacing[k] = gap2;
                     if (gap2 < minimum * minimum)
                     {
-                        spacing2[k] = float.NaN; // the centre now depends on the radius: no radius-only rebuild
+                        spacing[k] = float.NaN; // the centre now depends on the radius: no radius-only rebuild
                         float ux = fx, uy = fy, uz = fz;
                         if (k > first + 1)
                         {
-                            Float3 before = centers[k - 2];
                             ux = previous.X - before.X; uy = previous.Y - before.Y; uz = previous.Z - before.Z;
                             if (!Normalize(ref ux, ref uy, ref uz)) { ux = fx; uy = fy; uz = fz; }
                         }
                         cx = previous.X + ux * minimum; cy = previous.Y + uy * minimum; cz = previous.Z + uz * minimum;
                     }
                 }
-                centers[k] = new Float3(cx, cy, cz);
+                before = previous;
+                previous = new Float3(cx, cy, cz);
+                centre[k] = previous;
             }
         }
 
@@ -157,20 +169,8 @@ namespace HookeRope.Geometry
                 Float3 behind = k > first ? c[k - 1] : here;
                 float tx = ahead.X - behind.X, ty = ahead.Y - behind.Y, tz = ahead.Z - behind.Z;
                 // the length is ComputeSlopes' ring distance (the same centres)
-                bool found = Normalize(ref tx, ref ty, ref tz, out distance[k]);
-                if (!found && k < last)
-                {
-                    Float3 d = ahead - here;
-                    tx = d.X; ty = d.Y; tz = d.Z;
-                    found = Normalize(ref tx, ref ty, ref tz);
-                }
-                if (!found && k > first)
-                {
-                    Float3 d = here - behind;
-                    tx = d.X; ty = d.Y; tz = d.Z;
-                    found = Normalize(ref tx, ref ty, ref tz);
-                }
-                if (!found) { tx = px; ty = py; tz = pz; }
+                if (!Normalize(ref tx, ref ty, ref tz, out distance[k]))
+                    FallbackTangent(k > first, k < last, here, ahead, behind, px, py, pz, out tx, out ty, out tz);
                 tip[k] = false;
                 cap[k] = float.PositiveInfinity;
                 skew[k] = false;
@@ -192,8 +192,8 @@ namespace HookeRope.Geometry
                     if (!ClearOfFold(k, gap2, past, before) && RepairFold(k, ref tx, ref ty, ref tz))
                     {
                         moved = true;
-                        Float3 now = c[k];
-                        sx = now.X - behind.X; sy = now.Y - behind.Y; sz = now.Z - behind.Z;
+                        here = c[k];
+                        sx = here.X - behind.X; sy = here.Y - behind.Y; sz = here.Z - behind.Z;
                         gap2 = sx * sx + sy * sy + sz * sz;
                         past = sx * px + sy * py + sz * pz; before = sx * tx + sy * ty + sz * tz;
                     }
@@ -217,6 +217,31 @@ namespace HookeRope.Geometry
             anySkewed = skews;
             // a fold tip moved a centre after its neighbours' distances were taken: ComputeSlopes measures them again
             return !moved;
+        }
+
+        /// <summary>
+        /// A ring's tangent where its neighbours' centres coincide (out of the frame loop, which rarely needs it): the step
+        /// to the ring ahead, else the step from the ring behind, else the previous tangent (px, py, pz).
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
+        private static void FallbackTangent(bool hasBehind, bool hasAhead, in Float3 here, in Float3 ahead, in Float3 behind,
+            float px, float py, float pz, out float tx, out float ty, out float tz)
+        {
+            bool found = false;
+            tx = 0f; ty = 0f; tz = 0f;
+            if (hasAhead)
+            {
+                Float3 d = ahead - here;
+                tx = d.X; ty = d.Y; tz = d.Z;
+                found = Normalize(ref tx, ref ty, ref tz);
+            }
+            if (!found && hasBehind)
+            {
+                Float3 d = here - behind;
+                tx = d.X; ty = d.Y; tz = d.Z;
+                found = Normalize(ref tx, ref ty, ref tz);
+            }
+            if (!found) { tx = px; ty = py; tz = pz; }
         }
 
         /// <summary>
