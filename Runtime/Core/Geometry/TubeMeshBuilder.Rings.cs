@@ -251,21 +251,26 @@ namespace HookeRope.Geometry
         /// </summary>
         private void ComputeSlopes(int first, int last, bool distancesKept)
         {
+            ReadOnlySpan<Float3> c = centers;
+            ReadOnlySpan<float> r = ringRadii;
+            ReadOnlySpan<bool> tip = foldTip;
+            Span<float> distance = slopeDistance, slope = slopes;
             for (int k = first; k <= last; k++)
             {
                 int ahead = k < last ? k + 1 : k;
                 int behind = k > first ? k - 1 : k;
                 if (!distancesKept)
                 {
-                    Float3 ca = centers[ahead], cb = centers[behind];
+                    Float3 ca = c[ahead], cb = c[behind];
                     float dx = ca.X - cb.X, dy = ca.Y - cb.Y, dz = ca.Z - cb.Z;
-                    slopeDistance[k] = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
+                    distance[k] = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
                 }
-                slopes[k] = foldTip[k] ? 0f : Slope(ringRadii[ahead], ringRadii[behind], slopeDistance[k]);
+                slope[k] = tip[k] ? 0f : Slope(r[ahead], r[behind], distance[k]);
             }
         }
 
         /// <summary>dr/ds between two rings <paramref name="distance"/> apart, clamped to ±10 (NaN counts as −10).</summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         private static float Slope(float ahead, float behind, float distance)
         {
             float slope = distance > 1e-12f ? (ahead - behind) / distance : 0f;
