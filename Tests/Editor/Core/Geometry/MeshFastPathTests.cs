@@ -1,8 +1,8 @@
 using System;
 using HookeRope.Geometry;
 using HookeRope.Mathematics;
-using HookeRope.Radius;
 using HookeRope.Solver;
+using HookeRope.Tests.Core.Fracture;
 using NUnit.Framework;
 
 namespace HookeRope.Tests.Core.Geometry
@@ -48,27 +48,12 @@ namespace HookeRope.Tests.Core.Geometry
             Assert.That(reference.MostRings, Is.GreaterThan(2 * 64), "the whipped lanyard draws more than two rings per segment at some frame");
         }
 
-        /// <summary>The fracture cord (Zone neck, fracture, burr strands) pulled to its break and 25 frames on: necks, broken ends with burrs, dangling halves and fold tips.</summary>
+        /// <summary>The lab's fracture cord (<see cref="FractureCord"/>: Zone neck, fracture, burr strands) pulled to its break and 25 frames on: necks, broken ends with burrs, dangling halves and fold tips.</summary>
         [TestCaseSource(nameof(Sides))]
         public void ANeckingBreakingCordDrawsTheSameBitsOnEveryPath(int sides)
         {
-            RopeSimulation Make()
-            {
-                var settings = new RopeSettings
-                {
-                    RestLength = 1f, SegmentCount = 21, Radius = 0.01f, AxialStiffness = 1000f, Density = 1100f, Gravity = new Float3(0f, -9.81f, 0f),
-                    Substeps = 4, Iterations = 1, Damping = 0f, Solver = ConstraintSolverKind.ExactChain,
-                };
-                var radius = new RadiusSettings
-                {
-                    PoissonRatio = 0.5f, Necking = true, NeckMode = NeckMode.Zone, NeckRadiusFraction = 0.85f, DefectPosition = 0.5f,
-                    Fracture = true, BreakStrain = 0.5f,
-                };
-                var rope = new Rope(settings, Float3.Zero, new Float3(1f, 0f, 0f));
-                rope.AddPin(0, Float3.Zero);
-                rope.AddPin(21, new Float3(1f, 0f, 0f));
-                return new RopeSimulation(rope, radius, new TubeMeshSettings { RadialSegments = sides });
-            }
+            int pin = 0;
+            RopeSimulation Make() => FractureCord.Build(new TubeMeshSettings { RadialSegments = sides }, out pin);
             var pair = new Pair(Make(), Make());
             int step = 0, after = -1, tips = 0;
             bool necked = false;
@@ -76,8 +61,8 @@ namespace HookeRope.Tests.Core.Geometry
             {
                 step++;
                 var target = new Float3(1f + 0.5f * step * HostStep, 0f, 0f);
-                pair.Full.Rope.SetPinTarget(1, target);
-                pair.Fast.Rope.SetPinTarget(1, target);
+                pair.Full.Rope.SetPinTarget(pin, target);
+                pair.Fast.Rope.SetPinTarget(pin, target);
                 pair.Step();
                 pair.AssertSameMesh("cord, " + sides + " sides, step " + step);
                 necked |= pair.Fast.RadiusModel.NeckDepth > 0f;
