@@ -1,4 +1,5 @@
 using System;
+using HookeRope.Mathematics;
 
 namespace HookeRope.Solver
 {
@@ -16,7 +17,7 @@ namespace HookeRope.Solver
     /// linearisation (release a segment whose force would push, re-admit one the new solution stretches; release a
     /// contact the chain lifts off, hold one it drives into the surface).
     /// </summary>
-    internal static class ExactChainSolver
+    internal static partial class ExactChainSolver
     {
         /// <summary>
         /// Smallest cosine between the accumulated force of a segment beside a held contact and its direction for the force's
@@ -131,8 +132,19 @@ namespace HookeRope.Solver
         /// </summary>
         private static void Assemble(ChainState c, double invH2, double gammaAll, bool first, bool tensionOnly)
         {
-            int s = c.SegmentCount;
-            // spans of exactly s entries (the loop bound) index without bounds checks; B spans are particle j + 1's
+            c.RigidInSolve = false;
+            // the lanes path takes whole runs of VectorPath.FloatLanes segments of an unbroken, non-plastic chain (and falls
+            // back to the rows below for a run with an unusual segment); the rows take the rest
+            int from = VectorPath.Enabled && c.Plasticity == null && c.BrokenCount == 0
+                ? AssembleLanes(c, invH2, gammaAll, first, tensionOnly) : 0;
+            if (from < c.SegmentCount) AssembleRows(c, from, c.SegmentCount, invH2, gammaAll, first, tensionOnly);
+        }
+
+        /// <summary>The scalar <see cref="Assemble"/> of segments from … to − 1.</summary>
+        private static void AssembleRows(ChainState c, int from, int to, double invH2, double gammaAll, bool first, bool tensionOnly)
+        {
+            int s = to;
+            // spans of exactly s = to entries (the loop bound) index without bounds checks; B spans are particle j + 1's
             ReadOnlySpan<float> wA = ChainState.Exactly(c.InverseMass, s), wB = ChainState.Shifted(c.InverseMass, s);
             ReadOnlySpan<float> dxA = ChainState.Exactly(c.DX, s), dyA = ChainState.Exactly(c.DY, s), dzA = ChainState.Exactly(c.DZ, s);
             ReadOnlySpan<float> dxB = ChainState.Shifted(c.DX, s), dyB = ChainState.Shifted(c.DY, s), dzB = ChainState.Shifted(c.DZ, s);
@@ -152,9 +164,8 @@ namespace HookeRope.Solver
             Span<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
             Span<bool> assembled = ChainState.Exactly(c.Assembled, s);
             Span<double> effectiveRest = ChainState.Exactly(c.EffectiveRest, s);
-            c.RigidInSolve = false;
             SegmentPlasticity plastic = c.Plasticity;
-            for (int j = 0; j < s; j++)
+            for (int j = from; j < to; j++)
             {
                 assembled[j] = false;
                 if (broken[j]) { active[j] = false; continue; }

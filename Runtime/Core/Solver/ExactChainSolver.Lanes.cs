@@ -1,0 +1,198 @@
+using System;
+using System.Numerics;
+using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
+using HookeRope.Mathematics;
+
+namespace HookeRope.Solver
+{
+    internal static partial class ExactChainSolver
+    {
+        /// <summary>
+        /// <see cref="AssembleRows"/> on runs of <see cref="VectorPath.FloatLanes"/> segments (an unbroken chain without
+        /// plasticity), each run as two halves of <see cref="VectorPath.DoubleLanes"/> (<see cref="AssembleHalf{THalf}"/>).
+        /// A run with a segment the rows treat apart — a vanishing or non-finite span, no mobility and no compliance, or a
+        /// force far off its segment while the chain has contacts — goes to <see cref="AssembleRows"/> whole, before anything
+        /// of it is stored. Returns the first segment not assembled (the rows take the rest).
+        /// </summary>
+        private static int AssembleLanes(ChainState c, double invH2, double gammaAll, bool first, bool tensionOnly)
+        {
+            int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes;
+            var v = new AssemblyViews(c, s);
+            Span<double> rx = ChainState.Exactly(c.ResidualX, s), ry = ChainState.Exactly(c.ResidualY, s), rz = ChainState.Exactly(c.ResidualZ, s);
+            Span<double> axial = ChainState.Exactly(c.AxialCompliance, s), transverse = ChainState.Exactly(c.TransverseCompliance, s), estimate = ChainState.Exactly(c.EstimatedTension, s);
+            Span<double> effectiveRest = ChainState.Exactly(c.EffectiveRest, s);
+            Span<Vector<float>> dirX = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(c.DirX, s));
+            Span<Vector<float>> dirY = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(c.DirY, s));
+            Span<Vector<float>> dirZ = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(c.DirZ, s));
+            Span<Vector<float>> length = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(c.Length, s));
+            Span<bool> assembled = ChainState.Exactly(c.Assembled, s);
+            var p = new AssemblyParameters { InvH2 = invH2, Gamma = gammaAll, First = first, TensionOnly = tensionOnly, Contacts = c.ContactCount > 0 };
+            for (int k = 0; k < runs; k++)
+            {
+                AssembleHalf<LowHalf>(in v, k, in p, out AssembledLanes low);
+                AssembleHalf<HighHalf>(in v, k, in p, out AssembledLanes high);
+                int j = k * lanes;
+                if (!Vector.EqualsAll(low.Unusual | high.Unusual, Vector<long>.Zero))
+                {
+                    AssembleRows(c, j, j + lanes, invH2, gammaAll, first, tensionOnly);
+                    continue;
+                }
+                if (!Vector.EqualsAll(low.Rigid | high.Rigid, Vector<long>.Zero)) c.RigidInSolve = true;
+                low.Store(rx, ry, rz, axial, transverse, estimate, effectiveRest, j);
+                high.Store(rx, ry, rz, axial, transverse, estimate, effectiveRest, j + VectorPath.DoubleLanes);
+                dirX[k] = Vector.Narrow(low.Nx, high.Nx); dirY[k] = Vector.Narrow(low.Ny, high.Ny); dirZ[k] = Vector.Narrow(low.Nz, high.Nz);
+                length[k] = Vector.Narrow(low.Length, high.Length);
+                assembled.Slice(j, lanes).Fill(true);
+            }
+            return runs * lanes;
+        }
+
+        /// <summary>
+        /// The rows of one half of run k (<typeparamref name="THalf"/>: <see cref="LowHalf"/> or <see cref="HighHalf"/>): each
+        /// lane does <see cref="AssembleRows"/>'s operations in its order, and both sides of each of its branches are computed
+        /// on every lane and selected, so every lane keeps the row's bits.
+        /// </summary>
+        private static void AssembleHalf<THalf>(in AssemblyViews v, int k, in AssemblyParameters p, out AssembledLanes o) where THalf : struct
+        {
+            int h = 2 * k + (typeof(THalf) == typeof(HighHalf) ? 1 : 0);
+            Vector<double> zero = Vector<double>.Zero, one = Vector<double>.One, invH2 = new Vector<double>(p.InvH2);
+            // ChainState.Change, Component and Normalise
+            Vector<double> ddx = (Wide<THalf>(v.DxB[k]) - Wide<THalf>(v.DxA[k])) + (Wide<THalf>(v.DlxB[k]) - Wide<THalf>(v.DlxA[k]));
+            Vector<double> ddy = (Wide<THalf>(v.DyB[k]) - Wide<THalf>(v.DyA[k])) + (Wide<THalf>(v.DlyB[k]) - Wide<THalf>(v.DlyA[k]));
+            Vector<double> ddz = (Wide<THalf>(v.DzB[k]) - Wide<THalf>(v.DzA[k])) + (Wide<THalf>(v.DlzB[k]) - Wide<THalf>(v.DlzA[k]));
+            Vector<double> sx = Wide<THalf>(v.PxB[k]) - Wide<THalf>(v.PxA[k]), lx = Wide<THalf>(v.LxB[k]) - Wide<THalf>(v.LxA[k]);
+            Vector<double> sy = Wide<THalf>(v.PyB[k]) - Wide<THalf>(v.PyA[k]), ly = Wide<THalf>(v.LyB[k]) - Wide<THalf>(v.LyA[k]);
+            Vector<double> sz = Wide<THalf>(v.PzB[k]) - Wide<THalf>(v.PzA[k]), lz = Wide<THalf>(v.LzB[k]) - Wide<THalf>(v.LzA[k]);
+            Vector<double> cx = sx + (lx + ddx), cy = sy + (ly + ddy), cz = sz + (lz + ddz);
+            Vector<double> len = Vector.SquareRoot(cx * cx + cy * cy + cz * cz);
+            Vector<long> unusual = ~(Vector.GreaterThan(len, new Vector<double>(1e-12)) & Vector.LessThanOrEqual(len, new Vector<double>(float.MaxValue)));
+            Vector<double> inv = one / len;
+            Vector<double> nx = cx * inv, ny = cy * inv, nz = cz * inv;
+            Vector<double> alpha = Wide<THalf>(v.Compliance[k]);
+            Vector<double> mobility = Wide<THalf>(v.WA[k]) + Wide<THalf>(v.WB[k]);
+            Vector<long> rigid = Vector.Equals(alpha, zero);
+            unusual |= Vector.Equals(mobility, zero) & rigid;
+            // g = alpha > 0 ? gammaAll : 0, damped where g > 0
+            Vector<long> compliant = Vector.GreaterThan(alpha, zero);
+            Vector<double> g = Vector.ConditionalSelect(compliant, new Vector<double>(p.Gamma), zero);
+            Vector<double> restJ = Wide<THalf>(v.Rest[k]);
+            Vector<double> alphaTilde = alpha * invH2, restEffective = restJ;
+            if (p.Gamma > 0.0)
+            {
+                Vector<double> rate;
+                if (p.TensionOnly) rate = nx * ddx + ny * ddy + nz * ddz;
+                else
+                {
+                    // StartLength: its components add 0.0 to the remainders' difference, which changes at most the sign of a
+                    // zero, and the squares drop that
+                    Vector<double> ox = sx + lx, oy = sy + ly, oz = sz + lz;
+                    rate = len - Vector.SquareRoot(ox * ox + oy * oy + oz * oz);
+                }
+                Vector<double> onePlusG = one + g;
+                restEffective = Vector.ConditionalSelect(compliant, (restJ + g * (len - rate)) / onePlusG, restJ);
+                alphaTilde = Vector.ConditionalSelect(compliant, alphaTilde / onePlusG, alphaTilde);
+            }
+            Vector<double> fx = v.Fx[h], fy = v.Fy[h], fz = v.Fz[h];
+            Vector<double> magnitude = Vector.SquareRoot(fx * fx + fy * fy + fz * fz);
+            Vector<long> loaded = Vector.GreaterThan(magnitude, zero);
+            Vector<double> sense = Vector.ConditionalSelect(Vector.GreaterThanOrEqual(fx * nx + fy * ny + fz * nz, zero), one, -one);
+            Vector<double> inverse = sense / magnitude;
+            Vector<double> signed = Vector.ConditionalSelect(loaded, sense * magnitude, zero);
+            Vector<double> ex = Vector.ConditionalSelect(loaded, fx * inverse, nx);
+            Vector<double> ey = Vector.ConditionalSelect(loaded, fy * inverse, ny);
+            Vector<double> ez = Vector.ConditionalSelect(loaded, fz * inverse, nz);
+            // beside a held contact a force far off its segment takes the rows' test (BesideHeldContact)
+            if (p.Contacts) unusual |= loaded & Vector.LessThan(ex * nx + ey * ny + ez * nz, new Vector<double>(MinForceAlignment));
+            Vector<double> last = Wide<THalf>(v.LastTension[k]);
+            Vector<double> tension = p.First ? Vector.Abs(last) : Vector.Abs(signed * invH2);
+            Vector<double> target = restEffective + alphaTilde * signed;
+            Vector<double> floor = new Vector<double>(1e-6) * restJ;
+            Vector<double> geometric = Vector.ConditionalSelect(Vector.LessThan(target, floor), floor, target) * invH2;
+            Vector<double> cap = new Vector<double>(MaxTransverseComplianceRatio) * mobility;
+            Vector<long> axialOnly = ~Vector.LessThan(geometric, cap * tension);
+            if (!p.TensionOnly)
+            {
+                axialOnly |= Vector.LessThan(p.First ? last : signed, zero); // pushing
+                ex = Vector.ConditionalSelect(axialOnly, nx, ex); ey = Vector.ConditionalSelect(axialOnly, ny, ey); ez = Vector.ConditionalSelect(axialOnly, nz, ez);
+            }
+            o.Unusual = unusual; o.Rigid = rigid;
+            o.Nx = nx; o.Ny = ny; o.Nz = nz; o.Length = len;
+            o.Transverse = Vector.ConditionalSelect(axialOnly, cap, geometric / tension);
+            o.Estimate = tension; o.Axial = alphaTilde; o.Rest = restEffective;
+            o.Rx = len * nx - target * ex; o.Ry = len * ny - target * ey; o.Rz = len * nz - target * ez;
+        }
+
+        /// <summary>The half <typeparamref name="THalf"/> of a run of floats, as doubles (exact).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector<double> Wide<THalf>(Vector<float> run) where THalf : struct
+        {
+            Vector.Widen(run, out Vector<double> low, out Vector<double> high);
+            return typeof(THalf) == typeof(HighHalf) ? high : low;
+        }
+
+        /// <summary>Type argument of the half kernels: the first <see cref="VectorPath.DoubleLanes"/> lanes of a run.</summary>
+        private struct LowHalf { }
+
+        /// <summary>Type argument of the half kernels: the last <see cref="VectorPath.DoubleLanes"/> lanes of a run.</summary>
+        private struct HighHalf { }
+
+        /// <summary>The per-call inputs of <see cref="AssembleHalf{THalf}"/>.</summary>
+        private struct AssemblyParameters
+        {
+            public double InvH2, Gamma;
+            public bool First, TensionOnly, Contacts;
+        }
+
+        /// <summary>One half run's results of <see cref="AssembleHalf{THalf}"/>, stored only when no lane of the run is unusual.</summary>
+        private struct AssembledLanes
+        {
+            public Vector<long> Unusual, Rigid;
+            public Vector<double> Nx, Ny, Nz, Length, Rx, Ry, Rz, Axial, Transverse, Estimate, Rest;
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            public void Store(Span<double> rx, Span<double> ry, Span<double> rz, Span<double> axial, Span<double> transverse,
+                Span<double> estimate, Span<double> effectiveRest, int j)
+            {
+                Put(rx, j, Rx); Put(ry, j, Ry); Put(rz, j, Rz);
+                Put(axial, j, Axial); Put(transverse, j, Transverse); Put(estimate, j, Estimate); Put(effectiveRest, j, Rest);
+            }
+        }
+
+        /// <summary>Writes v to values[j …].</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void Put(Span<double> values, int j, Vector<double> v) =>
+            MemoryMarshal.Cast<double, Vector<double>>(values.Slice(j, VectorPath.DoubleLanes))[0] = v;
+
+        /// <summary>
+        /// The inputs of <see cref="AssembleHalf{THalf}"/> as runs of <see cref="VectorPath.FloatLanes"/> (A: a segment's
+        /// first particle, B: its second; the forces as runs of <see cref="VectorPath.DoubleLanes"/>).
+        /// </summary>
+        private readonly ref struct AssemblyViews
+        {
+            public readonly ReadOnlySpan<Vector<float>> WA, WB, DxA, DxB, DyA, DyB, DzA, DzB, DlxA, DlxB, DlyA, DlyB, DlzA, DlzB;
+            public readonly ReadOnlySpan<Vector<float>> PxA, PxB, PyA, PyB, PzA, PzB, LxA, LxB, LyA, LyB, LzA, LzB, Rest, Compliance, LastTension;
+            public readonly ReadOnlySpan<Vector<double>> Fx, Fy, Fz;
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            public AssemblyViews(ChainState c, int s)
+            {
+                WA = A(c.InverseMass, s); WB = B(c.InverseMass, s);
+                DxA = A(c.DX, s); DxB = B(c.DX, s); DyA = A(c.DY, s); DyB = B(c.DY, s); DzA = A(c.DZ, s); DzB = B(c.DZ, s);
+                DlxA = A(c.DLowX, s); DlxB = B(c.DLowX, s); DlyA = A(c.DLowY, s); DlyB = B(c.DLowY, s); DlzA = A(c.DLowZ, s); DlzB = B(c.DLowZ, s);
+                PxA = A(c.PrevX, s); PxB = B(c.PrevX, s); PyA = A(c.PrevY, s); PyB = B(c.PrevY, s); PzA = A(c.PrevZ, s); PzB = B(c.PrevZ, s);
+                LxA = A(c.LowX, s); LxB = B(c.LowX, s); LyA = A(c.LowY, s); LyB = B(c.LowY, s); LzA = A(c.LowZ, s); LzB = B(c.LowZ, s);
+                Rest = A(c.RestLength, s); Compliance = A(c.Compliance, s); LastTension = A(c.Tension, s);
+                Fx = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.ForceX, s));
+                Fy = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.ForceY, s));
+                Fz = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.ForceZ, s));
+            }
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static ReadOnlySpan<Vector<float>> A(float[] values, int s) => MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(values, s));
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static ReadOnlySpan<Vector<float>> B(float[] values, int s) => MemoryMarshal.Cast<float, Vector<float>>(ChainState.Shifted(values, s));
+        }
+    }
+}
