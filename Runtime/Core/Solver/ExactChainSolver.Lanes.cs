@@ -194,5 +194,140 @@ namespace HookeRope.Solver
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             private static ReadOnlySpan<Vector<float>> B(float[] values, int s) => MemoryMarshal.Cast<float, Vector<float>>(ChainState.Shifted(values, s));
         }
+
+        /// <summary>
+        /// <see cref="MoveParticles{T}"/> of a chain without contacts or broken segments on lanes: the particle pass (motion
+        /// w_i·(δΛ_i − δΛ_{i−1}) and the displacement's double split) on runs of <see cref="VectorPath.FloatLanes"/>
+        /// particles from particle 1, then the segments' second-order length errors from the recorded motions on runs of
+        /// segments (a run with a released segment writes only its active lanes, row by row). Each lane does the scalar
+        /// pass's operations in its order, so the bits are the same.
+        /// </summary>
+        private static void MoveParticlesLanes(ChainState c)
+        {
+            int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = (s - 1) / lanes;
+            // particle 0, whose pull has no segment before it
+            MoveParticle(c, 0, c.StepX[0], c.StepY[0], c.StepZ[0]);
+            ReadOnlySpan<Vector<float>> w = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Shifted(c.InverseMass, s - 1));
+            for (int k = 0; k < runs; k++)
+            {
+                Vector.Widen(w[k], out Vector<double> wLow, out Vector<double> wHigh);
+                MoveLanes(c.StepX, c.DX, c.DLowX, c.MotionX, s, k, wLow, wHigh);
+                MoveLanes(c.StepY, c.DY, c.DLowY, c.MotionY, s, k, wLow, wHigh);
+                MoveLanes(c.StepZ, c.DZ, c.DLowZ, c.MotionZ, s, k, wLow, wHigh);
+            }
+            for (int i = 1 + runs * lanes; i < s; i++)
+                MoveParticle(c, i, c.StepX[i] - c.StepX[i - 1], c.StepY[i] - c.StepY[i - 1], c.StepZ[i] - c.StepZ[i - 1]);
+            // the last particle, pulled by its segment alone (Move's w·pull, as the scalar pass)
+            MoveParticle(c, s, -c.StepX[s - 1], -c.StepY[s - 1], -c.StepZ[s - 1]);
+            LengthErrorLanes(c);
+        }
+
+        /// <summary>Particle i moved by its inverse mass times the pull (N·s²), recorded as its motion (the scalar pass's step).</summary>
+        private static void MoveParticle(ChainState c, int i, double px, double py, double pz)
+        {
+            double wi = c.InverseMass[i];
+            double mx = wi * px, my = wi * py, mz = wi * pz;
+            c.AddDisplacement(i, mx, my, mz);
+            c.MotionX[i] = mx; c.MotionY[i] = my; c.MotionZ[i] = mz;
+        }
+
+        /// <summary>
+        /// One axis of run k of particles 1 + k·FloatLanes …: motion m = w·(δΛ_i − δΛ_{i−1}) (wLow, wHigh: the run's inverse
+        /// masses), added to the displacement d + low in double and split back as <see cref="ChainState.Add"/> does.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void MoveLanes(double[] step, float[] d, float[] low, double[] motion, int s, int k, Vector<double> wLow, Vector<double> wHigh)
+        {
+            ReadOnlySpan<Vector<double>> after = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Shifted(step, s - 1));
+            ReadOnlySpan<Vector<double>> before = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(step, s - 1));
+            Span<Vector<double>> m = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Shifted(motion, s - 1));
+            Span<Vector<float>> dv = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Shifted(d, s - 1));
+            Span<Vector<float>> lv = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Shifted(low, s - 1));
+            Vector<double> mLow = wLow * (after[2 * k] - before[2 * k]), mHigh = wHigh * (after[2 * k + 1] - before[2 * k + 1]);
+            m[2 * k] = mLow; m[2 * k + 1] = mHigh;
+            Vector.Widen(dv[k], out Vector<double> dLow, out Vector<double> dHigh);
+            Vector.Widen(lv[k], out Vector<double> lLow, out Vector<double> lHigh);
+            Vector<double> xLow = (dLow + lLow) + mLow, xHigh = (dHigh + lHigh) + mHigh;
+            Vector<float> f = Vector.Narrow(xLow, xHigh);
+            Vector.Widen(f, out Vector<double> fLow, out Vector<double> fHigh);
+            dv[k] = f;
+            lv[k] = Vector.Narrow(xLow - fLow, xHigh - fHigh);
+        }
+
+        /// <summary>
+        /// The active segments' second-order length errors (<see cref="LengthError"/>) from the motions of their ends, on runs
+        /// of <see cref="VectorPath.FloatLanes"/> segments; a run with a released segment and the tail go row by row.
+        /// </summary>
+        private static void LengthErrorLanes(ChainState c)
+        {
+            int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes;
+            ReadOnlySpan<Vector<double>> ax = Cast(ChainState.Exactly(c.MotionX, s)), ay = Cast(ChainState.Exactly(c.MotionY, s)), az = Cast(ChainState.Exactly(c.MotionZ, s));
+            ReadOnlySpan<Vector<double>> bx = Cast(ChainState.Shifted(c.MotionX, s)), by = Cast(ChainState.Shifted(c.MotionY, s)), bz = Cast(ChainState.Shifted(c.MotionZ, s));
+            ReadOnlySpan<Vector<float>> dirX = Cast(ChainState.Exactly(c.DirX, s)), dirY = Cast(ChainState.Exactly(c.DirY, s)), dirZ = Cast(ChainState.Exactly(c.DirZ, s));
+            ReadOnlySpan<Vector<float>> length = Cast(ChainState.Exactly(c.Length, s)), rest = Cast(ChainState.Exactly(c.RestLength, s));
+            Span<Vector<double>> error = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.LengthError, s));
+            ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
+            Vector<double> two = new Vector<double>(2.0), micro = new Vector<double>(1e-6);
+            for (int k = 0; k < runs; k++)
+            {
+                if (!AllTrue(active, k * lanes))
+                {
+                    LengthErrorRows(c, k * lanes, (k + 1) * lanes);
+                    continue;
+                }
+                Vector.Widen(dirX[k], out Vector<double> exLow, out Vector<double> exHigh);
+                Vector.Widen(dirY[k], out Vector<double> eyLow, out Vector<double> eyHigh);
+                Vector.Widen(dirZ[k], out Vector<double> ezLow, out Vector<double> ezHigh);
+                Vector.Widen(length[k], out Vector<double> lLow, out Vector<double> lHigh);
+                Vector.Widen(rest[k], out Vector<double> rLow, out Vector<double> rHigh);
+                error[2 * k] = LengthErrors(bx[2 * k] - ax[2 * k], by[2 * k] - ay[2 * k], bz[2 * k] - az[2 * k], exLow, eyLow, ezLow, lLow, micro * rLow, two);
+                error[2 * k + 1] = LengthErrors(bx[2 * k + 1] - ax[2 * k + 1], by[2 * k + 1] - ay[2 * k + 1], bz[2 * k + 1] - az[2 * k + 1], exHigh, eyHigh, ezHigh, lHigh, micro * rHigh, two);
+            }
+            LengthErrorRows(c, runs * lanes, s);
+        }
+
+        /// <summary><see cref="LengthError"/> per lane (floor: 1e-6 times the rest length).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector<double> LengthErrors(Vector<double> ux, Vector<double> uy, Vector<double> uz, Vector<double> ex, Vector<double> ey, Vector<double> ez,
+            Vector<double> length, Vector<double> floor, Vector<double> two)
+        {
+            Vector<double> along = ux * ex + uy * ey + uz * ez;
+            Vector<double> perp = ux * ux + uy * uy + uz * uz - along * along;
+            return perp / (two * Vector.ConditionalSelect(Vector.LessThan(length, floor), floor, length));
+        }
+
+        /// <summary>The length errors of the active segments from … to − 1, row by row.</summary>
+        private static void LengthErrorRows(ChainState c, int from, int to)
+        {
+            for (int j = from; j < to; j++)
+            {
+                if (!c.Active[j]) continue;
+                c.LengthError[j] = LengthError(c.MotionX[j + 1] - c.MotionX[j], c.MotionY[j + 1] - c.MotionY[j], c.MotionZ[j + 1] - c.MotionZ[j],
+                    c.DirX[j], c.DirY[j], c.DirZ[j], c.Length[j], c.RestLength[j]);
+            }
+        }
+
+        /// <summary>A span as runs of <see cref="Vector{T}"/>.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static ReadOnlySpan<Vector<double>> Cast(Span<double> values) => MemoryMarshal.Cast<double, Vector<double>>(values);
+
+        /// <summary>A span as runs of <see cref="Vector{T}"/>.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static ReadOnlySpan<Vector<float>> Cast(Span<float> values) => MemoryMarshal.Cast<float, Vector<float>>(values);
+
+        /// <summary>
+        /// True when the <see cref="VectorPath.FloatLanes"/> flags at flags[index …] are all true: a C# true is the byte 1, so
+        /// eight or four flags are read as one word (any other byte reads as not all true, which only sends the run row by row).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static bool AllTrue(ReadOnlySpan<bool> flags, int index)
+        {
+            ReadOnlySpan<byte> run = MemoryMarshal.AsBytes(flags.Slice(index, VectorPath.FloatLanes));
+            if (run.Length == 8) return MemoryMarshal.Read<ulong>(run) == 0x0101010101010101UL;
+            if (run.Length == 4) return MemoryMarshal.Read<uint>(run) == 0x01010101U;
+            for (int k = 0; k < run.Length; k++)
+                if (run[k] != 1) return false;
+            return true;
+        }
     }
 }

@@ -354,6 +354,7 @@ namespace HookeRope.Solver
         private static double Apply(ChainState c, bool contacts, bool tensionOnly, double invH2, out bool unconverged, out bool estimateTooLow)
         {
             if (contacts) MoveParticles<SegmentForceSystem.WithContacts>(c);
+            else if (VectorPath.Enabled && c.BrokenCount == 0 && c.SegmentCount > VectorPath.FloatLanes) MoveParticlesLanes(c);
             else MoveParticles<SegmentForceSystem.NoContacts>(c);
             int s = c.SegmentCount;
             ReadOnlySpan<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
