@@ -329,5 +329,105 @@ namespace HookeRope.Solver
                 if (run[k] != 1) return false;
             return true;
         }
+
+        /// <summary>
+        /// <see cref="ApplyRows"/> on runs of <see cref="VectorPath.FloatLanes"/> active segments whose tests all pass
+        /// quietly — no tension above twice its estimate, a pushing segment's error within the tolerance, a pulling one's
+        /// within the round-off floor — which then only accumulate their forces and write λ (the lanes' bits are the rows').
+        /// Any other run goes to <see cref="ApplyRows"/> whole, in order, before anything of it is stored. Returns the
+        /// first segment not done.
+        /// </summary>
+        private static int ApplyLanes(ChainState c, bool tensionOnly, double invH2, ref ConvergenceTests tests)
+        {
+            int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes;
+            ReadOnlySpan<Vector<float>> dirX = Cast(ChainState.Exactly(c.DirX, s)), dirY = Cast(ChainState.Exactly(c.DirY, s)), dirZ = Cast(ChainState.Exactly(c.DirZ, s));
+            ReadOnlySpan<Vector<float>> rest = Cast(ChainState.Exactly(c.RestLength, s));
+            ReadOnlySpan<Vector<double>> error = Cast(ChainState.Exactly(c.LengthError, s)), estimate = Cast(ChainState.Exactly(c.EstimatedTension, s));
+            ReadOnlySpan<Vector<double>> sx = Cast(ChainState.Exactly(c.StepX, s)), sy = Cast(ChainState.Exactly(c.StepY, s)), sz = Cast(ChainState.Exactly(c.StepZ, s));
+            Span<Vector<double>> fx = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.ForceX, s));
+            Span<Vector<double>> fy = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.ForceY, s));
+            Span<Vector<double>> fz = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.ForceZ, s));
+            Span<Vector<double>> lambda = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.Lambda, s));
+            ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
+            Vector<double> h2 = new Vector<double>(invH2), two = new Vector<double>(2.0), tolerance = new Vector<double>(NonlinearTolerance);
+            Vector<double> floor = new Vector<double>(tests.Floor);
+            for (int k = 0; k < runs; k++)
+            {
+                if (!AllTrue(active, k * lanes))
+                {
+                    ApplyRows(c, k * lanes, (k + 1) * lanes, tensionOnly, invH2, ref tests);
+                    continue;
+                }
+                Vector.Widen(dirX[k], out Vector<double> exLow, out Vector<double> exHigh);
+                Vector.Widen(dirY[k], out Vector<double> eyLow, out Vector<double> eyHigh);
+                Vector.Widen(dirZ[k], out Vector<double> ezLow, out Vector<double> ezHigh);
+                Vector.Widen(rest[k], out Vector<double> rLow, out Vector<double> rHigh);
+                int a = 2 * k, b = 2 * k + 1;
+                Vector<double> gxLow = fx[a] + sx[a], gyLow = fy[a] + sy[a], gzLow = fz[a] + sz[a];
+                Vector<double> gxHigh = fx[b] + sx[b], gyHigh = fy[b] + sy[b], gzHigh = fz[b] + sz[b];
+                // λ = −(g·n): the sign bit flipped as the scalar negation does (Vector's unary minus may be 0 − x, which
+                // makes −(+0) +0)
+                Vector<double> sign = new Vector<double>(-0.0);
+                Vector<double> lLow = (gxLow * exLow + gyLow * eyLow + gzLow * ezLow) ^ sign, lHigh = (gxHigh * exHigh + gyHigh * eyHigh + gzHigh * ezHigh) ^ sign;
+                Vector<long> loud = Loud(lLow, error[a], estimate[a], rLow, h2, two, tolerance, floor) | Loud(lHigh, error[b], estimate[b], rHigh, h2, two, tolerance, floor);
+                if (!Vector.EqualsAll(loud, Vector<long>.Zero))
+                {
+                    ApplyRows(c, k * lanes, (k + 1) * lanes, tensionOnly, invH2, ref tests);
+                    continue;
+                }
+                fx[a] = gxLow; fy[a] = gyLow; fz[a] = gzLow; fx[b] = gxHigh; fy[b] = gyHigh; fz[b] = gzHigh;
+                lambda[a] = lLow; lambda[b] = lHigh;
+            }
+            return runs * lanes;
+        }
+
+        /// <summary>
+        /// Lanes of active segments (λ l, length error e, tension estimate, rest length r) on which a test of
+        /// <see cref="ApplyRows"/> does something: the found tension −λ/h² above twice the estimate, a pushing segment's
+        /// error above NonlinearTolerance·r, or a pulling one's not within the floor (a NaN error included, as in the rows).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector<long> Loud(Vector<double> l, Vector<double> e, Vector<double> estimate, Vector<double> r,
+            Vector<double> h2, Vector<double> two, Vector<double> tolerance, Vector<double> floor)
+        {
+            Vector<long> pushing = Vector.GreaterThan(l, Vector<double>.Zero);
+            return Vector.GreaterThan((l ^ new Vector<double>(-0.0)) * h2, two * estimate)
+                | (pushing & Vector.GreaterThan(e, tolerance * r))
+                | Vector.AndNot(~Vector.LessThanOrEqual(e, floor), pushing);
+        }
+
+        /// <summary>
+        /// <see cref="UpdateTensionOnlySet"/> on runs of <see cref="VectorPath.FloatLanes"/> segments of an unbroken chain:
+        /// a run of active segments whose total force n·(Λ + δΛ) all still pull (≥ 0, as the rows test it) changes nothing
+        /// and is skipped; any other run goes to <see cref="UpdateTensionOnlyRows"/>, in order. Returns the first segment
+        /// not done.
+        /// </summary>
+        private static int UpdateTensionOnlyLanes(ChainState c, ref bool changed, ref int first)
+        {
+            int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes;
+            ReadOnlySpan<Vector<float>> dirX = Cast(ChainState.Exactly(c.DirX, s)), dirY = Cast(ChainState.Exactly(c.DirY, s)), dirZ = Cast(ChainState.Exactly(c.DirZ, s));
+            ReadOnlySpan<Vector<double>> fx = Cast(ChainState.Exactly(c.ForceX, s)), fy = Cast(ChainState.Exactly(c.ForceY, s)), fz = Cast(ChainState.Exactly(c.ForceZ, s));
+            ReadOnlySpan<Vector<double>> dx = Cast(ChainState.Exactly(c.StepX, s)), dy = Cast(ChainState.Exactly(c.StepY, s)), dz = Cast(ChainState.Exactly(c.StepZ, s));
+            ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
+            for (int k = 0; k < runs; k++)
+            {
+                if (AllTrue(active, k * lanes))
+                {
+                    Vector.Widen(dirX[k], out Vector<double> exLow, out Vector<double> exHigh);
+                    Vector.Widen(dirY[k], out Vector<double> eyLow, out Vector<double> eyHigh);
+                    Vector.Widen(dirZ[k], out Vector<double> ezLow, out Vector<double> ezHigh);
+                    int a = 2 * k, b = 2 * k + 1;
+                    Vector<double> alongLow = (fx[a] + dx[a]) * exLow + (fy[a] + dy[a]) * eyLow + (fz[a] + dz[a]) * ezLow;
+                    Vector<double> alongHigh = (fx[b] + dx[b]) * exHigh + (fy[b] + dy[b]) * eyHigh + (fz[b] + dz[b]) * ezHigh;
+                    if (Vector.GreaterThanOrEqualAll(alongLow, Vector<double>.Zero) && Vector.GreaterThanOrEqualAll(alongHigh, Vector<double>.Zero)) continue;
+                }
+                UpdateTensionOnlyRows(c, k * lanes, (k + 1) * lanes, ref changed, ref first);
+            }
+            return runs * lanes;
+        }
+
+        /// <summary>A span as runs of <see cref="Vector{T}"/>.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static ReadOnlySpan<Vector<double>> Cast(ReadOnlySpan<double> values) => MemoryMarshal.Cast<double, Vector<double>>(values);
     }
 }

@@ -293,15 +293,28 @@ namespace HookeRope.Solver
         private static bool UpdateTensionOnlySet(ChainState c, out int firstChanged)
         {
             int s = c.SegmentCount;
-            // spans of exactly s entries (the loop bound): indexed without bounds checks
+            bool changed = false;
+            int first = s;
+            // the lanes skip the runs of active segments that all still pull; the rows take the rest, in order
+            int from = VectorPath.Enabled && c.BrokenCount == 0 ? UpdateTensionOnlyLanes(c, ref changed, ref first) : 0;
+            if (from < s) UpdateTensionOnlyRows(c, from, s, ref changed, ref first);
+            firstChanged = first;
+            return changed;
+        }
+
+        /// <summary><see cref="UpdateTensionOnlySet"/> on segments from … to − 1 (changed and first: so far, updated).</summary>
+        private static void UpdateTensionOnlyRows(ChainState c, int from, int to, ref bool anyChanged, ref int firstChanged)
+        {
+            int s = to;
+            // spans of exactly s = to entries (the loop bound): indexed without bounds checks
             ReadOnlySpan<double> fx = ChainState.Exactly(c.ForceX, s), fy = ChainState.Exactly(c.ForceY, s), fz = ChainState.Exactly(c.ForceZ, s);
             ReadOnlySpan<double> dx = ChainState.Exactly(c.StepX, s), dy = ChainState.Exactly(c.StepY, s), dz = ChainState.Exactly(c.StepZ, s);
             ReadOnlySpan<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
             Span<bool> active = ChainState.Exactly(c.Active, s);
             ReadOnlySpan<bool> broken = ChainState.Exactly(c.Broken, s);
-            bool changed = false;
-            int first = s;
-            for (int j = 0; j < s; j++)
+            bool changed = anyChanged;
+            int first = firstChanged;
+            for (int j = from; j < s; j++)
             {
                 if (broken[j]) continue;
                 if (active[j])
@@ -315,8 +328,8 @@ namespace HookeRope.Solver
                 if (!changed) first = j;
                 changed = true;
             }
+            anyChanged = changed;
             firstChanged = first;
-            return changed;
         }
 
         /// <summary>
@@ -357,6 +370,31 @@ namespace HookeRope.Solver
             else if (VectorPath.Enabled && c.BrokenCount == 0 && c.SegmentCount > VectorPath.FloatLanes) MoveParticlesLanes(c);
             else MoveParticles<SegmentForceSystem.NoContacts>(c);
             int s = c.SegmentCount;
+            var tests = new ConvergenceTests { Floor = RoundOffFloor * c.Size };
+            // the lanes take the runs of active segments whose tests all pass quietly; the rows the rest, in order
+            int from = VectorPath.Enabled ? ApplyLanes(c, tensionOnly, invH2, ref tests) : 0;
+            if (from < s) ApplyRows(c, from, s, tensionOnly, invH2, ref tests);
+            unconverged = tests.Unconverged;
+            estimateTooLow = tests.EstimateTooLow;
+            if (!unconverged && tests.Mismatched) unconverged = Mismatched(c, tensionOnly, tests.Floor);
+            return tests.Worst;
+        }
+
+        /// <summary>The convergence tests of <see cref="Apply"/> as they accumulate over the segments.</summary>
+        private struct ConvergenceTests
+        {
+            /// <summary>Round-off floor of the length errors (m); the largest error over rest length so far.</summary>
+            public double Floor, Worst;
+            public bool Mismatched, Unconverged, EstimateTooLow;
+        }
+
+        /// <summary>
+        /// <see cref="Apply"/>'s segment pass on segments from … to − 1: accumulates the forces, writes λ and runs the
+        /// convergence tests into <paramref name="tests"/>.
+        /// </summary>
+        private static void ApplyRows(ChainState c, int from, int to, bool tensionOnly, double invH2, ref ConvergenceTests tests)
+        {
+            int s = to; // spans of exactly the loop bound: indexed without bounds checks
             ReadOnlySpan<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
             ReadOnlySpan<float> rest = ChainState.Exactly(c.RestLength, s);
             Span<double> error = ChainState.Exactly(c.LengthError, s);
@@ -366,11 +404,9 @@ namespace HookeRope.Solver
             Span<double> lambda = ChainState.Exactly(c.Lambda, s);
             ReadOnlySpan<bool> assembled = ChainState.Exactly(c.Assembled, s);
             ReadOnlySpan<double> estimate = ChainState.Exactly(c.EstimatedTension, s);
-            double floor = RoundOffFloor * c.Size, worst = 0.0;
-            bool mismatched = false;
-            unconverged = false;
-            estimateTooLow = false;
-            for (int j = 0; j < s; j++)
+            double floor = tests.Floor, worst = tests.Worst;
+            bool mismatched = tests.Mismatched, unconverged = tests.Unconverged, estimateTooLow = tests.EstimateTooLow;
+            for (int j = from; j < s; j++)
             {
                 double gx = fx[j] + sx[j], gy = fy[j] + sy[j], gz = fz[j] + sz[j];
                 fx[j] = gx; fy[j] = gy; fz[j] = gz;
@@ -404,8 +440,7 @@ namespace HookeRope.Solver
                 if (e > NonlinearTolerance * r) unconverged = true;
                 else mismatched = true;
             }
-            if (!unconverged && mismatched) unconverged = Mismatched(c, tensionOnly, floor);
-            return worst;
+            tests.Worst = worst; tests.Mismatched = mismatched; tests.Unconverged = unconverged; tests.EstimateTooLow = estimateTooLow;
         }
 
         /// <summary>
