@@ -7,48 +7,78 @@ namespace HookeRope.Bench
 {
     /// <summary>
     /// Stopwatch measurement of <see cref="GoalScene"/> worlds: the goal rows (100 × 64, 1 and 2 workers) and the cost
-    /// curves against rope count and segment count. Every frame is timed on its own; the row keeps the median and the
-    /// fastest frame. Timings are printed, never asserted.
+    /// curves against rope count and segment count. Every row measures the same frames of the scene
+    /// (<see cref="GoalScene.Window"/>, after <see cref="GoalScene.WarmUpFrames"/> warm-up frames) on freshly built
+    /// worlds, repeated until a time budget is spent; every frame is timed on its own and the row keeps the median and
+    /// the fastest frame, the fastest repeat's mean, and per frame the process CPU time, the ropes' step and mesh
+    /// thread time and the workers' idle time. Timings are printed, never asserted.
     /// </summary>
     internal static class GoalBench
     {
-        /// <summary>Measures one configuration for about <paramref name="seconds"/> of frames (at least 15).</summary>
-        public static GoalRow Measure(string id, int ropes, int segments, int workers, double seconds)
+        /// <summary>
+        /// Measures one configuration: at least <paramref name="minRepeats"/> repeats of the window, more while the
+        /// repeats so far took less than <paramref name="seconds"/> (at most 50).
+        /// </summary>
+        public static GoalRow Measure(string id, int ropes, int segments, int workers, double seconds, int minRepeats)
         {
-            var row = new GoalRow { Id = id, Ropes = ropes, Segments = segments, Substeps = GoalScene.Substeps, MeshSides = GoalScene.MeshSides, Workers = workers };
-            using (var world = GoalScene.Build(ropes, segments, workers))
+            var row = new GoalRow
             {
-                var watch = new Stopwatch();
-                var samples = new List<double>();
-                var process = Process.GetCurrentProcess();
-                process.Refresh();
-                TimeSpan cpuBefore = process.TotalProcessorTime;
-                var total = Stopwatch.StartNew();
-                double step = 0.0, mesh = 0.0, vertices = 0.0;
-                while (samples.Count < 15 || total.Elapsed.TotalSeconds < seconds)
+                Id = id, Ropes = ropes, Segments = segments, Substeps = GoalScene.Substeps, MeshSides = GoalScene.MeshSides,
+                Workers = workers, Window = GoalScene.Window,
+            };
+            var samples = new List<double>();
+            var watch = new Stopwatch();
+            var window = new Stopwatch();
+            var process = Process.GetCurrentProcess();
+            var total = Stopwatch.StartNew();
+            double step = 0.0, mesh = 0.0, vertices = 0.0, idle = 0.0, wake = 0.0, cpu = 0.0, bestWindow = double.MaxValue;
+            int repeats = 0;
+            while (repeats < minRepeats || (total.Elapsed.TotalSeconds < seconds && repeats < 50))
+            {
+                using (var world = GoalScene.Build(ropes, segments, workers, warmUpFrames: GoalScene.WarmUpFrames))
                 {
-                    watch.Restart();
-                    world.StepAndFillMeshes(GoalScene.Frame);
-                    watch.Stop();
-                    samples.Add(watch.Elapsed.TotalMilliseconds);
-                    for (int i = 0; i < world.Count; i++)
+                    process.Refresh();
+                    TimeSpan cpuBefore = process.TotalProcessorTime;
+                    window.Restart();
+                    for (int f = 0; f < GoalScene.WindowFrames; f++)
                     {
-                        step += world.GetLastStepMilliseconds(i);
-                        mesh += world.GetLastFillMilliseconds(i);
+                        watch.Restart();
+                        world.StepAndFillMeshes(GoalScene.Frame);
+                        watch.Stop();
+                        samples.Add(watch.Elapsed.TotalMilliseconds);
+                        for (int i = 0; i < world.Count; i++)
+                        {
+                            step += world.GetLastStepMilliseconds(i);
+                            mesh += world.GetLastFillMilliseconds(i);
+                        }
+                        double latest = 0.0;
+                        for (int w = 0; w < world.WorkerCount; w++)
+                        {
+                            idle += world.LastIdleMilliseconds(w);
+                            latest = Math.Max(latest, world.LastWakeMilliseconds(w));
+                        }
+                        wake += latest;
+                        vertices += MeanVertices(world);
                     }
-                    vertices += MeanVertices(world);
-                    if (samples.Count >= 2000) break;
+                    window.Stop();
+                    process.Refresh();
+                    cpu += (process.TotalProcessorTime - cpuBefore).TotalMilliseconds;
+                    bestWindow = Math.Min(bestWindow, window.Elapsed.TotalMilliseconds / GoalScene.WindowFrames);
                 }
-                row.StepMsPerFrame = step / samples.Count;
-                row.MeshMsPerFrame = mesh / samples.Count;
-                process.Refresh();
-                row.CpuMsPerFrame = (process.TotalProcessorTime - cpuBefore).TotalMilliseconds / samples.Count;
-                row.VerticesPerRope = vertices / samples.Count;
-                row.LastFrame = GoalScene.WarmUpFrames + samples.Count;
-                samples.Sort();
-                row.MsPerFrame = samples[samples.Count / 2];
-                row.MinMsPerFrame = samples[0];
+                repeats++;
             }
+            int frames = samples.Count;
+            row.Repeats = repeats;
+            row.StepMsPerFrame = step / frames;
+            row.MeshMsPerFrame = mesh / frames;
+            row.IdleMsPerFrame = workers > 1 ? idle / frames : 0.0;
+            row.WakeMsPerFrame = workers > 1 ? wake / frames : 0.0;
+            row.CpuMsPerFrame = cpu / frames;
+            row.VerticesPerRope = vertices / frames;
+            row.BestWindowMsPerFrame = bestWindow;
+            samples.Sort();
+            row.MsPerFrame = samples[frames / 2];
+            row.MinMsPerFrame = samples[0];
             row.NsPerUnit = row.MsPerFrame * 1e6 / row.UnitsPerFrame;
             row.LoadAverage = LoadAverage();
             return row;

@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Diagnostics;
 using System.Globalization;
 using System.IO;
 using System.Linq;
@@ -7,12 +8,15 @@ using System.Linq;
 namespace HookeRope.Bench
 {
     /// <summary>
-    /// <c>goal [--quick] [--instructions] [--save]</c>: prints issue 18's goal table (ropes, segments, substeps, mesh
-    /// sides, workers, ms per frame, ns per unit, instructions per unit where measured, mean tube vertices per rope,
-    /// load average) and compares
-    /// every row with Tools~/Bench/baseline.json, flagging rises over 10 %. <c>--instructions</c> adds callgrind
-    /// counts for the goal rows (a few minutes); <c>--save</c> stores the rows as the new baseline.
-    /// <c>frames R S W N</c> steps the goal scene N frames and exits (what callgrind runs).
+    /// <c>goal [--quick] [--match TEXT] [--instructions] [--counts FILE] [--save]</c>: prints issue 18's goal table (ropes, segments,
+    /// substeps, mesh sides, workers, repeats, ms per frame, ns per unit, instructions per unit where counted, mean tube
+    /// vertices per rope, the workers' idle time, load average), every row measured over the same frames of the scene
+    /// (<see cref="GoalScene.Window"/>) on freshly built worlds, and compares every row with Tools~/Bench/baseline.json,
+    /// flagging rises over 10 %. The instruction figures come from the file Tools~/Kernels/goal-count.sh writes
+    /// (<see cref="GoalCounts"/>; <c>--instructions</c> runs the script first, 2–4 minutes; <c>--counts</c> names
+    /// another file); <c>--match</c> keeps the rows whose name contains TEXT (e.g. "goal"); <c>--save</c> stores the
+    /// rows as the new baseline. <c>frames R S W N</c> steps the goal scene N
+    /// frames and exits.
     /// </summary>
     internal static class GoalCommand
     {
@@ -20,44 +24,57 @@ namespace HookeRope.Bench
         public static int Execute(string[] args)
         {
             bool quick = args.Contains("--quick"), save = args.Contains("--save"), instructions = args.Contains("--instructions");
+            int countsAt = Array.IndexOf(args, "--counts"), matchAt = Array.IndexOf(args, "--match");
+            string match = matchAt >= 0 && matchAt + 1 < args.Length ? args[matchAt + 1] : null;
             var c = CultureInfo.InvariantCulture;
-            string baselinePath = Baseline.PathInRepository(PackageRoot());
+            string root = PackageRoot();
+            string baselinePath = Baseline.PathInRepository(root);
             var stored = Baseline.Load(baselinePath);
+            string countsPath = countsAt >= 0 && countsAt + 1 < args.Length ? args[countsAt + 1] : GoalCounts.DefaultPath();
+            if (instructions) RunCountScript(root, countsPath);
+            GoalCounts counts = CurrentCounts(root, countsPath);
             Console.WriteLine($"HookeRope bench · goal  {Environment.ProcessorCount} logical processors, load average {GoalBench.LoadAverage().ToString("F2", c)}, " +
                               $"{System.Runtime.InteropServices.RuntimeInformation.FrameworkDescription}");
             Console.WriteLine("frame = one 1/90 s RopeWorld.StepAndFillMeshes: step + 16-sided tube mesh of every rope; unit = segment-substep;");
-            Console.WriteLine("step ms / mesh ms = thread time of the ropes' steps / mesh fills per frame, summed over the ropes (all workers)");
+            Console.WriteLine($"every row times frames {GoalScene.Window} of the scene ({GoalScene.WarmUpFrames} warm-up frames, then {GoalScene.WindowFrames} timed) on freshly built worlds, 'reps' times;");
+            Console.WriteLine("ms/frame = median frame, min = fastest frame, best = the fastest repeat's mean frame; cpu = process CPU per timed frame;");
+            Console.WriteLine("step / mesh = thread time of the ropes' steps / mesh fills per frame, summed over the ropes (all workers);");
+            Console.WriteLine("idle = per frame, summed over the workers, the time a worker was not on its share (wake-up + waiting for the others); wake = the pool thread's start lag");
             Console.WriteLine();
             GoalBench.WarmUp(quick ? 1.0 : 3.0);
-            string header = string.Format(c, "{0,-20} {1,6} {2,8} {3,9} {4,5} {5,7} {6,10} {7,10} {8,10} {9,9} {10,9} {11,10} {12,11} {13,10} {14,6} {15,6}  {16}",
-                "row", "ropes", "segments", "substeps", "sides", "workers", "ms/frame", "min ms", "cpu ms", "step ms", "mesh ms", "ns/unit", "instr/unit", "verts/rope", "frame", "load", "against baseline");
+            const string format = "{0,-20} {1,5} {2,8} {3,8} {4,5} {5,7} {6,4} {7,9} {8,8} {9,8} {10,8} {11,8} {12,8} {13,7} {14,7} {15,8} {16,10} {17,10} {18,6}  {19}";
+            string header = string.Format(c, format, "row", "ropes", "segments", "substeps", "sides", "workers", "reps", "ms/frame", "min ms", "best ms",
+                "cpu ms", "step ms", "mesh ms", "idle ms", "wake ms", "ns/unit", "instr/unit", "verts/rope", "load", "against baseline");
             Console.WriteLine(header);
             Console.WriteLine(new string('-', header.Length + 10));
             var rows = new List<GoalRow>();
             int regressions = 0;
             foreach (var (id, ropes, segments, workers) in GoalBench.Plan(quick))
             {
-                var row = GoalBench.Measure(id, ropes, segments, workers, quick ? 0.5 : 2.0);
-                if (instructions && id.StartsWith("goal", StringComparison.Ordinal))
-                    row.InstructionsPerUnit = InstructionCounter.PerUnit(ropes, segments, workers, 3, 13, m => Console.Error.WriteLine(m));
+                if (match != null && !id.Contains(match, StringComparison.Ordinal)) continue;
+                bool goal = id.StartsWith("goal", StringComparison.Ordinal);
+                var row = GoalBench.Measure(id, ropes, segments, workers, goal ? (quick ? 1.0 : 4.0) : (quick ? 0.3 : 2.0), goal || !quick ? 3 : 1);
+                counts?.ApplyTo(row);
                 string verdict = Baseline.Compare(row, stored);
                 if (verdict.StartsWith("REGRESSION", StringComparison.Ordinal)) regressions++;
                 rows.Add(row);
-                Console.WriteLine(string.Format(c, "{0,-20} {1,6} {2,8} {3,9} {4,5} {5,7} {6,10:F3} {7,10:F3} {8,10:F3} {9,9:F3} {10,9:F3} {11,10:F1} {12,11} {13,10:F0} {14,6} {15,6:F2}  {16}",
-                    row.Id, row.Ropes, row.Segments, row.Substeps, row.MeshSides, row.Workers, row.MsPerFrame, row.MinMsPerFrame, row.CpuMsPerFrame,
-                    row.StepMsPerFrame, row.MeshMsPerFrame, row.NsPerUnit,
-                    row.InstructionsPerUnit > 0 ? row.InstructionsPerUnit.ToString("F0", c) : "-", row.VerticesPerRope, row.LastFrame, row.LoadAverage, verdict));
+                Console.WriteLine(string.Format(c, format, row.Id, row.Ropes, row.Segments, row.Substeps, row.MeshSides, row.Workers, row.Repeats,
+                    row.MsPerFrame.ToString("F3", c), row.MinMsPerFrame.ToString("F3", c), row.BestWindowMsPerFrame.ToString("F3", c),
+                    row.CpuMsPerFrame.ToString("F3", c), row.StepMsPerFrame.ToString("F3", c), row.MeshMsPerFrame.ToString("F3", c),
+                    row.IdleMsPerFrame.ToString("F3", c), row.WakeMsPerFrame.ToString("F3", c), row.NsPerUnit.ToString("F1", c),
+                    row.InstructionsPerUnit > 0 ? row.InstructionsPerUnit.ToString("F0", c) : "-", row.VerticesPerRope.ToString("F0", c),
+                    row.LoadAverage.ToString("F2", c), verdict));
             }
             var one = rows.Find(r => r.Id == "goal 100x64 w1");
             var two = rows.Find(r => r.Id == "goal 100x64 w2");
             Console.WriteLine();
-            Console.WriteLine(string.Format(c, "goal 100 x 64 + 16-sided mesh: {0:F3} ms (1 worker) -> {1:F3} ms (2 workers), speed-up {2:F2}x; target <= 2.8 ms: {3}",
+            if (one != null && two != null)
+                Console.WriteLine(string.Format(c, "goal 100 x 64 + 16-sided mesh: {0:F3} ms (1 worker) -> {1:F3} ms (2 workers), speed-up {2:F2}x; target <= 2.8 ms: {3}",
                 one.MsPerFrame, two.MsPerFrame, one.MsPerFrame / two.MsPerFrame, two.MsPerFrame <= 2.8 ? "met" : "NOT met"));
-            if (one.InstructionsPerUnit > 0 && two.InstructionsPerUnit > 0)
-                Console.WriteLine(string.Format(c, "instructions per unit, 2 workers / 1 worker: {0:F3} (threading overhead)", two.InstructionsPerUnit / one.InstructionsPerUnit));
+            if (one != null && one.InstructionsPerUnit > 0)
+                Console.WriteLine(string.Format(c, "instructions ({0}, 1 worker, counted at {1}): {2:F0} per frame = step {3:F0} per segment-substep + mesh {4:F1} per vertex; {5:F0} per segment-substep in all",
+                    one.InstructionSource, counts.Commit, one.InstructionsPerFrame, one.StepInstructionsPerUnit, one.MeshInstructionsPerVertex, one.InstructionsPerUnit));
             Console.WriteLine("wall-clock rows are medians on whatever load the machine has (see 'load'); compare instruction counts for ratios.");
-            Console.WriteLine("verts/rope = mean over the measured frames; frame = the frame of the lanyards' drop the row ended at (rows that end at");
-            Console.WriteLine("different frames draw different ring budgets: the mesh columns compare only between rows ending near the same frame).");
             if (save)
             {
                 Baseline.Save(baselinePath, rows);
@@ -65,6 +82,35 @@ namespace HookeRope.Bench
             }
             if (regressions > 0) Console.WriteLine(regressions + " row(s) regressed by more than 10 %.");
             return regressions > 0 ? 1 : 0;
+        }
+
+        /// <summary>The counts in <paramref name="path"/> when they were made of the code in <paramref name="root"/> as it is now, else null (saying why).</summary>
+        private static GoalCounts CurrentCounts(string root, string path)
+        {
+            GoalCounts counts = GoalCounts.Load(path);
+            if (counts == null)
+            {
+                Console.WriteLine("instructions: no count at " + path + " (bash \"Tools~/Kernels/goal-count.sh\" writes it, or pass --instructions)");
+                return null;
+            }
+            var (code, changes) = GoalCounts.TreeOf(root);
+            if (!counts.CountedAt(code, changes))
+            {
+                Console.WriteLine("instructions: the count at " + path + " (commit " + counts.Commit + ") is of other code than this tree's: not shown; rerun goal-count.sh");
+                return null;
+            }
+            Console.WriteLine("instructions: " + path + " (" + counts.Source + ", " + counts.Ropes + " x " + counts.Segments + ", commit " + counts.Commit + ")");
+            return counts;
+        }
+
+        /// <summary>Runs Tools~/Kernels/goal-count.sh for the goal's 100 ropes, writing <paramref name="path"/>'s directory (its KERNELS_OUT).</summary>
+        private static void RunCountScript(string root, string path)
+        {
+            var info = new ProcessStartInfo("bash") { UseShellExecute = false };
+            info.ArgumentList.Add(Path.Combine(root, "Tools~", "Kernels", "goal-count.sh"));
+            info.ArgumentList.Add("100");
+            info.Environment["KERNELS_OUT"] = Path.GetDirectoryName(Path.GetFullPath(path));
+            using (var process = Process.Start(info)) process.WaitForExit();
         }
 
         /// <summary>Steps a goal scene of R ropes × S segments on W workers for N frames (callgrind's workload).</summary>

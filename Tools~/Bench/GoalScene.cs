@@ -20,9 +20,10 @@ namespace HookeRope.Bench
 
         /// <summary>
         /// A world of <paramref name="ropes"/> lanyards × <paramref name="segments"/> on <paramref name="workers"/> workers,
-        /// warmed up by 20 frames; <paramref name="adaptiveRings"/> false draws 4 rings per segment (the mesh before issue 18).
+        /// warmed up by <paramref name="warmUpFrames"/> frames (<see cref="WarmUpFrames"/> for a measurement of the window);
+        /// <paramref name="adaptiveRings"/> false draws 4 rings per segment (the mesh before issue 18).
         /// </summary>
-        public static RopeWorld Build(int ropes, int segments, int workers, bool adaptiveRings = true)
+        public static RopeWorld Build(int ropes, int segments, int workers, bool adaptiveRings = true, int warmUpFrames = BuildFrames)
         {
             var world = new RopeWorld(workers);
             for (int r = 0; r < ropes; r++)
@@ -37,17 +38,31 @@ namespace HookeRope.Bench
                 simulation.Rope.AddPin(segments, end);
                 world.EnableMesh(world.Add(simulation));
             }
-            for (int i = 0; i < WarmUpFrames; i++) world.StepAndFillMeshes(Frame);
+            for (int i = 0; i < warmUpFrames; i++) world.StepAndFillMeshes(Frame);
             return world;
         }
 
         /// <summary>
-        /// Frames stepped by <see cref="Build"/> before a measurement. The lanyards start straight and drop, so the ring
-        /// budget of their mesh follows the drop's waves (one lanyard, 16 sides: 1 411 vertices in frames 1–5, 2 227 from
-        /// 14, 4 403 from 45, 5 491 in frames 204–320, back to 2 771 at 794 and 2 227 at 1 626): a row's vertex count
-        /// depends on the frames it measured (<see cref="GoalRow.LastFrame"/>), not on where its ropes sit.
+        /// Frames a measurement steps before its window (frames 1 … 44, <c>Build(…, warmUpFrames: WarmUpFrames)</c>). The lanyards start straight and
+        /// drop, and the ring budget of their mesh follows the drop's waves (one lanyard, 16 sides: 1 411 vertices in
+        /// frames 1–5, 2 227 from 14, 2 771 from 29, 3 315 from 32, 4 403 from 45 to 203, 5 491 in frames 204–320, 2 771
+        /// at 794, 2 227 from 1 626; the same in worlds of 1 … 500 lanyards): the warm-up ends where the budget settles, so
+        /// every row measures <see cref="WindowFrames"/> frames at 4 403 vertices per lanyard.
         /// </summary>
-        public const int WarmUpFrames = 20;
+        public const int WarmUpFrames = 44;
+
+        /// <summary>Frames <see cref="Build"/> steps unless told otherwise (20: the mesh bench's "frames 20+" world).</summary>
+        public const int BuildFrames = 20;
+
+        /// <summary>
+        /// Frames every measurement times, frames <see cref="WarmUpFrames"/> + 1 … <see cref="WarmUpFrames"/> +
+        /// <see cref="WindowFrames"/> (45 … 74) of a freshly built world: the bench's rows and the probe's instruction
+        /// count (Tools~/Kernels, scene <c>goal-world:N</c>) cover the same frames of the same scene.
+        /// </summary>
+        public const int WindowFrames = 30;
+
+        /// <summary>The window as text, e.g. "45-74" (a baseline row compares only with a row of the same window).</summary>
+        public static string Window => (WarmUpFrames + 1) + "-" + (WarmUpFrames + WindowFrames);
 
         /// <summary>Substeps of the default settings.</summary>
         public static int Substeps => new RopeSettings().Substeps;

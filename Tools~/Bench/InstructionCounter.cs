@@ -6,27 +6,14 @@ using System.Text.RegularExpressions;
 namespace HookeRope.Bench
 {
     /// <summary>
-    /// Instructions per unit from callgrind, stable on a loaded machine where wall-clock is not: runs this tool's
-    /// <c>frames</c> mode under <c>valgrind --tool=callgrind</c> (tiered compilation off, so every method is compiled
-    /// once, fully optimised) for a short and a long run and divides the difference of the collected instruction counts
-    /// (all threads) by the difference in work units, so start-up, JIT and scene building cancel out.
+    /// Instruction counts from callgrind of this (JIT-compiled) tool, for the mesh and collision commands: runs one of
+    /// its modes under <c>valgrind --tool=callgrind</c> (tiered compilation off) and returns the instructions collected
+    /// (all threads); callers count a short and a long run and divide the difference by the difference in work, so
+    /// start-up, JIT and scene building cancel out. The goal table's counts come from the native probe instead
+    /// (Tools~/Kernels/goal-count.sh, <see cref="GoalCounts"/>).
     /// </summary>
     internal static class InstructionCounter
     {
-        /// <summary>Instructions per segment-substep (mesh included) for the goal scene, or 0 when valgrind is missing or fails.</summary>
-        public static double PerUnit(int ropes, int segments, int workers, int shortFrames, int longFrames, Action<string> log)
-        {
-            long a = Collected(ropes, segments, workers, shortFrames, log);
-            long b = Collected(ropes, segments, workers, longFrames, log);
-            if (a <= 0 || b <= a) return 0;
-            double units = (double)ropes * segments * GoalScene.Substeps * (longFrames - shortFrames);
-            return (b - a) / units;
-        }
-
-        private static long Collected(int ropes, int segments, int workers, int frames, Action<string> log) =>
-            Collected(new[] { "frames", ropes.ToString(CultureInfo.InvariantCulture), segments.ToString(CultureInfo.InvariantCulture),
-                workers.ToString(CultureInfo.InvariantCulture), frames.ToString(CultureInfo.InvariantCulture) }, log);
-
         /// <summary>
         /// Instructions callgrind collected (all threads) while this tool ran with <paramref name="toolArguments"/>
         /// (tiered compilation off), or −1 when valgrind is missing or fails.

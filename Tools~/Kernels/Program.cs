@@ -10,7 +10,9 @@ namespace HookeRope.Kernels
     /// Kernel probe (issue 18 item 1). Commands:
     /// <list type="bullet">
     /// <item><c>run SCENE STEPS</c>: builds a scene of <see cref="KernelScene"/>, steps it STEPS host steps of 1/90 s and
-    /// prints a hash of the state; run under callgrind twice (count.sh) for instructions per simulated second.</item>
+    /// prints a hash of the state; run under callgrind twice (count.sh) for instructions per simulated second.
+    /// <c>run goal-world:N K</c> / <c>run goal-step:N K</c>: K frames of the goal bench's window in a world of N
+    /// lanyards with / without mesh fills (<see cref="GoalWorldScene"/>; goal-count.sh counts them).</item>
     /// <item><c>hash [STEPS]</c>: the state hash of every scene after STEPS (default 900) steps, for bit-identity checks.</item>
     /// <item><c>time [--quick]</c>: wall-clock ns per Gauss–Seidel projection and per exact segment-iteration, 16 … 10 000
     /// segments (whole step at 8 substeps × 1 iteration, and marginal: 10 against 2 iterations at 1 substep).</item>
@@ -20,6 +22,8 @@ namespace HookeRope.Kernels
     {
         public static int Main(string[] args)
         {
+            if (args.Length == 3 && args[0] == "run" && GoalWorldScene.Is(args[1]))
+                return GoalWorldScene.Run(args[1], int.Parse(args[2], CultureInfo.InvariantCulture));
             if (args.Length == 3 && args[0] == "run")
             {
                 RopeSimulation simulation = KernelScene.Simulation(args[1]);
@@ -42,7 +46,7 @@ namespace HookeRope.Kernels
                 return 0;
             }
             if (args.Length >= 1 && args[0] == "time") return KernelTimer.Execute(args.Length > 1 && args[1] == "--quick");
-            Console.Error.WriteLine("usage: run SCENE STEPS | hash [STEPS] | time [--quick]   (scenes: " + string.Join(", ", KernelScene.Names) + ")");
+            Console.Error.WriteLine("usage: run SCENE STEPS | hash [STEPS] | time [--quick]   (scenes: " + string.Join(", ", KernelScene.Names) + ", goal-world:N, goal-step:N)");
             return 2;
         }
 
@@ -54,7 +58,7 @@ namespace HookeRope.Kernels
         }
 
         /// <summary>FNV-1a over the bits of every position, velocity and tension.</summary>
-        private static ulong Hash(Rope rope)
+        internal static ulong Hash(Rope rope)
         {
             ulong h = 14695981039346656037UL;
             for (int i = 0; i < rope.ParticleCount; i++)

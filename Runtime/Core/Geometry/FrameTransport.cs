@@ -63,6 +63,13 @@ namespace HookeRope.Geometry
                 x = px * inverse; y = py * inverse; z = pz * inverse;
                 return;
             }
+            AxisPerpendicular(out x, out y, out z, tx, ty, tz);
+        }
+
+        /// <summary><see cref="Perpendicular(ref float, ref float, ref float, float, float, float)"/>'s fallback, out of line (the callers' loops rarely need it): the least-aligned axis made perpendicular to t.</summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
+        private static void AxisPerpendicular(out float x, out float y, out float z, float tx, float ty, float tz)
+        {
             float ax = System.MathF.Abs(tx), ay = System.MathF.Abs(ty), az = System.MathF.Abs(tz);
             float qx = 0f, qy = 0f, qz = 0f;
             if (ax <= ay && ax <= az) qx = 1f; else if (ay <= az) qy = 1f; else qz = 1f;

@@ -127,6 +127,7 @@ namespace HookeRope.Geometry
         }
 
         /// <summary>Appends a ring of segment <paramref name="segment"/> at fraction <paramref name="t"/> ∈ [0, 1).</summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         internal void Add(int segment, float t)
         {
             while (writeSegment < segment)
@@ -158,6 +159,7 @@ namespace HookeRope.Geometry
             if (writeChanged) Version++;
         }
 
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         private void Put(int k, int segment, float t)
         {
             if (k >= ringSegment.Length)

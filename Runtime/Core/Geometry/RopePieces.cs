@@ -12,10 +12,20 @@ namespace HookeRope.Geometry
         /// </summary>
         public static bool Next(ReadOnlySpan<bool> brokenSegments, int n, ref int segment, out int a, out int b)
         {
-            bool hasBroken = brokenSegments.Length > 0;
-            while (segment < n && hasBroken && brokenSegments[segment]) segment++;
-            a = segment;
-            while (segment < n && !(hasBroken && brokenSegments[segment])) segment++;
+            // the same walk as flag by flag (skip broken segments, then take unbroken ones), with the span searches
+            if (segment < n)
+            {
+                if (brokenSegments.Length == 0) { a = segment; segment = n; }
+                else
+                {
+                    int intact = brokenSegments.Slice(segment, n - segment).IndexOf(false);
+                    segment = intact < 0 ? n : segment + intact;
+                    a = segment;
+                    int broken = segment < n ? brokenSegments.Slice(segment, n - segment).IndexOf(true) : -1;
+                    segment = broken < 0 ? n : segment + broken;
+                }
+            }
+            else a = segment;
             b = segment;
             return a < n;
         }

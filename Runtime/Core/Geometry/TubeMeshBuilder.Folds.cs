@@ -19,7 +19,7 @@ namespace HookeRope.Geometry
     /// <see cref="TipTurnLimit"/> from the first's (in the plane of the turn) and its centre moved by the least distance that
     /// puts each ring in front of the other's plane with room for <see cref="TipRoom"/> tip radii; both rings are drawn at
     /// <see cref="FoldRadius"/> of their radius, with radial normals. The move is a few tip radii (0.1 R), the tip a point.</item>
-    /// <item><b>Crossing limit</b> (<see cref="ComputeRingLimits"/>): every other ring is drawn at most
+    /// <item><b>Crossing limit</b> (<see cref="LimitPair"/>, in the frame loop): every other ring is drawn at most
     /// <see cref="CrossingMargin"/> of both bounds above.</item>
     /// <item><b>Cone limit</b> (<see cref="LimitRadii"/>): then the drawn radius changes by at most <see cref="ConeSlope"/>
     /// per unit of centre distance both ways, r_k ≤ r_{k±1} + 2|s| (cones of at most 63°), so a thinned ring takes its
@@ -121,20 +121,18 @@ namespace HookeRope.Geometry
         }
 
         /// <summary>
-        /// The part of <see cref="RepairFold"/>'s test that needs no turn angle: true when rings k − 1 and k (tangent
-        /// (tx, ty, tz)) stand far enough in front of each other's planes for any turn between them (sin θ ≤ 1, with 1e-3 to
-        /// spare for rounding) and their chord is within <see cref="FoldSkew"/> of both tangents, so there is nothing to
-        /// repair. The frame transport calls it first for every ring, so that a rope without folds pays for two dot products;
-        /// it passes what it holds already: ring k − 1's centre <paramref name="c0"/> and tangent (t0x, t0y, t0z), ring k's
-        /// centre <paramref name="c1"/>.
+        /// The part of <see cref="RepairFold"/>'s test that needs no turn angle: true when rings k − 1 and k stand far enough
+        /// in front of each other's planes for any turn between them (sin θ ≤ 1, with 1e-3 to spare for rounding) and their
+        /// chord is within <see cref="FoldSkew"/> of both tangents, so there is nothing to repair. The frame transport calls
+        /// it first for every ring, so that a rope without folds pays for no cross product; it passes what its loop formed
+        /// already: the step s = c_k − c_{k−1}, |s|² (<paramref name="gap2"/>), s·t_{k−1} (<paramref name="ahead"/>) and
+        /// s·t_k (<paramref name="behind"/>).
         /// </summary>
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
-        private bool ClearOfFold(int k, in Float3 c0, in Float3 c1, float t0x, float t0y, float t0z, float tx, float ty, float tz)
+        private bool ClearOfFold(int k, float gap2, float ahead, float behind)
         {
-            float sx = c1.X - c0.X, sy = c1.Y - c0.Y, sz = c1.Z - c0.Z;
-            float ahead = sx * t0x + sy * t0y + sz * t0z, behind = sx * tx + sy * ty + sz * tz;
             const float held = TipRoom * 1.001f;
-            float chord2 = (sx * sx + sy * sy + sz * sz) * (FoldSkew * FoldSkew);
+            float chord2 = gap2 * (FoldSkew * FoldSkew);
             return ahead > 0f && behind > 0f
                 && ahead * CrossingMargin >= FoldRadius * ringRadii[k] * held && behind * CrossingMargin >= FoldRadius * ringRadii[k - 1] * held
                 && ahead * ahead >= chord2 && behind * behind >= chord2;
@@ -211,45 +209,41 @@ namespace HookeRope.Geometry
             return true;
         }
 
-        /// <summary>The geometric limits of rings first … last of a piece, from its centres and tangents (after the frames).</summary>
-        private void ComputeRingLimits(int first, int last)
+        /// <summary>
+        /// The geometric limits of the pair of consecutive rings k − 1, k of a piece, once both centres and tangents are
+        /// final (called by the frame loop): step² <paramref name="gap2"/>, the step's advance past ring k − 1's plane
+        /// <paramref name="ahead"/> and past ring k's <paramref name="behind"/>, the unit tangents t0 and t1. Marks a ring
+        /// whose chord is more than <see cref="SkewLimit"/> off its tangent (<paramref name="anySkewed"/> then true), makes
+        /// a pair no repair could part fold tips, and lowers both rings' crossing caps (<see cref="capSquared"/>, which the
+        /// loop set to +∞ for ring k) to <see cref="CrossingMargin"/> of the distance to the other's plane.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static void LimitPair(int k, float gap2, float ahead, float behind, float t0x, float t0y, float t0z,
+            float t1x, float t1y, float t1z, Span<float> cap, Span<bool> skew, Span<bool> tips, ref bool anySkewed)
         {
-            // the ring arrays once; each ring's centre and tangent read once (carried to the next pair)
-            ReadOnlySpan<Float3> ringCentres = centers, ringTangents = tangents;
-            Span<float> cap = capSquared, gap = gapSquared;
-            Span<bool> skew = skewed, tips = foldTip;
-            for (int k = first; k <= last; k++) { cap[k] = float.PositiveInfinity; skew[k] = false; }
-            gap[first] = 0f;
             const float skew2 = SkewLimit * SkewLimit;
             const float margin2 = CrossingMargin * CrossingMargin;
-            Float3 c1 = ringCentres[first], t1 = ringTangents[first];
-            for (int k = first + 1; k <= last; k++)
+            if (ahead * ahead < skew2 * gap2 || ahead < 0f) { skew[k - 1] = true; anySkewed = true; }
+            if (behind * behind < skew2 * gap2 || behind < 0f) { skew[k] = true; anySkewed = true; }
+            if (!(ahead > 0f && behind > 0f))
             {
-                Float3 c0 = c1, t0 = t1;
-                c1 = ringCentres[k]; t1 = ringTangents[k];
-                float sx = c1.X - c0.X, sy = c1.Y - c0.Y, sz = c1.Z - c0.Z;
-                float gap2 = sx * sx + sy * sy + sz * sz;
-                gap[k] = gap2;
-                float ahead = sx * t0.X + sy * t0.Y + sz * t0.Z;   // advance past ring k − 1's plane
-                float behind = sx * t1.X + sy * t1.Y + sz * t1.Z;  // advance of ring k's plane past ring k − 1
-                if (ahead * ahead < skew2 * gap2 || ahead < 0f) skew[k - 1] = true;
-                if (behind * behind < skew2 * gap2 || behind < 0f) skew[k] = true;
-                if (!(ahead > 0f && behind > 0f))
-                {
-                    // only where a fold tip's repair could not part them (non-finite geometry): drawn as tips
-                    tips[k - 1] = true;
-                    tips[k] = true;
-                    continue;
-                }
-                float nx = t0.Y * t1.Z - t0.Z * t1.Y, ny = t0.Z * t1.X - t0.X * t1.Z, nz = t0.X * t1.Y - t0.Y * t1.X;
-                float sine2 = nx * nx + ny * ny + nz * nz;
-                if (!(sine2 > 0f)) continue;
-                float scale = margin2 / sine2;
-                float capNext = ahead * ahead * scale, capPrevious = behind * behind * scale;
-                if (capNext < cap[k]) cap[k] = capNext;
-                if (capPrevious < cap[k - 1]) cap[k - 1] = capPrevious;
+                // only where a fold tip's repair could not part them (non-finite geometry): drawn as tips
+                tips[k - 1] = true;
+                tips[k] = true;
+                return;
             }
-            // the strips next to a fold tip: steep fans (see TipFan)
+            float nx = t0y * t1z - t0z * t1y, ny = t0z * t1x - t0x * t1z, nz = t0x * t1y - t0y * t1x;
+            float sine2 = nx * nx + ny * ny + nz * nz;
+            if (!(sine2 > 0f)) return;
+            float scale = margin2 / sine2;
+            float capNext = ahead * ahead * scale, capPrevious = behind * behind * scale;
+            if (capNext < cap[k]) cap[k] = capNext;
+            if (capPrevious < cap[k - 1]) cap[k - 1] = capPrevious;
+        }
+
+        /// <summary>The strips next to a fold tip of rings first … last are steep fans (see <see cref="TipFan"/>): lowers the other ring's cap. Only pieces with a tip.</summary>
+        private void LimitTipFans(int first, int last)
+        {
             for (int k = first + 1; k <= last; k++)
             {
                 if (foldTip[k - 1] == foldTip[k]) continue;
@@ -268,13 +262,22 @@ namespace HookeRope.Geometry
 
         /// <summary>
         /// The drawn radii of rings first … last into <see cref="drawnRadii"/>: each ring's radius (<paramref name="radii"/>,
-        /// clamped to ≥ 1e-6) limited by <see cref="ComputeRingLimits"/>'s caps, then by the cone slope both ways.
+        /// clamped to ≥ 1e-6) limited by the caps of <see cref="LimitPair"/>, then by the cone slope both ways. One loop
+        /// caps each ring, applies the forward cone limit against the ring before (already final) and marks it thinned; it
+        /// also tells whether the backward pass can change anything: it lowers ring k only when ring k falls to ring k + 1
+        /// by more than the slope allows, and a pass from the end that has changed nothing sees the forward values, so if
+        /// no pair falls too steeply there the backward pass would change nothing and is skipped (the same bits). Returns
+        /// true when a ring was drawn thinner than its radius.
         /// </summary>
-        private void LimitRadii(int first, int last, ReadOnlySpan<float> radii)
+        private bool LimitRadii(int first, int last, ReadOnlySpan<float> radii)
         {
             Span<float> drawn = drawnRadii;
             ReadOnlySpan<float> cap = capSquared, gap = gapSquared;
             ReadOnlySpan<bool> tip = foldTip;
+            Span<bool> thin = thinned;
+            const float slope2 = ConeSlope * ConeSlope;
+            bool falls = false, anyThin = false;
+            float previous = 0f;
             for (int k = first; k <= last; k++)
             {
                 float r = Clamped(radii[k]);
@@ -286,22 +289,36 @@ namespace HookeRope.Geometry
                     d = MathF.Sqrt(cap2);
                     if (!(d >= FoldRadius * r)) d = FoldRadius * r;
                 }
+                if (k > first)
+                {
+                    float rise = d - previous;
+                    if (rise > 0f && rise * rise > slope2 * gap[k]) d = previous + ConeSlope * MathF.Sqrt(gap[k]);
+                    else if (rise < 0f && rise * rise > slope2 * gap[k]) falls = true;
+                }
                 drawn[k] = d;
+                bool thinner = d != r;
+                thin[k] = thinner;
+                anyThin |= thinner;
+                previous = d;
             }
-            const float slope2 = ConeSlope * ConeSlope;
-            for (int k = first + 1; k <= last; k++)
-            {
-                float previous = drawn[k - 1], rise = drawn[k] - previous;
-                if (rise > 0f && rise * rise > slope2 * gap[k]) drawn[k] = previous + ConeSlope * MathF.Sqrt(gap[k]);
-            }
+            if (!falls && !ForceFullLimits) return anyThin;
             for (int k = last - 1; k >= first; k--)
             {
                 float next = drawn[k + 1], rise = drawn[k] - next;
                 if (rise > 0f && rise * rise > slope2 * gap[k + 1]) drawn[k] = next + ConeSlope * MathF.Sqrt(gap[k + 1]);
             }
-            Span<bool> thin = thinned;
-            for (int k = first; k <= last; k++) thin[k] = drawn[k] != Clamped(radii[k]);
+            anyThin = false;
+            for (int k = first; k <= last; k++)
+            {
+                bool thinner = drawn[k] != Clamped(radii[k]);
+                thin[k] = thinner;
+                anyThin |= thinner;
+            }
+            return anyThin;
         }
+
+        /// <summary>Tests only: every build runs the whole of the ring limits (the backward cone pass, the strip-normal marks), where a cheap test would have skipped them.</summary>
+        internal bool ForceFullLimits { get; set; }
 
         /// <summary>Per ring: its normals are drawn from its two strips (<see cref="WriteRingOnStrips"/>), not the tube's own formula.</summary>
         private bool[] stripNormals = Array.Empty<bool>();

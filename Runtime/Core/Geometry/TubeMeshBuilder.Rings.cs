@@ -52,17 +52,26 @@ namespace HookeRope.Geometry
             EnsureFoldStorage(size);
         }
 
+        /// <summary>
+        /// Ring centres of piece [a, b] (rings first … last) relative to the frame origin: on the particles, or on the
+        /// segment's Catmull–Rom cubic (the control points as <see cref="Vector4"/> lanes x, y, z, 0, once per segment: each
+        /// ring's centre is then four lane products and three lane sums, the scalar's operations in its order per lane).
+        /// </summary>
         private void ComputeCenters(int a, int b, int first, int last, ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z)
         {
             ReadOnlySpan<int> ringSegments = layout.RingSegments;
             ReadOnlySpan<float> ringFractions = layout.RingFractions;
+            Span<Float3> centre = centers;
+            Span<float> spacing = spacing2;
+            ReadOnlySpan<float> radius = ringRadii;
             float ox = frameOrigin.X, oy = frameOrigin.Y, oz = frameOrigin.Z;
             // fallback direction of the piece: first particle to last
             float fx = (x[b] - ox) - (x[a] - ox), fy = (y[b] - oy) - (y[a] - oy), fz = (z[b] - oz) - (z[a] - oz);
             if (!Normalize(ref fx, ref fy, ref fz) || !(float.IsFinite(fx) && float.IsFinite(fy) && float.IsFinite(fz))) { fx = 1f; fy = 0f; fz = 0f; }
             // the control points of the segment the rings are in (the rings of a segment are consecutive)
             int held = -1;
-            float p0x = 0f, p0y = 0f, p0z = 0f, p1x = 0f, p1y = 0f, p1z = 0f, p2x = 0f, p2y = 0f, p2z = 0f, p3x = 0f, p3y = 0f, p3z = 0f;
+            Vector4 p0 = default, p1 = default, p2 = default, p3 = default;
+            Float3 previous = Float3.Zero, before = Float3.Zero;
             for (int k = first; k <= last; k++)
             {
                 int j = ringSegments[k];
@@ -80,8 +89,12 @@ namespace HookeRope.Geometry
                 {
                     if (j != held)
                     {
-                        RopePieces.ControlPoints(j, a, b, x, y, z, ox, oy, oz, out p0x, out p0y, out p0z,
-                            out p1x, out p1y, out p1z, out p2x, out p2y, out p2z, out p3x, out p3y, out p3z);
+                        RopePieces.ControlPoints(j, a, b, x, y, z, ox, oy, oz, out float p0x, out float p0y, out float p0z,
+                            out float p1x, out float p1y, out float p1z, out float p2x, out float p2y, out float p2z, out float p3x, out float p3y, out float p3z);
+                        p0 = new Vector4(p0x, p0y, p0z, 0f);
+                        p1 = new Vector4(p1x, p1y, p1z, 0f);
+                        p2 = new Vector4(p2x, p2y, p2z, 0f);
+                        p3 = new Vector4(p3x, p3y, p3z, 0f);
                         held = j;
                     }
                     // uniform Catmull–Rom weights of t, as RingLayout stores the fraction (the Hermite cubic with the
@@ -91,60 +104,64 @@ namespace HookeRope.Geometry
                     float w1 = 0.5f * (2f - 5f * t2 + 3f * t3);
                     float w2 = 0.5f * (t + 4f * t2 - 3f * t3);
                     float w3 = 0.5f * (-t2 + t3);
-                    cx = p0x * w0 + p1x * w1 + p2x * w2 + p3x * w3;
-                    cy = p0y * w0 + p1y * w1 + p2y * w2 + p3y * w3;
-                    cz = p0z * w0 + p1z * w1 + p2z * w2 + p3z * w3;
+                    Vector4 c4 = p0 * w0 + p1 * w1 + p2 * w2 + p3 * w3;
+                    cx = c4.X; cy = c4.Y; cz = c4.Z;
                 }
                 if (!(float.IsFinite(cx) && float.IsFinite(cy) && float.IsFinite(cz)))
                 {
-                    Float3 previous = k > first ? centers[k - 1] : Float3.Zero;
-                    cx = previous.X; cy = previous.Y; cz = previous.Z;
+                    Float3 fallback = k > first ? previous : Float3.Zero;
+                    cx = fallback.X; cy = fallback.Y; cz = fallback.Z;
                 }
-                spacing2[k] = float.PositiveInfinity;
+                spacing[k] = float.PositiveInfinity;
                 if (k > first)
                 {
                     // a ring closer than PushDistance·r to the previous one is pushed forward (no zero-area triangles)
-                    Float3 previous = centers[k - 1];
                     float dx = cx - previous.X, dy = cy - previous.Y, dz = cz - previous.Z;
-                    float minimum = PushDistance * ringRadii[k] + 1e-7f;
+                    float minimum = PushDistance * radius[k] + 1e-7f;
                     float gap2 = dx * dx + dy * dy + dz * dz;
-                    spacing2[k] = gap2;
+                    spacing[k] = gap2;
                     if (gap2 < minimum * minimum)
                     {
-                        spacing2[k] = float.NaN; // the centre now depends on the radius: no radius-only rebuild
+                        spacing[k] = float.NaN; // the centre now depends on the radius: no radius-only rebuild
                         float ux = fx, uy = fy, uz = fz;
                         if (k > first + 1)
                         {
-                            Float3 before = centers[k - 2];
                             ux = previous.X - before.X; uy = previous.Y - before.Y; uz = previous.Z - before.Z;
                             if (!Normalize(ref ux, ref uy, ref uz)) { ux = fx; uy = fy; uz = fz; }
                         }
                         cx = previous.X + ux * minimum; cy = previous.Y + uy * minimum; cz = previous.Z + uz * minimum;
                     }
                 }
-                centers[k] = new Float3(cx, cy, cz);
+                before = previous;
+                previous = new Float3(cx, cy, cz);
+                centre[k] = previous;
             }
         }
 
         /// <summary>
         /// Tangents (central differences of the centres) and normals by parallel transport from the piece's first ring,
         /// whose normal is the last build's normal at that particle, re-projected only when its tangent changed (so the
-        /// tube does not spin between frames, and the same input gives the same bits). Returns true when the ring distances
-        /// it left in <see cref="slopeDistance"/> hold for <see cref="ComputeSlopes"/> (no fold tip moved a centre).
+        /// tube does not spin between frames, and the same input gives the same bits). The same loop takes each pair of
+        /// consecutive rings' fold test and geometric limits (<see cref="LimitPair"/>: the step between their centres, its
+        /// advance past both planes, the crossing caps and skew marks), which need that pair's final centres and tangents
+        /// and nothing further along; the fans next to fold tips follow (<see cref="LimitTipFans"/>) only when the piece has
+        /// a tip. Returns true when the ring distances it left in <see cref="slopeDistance"/> hold for
+        /// <see cref="ComputeSlopes"/> (no fold tip moved a centre); <paramref name="anySkewed"/> tells whether a ring was
+        /// marked skewed.
         /// </summary>
-        private bool ComputeFrames(int a, int b, int first, int last)
+        private bool ComputeFrames(int a, int b, int first, int last, out bool anySkewed)
         {
             // the ring arrays once (RepairFold writes centers[k] through the field: the same array)
             ReadOnlySpan<Float3> c = centers;
             Span<Float3> tangent = tangents, normal = normals;
-            Span<float> distance = slopeDistance;
-            Span<bool> tip = foldTip;
+            Span<float> distance = slopeDistance, cap = capSquared, gap = gapSquared;
+            Span<bool> tip = foldTip, skew = skewed;
             Float3 span = c[last] - c[first];
             float px = span.X, py = span.Y, pz = span.Z;
             if (!Normalize(ref px, ref py, ref pz)) { px = 1f; py = 0f; pz = 0f; }
             // (px, py, pz): ring k − 1's tangent, before the first ring the piece's direction (the last fallback)
             float nx = 0f, ny = 0f, nz = 0f;
-            bool moved = false;
+            bool moved = false, tips = false, skews = false;
             for (int k = first; k <= last; k++)
             {
                 Float3 here = c[k];
@@ -152,25 +169,14 @@ namespace HookeRope.Geometry
                 Float3 behind = k > first ? c[k - 1] : here;
                 float tx = ahead.X - behind.X, ty = ahead.Y - behind.Y, tz = ahead.Z - behind.Z;
                 // the length is ComputeSlopes' ring distance (the same centres)
-                bool found = Normalize(ref tx, ref ty, ref tz, out distance[k]);
-                if (!found && k < last)
-                {
-                    Float3 d = ahead - here;
-                    tx = d.X; ty = d.Y; tz = d.Z;
-                    found = Normalize(ref tx, ref ty, ref tz);
-                }
-                if (!found && k > first)
-                {
-                    Float3 d = here - behind;
-                    tx = d.X; ty = d.Y; tz = d.Z;
-                    found = Normalize(ref tx, ref ty, ref tz);
-                }
-                if (!found) { tx = px; ty = py; tz = pz; }
+                if (!Normalize(ref tx, ref ty, ref tz, out distance[k]))
+                    FallbackTangent(k > first, k < last, here, ahead, behind, px, py, pz, out tx, out ty, out tz);
                 tip[k] = false;
-                // ring k − 1's tangent is (px, py, pz), its centre behind
-                if (k > first && !ClearOfFold(k, behind, here, px, py, pz, tx, ty, tz) && RepairFold(k, ref tx, ref ty, ref tz)) moved = true;
+                cap[k] = float.PositiveInfinity;
+                skew[k] = false;
                 if (k == first)
                 {
+                    gap[k] = 0f;
                     Float3 seed = particleNormal[a];
                     nx = seed.X; ny = seed.Y; nz = seed.Z;
                     if (!(particleFrameValid[a] && particleTangent[a].Equals(new Float3(tx, ty, tz))))
@@ -178,8 +184,24 @@ namespace HookeRope.Geometry
                 }
                 else
                 {
+                    // ring k − 1's tangent is (px, py, pz), its centre behind: the step s between the two centres and its
+                    // advance past both planes, for the fold test and, once the pair is final, its limits
+                    float sx = here.X - behind.X, sy = here.Y - behind.Y, sz = here.Z - behind.Z;
+                    float gap2 = sx * sx + sy * sy + sz * sz;
+                    float past = sx * px + sy * py + sz * pz, before = sx * tx + sy * ty + sz * tz;
+                    if (!ClearOfFold(k, gap2, past, before) && RepairFold(k, ref tx, ref ty, ref tz))
+                    {
+                        moved = true;
+                        here = c[k];
+                        sx = here.X - behind.X; sy = here.Y - behind.Y; sz = here.Z - behind.Z;
+                        gap2 = sx * sx + sy * sy + sz * sz;
+                        past = sx * px + sy * py + sz * pz; before = sx * tx + sy * ty + sz * tz;
+                    }
+                    gap[k] = gap2;
+                    LimitPair(k, gap2, past, before, px, py, pz, tx, ty, tz, cap, skew, tip, ref skews);
                     FrameTransport.Transport(ref nx, ref ny, ref nz, px, py, pz, tx, ty, tz);
                 }
+                tips |= tip[k];
                 tangent[k] = new Float3(tx, ty, tz);
                 normal[k] = new Float3(nx, ny, nz);
                 px = tx; py = ty; pz = tz;
@@ -191,8 +213,35 @@ namespace HookeRope.Geometry
                 particleTangent[j] = tangents[k];
                 particleFrameValid[j] = true;
             }
+            if (tips) LimitTipFans(first, last);
+            anySkewed = skews;
             // a fold tip moved a centre after its neighbours' distances were taken: ComputeSlopes measures them again
             return !moved;
+        }
+
+        /// <summary>
+        /// A ring's tangent where its neighbours' centres coincide (out of the frame loop, which rarely needs it): the step
+        /// to the ring ahead, else the step from the ring behind, else the previous tangent (px, py, pz).
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
+        private static void FallbackTangent(bool hasBehind, bool hasAhead, in Float3 here, in Float3 ahead, in Float3 behind,
+            float px, float py, float pz, out float tx, out float ty, out float tz)
+        {
+            bool found = false;
+            tx = 0f; ty = 0f; tz = 0f;
+            if (hasAhead)
+            {
+                Float3 d = ahead - here;
+                tx = d.X; ty = d.Y; tz = d.Z;
+                found = Normalize(ref tx, ref ty, ref tz);
+            }
+            if (!found && hasBehind)
+            {
+                Float3 d = here - behind;
+                tx = d.X; ty = d.Y; tz = d.Z;
+                found = Normalize(ref tx, ref ty, ref tz);
+            }
+            if (!found) { tx = px; ty = py; tz = pz; }
         }
 
         /// <summary>
@@ -202,21 +251,26 @@ namespace HookeRope.Geometry
         /// </summary>
         private void ComputeSlopes(int first, int last, bool distancesKept)
         {
+            ReadOnlySpan<Float3> c = centers;
+            ReadOnlySpan<float> r = ringRadii;
+            ReadOnlySpan<bool> tip = foldTip;
+            Span<float> distance = slopeDistance, slope = slopes;
             for (int k = first; k <= last; k++)
             {
                 int ahead = k < last ? k + 1 : k;
                 int behind = k > first ? k - 1 : k;
                 if (!distancesKept)
                 {
-                    Float3 ca = centers[ahead], cb = centers[behind];
+                    Float3 ca = c[ahead], cb = c[behind];
                     float dx = ca.X - cb.X, dy = ca.Y - cb.Y, dz = ca.Z - cb.Z;
-                    slopeDistance[k] = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
+                    distance[k] = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
                 }
-                slopes[k] = foldTip[k] ? 0f : Slope(ringRadii[ahead], ringRadii[behind], slopeDistance[k]);
+                slope[k] = tip[k] ? 0f : Slope(r[ahead], r[behind], distance[k]);
             }
         }
 
         /// <summary>dr/ds between two rings <paramref name="distance"/> apart, clamped to ±10 (NaN counts as −10).</summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         private static float Slope(float ahead, float behind, float distance)
         {
             float slope = distance > 1e-12f ? (ahead - behind) / distance : 0f;
@@ -323,6 +377,7 @@ namespace HookeRope.Geometry
         /// square roots are one 4-lane square root (correctly rounded per lane, so the same bits as three scalar ones), and
         /// the box goes into the bounds with one comparison per axis and side (c − e ≤ c + e).
         /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         private void AddRingBounds(int k, ref Bounds bounds)
         {
             Float3 c = centers[k], t = tangents[k];

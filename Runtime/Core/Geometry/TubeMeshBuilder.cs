@@ -596,15 +596,18 @@ namespace HookeRope.Geometry
             // which rings must be written: all of them after new positions, the changed ones after new radii only
             if (!radiiOnly)
             {
-                for (int k = first; k <= last; k++) { ringRadii[k] = Clamped(radii[k]); dirty[k] = true; }
+                int count = last - first + 1;
+                for (int k = first; k <= last; k++) ringRadii[k] = Clamped(radii[k]);
+                dirty.AsSpan(first, count).Fill(true);
                 ComputeCenters(a, b, first, last, x, y, z);
                 if (contactRope != null && contactRope.ColliderCount > 0) PushCentersOutOfColliders(first, last);
-                bool distancesKept = ComputeFrames(a, b, first, last);
-                ComputeRingLimits(first, last);
-                LimitRadii(first, last, radii);
-                for (int k = first; k <= last; k++) ringRadii[k] = drawnRadii[k];
+                bool distancesKept = ComputeFrames(a, b, first, last, out bool anySkewed);
+                bool anyThinned = LimitRadii(first, last, radii);
+                drawnRadii.AsSpan(first, count).CopyTo(ringRadii.AsSpan(first, count));
                 ComputeSlopes(first, last, distancesKept);
-                MarkStripNormals(first, last);
+                // no ring thinned or skewed: no ring of the piece takes strip normals (what MarkStripNormals would find)
+                if (anySkewed || anyThinned || ForceFullLimits) MarkStripNormals(first, last);
+                else stripNormals.AsSpan(first, count).Clear();
             }
 
             bool startBroken = a > 0, endBroken = b < n;
@@ -652,9 +655,15 @@ namespace HookeRope.Geometry
         }
 
         /// <summary>Two triangles per radial step between the rings whose first vertices are baseA and baseB (B further along v).</summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         private void WriteStrip(int baseA, int baseB, int[] indices, bool writeIndices, ref int tubeCursor)
         {
-            if (!writeIndices) { tubeCursor += radial * 6; return; }
+            if (writeIndices) WriteStripIndices(baseA, baseB, indices, ref tubeCursor);
+            else tubeCursor += radial * 6;
+        }
+
+        private void WriteStripIndices(int baseA, int baseB, int[] indices, ref int tubeCursor)
+        {
             for (int i = 0; i < radial; i++)
             {
                 int a0 = baseA + i, a1 = a0 + 1, b0 = baseB + i, b1 = b0 + 1;

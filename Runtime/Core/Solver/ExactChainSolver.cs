@@ -1,4 +1,5 @@
 using System;
+using HookeRope.Mathematics;
 
 namespace HookeRope.Solver
 {
@@ -16,7 +17,7 @@ namespace HookeRope.Solver
     /// linearisation (release a segment whose force would push, re-admit one the new solution stretches; release a
     /// contact the chain lifts off, hold one it drives into the surface).
     /// </summary>
-    internal static class ExactChainSolver
+    internal static partial class ExactChainSolver
     {
         /// <summary>
         /// Smallest cosine between the accumulated force of a segment beside a held contact and its direction for the force's
@@ -131,8 +132,19 @@ namespace HookeRope.Solver
         /// </summary>
         private static void Assemble(ChainState c, double invH2, double gammaAll, bool first, bool tensionOnly)
         {
-            int s = c.SegmentCount;
-            // spans of exactly s entries (the loop bound) index without bounds checks; B spans are particle j + 1's
+            c.RigidInSolve = false;
+            // the lanes path takes whole runs of VectorPath.FloatLanes segments of an unbroken, non-plastic chain (and falls
+            // back to the rows below for a run with an unusual segment); the rows take the rest
+            int from = VectorPath.Enabled && c.Plasticity == null && c.BrokenCount == 0
+                ? AssembleLanes(c, invH2, gammaAll, first, tensionOnly) : 0;
+            if (from < c.SegmentCount) AssembleRows(c, from, c.SegmentCount, invH2, gammaAll, first, tensionOnly);
+        }
+
+        /// <summary>The scalar <see cref="Assemble"/> of segments from … to − 1.</summary>
+        private static void AssembleRows(ChainState c, int from, int to, double invH2, double gammaAll, bool first, bool tensionOnly)
+        {
+            int s = to;
+            // spans of exactly s = to entries (the loop bound) index without bounds checks; B spans are particle j + 1's
             ReadOnlySpan<float> wA = ChainState.Exactly(c.InverseMass, s), wB = ChainState.Shifted(c.InverseMass, s);
             ReadOnlySpan<float> dxA = ChainState.Exactly(c.DX, s), dyA = ChainState.Exactly(c.DY, s), dzA = ChainState.Exactly(c.DZ, s);
             ReadOnlySpan<float> dxB = ChainState.Shifted(c.DX, s), dyB = ChainState.Shifted(c.DY, s), dzB = ChainState.Shifted(c.DZ, s);
@@ -152,9 +164,8 @@ namespace HookeRope.Solver
             Span<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
             Span<bool> assembled = ChainState.Exactly(c.Assembled, s);
             Span<double> effectiveRest = ChainState.Exactly(c.EffectiveRest, s);
-            c.RigidInSolve = false;
             SegmentPlasticity plastic = c.Plasticity;
-            for (int j = 0; j < s; j++)
+            for (int j = from; j < to; j++)
             {
                 assembled[j] = false;
                 if (broken[j]) { active[j] = false; continue; }
@@ -282,15 +293,28 @@ namespace HookeRope.Solver
         private static bool UpdateTensionOnlySet(ChainState c, out int firstChanged)
         {
             int s = c.SegmentCount;
-            // spans of exactly s entries (the loop bound): indexed without bounds checks
+            bool changed = false;
+            int first = s;
+            // the lanes skip the runs of active segments that all still pull; the rows take the rest, in order
+            int from = VectorPath.Enabled && c.BrokenCount == 0 ? UpdateTensionOnlyLanes(c, ref changed, ref first) : 0;
+            if (from < s) UpdateTensionOnlyRows(c, from, s, ref changed, ref first);
+            firstChanged = first;
+            return changed;
+        }
+
+        /// <summary><see cref="UpdateTensionOnlySet"/> on segments from … to − 1 (changed and first: so far, updated).</summary>
+        private static void UpdateTensionOnlyRows(ChainState c, int from, int to, ref bool anyChanged, ref int firstChanged)
+        {
+            int s = to;
+            // spans of exactly s = to entries (the loop bound): indexed without bounds checks
             ReadOnlySpan<double> fx = ChainState.Exactly(c.ForceX, s), fy = ChainState.Exactly(c.ForceY, s), fz = ChainState.Exactly(c.ForceZ, s);
             ReadOnlySpan<double> dx = ChainState.Exactly(c.StepX, s), dy = ChainState.Exactly(c.StepY, s), dz = ChainState.Exactly(c.StepZ, s);
             ReadOnlySpan<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
             Span<bool> active = ChainState.Exactly(c.Active, s);
             ReadOnlySpan<bool> broken = ChainState.Exactly(c.Broken, s);
-            bool changed = false;
-            int first = s;
-            for (int j = 0; j < s; j++)
+            bool changed = anyChanged;
+            int first = firstChanged;
+            for (int j = from; j < s; j++)
             {
                 if (broken[j]) continue;
                 if (active[j])
@@ -304,8 +328,8 @@ namespace HookeRope.Solver
                 if (!changed) first = j;
                 changed = true;
             }
+            anyChanged = changed;
             firstChanged = first;
-            return changed;
         }
 
         /// <summary>
@@ -343,8 +367,34 @@ namespace HookeRope.Solver
         private static double Apply(ChainState c, bool contacts, bool tensionOnly, double invH2, out bool unconverged, out bool estimateTooLow)
         {
             if (contacts) MoveParticles<SegmentForceSystem.WithContacts>(c);
+            else if (VectorPath.Enabled && c.BrokenCount == 0 && c.SegmentCount > VectorPath.FloatLanes) MoveParticlesLanes(c);
             else MoveParticles<SegmentForceSystem.NoContacts>(c);
             int s = c.SegmentCount;
+            var tests = new ConvergenceTests { Floor = RoundOffFloor * c.Size };
+            // the lanes take the runs of active segments whose tests all pass quietly; the rows the rest, in order
+            int from = VectorPath.Enabled ? ApplyLanes(c, tensionOnly, invH2, ref tests) : 0;
+            if (from < s) ApplyRows(c, from, s, tensionOnly, invH2, ref tests);
+            unconverged = tests.Unconverged;
+            estimateTooLow = tests.EstimateTooLow;
+            if (!unconverged && tests.Mismatched) unconverged = Mismatched(c, tensionOnly, tests.Floor);
+            return tests.Worst;
+        }
+
+        /// <summary>The convergence tests of <see cref="Apply"/> as they accumulate over the segments.</summary>
+        private struct ConvergenceTests
+        {
+            /// <summary>Round-off floor of the length errors (m); the largest error over rest length so far.</summary>
+            public double Floor, Worst;
+            public bool Mismatched, Unconverged, EstimateTooLow;
+        }
+
+        /// <summary>
+        /// <see cref="Apply"/>'s segment pass on segments from … to − 1: accumulates the forces, writes λ and runs the
+        /// convergence tests into <paramref name="tests"/>.
+        /// </summary>
+        private static void ApplyRows(ChainState c, int from, int to, bool tensionOnly, double invH2, ref ConvergenceTests tests)
+        {
+            int s = to; // spans of exactly the loop bound: indexed without bounds checks
             ReadOnlySpan<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
             ReadOnlySpan<float> rest = ChainState.Exactly(c.RestLength, s);
             Span<double> error = ChainState.Exactly(c.LengthError, s);
@@ -354,11 +404,9 @@ namespace HookeRope.Solver
             Span<double> lambda = ChainState.Exactly(c.Lambda, s);
             ReadOnlySpan<bool> assembled = ChainState.Exactly(c.Assembled, s);
             ReadOnlySpan<double> estimate = ChainState.Exactly(c.EstimatedTension, s);
-            double floor = RoundOffFloor * c.Size, worst = 0.0;
-            bool mismatched = false;
-            unconverged = false;
-            estimateTooLow = false;
-            for (int j = 0; j < s; j++)
+            double floor = tests.Floor, worst = tests.Worst;
+            bool mismatched = tests.Mismatched, unconverged = tests.Unconverged, estimateTooLow = tests.EstimateTooLow;
+            for (int j = from; j < s; j++)
             {
                 double gx = fx[j] + sx[j], gy = fy[j] + sy[j], gz = fz[j] + sz[j];
                 fx[j] = gx; fy[j] = gy; fz[j] = gz;
@@ -392,8 +440,7 @@ namespace HookeRope.Solver
                 if (e > NonlinearTolerance * r) unconverged = true;
                 else mismatched = true;
             }
-            if (!unconverged && mismatched) unconverged = Mismatched(c, tensionOnly, floor);
-            return worst;
+            tests.Worst = worst; tests.Mismatched = mismatched; tests.Unconverged = unconverged; tests.EstimateTooLow = estimateTooLow;
         }
 
         /// <summary>

@@ -8,10 +8,13 @@ namespace HookeRope.World
     /// <summary>
     /// Steps a set of independent <see cref="RopeSimulation"/>s on a fixed pool of worker threads (the calling thread
     /// is worker 0; <see cref="WorkerCount"/> − 1 long-lived background threads do the rest). Each pass splits the
-    /// ropes into contiguous chunks of about equal cost, <see cref="ChunksPerWorker"/> per worker, which the workers claim
-    /// in order as they become free (one interlocked increment per chunk): a worker that the operating system wakes late
-    /// (a loaded machine, a host's busy cores) takes fewer chunks instead of holding up the pass, so a pass on W workers
-    /// is never much slower than on one. Every rope is stepped by exactly one thread with the same code, so the results
+    /// ropes into contiguous chunks of shrinking estimated cost (<see cref="WorkPartition.Split"/>: the first about
+    /// 1/(4 W) of the pass, the last single ropes), which the workers claim in order as they become free (one
+    /// compare-and-swap per chunk, tagged with the pass): a worker that the operating system wakes late (a loaded
+    /// machine, a host's busy cores) takes fewer chunks instead of holding up the pass, the workers run out of work within
+    /// about one rope of each other, and the pass ends when its last chunk is done, without waiting for a pool thread
+    /// that was woken too late to take any, so a pass on W workers is never much slower than on one. Every rope is
+    /// stepped by exactly one thread with the same code, so the results
     /// are the same bits for any worker count and any claiming order. Allocation-free per pass after
     /// warm-up (a slot's buffers are made at its first fill for the rope's ring budget, <see cref="RopeSimulation.GetVertexCapacity"/>,
     /// and again only after a break). An exception thrown by a rope is caught, the other
@@ -24,13 +27,19 @@ namespace HookeRope.World
     {
         private const int PhaseStep = 1, PhaseMesh = 2;
 
-        /// <summary>Chunks of ropes per worker and pass that the workers claim dynamically (a late worker leaves its share to the others).</summary>
-        internal const int ChunksPerWorker = 8;
-
         private readonly WorkerPool pool;
-        private readonly int[] bounds;
+        private readonly ManualResetEventSlim passDone = new ManualResetEventSlim(false);
+        private int[] bounds = new int[5];
         private readonly Exception[] failure;
         private readonly int[] failureIndex;
+        // per worker, one padded slot of WorkerTimingStride longs each (no two workers write one cache line):
+        // [0] = timestamp of the worker's first claim in pass [2], [1] = timestamp it finished its last chunk of it
+        private readonly long[] workerTimes;
+        private long passStarted, passEnded;
+        // the pass (high 32 bits) and its next unclaimed chunk (low 32 bits), claimed by compare-and-swap
+        private long claim;
+        private int generation;
+        private int remainingChunks;
         private RopeSimulation[] ropes = new RopeSimulation[4];
         private RopeMeshSlot[] slots = new RopeMeshSlot[4];
         private StepReport[] reports = new StepReport[4];
@@ -38,7 +47,6 @@ namespace HookeRope.World
         private long[] stepTicks = new long[4];
         private long[] fillTicks = new long[4];
         private int chunkCount;
-        private int nextChunk;
         private bool[] failedInPass = new bool[4];
         private int count;
         private int phase;
@@ -53,9 +61,9 @@ namespace HookeRope.World
         {
             if (workerCount < 1 || workerCount > 64)
                 throw new ArgumentOutOfRangeException(nameof(workerCount), workerCount, "workerCount must be in [1, 64].");
-            bounds = new int[workerCount * ChunksPerWorker + 1];
             failure = new Exception[workerCount];
             failureIndex = new int[workerCount];
+            workerTimes = new long[(workerCount + 1) * WorkerTimingStride];
             pool = new WorkerPool(workerCount, Work, "HookeRope world worker");
         }
 
@@ -73,6 +81,37 @@ namespace HookeRope.World
 
         /// <summary>Called on each worker's thread with its index at the end of its share of every pass (tests measure per-thread allocation with it).</summary>
         internal Action<int> WorkerProbe { get; set; }
+
+        /// <summary>Longs per worker in the timing array: 16 × 8 B = 128 B, two cache lines, so workers never share one.</summary>
+        private const int WorkerTimingStride = 16;
+
+        /// <summary>Wall-clock time (ms) of the last pass on the calling thread, hand-off and waiting included (0 before the first pass).</summary>
+        internal double LastPassMilliseconds => (passEnded - passStarted) * 1000.0 / Stopwatch.Frequency;
+
+        /// <summary>Chunks the last pass was split into (the workers claim them in order as they become free).</summary>
+        internal int LastChunkCount => chunkCount;
+
+        /// <summary>
+        /// Time (ms) from the last pass's start until worker <paramref name="worker"/> claimed its first chunk of it (its
+        /// wake-up; the partition for the calling thread), or the whole pass when it claimed none (woken too late).
+        /// </summary>
+        internal double LastWakeMilliseconds(int worker)
+        {
+            int at = (worker + 1) * WorkerTimingStride;
+            long began = Volatile.Read(ref workerTimes[at + 2]) == generation ? workerTimes[at] : passEnded;
+            return (began - passStarted) * 1000.0 / Stopwatch.Frequency;
+        }
+
+        /// <summary>
+        /// Time (ms) of the last pass that worker <paramref name="worker"/> did not spend on its chunks: until its first
+        /// claim and after its last chunk (pass − (end − first claim)); the whole pass when it claimed none.
+        /// </summary>
+        internal double LastIdleMilliseconds(int worker)
+        {
+            int at = (worker + 1) * WorkerTimingStride;
+            long busy = Volatile.Read(ref workerTimes[at + 2]) == generation ? workerTimes[at + 1] - workerTimes[at] : 0;
+            return (passEnded - passStarted - busy) * 1000.0 / Stopwatch.Frequency;
+        }
 
         /// <summary>True while any worker thread is alive (false after <see cref="Dispose"/>).</summary>
         internal bool AnyWorkerAlive => pool.AnyThreadAlive;
@@ -148,6 +187,7 @@ namespace HookeRope.World
                 Array.Resize(ref stepTicks, capacity);
                 Array.Resize(ref fillTicks, capacity);
                 Array.Resize(ref failedInPass, capacity);
+                Array.Resize(ref bounds, capacity + 1);
             }
             ropes[count] = simulation;
             slots[count] = null;
@@ -243,7 +283,9 @@ namespace HookeRope.World
         public void Dispose()
         {
             CheckIdle();
+            if (pool.IsDisposed) return;
             pool.Dispose();
+            passDone.Dispose();
         }
 
         private void RunPass(int passPhase, float hostDeltaTime)
@@ -252,24 +294,34 @@ namespace HookeRope.World
             CheckIdle();
             if ((passPhase & PhaseStep) != 0 && !(hostDeltaTime > 0f && hostDeltaTime <= 1f))
                 throw new ArgumentOutOfRangeException(nameof(hostDeltaTime), hostDeltaTime, "hostDeltaTime must be in (0, 1] s");
+            passStarted = Stopwatch.GetTimestamp();
             phase = passPhase;
             deltaTime = hostDeltaTime;
             Partition(passPhase);
+            remainingChunks = chunkCount;
+            passDone.Reset();
+            // publish the pass: everything above is written before a worker can claim one of its chunks
+            generation++;
+            Volatile.Write(ref claim, (long)generation << 32);
             running = true;
             try
             {
-                pool.Run();
+                pool.Wake();
+                // the pass ends when its last chunk is done, whichever thread did it: a pool thread that wakes after
+                // every chunk was claimed is not waited for (it finds the pass's chunks gone and goes back to sleep)
+                passDone.Wait();
             }
             finally
             {
+                passEnded = Stopwatch.GetTimestamp();
                 running = false;
             }
+            pool.RethrowEscaped();
             ThrowFirstFailure();
         }
 
         private void Partition(int passPhase)
         {
-            nextChunk = 0;
             int workers = pool.WorkerCount;
             if (workers == 1)
             {
@@ -281,19 +333,36 @@ namespace HookeRope.World
             bool step = (passPhase & PhaseStep) != 0;
             for (int i = 0; i < count; i++)
                 costs[i] = WorkPartition.Cost(ropes[i], step, (passPhase & PhaseMesh) != 0 && slots[i] != null && slots[i].Enabled ? slots[i] : null);
-            chunkCount = Math.Max(1, Math.Min(bounds.Length - 1, count));
-            WorkPartition.Split(costs, count, bounds.AsSpan(0, chunkCount + 1));
+            chunkCount = WorkPartition.Split(costs, count, workers, bounds);
         }
 
         private void Work(int worker)
         {
-            bool step = (phase & PhaseStep) != 0, mesh = (phase & PhaseMesh) != 0;
-            float dt = deltaTime;
-            // claim chunks in order until none is left (ropes within a chunk, and the chunks a worker takes, ascend)
-            for (int chunk = Interlocked.Increment(ref nextChunk) - 1; chunk < chunkCount; chunk = Interlocked.Increment(ref nextChunk) - 1)
+            int timing = (worker + 1) * WorkerTimingStride;
+            int tagged = -1;
+            // claim chunks in order until none is left (ropes within a chunk, and the chunks a worker takes, ascend); a
+            // claim names its pass, so a thread woken for a pass that already ended claims nothing of the next one's
+            // data unless that pass is running (then its chunks are as good as any)
+            while (true)
             {
+                long current = Volatile.Read(ref claim);
+                int chunk = (int)(current & 0xffffffffL);
+                if (chunk >= Volatile.Read(ref chunkCount)) break;
+                if (Interlocked.CompareExchange(ref claim, current + 1, current) != current) continue;
+                // claimed: the pass cannot end before this chunk is done, so its partition and phase are current
+                int pass = (int)(current >> 32);
+                if (pass != tagged)
+                {
+                    tagged = pass;
+                    workerTimes[timing] = Stopwatch.GetTimestamp();
+                    workerTimes[timing + 2] = pass;
+                }
+                bool step = (phase & PhaseStep) != 0, mesh = (phase & PhaseMesh) != 0;
+                float dt = deltaTime;
                 int end = bounds[chunk + 1];
                 for (int i = bounds[chunk]; i < end; i++) Process(worker, i, step, mesh, dt);
+                workerTimes[timing + 1] = Stopwatch.GetTimestamp();
+                if (Interlocked.Decrement(ref remainingChunks) == 0) passDone.Set();
             }
             WorkerProbe?.Invoke(worker);
         }

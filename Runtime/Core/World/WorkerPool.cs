@@ -4,27 +4,27 @@ using System.Threading;
 namespace HookeRope.World
 {
     /// <summary>
-    /// A fixed set of long-lived worker threads that run one pass of work together: <see cref="Run"/> hands worker
-    /// indices 1 … <see cref="WorkerCount"/> − 1 to the pool threads (one <see cref="ManualResetEventSlim"/> each), runs
-    /// worker 0 on the calling thread and returns when every worker has finished (a countdown that the last worker
-    /// turns into one <see cref="ManualResetEventSlim"/>). With one worker no thread is created. Allocation-free per
-    /// pass. An exception that escapes the work of a worker is rethrown on the caller (the lowest worker index wins).
-    /// One caller at a time; not re-entrant.
+    /// A fixed set of long-lived worker threads that join passes of work: <see cref="Wake"/> sets one
+    /// <see cref="ManualResetEventSlim"/> per pool thread, and each woken thread runs the work once with its worker
+    /// index (1 … <see cref="WorkerCount"/> − 1); the caller runs worker 0 itself. The pool does not wait for its
+    /// threads: the work decides what a late thread still finds to do (<see cref="RopeWorld"/> tags its chunks with the
+    /// pass, so a thread woken after a pass ended finds nothing, or joins the next pass) and signals the pass's end
+    /// itself, so a pass never waits for a thread that the operating system wakes late. With one worker no thread is
+    /// created. Allocation-free per pass. An exception that escapes the work on a pool thread is kept and rethrown by the
+    /// next <see cref="RethrowEscaped"/>. One caller at a time.
     /// </summary>
     internal sealed class WorkerPool : IDisposable
     {
         private readonly Action<int> work;
         private readonly Thread[] threads;
         private readonly ManualResetEventSlim[] start;
-        private readonly ManualResetEventSlim finished;
         private readonly Exception[] escaped;
-        private int pending;
         private volatile bool stopping;
         private bool disposed;
 
         /// <summary>
         /// Creates <paramref name="workerCount"/> − 1 background threads named "<paramref name="name"/> n" that wait for
-        /// <see cref="Run"/>. <paramref name="work"/> receives the worker index (0 … workerCount − 1).
+        /// <see cref="Wake"/>. <paramref name="work"/> receives the worker index (0 … workerCount − 1).
         /// </summary>
         public WorkerPool(int workerCount, Action<int> work, string name)
         {
@@ -34,7 +34,6 @@ namespace HookeRope.World
             escaped = new Exception[workerCount];
             threads = new Thread[workerCount - 1];
             start = new ManualResetEventSlim[workerCount - 1];
-            finished = new ManualResetEventSlim(false);
             for (int i = 0; i < threads.Length; i++)
             {
                 start[i] = new ManualResetEventSlim(false);
@@ -60,28 +59,30 @@ namespace HookeRope.World
             }
         }
 
-        /// <summary>Runs the work once on every worker and waits for all of them; rethrows an escaped exception.</summary>
-        public void Run()
+        /// <summary>
+        /// Wakes every pool thread for one run of the work (a thread still inside an earlier run runs once more after
+        /// it) and runs worker 0 on the calling thread; returns when worker 0's run returns.
+        /// </summary>
+        public void Wake()
         {
             if (disposed) throw new ObjectDisposedException(nameof(WorkerPool));
-            if (threads.Length > 0)
-            {
-                finished.Reset();
-                Volatile.Write(ref pending, threads.Length);
-                for (int i = 0; i < start.Length; i++) start[i].Set();
-            }
+            for (int i = 0; i < start.Length; i++) start[i].Set();
             RunWorker(0);
-            if (threads.Length > 0) finished.Wait();
+        }
+
+        /// <summary>Rethrows (wrapped) the exception that escaped the work on the lowest worker index since the last call, if any.</summary>
+        public void RethrowEscaped()
+        {
             for (int w = 0; w < escaped.Length; w++)
             {
-                Exception e = escaped[w];
+                Exception e = Interlocked.Exchange(ref escaped[w], null);
                 if (e == null) continue;
-                for (int k = w; k < escaped.Length; k++) escaped[k] = null;
+                for (int k = w + 1; k < escaped.Length; k++) Interlocked.Exchange(ref escaped[k], null);
                 throw new InvalidOperationException("A world worker failed: " + e.Message, e);
             }
         }
 
-        /// <summary>Stops and joins every pool thread (each finishes its current pass first) and releases the events. Idempotent.</summary>
+        /// <summary>Stops and joins every pool thread (each finishes its current run first) and releases the events. Idempotent.</summary>
         public void Dispose()
         {
             if (disposed) return;
@@ -90,7 +91,6 @@ namespace HookeRope.World
             for (int i = 0; i < start.Length; i++) start[i].Set();
             for (int i = 0; i < threads.Length; i++) threads[i].Join();
             for (int i = 0; i < start.Length; i++) start[i].Dispose();
-            finished.Dispose();
         }
 
         private void RunWorker(int worker)
@@ -101,7 +101,7 @@ namespace HookeRope.World
             }
             catch (Exception e)
             {
-                escaped[worker] = e;
+                Interlocked.CompareExchange(ref escaped[worker], e, null);
             }
         }
 
@@ -115,7 +115,6 @@ namespace HookeRope.World
                 go.Reset();
                 if (stopping) return;
                 RunWorker(worker);
-                if (Interlocked.Decrement(ref pending) == 0) finished.Set();
             }
         }
     }

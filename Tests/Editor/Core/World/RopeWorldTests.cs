@@ -335,17 +335,52 @@ namespace HookeRope.Tests.Core.World
         }
 
         [Test]
-        public void PartitionSplitsContiguousBlocksOfEqualCost()
+        public void PartitionSplitsContiguousChunksThatShrinkToSingleRopes()
         {
-            var bounds = new int[3];
-            WorkPartition.Split(new double[] { 1, 1, 1, 1 }, 4, bounds);
-            Assert.That(bounds, Is.EqualTo(new[] { 0, 2, 4 }));
-            WorkPartition.Split(new double[] { 6, 1, 1, 1, 1, 1, 1 }, 7, bounds);
-            Assert.That(bounds, Is.EqualTo(new[] { 0, 1, 7 }), "one heavy rope alone against six light ones (6 against 6)");
-            var four = new int[5];
-            WorkPartition.Split(new double[] { 1, 1 }, 2, four);
-            Assert.That(four, Is.EqualTo(new[] { 0, 0, 1, 1, 2 }).Or.EqualTo(new[] { 0, 1, 1, 2, 2 }).Or.EqualTo(new[] { 0, 0, 1, 2, 2 }),
-                "more workers than ropes: some blocks are empty, every rope once");
+            var bounds = new int[101];
+            var costs = new double[100];
+            for (int i = 0; i < costs.Length; i++) costs[i] = 1.0;
+            int chunks = WorkPartition.Split(costs, 100, 2, bounds);
+            Assert.That(bounds[0], Is.EqualTo(0));
+            Assert.That(bounds[chunks], Is.EqualTo(100), "every rope in one chunk");
+            double left = 100.0;
+            for (int k = 0; k < chunks; k++)
+            {
+                int size = bounds[k + 1] - bounds[k];
+                Assert.That(size, Is.GreaterThanOrEqualTo(1), "no empty chunk");
+                // about 1/(4 W) = 1/8 of the cost left, rounded to whole ropes (at least one)
+                Assert.That(size, Is.LessThanOrEqualTo(Math.Max(1.0, left / 8.0 + 0.5)), "chunk " + k + " of " + chunks);
+                left -= size;
+            }
+            Assert.That(bounds[1], Is.EqualTo(12).Or.EqualTo(13), "the first chunk: 1/8 of 100 equal ropes");
+            Assert.That(bounds[chunks] - bounds[chunks - 1], Is.EqualTo(1), "the last chunk is one rope");
+            Assert.That(chunks, Is.LessThan(40), "few claims per pass");
+
+            int heavy = WorkPartition.Split(new double[] { 60, 1, 1, 1, 1 }, 5, 2, bounds);
+            Assert.That(bounds[1], Is.EqualTo(1), "a rope heavier than the target is a chunk of its own");
+            Assert.That(bounds[heavy], Is.EqualTo(5));
+
+            Assert.That(WorkPartition.Split(costs, 0, 2, bounds), Is.EqualTo(1), "no rope: one empty chunk");
+            Assert.That(bounds[0] == 0 && bounds[1] == 0, Is.True);
+        }
+
+        [Test]
+        public void APassOnTwoWorkersReportsItsChunksAndTheWorkersTime()
+        {
+            var scene = Scene(12);
+            using (var world = new RopeWorld(2))
+            {
+                foreach (var sim in scene) world.EnableMesh(world.Add(sim));
+                for (int i = 0; i < 5; i++) world.StepAndFillMeshes(Frame);
+                Assert.That(world.LastChunkCount, Is.InRange(2, 12), "guided chunks of 12 ropes");
+                double pass = world.LastPassMilliseconds;
+                Assert.That(pass, Is.GreaterThan(0.0));
+                for (int w = 0; w < 2; w++)
+                {
+                    Assert.That(world.LastIdleMilliseconds(w), Is.InRange(0.0, pass), "worker " + w + " idle within the pass");
+                    Assert.That(world.LastWakeMilliseconds(w), Is.InRange(0.0, pass), "worker " + w + " began within the pass");
+                }
+            }
         }
     }
 }

@@ -1,0 +1,433 @@
+using System;
+using System.Numerics;
+using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
+using HookeRope.Mathematics;
+
+namespace HookeRope.Solver
+{
+    internal static partial class ExactChainSolver
+    {
+        /// <summary>
+        /// <see cref="AssembleRows"/> on runs of <see cref="VectorPath.FloatLanes"/> segments (an unbroken chain without
+        /// plasticity), each run as two halves of <see cref="VectorPath.DoubleLanes"/> (<see cref="AssembleHalf{THalf}"/>).
+        /// A run with a segment the rows treat apart — a vanishing or non-finite span, no mobility and no compliance, or a
+        /// force far off its segment while the chain has contacts — goes to <see cref="AssembleRows"/> whole, before anything
+        /// of it is stored. Returns the first segment not assembled (the rows take the rest).
+        /// </summary>
+        private static int AssembleLanes(ChainState c, double invH2, double gammaAll, bool first, bool tensionOnly)
+        {
+            int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes;
+            var v = new AssemblyViews(c, s);
+            Span<double> rx = ChainState.Exactly(c.ResidualX, s), ry = ChainState.Exactly(c.ResidualY, s), rz = ChainState.Exactly(c.ResidualZ, s);
+            Span<double> axial = ChainState.Exactly(c.AxialCompliance, s), transverse = ChainState.Exactly(c.TransverseCompliance, s), estimate = ChainState.Exactly(c.EstimatedTension, s);
+            Span<double> effectiveRest = ChainState.Exactly(c.EffectiveRest, s);
+            Span<Vector<float>> dirX = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(c.DirX, s));
+            Span<Vector<float>> dirY = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(c.DirY, s));
+            Span<Vector<float>> dirZ = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(c.DirZ, s));
+            Span<Vector<float>> length = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(c.Length, s));
+            Span<bool> assembled = ChainState.Exactly(c.Assembled, s);
+            var p = new AssemblyParameters { InvH2 = invH2, Gamma = gammaAll, First = first, TensionOnly = tensionOnly, Contacts = c.ContactCount > 0 };
+            for (int k = 0; k < runs; k++)
+            {
+                AssembleHalf<LowHalf>(in v, k, in p, out AssembledLanes low);
+                AssembleHalf<HighHalf>(in v, k, in p, out AssembledLanes high);
+                int j = k * lanes;
+                if (!Vector.EqualsAll(low.Unusual | high.Unusual, Vector<long>.Zero))
+                {
+                    AssembleRows(c, j, j + lanes, invH2, gammaAll, first, tensionOnly);
+                    continue;
+                }
+                if (!Vector.EqualsAll(low.Rigid | high.Rigid, Vector<long>.Zero)) c.RigidInSolve = true;
+                low.Store(rx, ry, rz, axial, transverse, estimate, effectiveRest, j);
+                high.Store(rx, ry, rz, axial, transverse, estimate, effectiveRest, j + VectorPath.DoubleLanes);
+                dirX[k] = Vector.Narrow(low.Nx, high.Nx); dirY[k] = Vector.Narrow(low.Ny, high.Ny); dirZ[k] = Vector.Narrow(low.Nz, high.Nz);
+                length[k] = Vector.Narrow(low.Length, high.Length);
+                assembled.Slice(j, lanes).Fill(true);
+            }
+            return runs * lanes;
+        }
+
+        /// <summary>
+        /// The rows of one half of run k (<typeparamref name="THalf"/>: <see cref="LowHalf"/> or <see cref="HighHalf"/>): each
+        /// lane does <see cref="AssembleRows"/>'s operations in its order, and both sides of each of its branches are computed
+        /// on every lane and selected, so every lane keeps the row's bits.
+        /// </summary>
+        private static void AssembleHalf<THalf>(in AssemblyViews v, int k, in AssemblyParameters p, out AssembledLanes o) where THalf : struct
+        {
+            int h = 2 * k + (typeof(THalf) == typeof(HighHalf) ? 1 : 0);
+            Vector<double> zero = Vector<double>.Zero, one = Vector<double>.One, invH2 = new Vector<double>(p.InvH2);
+            // ChainState.Change, Component and Normalise
+            Vector<double> ddx = (Wide<THalf>(v.DxB[k]) - Wide<THalf>(v.DxA[k])) + (Wide<THalf>(v.DlxB[k]) - Wide<THalf>(v.DlxA[k]));
+            Vector<double> ddy = (Wide<THalf>(v.DyB[k]) - Wide<THalf>(v.DyA[k])) + (Wide<THalf>(v.DlyB[k]) - Wide<THalf>(v.DlyA[k]));
+            Vector<double> ddz = (Wide<THalf>(v.DzB[k]) - Wide<THalf>(v.DzA[k])) + (Wide<THalf>(v.DlzB[k]) - Wide<THalf>(v.DlzA[k]));
+            Vector<double> sx = Wide<THalf>(v.PxB[k]) - Wide<THalf>(v.PxA[k]), lx = Wide<THalf>(v.LxB[k]) - Wide<THalf>(v.LxA[k]);
+            Vector<double> sy = Wide<THalf>(v.PyB[k]) - Wide<THalf>(v.PyA[k]), ly = Wide<THalf>(v.LyB[k]) - Wide<THalf>(v.LyA[k]);
+            Vector<double> sz = Wide<THalf>(v.PzB[k]) - Wide<THalf>(v.PzA[k]), lz = Wide<THalf>(v.LzB[k]) - Wide<THalf>(v.LzA[k]);
+            Vector<double> cx = sx + (lx + ddx), cy = sy + (ly + ddy), cz = sz + (lz + ddz);
+            Vector<double> len = Vector.SquareRoot(cx * cx + cy * cy + cz * cz);
+            Vector<long> unusual = ~(Vector.GreaterThan(len, new Vector<double>(1e-12)) & Vector.LessThanOrEqual(len, new Vector<double>(float.MaxValue)));
+            Vector<double> inv = one / len;
+            Vector<double> nx = cx * inv, ny = cy * inv, nz = cz * inv;
+            Vector<double> alpha = Wide<THalf>(v.Compliance[k]);
+            Vector<double> mobility = Wide<THalf>(v.WA[k]) + Wide<THalf>(v.WB[k]);
+            Vector<long> rigid = Vector.Equals(alpha, zero);
+            unusual |= Vector.Equals(mobility, zero) & rigid;
+            // g = alpha > 0 ? gammaAll : 0, damped where g > 0
+            Vector<long> compliant = Vector.GreaterThan(alpha, zero);
+            Vector<double> g = Vector.ConditionalSelect(compliant, new Vector<double>(p.Gamma), zero);
+            Vector<double> restJ = Wide<THalf>(v.Rest[k]);
+            Vector<double> alphaTilde = alpha * invH2, restEffective = restJ;
+            if (p.Gamma > 0.0)
+            {
+                Vector<double> rate;
+                if (p.TensionOnly) rate = nx * ddx + ny * ddy + nz * ddz;
+                else
+                {
+                    // StartLength: its components add 0.0 to the remainders' difference, which changes at most the sign of a
+                    // zero, and the squares drop that
+                    Vector<double> ox = sx + lx, oy = sy + ly, oz = sz + lz;
+                    rate = len - Vector.SquareRoot(ox * ox + oy * oy + oz * oz);
+                }
+                Vector<double> onePlusG = one + g;
+                restEffective = Vector.ConditionalSelect(compliant, (restJ + g * (len - rate)) / onePlusG, restJ);
+                alphaTilde = Vector.ConditionalSelect(compliant, alphaTilde / onePlusG, alphaTilde);
+            }
+            Vector<double> fx = v.Fx[h], fy = v.Fy[h], fz = v.Fz[h];
+            Vector<double> magnitude = Vector.SquareRoot(fx * fx + fy * fy + fz * fz);
+            Vector<long> loaded = Vector.GreaterThan(magnitude, zero);
+            Vector<double> sense = Vector.ConditionalSelect(Vector.GreaterThanOrEqual(fx * nx + fy * ny + fz * nz, zero), one, -one);
+            Vector<double> inverse = sense / magnitude;
+            Vector<double> signed = Vector.ConditionalSelect(loaded, sense * magnitude, zero);
+            Vector<double> ex = Vector.ConditionalSelect(loaded, fx * inverse, nx);
+            Vector<double> ey = Vector.ConditionalSelect(loaded, fy * inverse, ny);
+            Vector<double> ez = Vector.ConditionalSelect(loaded, fz * inverse, nz);
+            // beside a held contact a force far off its segment takes the rows' test (BesideHeldContact)
+            if (p.Contacts) unusual |= loaded & Vector.LessThan(ex * nx + ey * ny + ez * nz, new Vector<double>(MinForceAlignment));
+            Vector<double> last = Wide<THalf>(v.LastTension[k]);
+            Vector<double> tension = p.First ? Vector.Abs(last) : Vector.Abs(signed * invH2);
+            Vector<double> target = restEffective + alphaTilde * signed;
+            Vector<double> floor = new Vector<double>(1e-6) * restJ;
+            Vector<double> geometric = Vector.ConditionalSelect(Vector.LessThan(target, floor), floor, target) * invH2;
+            Vector<double> cap = new Vector<double>(MaxTransverseComplianceRatio) * mobility;
+            Vector<long> axialOnly = ~Vector.LessThan(geometric, cap * tension);
+            if (!p.TensionOnly)
+            {
+                axialOnly |= Vector.LessThan(p.First ? last : signed, zero); // pushing
+                ex = Vector.ConditionalSelect(axialOnly, nx, ex); ey = Vector.ConditionalSelect(axialOnly, ny, ey); ez = Vector.ConditionalSelect(axialOnly, nz, ez);
+            }
+            o.Unusual = unusual; o.Rigid = rigid;
+            o.Nx = nx; o.Ny = ny; o.Nz = nz; o.Length = len;
+            o.Transverse = Vector.ConditionalSelect(axialOnly, cap, geometric / tension);
+            o.Estimate = tension; o.Axial = alphaTilde; o.Rest = restEffective;
+            o.Rx = len * nx - target * ex; o.Ry = len * ny - target * ey; o.Rz = len * nz - target * ez;
+        }
+
+        /// <summary>The half <typeparamref name="THalf"/> of a run of floats, as doubles (exact).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector<double> Wide<THalf>(Vector<float> run) where THalf : struct
+        {
+            Vector.Widen(run, out Vector<double> low, out Vector<double> high);
+            return typeof(THalf) == typeof(HighHalf) ? high : low;
+        }
+
+        /// <summary>Type argument of the half kernels: the first <see cref="VectorPath.DoubleLanes"/> lanes of a run.</summary>
+        private struct LowHalf { }
+
+        /// <summary>Type argument of the half kernels: the last <see cref="VectorPath.DoubleLanes"/> lanes of a run.</summary>
+        private struct HighHalf { }
+
+        /// <summary>The per-call inputs of <see cref="AssembleHalf{THalf}"/>.</summary>
+        private struct AssemblyParameters
+        {
+            public double InvH2, Gamma;
+            public bool First, TensionOnly, Contacts;
+        }
+
+        /// <summary>One half run's results of <see cref="AssembleHalf{THalf}"/>, stored only when no lane of the run is unusual.</summary>
+        private struct AssembledLanes
+        {
+            public Vector<long> Unusual, Rigid;
+            public Vector<double> Nx, Ny, Nz, Length, Rx, Ry, Rz, Axial, Transverse, Estimate, Rest;
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            public void Store(Span<double> rx, Span<double> ry, Span<double> rz, Span<double> axial, Span<double> transverse,
+                Span<double> estimate, Span<double> effectiveRest, int j)
+            {
+                Put(rx, j, Rx); Put(ry, j, Ry); Put(rz, j, Rz);
+                Put(axial, j, Axial); Put(transverse, j, Transverse); Put(estimate, j, Estimate); Put(effectiveRest, j, Rest);
+            }
+        }
+
+        /// <summary>Writes v to values[j …].</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void Put(Span<double> values, int j, Vector<double> v) =>
+            MemoryMarshal.Cast<double, Vector<double>>(values.Slice(j, VectorPath.DoubleLanes))[0] = v;
+
+        /// <summary>
+        /// The inputs of <see cref="AssembleHalf{THalf}"/> as runs of <see cref="VectorPath.FloatLanes"/> (A: a segment's
+        /// first particle, B: its second; the forces as runs of <see cref="VectorPath.DoubleLanes"/>).
+        /// </summary>
+        private readonly ref struct AssemblyViews
+        {
+            public readonly ReadOnlySpan<Vector<float>> WA, WB, DxA, DxB, DyA, DyB, DzA, DzB, DlxA, DlxB, DlyA, DlyB, DlzA, DlzB;
+            public readonly ReadOnlySpan<Vector<float>> PxA, PxB, PyA, PyB, PzA, PzB, LxA, LxB, LyA, LyB, LzA, LzB, Rest, Compliance, LastTension;
+            public readonly ReadOnlySpan<Vector<double>> Fx, Fy, Fz;
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            public AssemblyViews(ChainState c, int s)
+            {
+                WA = A(c.InverseMass, s); WB = B(c.InverseMass, s);
+                DxA = A(c.DX, s); DxB = B(c.DX, s); DyA = A(c.DY, s); DyB = B(c.DY, s); DzA = A(c.DZ, s); DzB = B(c.DZ, s);
+                DlxA = A(c.DLowX, s); DlxB = B(c.DLowX, s); DlyA = A(c.DLowY, s); DlyB = B(c.DLowY, s); DlzA = A(c.DLowZ, s); DlzB = B(c.DLowZ, s);
+                PxA = A(c.PrevX, s); PxB = B(c.PrevX, s); PyA = A(c.PrevY, s); PyB = B(c.PrevY, s); PzA = A(c.PrevZ, s); PzB = B(c.PrevZ, s);
+                LxA = A(c.LowX, s); LxB = B(c.LowX, s); LyA = A(c.LowY, s); LyB = B(c.LowY, s); LzA = A(c.LowZ, s); LzB = B(c.LowZ, s);
+                Rest = A(c.RestLength, s); Compliance = A(c.Compliance, s); LastTension = A(c.Tension, s);
+                Fx = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.ForceX, s));
+                Fy = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.ForceY, s));
+                Fz = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.ForceZ, s));
+            }
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static ReadOnlySpan<Vector<float>> A(float[] values, int s) => MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(values, s));
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static ReadOnlySpan<Vector<float>> B(float[] values, int s) => MemoryMarshal.Cast<float, Vector<float>>(ChainState.Shifted(values, s));
+        }
+
+        /// <summary>
+        /// <see cref="MoveParticles{T}"/> of a chain without contacts or broken segments on lanes: the particle pass (motion
+        /// w_i·(δΛ_i − δΛ_{i−1}) and the displacement's double split) on runs of <see cref="VectorPath.FloatLanes"/>
+        /// particles from particle 1, then the segments' second-order length errors from the recorded motions on runs of
+        /// segments (a run with a released segment writes only its active lanes, row by row). Each lane does the scalar
+        /// pass's operations in its order, so the bits are the same.
+        /// </summary>
+        private static void MoveParticlesLanes(ChainState c)
+        {
+            int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = (s - 1) / lanes;
+            // particle 0, whose pull has no segment before it
+            MoveParticle(c, 0, c.StepX[0], c.StepY[0], c.StepZ[0]);
+            ReadOnlySpan<Vector<float>> w = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Shifted(c.InverseMass, s - 1));
+            for (int k = 0; k < runs; k++)
+            {
+                Vector.Widen(w[k], out Vector<double> wLow, out Vector<double> wHigh);
+                MoveLanes(c.StepX, c.DX, c.DLowX, c.MotionX, s, k, wLow, wHigh);
+                MoveLanes(c.StepY, c.DY, c.DLowY, c.MotionY, s, k, wLow, wHigh);
+                MoveLanes(c.StepZ, c.DZ, c.DLowZ, c.MotionZ, s, k, wLow, wHigh);
+            }
+            for (int i = 1 + runs * lanes; i < s; i++)
+                MoveParticle(c, i, c.StepX[i] - c.StepX[i - 1], c.StepY[i] - c.StepY[i - 1], c.StepZ[i] - c.StepZ[i - 1]);
+            // the last particle, pulled by its segment alone (Move's w·pull, as the scalar pass)
+            MoveParticle(c, s, -c.StepX[s - 1], -c.StepY[s - 1], -c.StepZ[s - 1]);
+            LengthErrorLanes(c);
+        }
+
+        /// <summary>Particle i moved by its inverse mass times the pull (N·s²), recorded as its motion (the scalar pass's step).</summary>
+        private static void MoveParticle(ChainState c, int i, double px, double py, double pz)
+        {
+            double wi = c.InverseMass[i];
+            double mx = wi * px, my = wi * py, mz = wi * pz;
+            c.AddDisplacement(i, mx, my, mz);
+            c.MotionX[i] = mx; c.MotionY[i] = my; c.MotionZ[i] = mz;
+        }
+
+        /// <summary>
+        /// One axis of run k of particles 1 + k·FloatLanes …: motion m = w·(δΛ_i − δΛ_{i−1}) (wLow, wHigh: the run's inverse
+        /// masses), added to the displacement d + low in double and split back as <see cref="ChainState.Add"/> does.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void MoveLanes(double[] step, float[] d, float[] low, double[] motion, int s, int k, Vector<double> wLow, Vector<double> wHigh)
+        {
+            ReadOnlySpan<Vector<double>> after = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Shifted(step, s - 1));
+            ReadOnlySpan<Vector<double>> before = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(step, s - 1));
+            Span<Vector<double>> m = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Shifted(motion, s - 1));
+            Span<Vector<float>> dv = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Shifted(d, s - 1));
+            Span<Vector<float>> lv = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Shifted(low, s - 1));
+            Vector<double> mLow = wLow * (after[2 * k] - before[2 * k]), mHigh = wHigh * (after[2 * k + 1] - before[2 * k + 1]);
+            m[2 * k] = mLow; m[2 * k + 1] = mHigh;
+            Vector.Widen(dv[k], out Vector<double> dLow, out Vector<double> dHigh);
+            Vector.Widen(lv[k], out Vector<double> lLow, out Vector<double> lHigh);
+            Vector<double> xLow = (dLow + lLow) + mLow, xHigh = (dHigh + lHigh) + mHigh;
+            Vector<float> f = Vector.Narrow(xLow, xHigh);
+            Vector.Widen(f, out Vector<double> fLow, out Vector<double> fHigh);
+            dv[k] = f;
+            lv[k] = Vector.Narrow(xLow - fLow, xHigh - fHigh);
+        }
+
+        /// <summary>
+        /// The active segments' second-order length errors (<see cref="LengthError"/>) from the motions of their ends, on runs
+        /// of <see cref="VectorPath.FloatLanes"/> segments; a run with a released segment and the tail go row by row.
+        /// </summary>
+        private static void LengthErrorLanes(ChainState c)
+        {
+            int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes;
+            ReadOnlySpan<Vector<double>> ax = Cast(ChainState.Exactly(c.MotionX, s)), ay = Cast(ChainState.Exactly(c.MotionY, s)), az = Cast(ChainState.Exactly(c.MotionZ, s));
+            ReadOnlySpan<Vector<double>> bx = Cast(ChainState.Shifted(c.MotionX, s)), by = Cast(ChainState.Shifted(c.MotionY, s)), bz = Cast(ChainState.Shifted(c.MotionZ, s));
+            ReadOnlySpan<Vector<float>> dirX = Cast(ChainState.Exactly(c.DirX, s)), dirY = Cast(ChainState.Exactly(c.DirY, s)), dirZ = Cast(ChainState.Exactly(c.DirZ, s));
+            ReadOnlySpan<Vector<float>> length = Cast(ChainState.Exactly(c.Length, s)), rest = Cast(ChainState.Exactly(c.RestLength, s));
+            Span<Vector<double>> error = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.LengthError, s));
+            ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
+            Vector<double> two = new Vector<double>(2.0), micro = new Vector<double>(1e-6);
+            for (int k = 0; k < runs; k++)
+            {
+                if (!AllTrue(active, k * lanes))
+                {
+                    LengthErrorRows(c, k * lanes, (k + 1) * lanes);
+                    continue;
+                }
+                Vector.Widen(dirX[k], out Vector<double> exLow, out Vector<double> exHigh);
+                Vector.Widen(dirY[k], out Vector<double> eyLow, out Vector<double> eyHigh);
+                Vector.Widen(dirZ[k], out Vector<double> ezLow, out Vector<double> ezHigh);
+                Vector.Widen(length[k], out Vector<double> lLow, out Vector<double> lHigh);
+                Vector.Widen(rest[k], out Vector<double> rLow, out Vector<double> rHigh);
+                error[2 * k] = LengthErrors(bx[2 * k] - ax[2 * k], by[2 * k] - ay[2 * k], bz[2 * k] - az[2 * k], exLow, eyLow, ezLow, lLow, micro * rLow, two);
+                error[2 * k + 1] = LengthErrors(bx[2 * k + 1] - ax[2 * k + 1], by[2 * k + 1] - ay[2 * k + 1], bz[2 * k + 1] - az[2 * k + 1], exHigh, eyHigh, ezHigh, lHigh, micro * rHigh, two);
+            }
+            LengthErrorRows(c, runs * lanes, s);
+        }
+
+        /// <summary><see cref="LengthError"/> per lane (floor: 1e-6 times the rest length).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector<double> LengthErrors(Vector<double> ux, Vector<double> uy, Vector<double> uz, Vector<double> ex, Vector<double> ey, Vector<double> ez,
+            Vector<double> length, Vector<double> floor, Vector<double> two)
+        {
+            Vector<double> along = ux * ex + uy * ey + uz * ez;
+            Vector<double> perp = ux * ux + uy * uy + uz * uz - along * along;
+            return perp / (two * Vector.ConditionalSelect(Vector.LessThan(length, floor), floor, length));
+        }
+
+        /// <summary>The length errors of the active segments from … to − 1, row by row.</summary>
+        private static void LengthErrorRows(ChainState c, int from, int to)
+        {
+            for (int j = from; j < to; j++)
+            {
+                if (!c.Active[j]) continue;
+                c.LengthError[j] = LengthError(c.MotionX[j + 1] - c.MotionX[j], c.MotionY[j + 1] - c.MotionY[j], c.MotionZ[j + 1] - c.MotionZ[j],
+                    c.DirX[j], c.DirY[j], c.DirZ[j], c.Length[j], c.RestLength[j]);
+            }
+        }
+
+        /// <summary>A span as runs of <see cref="Vector{T}"/>.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static ReadOnlySpan<Vector<double>> Cast(Span<double> values) => MemoryMarshal.Cast<double, Vector<double>>(values);
+
+        /// <summary>A span as runs of <see cref="Vector{T}"/>.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static ReadOnlySpan<Vector<float>> Cast(Span<float> values) => MemoryMarshal.Cast<float, Vector<float>>(values);
+
+        /// <summary>
+        /// True when the <see cref="VectorPath.FloatLanes"/> flags at flags[index …] are all true: a C# true is the byte 1, so
+        /// eight or four flags are read as one word (any other byte reads as not all true, which only sends the run row by row).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static bool AllTrue(ReadOnlySpan<bool> flags, int index)
+        {
+            ReadOnlySpan<byte> run = MemoryMarshal.AsBytes(flags.Slice(index, VectorPath.FloatLanes));
+            if (run.Length == 8) return MemoryMarshal.Read<ulong>(run) == 0x0101010101010101UL;
+            if (run.Length == 4) return MemoryMarshal.Read<uint>(run) == 0x01010101U;
+            for (int k = 0; k < run.Length; k++)
+                if (run[k] != 1) return false;
+            return true;
+        }
+
+        /// <summary>
+        /// <see cref="ApplyRows"/> on runs of <see cref="VectorPath.FloatLanes"/> active segments whose tests all pass
+        /// quietly — no tension above twice its estimate, a pushing segment's error within the tolerance, a pulling one's
+        /// within the round-off floor — which then only accumulate their forces and write λ (the lanes' bits are the rows').
+        /// Any other run goes to <see cref="ApplyRows"/> whole, in order, before anything of it is stored. Returns the
+        /// first segment not done.
+        /// </summary>
+        private static int ApplyLanes(ChainState c, bool tensionOnly, double invH2, ref ConvergenceTests tests)
+        {
+            int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes;
+            ReadOnlySpan<Vector<float>> dirX = Cast(ChainState.Exactly(c.DirX, s)), dirY = Cast(ChainState.Exactly(c.DirY, s)), dirZ = Cast(ChainState.Exactly(c.DirZ, s));
+            ReadOnlySpan<Vector<float>> rest = Cast(ChainState.Exactly(c.RestLength, s));
+            ReadOnlySpan<Vector<double>> error = Cast(ChainState.Exactly(c.LengthError, s)), estimate = Cast(ChainState.Exactly(c.EstimatedTension, s));
+            ReadOnlySpan<Vector<double>> sx = Cast(ChainState.Exactly(c.StepX, s)), sy = Cast(ChainState.Exactly(c.StepY, s)), sz = Cast(ChainState.Exactly(c.StepZ, s));
+            Span<Vector<double>> fx = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.ForceX, s));
+            Span<Vector<double>> fy = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.ForceY, s));
+            Span<Vector<double>> fz = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.ForceZ, s));
+            Span<Vector<double>> lambda = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.Lambda, s));
+            ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
+            Vector<double> h2 = new Vector<double>(invH2), two = new Vector<double>(2.0), tolerance = new Vector<double>(NonlinearTolerance);
+            Vector<double> floor = new Vector<double>(tests.Floor);
+            for (int k = 0; k < runs; k++)
+            {
+                if (!AllTrue(active, k * lanes))
+                {
+                    ApplyRows(c, k * lanes, (k + 1) * lanes, tensionOnly, invH2, ref tests);
+                    continue;
+                }
+                Vector.Widen(dirX[k], out Vector<double> exLow, out Vector<double> exHigh);
+                Vector.Widen(dirY[k], out Vector<double> eyLow, out Vector<double> eyHigh);
+                Vector.Widen(dirZ[k], out Vector<double> ezLow, out Vector<double> ezHigh);
+                Vector.Widen(rest[k], out Vector<double> rLow, out Vector<double> rHigh);
+                int a = 2 * k, b = 2 * k + 1;
+                Vector<double> gxLow = fx[a] + sx[a], gyLow = fy[a] + sy[a], gzLow = fz[a] + sz[a];
+                Vector<double> gxHigh = fx[b] + sx[b], gyHigh = fy[b] + sy[b], gzHigh = fz[b] + sz[b];
+                // λ = −(g·n): the sign bit flipped as the scalar negation does (Vector's unary minus may be 0 − x, which
+                // makes −(+0) +0)
+                Vector<double> sign = new Vector<double>(-0.0);
+                Vector<double> lLow = (gxLow * exLow + gyLow * eyLow + gzLow * ezLow) ^ sign, lHigh = (gxHigh * exHigh + gyHigh * eyHigh + gzHigh * ezHigh) ^ sign;
+                Vector<long> loud = Loud(lLow, error[a], estimate[a], rLow, h2, two, tolerance, floor) | Loud(lHigh, error[b], estimate[b], rHigh, h2, two, tolerance, floor);
+                if (!Vector.EqualsAll(loud, Vector<long>.Zero))
+                {
+                    ApplyRows(c, k * lanes, (k + 1) * lanes, tensionOnly, invH2, ref tests);
+                    continue;
+                }
+                fx[a] = gxLow; fy[a] = gyLow; fz[a] = gzLow; fx[b] = gxHigh; fy[b] = gyHigh; fz[b] = gzHigh;
+                lambda[a] = lLow; lambda[b] = lHigh;
+            }
+            return runs * lanes;
+        }
+
+        /// <summary>
+        /// Lanes of active segments (λ l, length error e, tension estimate, rest length r) on which a test of
+        /// <see cref="ApplyRows"/> does something: the found tension −λ/h² above twice the estimate, a pushing segment's
+        /// error above NonlinearTolerance·r, or a pulling one's not within the floor (a NaN error included, as in the rows).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector<long> Loud(Vector<double> l, Vector<double> e, Vector<double> estimate, Vector<double> r,
+            Vector<double> h2, Vector<double> two, Vector<double> tolerance, Vector<double> floor)
+        {
+            Vector<long> pushing = Vector.GreaterThan(l, Vector<double>.Zero);
+            return Vector.GreaterThan((l ^ new Vector<double>(-0.0)) * h2, two * estimate)
+                | (pushing & Vector.GreaterThan(e, tolerance * r))
+                | Vector.AndNot(~Vector.LessThanOrEqual(e, floor), pushing);
+        }
+
+        /// <summary>
+        /// <see cref="UpdateTensionOnlySet"/> on runs of <see cref="VectorPath.FloatLanes"/> segments of an unbroken chain:
+        /// a run of active segments whose total force n·(Λ + δΛ) all still pull (≥ 0, as the rows test it) changes nothing
+        /// and is skipped; any other run goes to <see cref="UpdateTensionOnlyRows"/>, in order. Returns the first segment
+        /// not done.
+        /// </summary>
+        private static int UpdateTensionOnlyLanes(ChainState c, ref bool changed, ref int first)
+        {
+            int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes;
+            ReadOnlySpan<Vector<float>> dirX = Cast(ChainState.Exactly(c.DirX, s)), dirY = Cast(ChainState.Exactly(c.DirY, s)), dirZ = Cast(ChainState.Exactly(c.DirZ, s));
+            ReadOnlySpan<Vector<double>> fx = Cast(ChainState.Exactly(c.ForceX, s)), fy = Cast(ChainState.Exactly(c.ForceY, s)), fz = Cast(ChainState.Exactly(c.ForceZ, s));
+            ReadOnlySpan<Vector<double>> dx = Cast(ChainState.Exactly(c.StepX, s)), dy = Cast(ChainState.Exactly(c.StepY, s)), dz = Cast(ChainState.Exactly(c.StepZ, s));
+            ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
+            for (int k = 0; k < runs; k++)
+            {
+                if (AllTrue(active, k * lanes))
+                {
+                    Vector.Widen(dirX[k], out Vector<double> exLow, out Vector<double> exHigh);
+                    Vector.Widen(dirY[k], out Vector<double> eyLow, out Vector<double> eyHigh);
+                    Vector.Widen(dirZ[k], out Vector<double> ezLow, out Vector<double> ezHigh);
+                    int a = 2 * k, b = 2 * k + 1;
+                    Vector<double> alongLow = (fx[a] + dx[a]) * exLow + (fy[a] + dy[a]) * eyLow + (fz[a] + dz[a]) * ezLow;
+                    Vector<double> alongHigh = (fx[b] + dx[b]) * exHigh + (fy[b] + dy[b]) * eyHigh + (fz[b] + dz[b]) * ezHigh;
+                    if (Vector.GreaterThanOrEqualAll(alongLow, Vector<double>.Zero) && Vector.GreaterThanOrEqualAll(alongHigh, Vector<double>.Zero)) continue;
+                }
+                UpdateTensionOnlyRows(c, k * lanes, (k + 1) * lanes, ref changed, ref first);
+            }
+            return runs * lanes;
+        }
+
+        /// <summary>A span as runs of <see cref="Vector{T}"/>.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static ReadOnlySpan<Vector<double>> Cast(ReadOnlySpan<double> values) => MemoryMarshal.Cast<double, Vector<double>>(values);
+    }
+}

@@ -1,0 +1,56 @@
+using System;
+using System.Globalization;
+using HookeRope.Bench;
+using HookeRope.World;
+
+namespace HookeRope.Kernels
+{
+    /// <summary>
+    /// Issue 18's goal world in the probe: <c>goal-world:N</c> is N lanyards × 64 segments with 16-sided tube meshes in one
+    /// <see cref="RopeWorld"/> on 1 worker (Tools~/Bench/GoalScene.cs, the scene the bench's goal rows time), warmed up
+    /// by <see cref="GoalScene.WarmUpFrames"/> frames; <c>run goal-world:N K</c> then steps and fills K frames of the
+    /// bench's window. <c>goal-step:N</c> is the same world stepped without mesh fills in those K frames (the meshes of
+    /// the warm-up are filled as in the bench, and the fills never change the physics), so the difference of the two
+    /// counts is the mesh's. goal-count.sh counts K = 0 against K = <see cref="GoalScene.WindowFrames"/> under callgrind.
+    /// </summary>
+    internal static class GoalWorldScene
+    {
+        /// <summary>Segments per lanyard (the goal's).</summary>
+        public const int Segments = 64;
+
+        /// <summary>True for <c>goal-world:N</c> and <c>goal-step:N</c>.</summary>
+        public static bool Is(string name) =>
+            name.StartsWith("goal-world:", StringComparison.Ordinal) || name.StartsWith("goal-step:", StringComparison.Ordinal);
+
+        /// <summary>
+        /// Builds the scene, steps <paramref name="frames"/> frames of the window and prints the state hash of every rope
+        /// (folded), the work units (ropes × segments × substeps × frames) and the tube vertices the frames filled.
+        /// </summary>
+        public static int Run(string name, int frames)
+        {
+            bool mesh = name.StartsWith("goal-world:", StringComparison.Ordinal);
+            int ropes = int.Parse(name.Substring(name.IndexOf(':') + 1), CultureInfo.InvariantCulture);
+            if (ropes < 1) throw new ArgumentOutOfRangeException(nameof(name), ropes, "the rope count N of " + name + " must be at least 1.");
+            long vertices = 0;
+            ulong hash = 14695981039346656037UL;
+            using (var world = GoalScene.Build(ropes, Segments, 1, warmUpFrames: GoalScene.WarmUpFrames))
+            {
+                for (int f = 0; f < frames; f++)
+                {
+                    if (mesh)
+                    {
+                        world.StepAndFillMeshes(GoalScene.Frame);
+                        for (int i = 0; i < world.Count; i++) vertices += world.GetMeshSlot(i).Update.VertexCount;
+                    }
+                    else world.Step(GoalScene.Frame);
+                }
+                for (int i = 0; i < world.Count; i++) hash = (hash ^ Program.Hash(world.GetRope(i).Rope)) * 1099511628211UL;
+            }
+            long units = (long)ropes * Segments * GoalScene.Substeps * frames;
+            int first = GoalScene.WarmUpFrames + 1;
+            Console.WriteLine(string.Format(CultureInfo.InvariantCulture, "{0} frames {1}-{2}: {3:x16} units {4} vertices {5}",
+                name, first, first + frames - 1, hash, units, vertices));
+            return 0;
+        }
+    }
+}
