@@ -141,7 +141,33 @@ namespace HookeRope.Geometry
         /// <summary>Appends <paramref name="count"/> (≥ 1) evenly spaced rings of <paramref name="segment"/>, t = i/count as the uniform layouts.</summary>
         internal void AddUniform(int segment, int count)
         {
-            for (int i = 0; i < count; i++) Add(segment, (float)i / count);
+            // Add's segment step and Put's capacity check once for the run of rings, then Put's compare-and-store per ring
+            while (writeSegment < segment)
+            {
+                writeSegment++;
+                firstRing[writeSegment] = writeCursor;
+            }
+            int start = writeCursor;
+            if (start + count > ringSegment.Length)
+            {
+                int size = Math.Max(start + count, 2 * ringSegment.Length);
+                Array.Resize(ref ringSegment, size);
+                Array.Resize(ref ringFraction, size);
+            }
+            Span<int> segments = new Span<int>(ringSegment, start, count);
+            Span<float> fractions = new Span<float>(ringFraction, start, count);
+            int kept = ringCount - start; // rings below the last layout's count compare with it
+            bool changed = false;
+            for (int i = 0; i < segments.Length; i++)
+            {
+                float t = (float)i / count;
+                if (i < kept && segments[i] == segment && fractions[i] == t) continue;
+                changed = true;
+                segments[i] = segment;
+                fractions[i] = t;
+            }
+            writeChanged |= changed;
+            writeCursor = start + count;
         }
 
         /// <summary>Ends a rewrite with the last ring on the last particle; <see cref="Version"/> moves when a ring did.</summary>

@@ -522,11 +522,23 @@ namespace HookeRope.Geometry
             for (int j = 0; j < n; j++) { arc += restLengths[j]; restArc[j + 1] = arc; }
             ReadOnlySpan<int> ringSegments = layout.RingSegments;
             ReadOnlySpan<float> ringFractions = layout.RingFractions;
-            for (int k = 0; k < ringSegments.Length; k++)
+            ReadOnlySpan<double> arcs = restArc;
+            Span<float> v = new Span<float>(ringV, 0, ringSegments.Length);
+            ringFractions = ringFractions.Slice(0, v.Length);
+            // the rings of a segment are consecutive: its arc and rest length once per run (the same operations per ring)
+            int segment = -1;
+            double start = 0.0, length = 0.0;
+            for (int k = 0; k < v.Length; k++)
             {
                 int j = ringSegments[k];
-                double s = restArc[j] + (restArc[j + 1] - restArc[j]) * ringFractions[k];
-                ringV[k] = (float)(s * vScale);
+                if (j != segment)
+                {
+                    segment = j;
+                    start = arcs[j];
+                    length = arcs[j + 1] - start;
+                }
+                double s = start + length * ringFractions[k];
+                v[k] = (float)(s * vScale);
             }
             ringVLayoutVersion = layout.Version;
         }
@@ -594,10 +606,14 @@ namespace HookeRope.Geometry
             int first = layout.FirstRing(a);
             int last = layout.FirstRing(b);
             // which rings must be written: all of them after new positions, the changed ones after new radii only
+            // a full build of a piece no ring of which takes strip normals: every ring dirty and drawn by WriteRing
+            bool plain = false;
             if (!radiiOnly)
             {
                 int count = last - first + 1;
-                for (int k = first; k <= last; k++) ringRadii[k] = Clamped(radii[k]);
+                Span<float> clamped = new Span<float>(ringRadii, first, count);
+                ReadOnlySpan<float> given = radii.Slice(first, count);
+                for (int i = 0; i < clamped.Length; i++) clamped[i] = Clamped(given[i]);
                 dirty.AsSpan(first, count).Fill(true);
                 ComputeCenters(a, b, first, last, x, y, z);
                 if (contactRope != null && contactRope.ColliderCount > 0) PushCentersOutOfColliders(first, last);
@@ -607,7 +623,7 @@ namespace HookeRope.Geometry
                 ComputeSlopes(first, last, distancesKept);
                 // no ring thinned or skewed: no ring of the piece takes strip normals (what MarkStripNormals would find)
                 if (anySkewed || anyThinned || ForceFullLimits) MarkStripNormals(first, last);
-                else stripNormals.AsSpan(first, count).Clear();
+                else { stripNormals.AsSpan(first, count).Clear(); plain = true; }
             }
 
             bool startBroken = a > 0, endBroken = b < n;
@@ -629,13 +645,27 @@ namespace HookeRope.Geometry
             // the dangling halves' first rings, for the normals of end rings drawn from their strips
             Neighbour beforeFirst = DanglingNeighbour(startRings > 0 && stripNormals[first], a - 1, true, first);
             Neighbour afterLast = DanglingNeighbour(endBroken && dangling != null && stripNormals[last], b, false, last);
-            for (int k = first; k <= last; k++)
+            if (plain && !writeIndices)
             {
-                int ringBase = vertexBase + (k - first) * stride;
-                if (dirty[k] && stripNormals[k]) WriteRingOnStrips(k, first, last, beforeFirst, afterLast, vertices.AsSpan(ringBase, stride));
-                else if (dirty[k]) WriteRing(k, vertices.AsSpan(ringBase, stride));
-                AddRingBounds(k, ref bounds);
-                if (k < last) WriteStrip(ringBase, ringBase + stride, indices, writeIndices, ref tubeCursor);
+                // the loop below with its tests decided: each ring written and bounded, the strips' indices kept
+                int ringBase = vertexBase;
+                for (int k = first; k <= last; k++, ringBase += stride)
+                {
+                    WriteRing(k, vertices.AsSpan(ringBase, stride));
+                    AddRingBounds(k, ref bounds);
+                }
+                tubeCursor += (last - first) * radial * 6;
+            }
+            else
+            {
+                for (int k = first; k <= last; k++)
+                {
+                    int ringBase = vertexBase + (k - first) * stride;
+                    if (dirty[k] && stripNormals[k]) WriteRingOnStrips(k, first, last, beforeFirst, afterLast, vertices.AsSpan(ringBase, stride));
+                    else if (dirty[k]) WriteRing(k, vertices.AsSpan(ringBase, stride));
+                    AddRingBounds(k, ref bounds);
+                    if (k < last) WriteStrip(ringBase, ringBase + stride, indices, writeIndices, ref tubeCursor);
+                }
             }
             vertexBase += (last - first + 1) * stride;
 

@@ -244,7 +244,39 @@ namespace HookeRope.Radius
         {
             if (ringSegments.Length != ringFractions.Length || radii.Length < ringSegments.Length)
                 throw new ArgumentException("radii must hold at least as many values as ringSegments and ringFractions (which must match).", nameof(radii));
-            for (int k = 0; k < ringSegments.Length; k++) radii[k] = RadiusAt(ringSegments[k], ringFractions[k]);
+            if (neckDepth > 0f)
+            {
+                for (int k = 0; k < ringSegments.Length; k++) radii[k] = RadiusAt(ringSegments[k], ringFractions[k]);
+                return;
+            }
+            // no neck: RadiusAt's Poisson interpolation only, its checks and the neck test hoisted out of the loop (the
+            // same operations on the same values, so the same bits)
+            ReadOnlySpan<float> particle = baseParticleRadii;
+            ReadOnlySpan<bool> broken = segmentBroken;
+            int segments = segmentRadii.Length;
+            radii = radii.Slice(0, ringSegments.Length);
+            ringFractions = ringFractions.Slice(0, ringSegments.Length);
+            // a layout's rings of one segment are consecutive: the segment's ends once per run
+            int current = -1;
+            float r0 = 0f, r1 = 0f, rise = 0f;
+            bool parted = false;
+            for (int k = 0; k < radii.Length; k++)
+            {
+                int segment = ringSegments[k];
+                if (segment != current)
+                {
+                    if ((uint)segment >= (uint)segments)
+                        throw new ArgumentOutOfRangeException(nameof(ringSegments), segment, "ring segments must be in [0, SegmentCount - 1].");
+                    current = segment;
+                    r0 = particle[segment];
+                    r1 = particle[segment + 1];
+                    rise = r1 - r0;
+                    parted = broken[segment];
+                }
+                float t = ringFractions[k];
+                if (t < 0f) t = 0f; else if (t > 1f) t = 1f;
+                radii[k] = parted ? (t <= 0.5f ? r0 : r1) : r0 + rise * t;
+            }
         }
 
         /// <summary>True when the neck follows the rope's elastic–plastic material (<see cref="FollowMaterial"/>) instead of the radius threshold.</summary>
