@@ -313,7 +313,7 @@ namespace HookeRope.Geometry
         /// side table (<see cref="SideLanes"/>: cos, sin and u of each side) made once per builder, written in place in
         /// SetVertexBufferData's layout. Where <see cref="Vector{T}"/> of float has 8 lanes (AVX2) and the vector paths are
         /// on, two vertices at a time are three 8-float vectors (<see cref="PairLanes"/>), each float with the same
-        /// operations in the same order; the odd last vertex takes the 4-float lanes.
+        /// operations in the same order (<see cref="WritePairs"/>; the odd last vertex of an even side count is the seam).
         /// </summary>
         private void WriteRing(int k, Span<TubeVertex> ring)
         {
@@ -424,8 +424,8 @@ namespace HookeRope.Geometry
 
         /// <summary>
         /// The pair table of the wide kernel, made once per builder at its first wide ring: per pair of sides i = 2p, 2p + 1
-        /// (the last side twice at an odd count) the cosines and sines in the wide kernel's lane pattern (<see cref="WriteRing"/>) (cos φ_i in vertex i's lanes), with the
-        /// cos lane under u holding u_i (its coefficient is 1).
+        /// (the last side twice at an odd count) the cosines and sines in the wide kernel's lane pattern (<see cref="WriteRing"/>;
+        /// cos φ_i in vertex i's lanes), with the cos lane under u holding u_i (its coefficient is 1).
         /// </summary>
         private PairLanes[] MakePairLanes()
         {
