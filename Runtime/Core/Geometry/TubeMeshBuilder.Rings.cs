@@ -311,10 +311,15 @@ namespace HookeRope.Geometry
         /// tangent: 0, b, −n). The 48-byte vertex is three 4-float lanes (position.xyz normal.x | normal.yz tangent.xy |
         /// tangent.zw u v), so a vertex is 6 multiplications, 8 additions and 3 stores of 4-float vectors, read from the
         /// side table (<see cref="SideLanes"/>: cos, sin and u of each side) made once per builder, written in place in
-        /// SetVertexBufferData's layout.
+        /// SetVertexBufferData's layout. Where <see cref="Vector{T}"/> of float has 8 lanes (AVX2) and the vector paths are
+        /// on, two vertices at a time are three 8-float vectors (<see cref="PairLanes"/>), each float with the same
+        /// operations in the same order (<see cref="WritePairs"/>; the odd last vertex of an even side count is the seam).
         /// </summary>
         private void WriteRing(int k, Span<TubeVertex> ring)
         {
+            // read first: the switch is a static field, whose first read may call the runtime, which would push the
+            // ring's coefficients out of registers
+            bool wide = Vector<float>.Count == 8 && VectorPath.Enabled;
             Float3 c = centers[k], t = tangents[k], nrm = normals[k];
             float nx = nrm.X, ny = nrm.Y, nz = nrm.Z;
             // binormal = t × n
@@ -336,11 +341,31 @@ namespace HookeRope.Geometry
             var a2 = new Vector4(0f, 0f, 0f, ringV[k]);
             var b2 = new Vector4(bz, 0f, 0f, 0f);
             var c2 = new Vector4(-nz, 0f, 0f, 0f);
-            // one table entry and one vertex per side, read and written through refs: the loop runs over the vertices'
-            // span, so its index is range-checked only against the side table (once per side, not once per lane)
             ReadOnlySpan<SideLanes> sides = sideLanes;
             Span<VertexLanes> vertices = MemoryMarshal.Cast<TubeVertex, VertexLanes>(ring);
             if (vertices.Length > sides.Length) vertices = vertices.Slice(0, sides.Length);
+            if (wide && vertices.Length >= 2)
+            {
+                // the wide kernel: vertices 2p and 2p + 1 are the 24 floats First Middle | Last First | Middle Last, three
+                // 8-float vectors, each ((B·cos + C·sin) + A) + O with B, C, A, O per ring in that lane pattern (O the frame
+                // origin on the position lanes and −0 elsewhere, which adds nothing; the third vector has no O) and cos, sin
+                // per pair of sides (PairLanes). The last lane's u moves into the cos table (1·u + 0·sin + −0 is u, as
+                // 0·cos + 0·sin + u is) and its other constants a2 + U are added here, as the loop below adds them per
+                // vertex (0 + 0, 0 + 1, v + 0).
+                var a2u = new Vector4(0f + 0f, 0f + 1f, -0f, ringV[k] + 0f);
+                var b2u = new Vector4(bz, 0f, 1f, 0f);
+                var negativeZero = new Vector4(-0f);
+                // the ring's coefficient vectors, two 4-float lanes each, through the builder's scratch (no allocation)
+                Span<Vector4> half = MemoryMarshal.Cast<Vector<float>, Vector4>(ringCoefficients);
+                half[21] = o0; half[20] = negativeZero; half[19] = negativeZero; half[18] = o0;
+                half[0] = b0; half[1] = b1; half[2] = b2u; half[3] = b0; half[4] = b1; half[5] = b2u;
+                half[6] = c0; half[7] = c1; half[8] = c2; half[9] = c0; half[10] = c1; half[11] = c2;
+                half[12] = a0; half[13] = a1; half[14] = a2u; half[15] = a0; half[16] = a1; half[17] = a2u;
+                WritePairs(vertices);
+                return;
+            }
+            // one table entry and one vertex per side, read and written through refs: the loop runs over the vertices'
+            // span, so its index is range-checked only against the side table (once per side, not once per lane)
             for (int i = 0; i < vertices.Length; i++)
             {
                 ref readonly SideLanes side = ref sides[i];
@@ -349,6 +374,99 @@ namespace HookeRope.Geometry
                 vertex.Last = (b2 * ci + c2 * si) + (a2 + side.U);
                 vertex.First = ((b0 * ci + c0 * si) + a0) + o0;
                 vertex.Middle = (b1 * ci + c1 * si) + a1;
+            }
+        }
+
+        /// <summary>
+        /// The wide kernel's loop (<see cref="WriteRing"/>), with the ring's coefficient vectors in
+        /// <see cref="ringCoefficients"/>: pairs of vertices, then an odd last vertex as the first 8 floats of a pair and
+        /// the last 4 through the scratch vector (the same operations per float); at the seam, a copy of vertex 0 with the
+        /// seam's u. Inlined: the eleven coefficient vectors stay in registers through the loop.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private void WritePairs(Span<VertexLanes> vertices)
+        {
+            ReadOnlySpan<PairLanes> pairs = pairLanes ?? MakePairLanes();
+            Span<Vector<float>> q = ringCoefficients;
+            Vector<float> bA = q[0], bB = q[1], bC = q[2], cA = q[3], cB = q[4], cC = q[5];
+            Vector<float> aA = q[6], aB = q[7], aC = q[8], oA = q[9], oB = q[10];
+            // one table entry and one pair of vertices per step, through refs (one range check each, as the 4-float loop)
+            Span<VertexPair> wide = MemoryMarshal.Cast<VertexLanes, VertexPair>(vertices);
+            if (wide.Length > pairs.Length) wide = wide.Slice(0, pairs.Length);
+            for (int p = 0; p < wide.Length; p++)
+            {
+                ref readonly PairLanes side = ref pairs[p];
+                ref VertexPair pair = ref wide[p];
+                pair.First = ((bA * side.CosA + cA * side.SinA) + aA) + oA;
+                pair.Middle = ((bB * side.CosB + cB * side.SinB) + aB) + oB;
+                pair.Last = (bC * side.CosC + cC * side.SinC) + aC;
+            }
+            int last = 2 * wide.Length;
+            if (last >= vertices.Length) return;
+            if (last == pairSeam)
+            {
+                // the odd last vertex is the seam, side 0 again (cos 1, sin 0: the same operations on the same numbers give
+                // the same bits) but for its u
+                Span<TubeVertex> plain = MemoryMarshal.Cast<VertexLanes, TubeVertex>(vertices);
+                plain[last] = plain[0];
+                plain[last].U = seamU;
+            }
+            else if (wide.Length < pairs.Length)
+            {
+                // another odd last vertex: floats 0–7 are the pair's first vector (in the ring: the vertex is 12 floats),
+                // 8–11 the low half of its second
+                ref readonly PairLanes side = ref pairs[wide.Length];
+                MemoryMarshal.Cast<VertexLanes, Vector<float>>(vertices.Slice(last))[0] = ((bA * side.CosA + cA * side.SinA) + aA) + oA;
+                q[11] = ((bB * side.CosB + cB * side.SinB) + aB) + oB;
+                vertices[last].Last = MemoryMarshal.Cast<Vector<float>, Vector4>(q)[22];
+            }
+        }
+
+        /// <summary>
+        /// The pair table of the wide kernel, made once per builder at its first wide ring: per pair of sides i = 2p, 2p + 1
+        /// (the last side twice at an odd count) the cosines and sines in the wide kernel's lane pattern (<see cref="WriteRing"/>;
+        /// cos φ_i in vertex i's lanes), with the cos lane under u holding u_i (its coefficient is 1).
+        /// </summary>
+        private PairLanes[] MakePairLanes()
+        {
+            ReadOnlySpan<SideLanes> sides = sideLanes;
+            var table = new PairLanes[(sides.Length + 1) / 2];
+            Span<float> cos = stackalloc float[24], sin = stackalloc float[24];
+            for (int p = 0; p < table.Length; p++)
+            {
+                for (int f = 0; f < 24; f++)
+                {
+                    int i = Math.Min(2 * p + f / 12, sides.Length - 1);
+                    cos[f] = f % 12 == 10 ? sides[i].U.Z : sides[i].Cos.X;
+                    sin[f] = sides[i].Sin.X;
+                }
+                table[p] = new PairLanes(new Vector<float>(cos), new Vector<float>(cos.Slice(8)), new Vector<float>(cos.Slice(16)),
+                    new Vector<float>(sin), new Vector<float>(sin.Slice(8)), new Vector<float>(sin.Slice(16)));
+            }
+            // the seam (the last side) writes side 0's bits but for u when their cos and sin are the same bits
+            int seam = sides.Length - 1;
+            bool same = BitConverter.SingleToInt32Bits(sides[seam].Cos.X) == BitConverter.SingleToInt32Bits(sides[0].Cos.X)
+                && BitConverter.SingleToInt32Bits(sides[seam].Sin.X) == BitConverter.SingleToInt32Bits(sides[0].Sin.X);
+            pairSeam = same && seam % 2 == 0 ? seam : -1;
+            seamU = sides[seam].U.Z;
+            pairLanes = table;
+            return table;
+        }
+
+        private PairLanes[] pairLanes;
+        private int pairSeam = -1;
+        private float seamU;
+        private readonly Vector<float>[] ringCoefficients = new Vector<float>[12];
+
+        /// <summary>The wide kernel's table entry of two sides: cos and sin of their 24 floats as three 8-float vectors.</summary>
+        private readonly struct PairLanes
+        {
+            public readonly Vector<float> CosA, CosB, CosC, SinA, SinB, SinC;
+
+            public PairLanes(Vector<float> cosA, Vector<float> cosB, Vector<float> cosC, Vector<float> sinA, Vector<float> sinB, Vector<float> sinC)
+            {
+                CosA = cosA; CosB = cosB; CosC = cosC;
+                SinA = sinA; SinB = sinB; SinC = sinC;
             }
         }
 
@@ -370,6 +488,13 @@ namespace HookeRope.Geometry
         private struct VertexLanes
         {
             public Vector4 First, Middle, Last;
+        }
+
+        /// <summary>Two <see cref="TubeVertex"/> values as the wide kernel writes them: three 8-float vectors.</summary>
+        [StructLayout(LayoutKind.Sequential)]
+        private struct VertexPair
+        {
+            public Vector<float> First, Middle, Last;
         }
 
         /// <summary>

@@ -20,36 +20,65 @@ namespace HookeRope.Tests.Core.Geometry
 
         private static readonly int[] Sides = { 8, 16, 32 };
 
+        /// <summary>Side counts for the wide ring kernel (two vertices per three 8-float vectors): odd tail vertex at even counts, none at odd ones.</summary>
+        private static readonly int[] KernelSides = { 3, 8, 9, 12, 16, 24, 32 };
+
+        /// <summary>Side counts for the breaking cord (broken ends: caps, dangling halves, burrs) with the wide ring kernel.</summary>
+        private static readonly int[] CordSides = { 8, 12, 16, 24, 32 };
+
+        /// <summary>
+        /// Issue 18 (s13): the wide ring kernel (<see cref="System.Numerics.Vector{T}"/> of 8 floats, engaged where the runtime has
+        /// AVX2) writes the bytes of the 4-float kernel at every side count, including the odd last vertex, the capped ends'
+        /// rims, a tapering radius (tilted normals) and a rope far from the origin (the frame origin added last): a capped
+        /// lanyard away from the origin, dropped and whipped, 60 frames.
+        /// </summary>
+        [TestCaseSource(nameof(KernelSides))]
+        public void TheWideRingKernelWritesTheSameBitsAtEverySideCount(int sides)
+        {
+            DropAndWhip(24, 37.25f, 1.4f, sides, true, 60, 30, "capped lanyard");
+        }
+
         /// <summary>The goal lanyard (64 segments) dropped from straight, then whipped by one pin: 150 frames.</summary>
         [TestCaseSource(nameof(Sides))]
         public void ADroppedAndWhippedLanyardDrawsTheSameBitsOnEveryPath(int sides)
         {
-            var settings = new RopeSettings { SegmentCount = 64 };
-            RopeSimulation Make()
-            {
-                RopeSimulation s = GoalLanyard.Pinned(settings, 0f, 1.8f);
-                s.MeshSettings.RadialSegments = sides;
-                return s;
-            }
-            var reference = new Pair(Make(), Make());
-            for (int frame = 0; frame < 150; frame++)
-            {
-                if (frame >= 60)
-                {
-                    // whip the far pin up and down and toward the near one (0.4 m at 3 Hz)
-                    float t = (frame - 60) * HostStep;
-                    var target = new Float3(1.8f - 0.3f * MathF.Sin(6f * MathF.PI * t), 2f + 0.4f * MathF.Sin(6f * MathF.PI * t), 0f);
-                    reference.Full.Rope.SetPinTarget(1, target);
-                    reference.Fast.Rope.SetPinTarget(1, target);
-                }
-                reference.Step();
-                reference.AssertSameMesh("lanyard, " + sides + " sides, frame " + frame);
-            }
+            Pair reference = DropAndWhip(64, 0f, 1.8f, sides, true, 150, 60, "lanyard");
             Assert.That(reference.MostRings, Is.GreaterThan(2 * 64), "the whipped lanyard draws more than two rings per segment at some frame");
         }
 
+        /// <summary>
+        /// A lanyard of <paramref name="segments"/> pinned at x … x + span, dropped from straight and, from frame
+        /// <paramref name="whipFrom"/>, whipped by its far pin (0.4 m at 3 Hz, up and down and toward the near pin), its
+        /// meshes compared at every frame.
+        /// </summary>
+        private static Pair DropAndWhip(int segments, float x, float span, int sides, bool caps, int frames, int whipFrom, string what)
+        {
+            var settings = new RopeSettings { SegmentCount = segments };
+            RopeSimulation Make()
+            {
+                RopeSimulation s = GoalLanyard.Pinned(settings, x, span);
+                s.MeshSettings.RadialSegments = sides;
+                s.MeshSettings.CapEnds = caps;
+                return s;
+            }
+            var pair = new Pair(Make(), Make());
+            for (int frame = 0; frame < frames; frame++)
+            {
+                if (frame >= whipFrom)
+                {
+                    float t = (frame - whipFrom) * HostStep;
+                    var target = new Float3(x + span - 0.3f * MathF.Sin(6f * MathF.PI * t), 2f + 0.4f * MathF.Sin(6f * MathF.PI * t), 0f);
+                    pair.Full.Rope.SetPinTarget(1, target);
+                    pair.Fast.Rope.SetPinTarget(1, target);
+                }
+                pair.Step();
+                pair.AssertSameMesh(what + ", " + sides + " sides, frame " + frame);
+            }
+            return pair;
+        }
+
         /// <summary>The lab's fracture cord (<see cref="FractureCord"/>: Zone neck, fracture, burr strands) pulled to its break and 25 frames on: necks, broken ends with burrs, dangling halves and fold tips.</summary>
-        [TestCaseSource(nameof(Sides))]
+        [TestCaseSource(nameof(CordSides))]
         public void ANeckingBreakingCordDrawsTheSameBitsOnEveryPath(int sides)
         {
             int pin = 0;
