@@ -36,7 +36,8 @@ namespace HookeRope.Solver
             }
             else if (stored) Forward<NoContacts, StoredBlocks>(c, from);
             else Forward<NoContacts, OwnBlocks>(c, from);
-            Back(c);
+            if (c.ContactCount > 0) Back<WithContacts>(c);
+            else Back<NoContacts>(c);
         }
 
         /// <summary>
@@ -210,21 +211,27 @@ namespace HookeRope.Solver
             }
         }
 
-        /// <summary>Back substitution: δ_j = S_j⁻¹ (y_j − U_j δ_{j+1}), U_j = −W_{j+1} on an active row.</summary>
-        private static void Back(ChainState c)
+        /// <summary>
+        /// Back substitution: δ_j = S_j⁻¹ (y_j − U_j δ_{j+1}), U_j = −W_{j+1} on an active row; specialised on contacts as
+        /// <see cref="Forward{T, TBlocks}"/> (without them U_j = −w_{j+1} I), the last row (no row after it) peeled.
+        /// </summary>
+        private static void Back<T>(ChainState c) where T : struct
         {
+            bool contacts = typeof(T) == typeof(WithContacts);
             int s = c.SegmentCount;
-            bool contacts = c.ContactCount > 0;
             ReadOnlySpan<float> wB = ChainState.Shifted(c.InverseMass, s);
             ReadOnlySpan<double> gi = ChainState.Exactly(c.PivotInverse, 6 * s);
             ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
             ReadOnlySpan<double> yx = ChainState.Exactly(c.ReducedX, s), yy = ChainState.Exactly(c.ReducedY, s), yz = ChainState.Exactly(c.ReducedZ, s);
             Span<double> dx = ChainState.Exactly(c.StepX, s), dy = ChainState.Exactly(c.StepY, s), dz = ChainState.Exactly(c.StepZ, s);
-            double nx = 0, ny = 0, nz = 0;
-            for (int j = s - 1; j >= 0; j--)
+            int last = s - 1;
+            if (last < 0) return;
+            BackRow(gi.Slice(6 * last, 6), yx[last], yy[last], yz[last], out double nx, out double ny, out double nz);
+            dx[last] = nx; dy[last] = ny; dz[last] = nz;
+            for (int j = last - 1; j >= 0; j--)
             {
                 double vx = yx[j], vy = yy[j], vz = yz[j];
-                if (active[j] && j + 1 < s)
+                if (active[j])
                 {
                     double mx, my, mz;
                     if (contacts) Mobility(c, j + 1, nx, ny, nz, out mx, out my, out mz);
@@ -235,13 +242,18 @@ namespace HookeRope.Solver
                     }
                     vx += mx; vy += my; vz += mz;
                 }
-                ReadOnlySpan<double> pivot = gi.Slice(6 * j, 6);
-                double ox = pivot[0] * vx + pivot[1] * vy + pivot[2] * vz;
-                double oy = pivot[1] * vx + pivot[3] * vy + pivot[4] * vz;
-                double oz = pivot[2] * vx + pivot[4] * vy + pivot[5] * vz;
-                dx[j] = ox; dy[j] = oy; dz[j] = oz;
-                nx = ox; ny = oy; nz = oz;
+                BackRow(gi.Slice(6 * j, 6), vx, vy, vz, out nx, out ny, out nz);
+                dx[j] = nx; dy[j] = ny; dz[j] = nz;
             }
+        }
+
+        /// <summary>One row of <see cref="Back{T}"/>: the symmetric inverse pivot times v.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void BackRow(ReadOnlySpan<double> pivot, double vx, double vy, double vz, out double ox, out double oy, out double oz)
+        {
+            ox = pivot[0] * vx + pivot[1] * vy + pivot[2] * vz;
+            oy = pivot[1] * vx + pivot[3] * vy + pivot[4] * vz;
+            oz = pivot[2] * vx + pivot[4] * vy + pivot[5] * vz;
         }
 
         /// <summary>A row's symmetric block (XX … ZZ) and right-hand side (X, Y, Z) while the contact terms change it.</summary>
