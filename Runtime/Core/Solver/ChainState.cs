@@ -62,6 +62,9 @@ namespace HookeRope.Solver
         public readonly double[] ForceX, ForceY, ForceZ, StepX, StepY, StepZ, ResidualX, ResidualY, ResidualZ;
         public readonly double[] PivotInverse, ReducedX, ReducedY, ReducedZ;
         public readonly double[] AxialCompliance, TransverseCompliance, EstimatedTension;
+        // each row's free block A_j = (w_j + w_{j+1}) I + α̃ n nᵀ + τ (I − n nᵀ) (symmetric 3×3, 1/kg), built once per
+        // linearisation for every active-set pass (SegmentForceSystem.PrepareBlocks)
+        public readonly double[] BlockXX, BlockXY, BlockXZ, BlockYY, BlockYZ, BlockZZ;
         public readonly bool[] Active;
         // the convergence test and line search of the exact solve (see ExactChainSolver.Apply and Mismatched, ChainLineSearch): each
         // segment's effective rest length L' (m, damping folded in) and whether it was assembled this iteration (not broken,
@@ -142,6 +145,8 @@ namespace HookeRope.Solver
             ResidualX = new double[s]; ResidualY = new double[s]; ResidualZ = new double[s];
             PivotInverse = new double[6 * s]; ReducedX = new double[s]; ReducedY = new double[s]; ReducedZ = new double[s];
             AxialCompliance = new double[s]; TransverseCompliance = new double[s]; EstimatedTension = new double[s];
+            BlockXX = new double[s]; BlockXY = new double[s]; BlockXZ = new double[s];
+            BlockYY = new double[s]; BlockYZ = new double[s]; BlockZZ = new double[s];
             Active = new bool[s];
             EffectiveRest = new double[s]; LengthError = new double[s]; Assembled = new bool[s];
             MotionX = new double[n]; MotionY = new double[n]; MotionZ = new double[n];

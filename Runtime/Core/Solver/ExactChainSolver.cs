@@ -273,6 +273,8 @@ namespace HookeRope.Solver
             // the first row the forward sweep must redo: between passes without contacts only the tension-only flags change,
             // and the rows before the first changed one keep their pivots and reduced right-hand sides bit for bit
             int from = 0;
+            // the free blocks depend only on this linearisation: on wide lanes built once for every pass
+            SegmentForceSystem.PrepareBlocks(c);
             for (int pass = 1; ; pass++)
             {
                 SegmentForceSystem.Solve(c, from);

@@ -1,5 +1,8 @@
 using System;
+using System.Numerics;
 using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
+using HookeRope.Mathematics;
 
 namespace HookeRope.Solver
 {
@@ -24,13 +27,105 @@ namespace HookeRope.Solver
         {
             // the forward sweep specialised on whether there are contacts: without them the loop calls nothing, so its
             // carried pivot and reduced vector stay in registers (every xmm register is caller-saved on x86-64)
-            if (c.ContactCount > 0) Forward<WithContacts>(c, from);
-            else Forward<NoContacts>(c, from);
-            Back(c);
+            // and on whether it reads the blocks PrepareBlocks stored (StoresBlocks) or builds its own
+            bool stored = StoresBlocks;
+            if (c.ContactCount > 0)
+            {
+                if (stored) Forward<WithContacts, StoredBlocks>(c, from);
+                else Forward<WithContacts, OwnBlocks>(c, from);
+            }
+            else if (stored) Forward<NoContacts, StoredBlocks>(c, from);
+            else Forward<NoContacts, OwnBlocks>(c, from);
+            if (c.ContactCount > 0) Back<WithContacts>(c);
+            else Back<NoContacts>(c);
         }
 
         /// <summary>
-        /// Type argument of the kernels specialised on contacts (<see cref="Forward{T}"/>, ExactChainSolver's particle pass):
+        /// True when <see cref="PrepareBlocks"/> builds the free blocks on lanes for <see cref="Forward{T, TBlocks}"/> to read:
+        /// with <see cref="VectorPath.Enabled"/> and at least 4 double lanes (AVX2). On 2 lanes the lane build costs as many
+        /// instructions as the sweep's own scalar build it replaces (goal lanyard, x86-64-v2: +1.8 k per host step), so there
+        /// the sweep builds each block itself. Either way the blocks have the same bits.
+        /// </summary>
+        internal static bool StoresBlocks => VectorPath.Enabled && VectorPath.DoubleLanes >= 4;
+
+        /// <summary>
+        /// Builds every row's free block A_j (<see cref="Block"/>, into ChainState.BlockXX … BlockZZ) from the stored float
+        /// direction, the compliances and the ends' mobilities where <see cref="StoresBlocks"/>: they do not change between
+        /// the active-set passes of one linearisation, so <see cref="Forward{T, TBlocks}"/> reads them. Runs of
+        /// <see cref="VectorPath.FloatLanes"/> segments go on lanes (each lane does <see cref="Block"/>'s operations in its
+        /// order: the same bits), the tail row by row. A released or invalid row's block is built too and never read.
+        /// </summary>
+        public static void PrepareBlocks(ChainState c)
+        {
+            if (!StoresBlocks) return;
+            int s = c.SegmentCount;
+            int from = PrepareBlockLanes(c);
+            ReadOnlySpan<float> wA = ChainState.Exactly(c.InverseMass, s), wB = ChainState.Shifted(c.InverseMass, s);
+            ReadOnlySpan<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
+            ReadOnlySpan<double> axial = ChainState.Exactly(c.AxialCompliance, s), transverse = ChainState.Exactly(c.TransverseCompliance, s);
+            Span<double> bxx = ChainState.Exactly(c.BlockXX, s), bxy = ChainState.Exactly(c.BlockXY, s), bxz = ChainState.Exactly(c.BlockXZ, s);
+            Span<double> byy = ChainState.Exactly(c.BlockYY, s), byz = ChainState.Exactly(c.BlockYZ, s), bzz = ChainState.Exactly(c.BlockZZ, s);
+            for (int j = from; j < s; j++)
+            {
+                Block(dirX[j], dirY[j], dirZ[j], transverse[j], axial[j], (double)wA[j] + wB[j], out bxx[j], out bxy[j], out bxz[j], out byy[j], out byz[j], out bzz[j]);
+            }
+        }
+
+        /// <summary>
+        /// <see cref="PrepareBlocks"/> on runs of <see cref="VectorPath.FloatLanes"/> segments (two halves of doubles each);
+        /// returns the first segment not built (the rows take the rest).
+        /// </summary>
+        private static int PrepareBlockLanes(ChainState c)
+        {
+            int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes;
+            ReadOnlySpan<Vector<float>> wA = Floats(ChainState.Exactly(c.InverseMass, s)), wB = Floats(ChainState.Shifted(c.InverseMass, s));
+            ReadOnlySpan<Vector<float>> dirX = Floats(ChainState.Exactly(c.DirX, s)), dirY = Floats(ChainState.Exactly(c.DirY, s)), dirZ = Floats(ChainState.Exactly(c.DirZ, s));
+            ReadOnlySpan<Vector<double>> axial = Doubles(ChainState.Exactly(c.AxialCompliance, s)), transverse = Doubles(ChainState.Exactly(c.TransverseCompliance, s));
+            Span<Vector<double>> bxx = Doubles(ChainState.Exactly(c.BlockXX, s)), bxy = Doubles(ChainState.Exactly(c.BlockXY, s)), bxz = Doubles(ChainState.Exactly(c.BlockXZ, s));
+            Span<Vector<double>> byy = Doubles(ChainState.Exactly(c.BlockYY, s)), byz = Doubles(ChainState.Exactly(c.BlockYZ, s)), bzz = Doubles(ChainState.Exactly(c.BlockZZ, s));
+            for (int k = 0; k < runs; k++)
+            {
+                Vector.Widen(dirX[k], out Vector<double> nxLow, out Vector<double> nxHigh);
+                Vector.Widen(dirY[k], out Vector<double> nyLow, out Vector<double> nyHigh);
+                Vector.Widen(dirZ[k], out Vector<double> nzLow, out Vector<double> nzHigh);
+                Vector.Widen(wA[k], out Vector<double> aLow, out Vector<double> aHigh);
+                Vector.Widen(wB[k], out Vector<double> bLow, out Vector<double> bHigh);
+                int h = 2 * k;
+                BlockLanes(nxLow, nyLow, nzLow, transverse[h], axial[h], aLow + bLow,
+                    out bxx[h], out bxy[h], out bxz[h], out byy[h], out byz[h], out bzz[h]);
+                BlockLanes(nxHigh, nyHigh, nzHigh, transverse[h + 1], axial[h + 1], aHigh + bHigh,
+                    out bxx[h + 1], out bxy[h + 1], out bxz[h + 1], out byy[h + 1], out byz[h + 1], out bzz[h + 1]);
+            }
+            return runs * lanes;
+        }
+
+        /// <summary><see cref="Block"/> on <see cref="VectorPath.DoubleLanes"/> lanes, operation for operation.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void BlockLanes(Vector<double> nx, Vector<double> ny, Vector<double> nz, Vector<double> tau, Vector<double> axial, Vector<double> mobility,
+            out Vector<double> xx, out Vector<double> xy, out Vector<double> xz, out Vector<double> yy, out Vector<double> yz, out Vector<double> zz)
+        {
+            Vector<double> unit = Vector<double>.One / Vector.SquareRoot(nx * nx + ny * ny + nz * nz);
+            nx *= unit; ny *= unit; nz *= unit;
+            Vector<double> d = axial - tau;
+            Vector<double> m = mobility + tau;
+            xx = m + d * nx * nx; yy = m + d * ny * ny; zz = m + d * nz * nz;
+            xy = d * nx * ny; xz = d * nx * nz; yz = d * ny * nz;
+        }
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static ReadOnlySpan<Vector<float>> Floats(Span<float> values) => MemoryMarshal.Cast<float, Vector<float>>(values);
+
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Span<Vector<double>> Doubles(Span<double> values) => MemoryMarshal.Cast<double, Vector<double>>(values);
+
+        /// <summary>Type argument of <see cref="Forward{T, TBlocks}"/>: it reads the blocks <see cref="PrepareBlocks"/> stored.</summary>
+        internal struct StoredBlocks { }
+
+        /// <summary>Type argument of <see cref="Forward{T, TBlocks}"/>: it builds each row's block itself (<see cref="Block"/>).</summary>
+        internal struct OwnBlocks { }
+
+        /// <summary>
+        /// Type argument of the kernels specialised on contacts (<see cref="Forward{T, TBlocks}"/>, ExactChainSolver's particle pass):
         /// the JIT compiles one copy per struct and folds the test typeof(T) == typeof(WithContacts).
         /// </summary>
         internal struct WithContacts { }
@@ -42,14 +137,16 @@ namespace HookeRope.Solver
         /// Forward sweep from row <paramref name="from"/>: S_j = A_j − L_j S_{j−1}⁻¹ U_{j−1} (its inverse into PivotInverse),
         /// y_j = R_j − L_j S_{j−1}⁻¹ y_{j−1} (into Reduced), carried in from the stored row before.
         /// </summary>
-        private static void Forward<T>(ChainState c, int from) where T : struct
+        private static void Forward<T, TBlocks>(ChainState c, int from) where T : struct where TBlocks : struct
         {
-            bool contacts = typeof(T) == typeof(WithContacts);
+            bool contacts = typeof(T) == typeof(WithContacts), stored = typeof(TBlocks) == typeof(StoredBlocks);
             int s = c.SegmentCount;
             // spans of exactly s entries (the loop bound) index without bounds checks; wB[j] is particle j + 1's
             ReadOnlySpan<float> wA = ChainState.Exactly(c.InverseMass, s), wB = ChainState.Shifted(c.InverseMass, s);
             ReadOnlySpan<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
             ReadOnlySpan<double> axial = ChainState.Exactly(c.AxialCompliance, s), transverse = ChainState.Exactly(c.TransverseCompliance, s);
+            ReadOnlySpan<double> bxx = ChainState.Exactly(c.BlockXX, s), bxy = ChainState.Exactly(c.BlockXY, s), bxz = ChainState.Exactly(c.BlockXZ, s);
+            ReadOnlySpan<double> byy = ChainState.Exactly(c.BlockYY, s), byz = ChainState.Exactly(c.BlockYZ, s), bzz = ChainState.Exactly(c.BlockZZ, s);
             Span<double> gi = ChainState.Exactly(c.PivotInverse, 6 * s);
             Span<double> yx = ChainState.Exactly(c.ReducedX, s), yy = ChainState.Exactly(c.ReducedY, s), yz = ChainState.Exactly(c.ReducedZ, s);
             ReadOnlySpan<double> rx = ChainState.Exactly(c.ResidualX, s), ry = ChainState.Exactly(c.ResidualY, s), rz = ChainState.Exactly(c.ResidualZ, s);
@@ -75,7 +172,8 @@ namespace HookeRope.Solver
                 }
                 else
                 {
-                    Block(dirX[j], dirY[j], dirZ[j], transverse[j], axial[j], (double)wA[j] + wB[j], out sxx, out sxy, out sxz, out syy, out syz, out szz);
+                    if (stored) { sxx = bxx[j]; sxy = bxy[j]; sxz = bxz[j]; syy = byy[j]; syz = byz[j]; szz = bzz[j]; }
+                    else Block(dirX[j], dirY[j], dirZ[j], transverse[j], axial[j], (double)wA[j] + wB[j], out sxx, out sxy, out sxz, out syy, out syz, out szz);
                     bx = rx[j]; by = ry[j]; bz = rz[j];
                     bool held = false;
                     if (contacts)
@@ -113,21 +211,27 @@ namespace HookeRope.Solver
             }
         }
 
-        /// <summary>Back substitution: δ_j = S_j⁻¹ (y_j − U_j δ_{j+1}), U_j = −W_{j+1} on an active row.</summary>
-        private static void Back(ChainState c)
+        /// <summary>
+        /// Back substitution: δ_j = S_j⁻¹ (y_j − U_j δ_{j+1}), U_j = −W_{j+1} on an active row; specialised on contacts as
+        /// <see cref="Forward{T, TBlocks}"/> (without them U_j = −w_{j+1} I), the last row (no row after it) peeled.
+        /// </summary>
+        private static void Back<T>(ChainState c) where T : struct
         {
+            bool contacts = typeof(T) == typeof(WithContacts);
             int s = c.SegmentCount;
-            bool contacts = c.ContactCount > 0;
             ReadOnlySpan<float> wB = ChainState.Shifted(c.InverseMass, s);
             ReadOnlySpan<double> gi = ChainState.Exactly(c.PivotInverse, 6 * s);
             ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
             ReadOnlySpan<double> yx = ChainState.Exactly(c.ReducedX, s), yy = ChainState.Exactly(c.ReducedY, s), yz = ChainState.Exactly(c.ReducedZ, s);
             Span<double> dx = ChainState.Exactly(c.StepX, s), dy = ChainState.Exactly(c.StepY, s), dz = ChainState.Exactly(c.StepZ, s);
-            double nx = 0, ny = 0, nz = 0;
-            for (int j = s - 1; j >= 0; j--)
+            int last = s - 1;
+            if (last < 0) return;
+            BackRow(gi.Slice(6 * last, 6), yx[last], yy[last], yz[last], out double nx, out double ny, out double nz);
+            dx[last] = nx; dy[last] = ny; dz[last] = nz;
+            for (int j = last - 1; j >= 0; j--)
             {
                 double vx = yx[j], vy = yy[j], vz = yz[j];
-                if (active[j] && j + 1 < s)
+                if (active[j])
                 {
                     double mx, my, mz;
                     if (contacts) Mobility(c, j + 1, nx, ny, nz, out mx, out my, out mz);
@@ -138,13 +242,18 @@ namespace HookeRope.Solver
                     }
                     vx += mx; vy += my; vz += mz;
                 }
-                ReadOnlySpan<double> pivot = gi.Slice(6 * j, 6);
-                double ox = pivot[0] * vx + pivot[1] * vy + pivot[2] * vz;
-                double oy = pivot[1] * vx + pivot[3] * vy + pivot[4] * vz;
-                double oz = pivot[2] * vx + pivot[4] * vy + pivot[5] * vz;
-                dx[j] = ox; dy[j] = oy; dz[j] = oz;
-                nx = ox; ny = oy; nz = oz;
+                BackRow(gi.Slice(6 * j, 6), vx, vy, vz, out nx, out ny, out nz);
+                dx[j] = nx; dy[j] = ny; dz[j] = nz;
             }
+        }
+
+        /// <summary>One row of <see cref="Back{T}"/>: the symmetric inverse pivot times v.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void BackRow(ReadOnlySpan<double> pivot, double vx, double vy, double vz, out double ox, out double oy, out double oz)
+        {
+            ox = pivot[0] * vx + pivot[1] * vy + pivot[2] * vz;
+            oy = pivot[1] * vx + pivot[3] * vy + pivot[4] * vz;
+            oz = pivot[2] * vx + pivot[4] * vy + pivot[5] * vz;
         }
 
         /// <summary>A row's symmetric block (XX … ZZ) and right-hand side (X, Y, Z) while the contact terms change it.</summary>
