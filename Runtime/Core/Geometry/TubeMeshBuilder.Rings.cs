@@ -65,13 +65,10 @@ namespace HookeRope.Geometry
             Span<float> spacing = spacing2;
             ReadOnlySpan<float> radius = ringRadii;
             float ox = frameOrigin.X, oy = frameOrigin.Y, oz = frameOrigin.Z;
-            // fallback direction of the piece: first particle to last
-            float fx = (x[b] - ox) - (x[a] - ox), fy = (y[b] - oy) - (y[a] - oy), fz = (z[b] - oz) - (z[a] - oz);
-            if (!Normalize(ref fx, ref fy, ref fz) || !(float.IsFinite(fx) && float.IsFinite(fy) && float.IsFinite(fz))) { fx = 1f; fy = 0f; fz = 0f; }
             // the control points of the segment the rings are in (the rings of a segment are consecutive)
             int held = -1;
             Vector4 p0 = default, p1 = default, p2 = default, p3 = default;
-            Float3 previous = Float3.Zero, before = Float3.Zero;
+            Float3 previous = Float3.Zero;
             for (int k = first; k <= last; k++)
             {
                 int j = ringSegments[k];
@@ -123,19 +120,33 @@ namespace HookeRope.Geometry
                     if (gap2 < minimum * minimum)
                     {
                         spacing[k] = float.NaN; // the centre now depends on the radius: no radius-only rebuild
-                        float ux = fx, uy = fy, uz = fz;
-                        if (k > first + 1)
-                        {
-                            ux = previous.X - before.X; uy = previous.Y - before.Y; uz = previous.Z - before.Z;
-                            if (!Normalize(ref ux, ref uy, ref uz)) { ux = fx; uy = fy; uz = fz; }
-                        }
+                        PushDirection(a, b, k > first + 1, previous, k > first + 1 ? centre[k - 2] : previous, x, y, z,
+                            out float ux, out float uy, out float uz);
                         cx = previous.X + ux * minimum; cy = previous.Y + uy * minimum; cz = previous.Z + uz * minimum;
                     }
                 }
-                before = previous;
                 previous = new Float3(cx, cy, cz);
                 centre[k] = previous;
             }
+        }
+
+        /// <summary>
+        /// The direction a pushed ring moves along (out of the centre loop, which rarely needs it): from the ring before the
+        /// previous to the previous (<paramref name="hasBefore"/>), else, or where those coincide, the piece's first particle
+        /// to its last, else +x.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
+        private void PushDirection(int a, int b, bool hasBefore, in Float3 previous, in Float3 before,
+            ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z, out float ux, out float uy, out float uz)
+        {
+            if (hasBefore)
+            {
+                ux = previous.X - before.X; uy = previous.Y - before.Y; uz = previous.Z - before.Z;
+                if (Normalize(ref ux, ref uy, ref uz)) return;
+            }
+            float ox = frameOrigin.X, oy = frameOrigin.Y, oz = frameOrigin.Z;
+            ux = (x[b] - ox) - (x[a] - ox); uy = (y[b] - oy) - (y[a] - oy); uz = (z[b] - oz) - (z[a] - oz);
+            if (!Normalize(ref ux, ref uy, ref uz) || !(float.IsFinite(ux) && float.IsFinite(uy) && float.IsFinite(uz))) { ux = 1f; uy = 0f; uz = 0f; }
         }
 
         /// <summary>

@@ -38,6 +38,38 @@ namespace HookeRope.Tests.Core.Geometry
             DropAndWhip(24, 37.25f, 1.4f, sides, true, 60, 30, "capped lanyard");
         }
 
+        /// <summary>
+        /// Issue 18 (s14): a ring closer than PushDistance·r to the previous one moves on along the step between the two
+        /// rings before it. Particles 1 m along +x, 1 m along +y, then three more on the last (zero-length segments): the
+        /// first of them (ring 3) steps PushDistance·r + 1e-7 along +y (x stays 1), not along the piece's first-to-last
+        /// diagonal (the later rings on the same point are not checked here).
+        /// </summary>
+        [Test]
+        public void APushedRingMovesOnAlongTheTwoRingsBeforeIt()
+        {
+            const float r = 0.05f;
+            const int sides = 8;
+            var shape = new RopeShape(5, 1f);
+            shape.X[1] = 1f; shape.X[2] = 1f; shape.Y[2] = 1f;
+            for (int i = 3; i <= 5; i++) { shape.X[i] = 1f; shape.Y[i] = 1f; }
+            var builder = new TubeMeshBuilder(new TubeMeshSettings { RadialSegments = sides, RingsPerSegment = 1, CapEnds = false }, 5);
+            TubeMeshTopologyTests.Build(builder, shape, r, new bool[5], out TubeVertex[] vertices, out _);
+            float step = TubeMeshBuilder.PushDistance * r + 1e-7f;
+            const int ring = 3;
+            {
+                double cx = 0, cy = 0, cz = 0;
+                for (int s = 0; s < sides; s++)
+                {
+                    TubeVertex v = vertices[ring * (sides + 1) + s];
+                    cx += v.PX; cy += v.PY; cz += v.PZ;
+                }
+                cx /= sides; cy /= sides; cz /= sides;
+                Assert.That(cx, Is.EqualTo(1.0).Within(2e-5), "ring " + ring + " x");
+                Assert.That(cz, Is.EqualTo(0.0).Within(2e-5), "ring " + ring + " z");
+                Assert.That(cy, Is.EqualTo(1.0 + (ring - 2) * step).Within(2e-5), "ring " + ring + " y");
+            }
+        }
+
         /// <summary>The goal lanyard (64 segments) dropped from straight, then whipped by one pin: 150 frames.</summary>
         [TestCaseSource(nameof(Sides))]
         public void ADroppedAndWhippedLanyardDrawsTheSameBitsOnEveryPath(int sides)
