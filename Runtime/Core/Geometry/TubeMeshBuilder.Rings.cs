@@ -397,7 +397,7 @@ namespace HookeRope.Geometry
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         private void WritePairs(Span<VertexLanes> vertices)
         {
-            ReadOnlySpan<PairLanes> pairs = pairLanes ?? MakePairLanes();
+            ReadOnlySpan<PairLanes> pairs = pairLanes;
             Span<Vector<float>> q = ringCoefficients;
             Vector<float> bA = q[0], bB = q[1], bC = q[2], cA = q[3], cB = q[4], cC = q[5];
             Vector<float> aA = q[6], aB = q[7], aC = q[8], oA = q[9], oB = q[10];
@@ -434,7 +434,7 @@ namespace HookeRope.Geometry
         }
 
         /// <summary>
-        /// The pair table of the wide kernel, made once per builder at its first wide ring: per pair of sides i = 2p, 2p + 1
+        /// The pair table of the wide kernel, made once per builder at its construction where <see cref="Vector{T}"/> of float has 8 lanes (the only width the wide kernel runs at): per pair of sides i = 2p, 2p + 1
         /// (the last side twice at an odd count) the cosines and sines in the wide kernel's lane pattern (<see cref="WriteRing"/>;
         /// cos φ_i in vertex i's lanes), with the cos lane under u holding u_i (its coefficient is 1).
         /// </summary>
@@ -460,11 +460,10 @@ namespace HookeRope.Geometry
                 && BitConverter.SingleToInt32Bits(sides[seam].Sin.X) == BitConverter.SingleToInt32Bits(sides[0].Sin.X);
             pairSeam = same && seam % 2 == 0 ? seam : -1;
             seamU = sides[seam].U.Z;
-            pairLanes = table;
             return table;
         }
 
-        private PairLanes[] pairLanes;
+        private readonly PairLanes[] pairLanes;
         private int pairSeam = -1;
         private float seamU;
         private readonly Vector<float>[] ringCoefficients = new Vector<float>[12];

@@ -119,6 +119,8 @@ namespace HookeRope.Geometry
             sideLanes = new SideLanes[radial + 1];
             for (int i = 0; i <= radial; i++)
                 sideLanes[i] = new SideLanes(new Vector4(cos[i]), new Vector4(sin[i]), new Vector4(0f, 1f, (float)i / radial, 0f));
+            // the wide kernel's pair table, where Vector<float> has its 8 lanes (made here: a mesh update never allocates)
+            if (Vector<float>.Count == 8) pairLanes = MakePairLanes();
             capRim = new TubeVertex[radial + 1];
             int n = layout.SegmentCount;
             restArc = new double[n + 1];
