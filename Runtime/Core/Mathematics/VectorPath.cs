@@ -1,4 +1,7 @@
+using System;
 using System.Numerics;
+using System.Runtime.CompilerServices;
+using System.Runtime.InteropServices;
 
 namespace HookeRope.Mathematics
 {
@@ -19,5 +22,21 @@ namespace HookeRope.Mathematics
 
         /// <summary>Lanes of <see cref="Vector{T}"/> of <see cref="float"/> on this runtime (8 with AVX2).</summary>
         internal static int FloatLanes => Vector<float>.Count;
+
+        /// <summary>The whole runs of <see cref="Vector{T}"/> in <paramref name="values"/> (a tail shorter than a vector is left out).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static Span<Vector<float>> AsLanes(Span<float> values) => MemoryMarshal.Cast<float, Vector<float>>(values);
+
+        /// <summary>The whole runs of <see cref="Vector{T}"/> in <paramref name="values"/> (a tail shorter than a vector is left out).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static ReadOnlySpan<Vector<float>> AsLanes(ReadOnlySpan<float> values) => MemoryMarshal.Cast<float, Vector<float>>(values);
+
+        /// <summary>The whole runs of <see cref="Vector{T}"/> in <paramref name="values"/> (a tail shorter than a vector is left out).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static Span<Vector<double>> AsLanes(Span<double> values) => MemoryMarshal.Cast<double, Vector<double>>(values);
+
+        /// <summary>The whole runs of <see cref="Vector{T}"/> in <paramref name="values"/> (a tail shorter than a vector is left out).</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        internal static ReadOnlySpan<Vector<double>> AsLanes(ReadOnlySpan<double> values) => MemoryMarshal.Cast<double, Vector<double>>(values);
     }
 }

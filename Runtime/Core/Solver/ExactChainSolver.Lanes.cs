@@ -189,10 +189,10 @@ namespace HookeRope.Solver
             }
 
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
-            private static ReadOnlySpan<Vector<float>> A(float[] values, int s) => MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(values, s));
+            private static ReadOnlySpan<Vector<float>> A(float[] values, int s) => VectorPath.AsLanes(ChainState.Exactly(values, s));
 
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
-            private static ReadOnlySpan<Vector<float>> B(float[] values, int s) => MemoryMarshal.Cast<float, Vector<float>>(ChainState.Shifted(values, s));
+            private static ReadOnlySpan<Vector<float>> B(float[] values, int s) => VectorPath.AsLanes(ChainState.Shifted(values, s));
         }
 
         /// <summary>
@@ -261,10 +261,10 @@ namespace HookeRope.Solver
         private static void LengthErrorLanes(ChainState c)
         {
             int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes;
-            ReadOnlySpan<Vector<double>> ax = Cast(ChainState.Exactly(c.MotionX, s)), ay = Cast(ChainState.Exactly(c.MotionY, s)), az = Cast(ChainState.Exactly(c.MotionZ, s));
-            ReadOnlySpan<Vector<double>> bx = Cast(ChainState.Shifted(c.MotionX, s)), by = Cast(ChainState.Shifted(c.MotionY, s)), bz = Cast(ChainState.Shifted(c.MotionZ, s));
-            ReadOnlySpan<Vector<float>> dirX = Cast(ChainState.Exactly(c.DirX, s)), dirY = Cast(ChainState.Exactly(c.DirY, s)), dirZ = Cast(ChainState.Exactly(c.DirZ, s));
-            ReadOnlySpan<Vector<float>> length = Cast(ChainState.Exactly(c.Length, s)), rest = Cast(ChainState.Exactly(c.RestLength, s));
+            ReadOnlySpan<Vector<double>> ax = VectorPath.AsLanes(ChainState.Exactly(c.MotionX, s)), ay = VectorPath.AsLanes(ChainState.Exactly(c.MotionY, s)), az = VectorPath.AsLanes(ChainState.Exactly(c.MotionZ, s));
+            ReadOnlySpan<Vector<double>> bx = VectorPath.AsLanes(ChainState.Shifted(c.MotionX, s)), by = VectorPath.AsLanes(ChainState.Shifted(c.MotionY, s)), bz = VectorPath.AsLanes(ChainState.Shifted(c.MotionZ, s));
+            ReadOnlySpan<Vector<float>> dirX = VectorPath.AsLanes(ChainState.Exactly(c.DirX, s)), dirY = VectorPath.AsLanes(ChainState.Exactly(c.DirY, s)), dirZ = VectorPath.AsLanes(ChainState.Exactly(c.DirZ, s));
+            ReadOnlySpan<Vector<float>> length = VectorPath.AsLanes(ChainState.Exactly(c.Length, s)), rest = VectorPath.AsLanes(ChainState.Exactly(c.RestLength, s));
             Span<Vector<double>> error = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.LengthError, s));
             ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
             Vector<double> two = new Vector<double>(2.0), micro = new Vector<double>(1e-6);
@@ -307,14 +307,6 @@ namespace HookeRope.Solver
             }
         }
 
-        /// <summary>A span as runs of <see cref="Vector{T}"/>.</summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static ReadOnlySpan<Vector<double>> Cast(Span<double> values) => MemoryMarshal.Cast<double, Vector<double>>(values);
-
-        /// <summary>A span as runs of <see cref="Vector{T}"/>.</summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static ReadOnlySpan<Vector<float>> Cast(Span<float> values) => MemoryMarshal.Cast<float, Vector<float>>(values);
-
         /// <summary>
         /// True when the <see cref="VectorPath.FloatLanes"/> flags at flags[index …] are all true: a C# true is the byte 1, so
         /// eight or four flags are read as one word (any other byte reads as not all true, which only sends the run row by row).
@@ -340,10 +332,10 @@ namespace HookeRope.Solver
         private static int ApplyLanes(ChainState c, bool tensionOnly, double invH2, ref ConvergenceTests tests)
         {
             int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes;
-            ReadOnlySpan<Vector<float>> dirX = Cast(ChainState.Exactly(c.DirX, s)), dirY = Cast(ChainState.Exactly(c.DirY, s)), dirZ = Cast(ChainState.Exactly(c.DirZ, s));
-            ReadOnlySpan<Vector<float>> rest = Cast(ChainState.Exactly(c.RestLength, s));
-            ReadOnlySpan<Vector<double>> error = Cast(ChainState.Exactly(c.LengthError, s)), estimate = Cast(ChainState.Exactly(c.EstimatedTension, s));
-            ReadOnlySpan<Vector<double>> sx = Cast(ChainState.Exactly(c.StepX, s)), sy = Cast(ChainState.Exactly(c.StepY, s)), sz = Cast(ChainState.Exactly(c.StepZ, s));
+            ReadOnlySpan<Vector<float>> dirX = VectorPath.AsLanes(ChainState.Exactly(c.DirX, s)), dirY = VectorPath.AsLanes(ChainState.Exactly(c.DirY, s)), dirZ = VectorPath.AsLanes(ChainState.Exactly(c.DirZ, s));
+            ReadOnlySpan<Vector<float>> rest = VectorPath.AsLanes(ChainState.Exactly(c.RestLength, s));
+            ReadOnlySpan<Vector<double>> error = VectorPath.AsLanes(ChainState.Exactly(c.LengthError, s)), estimate = VectorPath.AsLanes(ChainState.Exactly(c.EstimatedTension, s));
+            ReadOnlySpan<Vector<double>> sx = VectorPath.AsLanes(ChainState.Exactly(c.StepX, s)), sy = VectorPath.AsLanes(ChainState.Exactly(c.StepY, s)), sz = VectorPath.AsLanes(ChainState.Exactly(c.StepZ, s));
             Span<Vector<double>> fx = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.ForceX, s));
             Span<Vector<double>> fy = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.ForceY, s));
             Span<Vector<double>> fz = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.ForceZ, s));
@@ -405,9 +397,9 @@ namespace HookeRope.Solver
         private static int UpdateTensionOnlyLanes(ChainState c, ref bool changed, ref int first)
         {
             int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes;
-            ReadOnlySpan<Vector<float>> dirX = Cast(ChainState.Exactly(c.DirX, s)), dirY = Cast(ChainState.Exactly(c.DirY, s)), dirZ = Cast(ChainState.Exactly(c.DirZ, s));
-            ReadOnlySpan<Vector<double>> fx = Cast(ChainState.Exactly(c.ForceX, s)), fy = Cast(ChainState.Exactly(c.ForceY, s)), fz = Cast(ChainState.Exactly(c.ForceZ, s));
-            ReadOnlySpan<Vector<double>> dx = Cast(ChainState.Exactly(c.StepX, s)), dy = Cast(ChainState.Exactly(c.StepY, s)), dz = Cast(ChainState.Exactly(c.StepZ, s));
+            ReadOnlySpan<Vector<float>> dirX = VectorPath.AsLanes(ChainState.Exactly(c.DirX, s)), dirY = VectorPath.AsLanes(ChainState.Exactly(c.DirY, s)), dirZ = VectorPath.AsLanes(ChainState.Exactly(c.DirZ, s));
+            ReadOnlySpan<Vector<double>> fx = VectorPath.AsLanes(ChainState.Exactly(c.ForceX, s)), fy = VectorPath.AsLanes(ChainState.Exactly(c.ForceY, s)), fz = VectorPath.AsLanes(ChainState.Exactly(c.ForceZ, s));
+            ReadOnlySpan<Vector<double>> dx = VectorPath.AsLanes(ChainState.Exactly(c.StepX, s)), dy = VectorPath.AsLanes(ChainState.Exactly(c.StepY, s)), dz = VectorPath.AsLanes(ChainState.Exactly(c.StepZ, s));
             ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
             for (int k = 0; k < runs; k++)
             {
@@ -425,9 +417,5 @@ namespace HookeRope.Solver
             }
             return runs * lanes;
         }
-
-        /// <summary>A span as runs of <see cref="Vector{T}"/>.</summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static ReadOnlySpan<Vector<double>> Cast(ReadOnlySpan<double> values) => MemoryMarshal.Cast<double, Vector<double>>(values);
     }
 }

@@ -339,10 +339,10 @@ namespace HookeRope.Solver
 
         /// <summary>The first n entries of a float array as whole float vectors (the tail left out).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static Span<Vector<float>> Floats(float[] values, int n) => MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(values, n));
+        private static Span<Vector<float>> Floats(float[] values, int n) => VectorPath.AsLanes(ChainState.Exactly(values, n));
 
         /// <summary>The first n entries of a double array as whole double vectors (the tail left out).</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static Span<Vector<double>> Doubles(double[] values, int n) => MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(values, n));
+        private static Span<Vector<double>> Doubles(double[] values, int n) => VectorPath.AsLanes(ChainState.Exactly(values, n));
     }
 }

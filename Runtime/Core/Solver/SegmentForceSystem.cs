@@ -1,7 +1,6 @@
 using System;
 using System.Numerics;
 using System.Runtime.CompilerServices;
-using System.Runtime.InteropServices;
 using HookeRope.Mathematics;
 
 namespace HookeRope.Solver
@@ -78,11 +77,11 @@ namespace HookeRope.Solver
         private static int PrepareBlockLanes(ChainState c)
         {
             int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes;
-            ReadOnlySpan<Vector<float>> wA = Floats(ChainState.Exactly(c.InverseMass, s)), wB = Floats(ChainState.Shifted(c.InverseMass, s));
-            ReadOnlySpan<Vector<float>> dirX = Floats(ChainState.Exactly(c.DirX, s)), dirY = Floats(ChainState.Exactly(c.DirY, s)), dirZ = Floats(ChainState.Exactly(c.DirZ, s));
-            ReadOnlySpan<Vector<double>> axial = Doubles(ChainState.Exactly(c.AxialCompliance, s)), transverse = Doubles(ChainState.Exactly(c.TransverseCompliance, s));
-            Span<Vector<double>> bxx = Doubles(ChainState.Exactly(c.BlockXX, s)), bxy = Doubles(ChainState.Exactly(c.BlockXY, s)), bxz = Doubles(ChainState.Exactly(c.BlockXZ, s));
-            Span<Vector<double>> byy = Doubles(ChainState.Exactly(c.BlockYY, s)), byz = Doubles(ChainState.Exactly(c.BlockYZ, s)), bzz = Doubles(ChainState.Exactly(c.BlockZZ, s));
+            ReadOnlySpan<Vector<float>> wA = VectorPath.AsLanes(ChainState.Exactly(c.InverseMass, s)), wB = VectorPath.AsLanes(ChainState.Shifted(c.InverseMass, s));
+            ReadOnlySpan<Vector<float>> dirX = VectorPath.AsLanes(ChainState.Exactly(c.DirX, s)), dirY = VectorPath.AsLanes(ChainState.Exactly(c.DirY, s)), dirZ = VectorPath.AsLanes(ChainState.Exactly(c.DirZ, s));
+            ReadOnlySpan<Vector<double>> axial = VectorPath.AsLanes(ChainState.Exactly(c.AxialCompliance, s)), transverse = VectorPath.AsLanes(ChainState.Exactly(c.TransverseCompliance, s));
+            Span<Vector<double>> bxx = VectorPath.AsLanes(ChainState.Exactly(c.BlockXX, s)), bxy = VectorPath.AsLanes(ChainState.Exactly(c.BlockXY, s)), bxz = VectorPath.AsLanes(ChainState.Exactly(c.BlockXZ, s));
+            Span<Vector<double>> byy = VectorPath.AsLanes(ChainState.Exactly(c.BlockYY, s)), byz = VectorPath.AsLanes(ChainState.Exactly(c.BlockYZ, s)), bzz = VectorPath.AsLanes(ChainState.Exactly(c.BlockZZ, s));
             for (int k = 0; k < runs; k++)
             {
                 Vector.Widen(dirX[k], out Vector<double> nxLow, out Vector<double> nxHigh);
@@ -111,12 +110,6 @@ namespace HookeRope.Solver
             xx = m + d * nx * nx; yy = m + d * ny * ny; zz = m + d * nz * nz;
             xy = d * nx * ny; xz = d * nx * nz; yz = d * ny * nz;
         }
-
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static ReadOnlySpan<Vector<float>> Floats(Span<float> values) => MemoryMarshal.Cast<float, Vector<float>>(values);
-
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static Span<Vector<double>> Doubles(Span<double> values) => MemoryMarshal.Cast<double, Vector<double>>(values);
 
         /// <summary>Type argument of <see cref="Forward{T, TBlocks}"/>: it reads the blocks <see cref="PrepareBlocks"/> stored.</summary>
         internal struct StoredBlocks { }
