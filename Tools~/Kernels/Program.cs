@@ -17,11 +17,15 @@ namespace HookeRope.Kernels
     /// <item><c>time [--quick]</c>: wall-clock ns per Gauss–Seidel projection and per exact segment-iteration, 16 … 10 000
     /// segments (whole step at 8 substeps × 1 iteration, and marginal: 10 against 2 iterations at 1 substep).</item>
     /// </list>
+    /// With the environment variable <c>KERNELS_VECTORS=off</c> every command runs the scalar paths
+    /// (<see cref="VectorPath.Enabled"/> false, as on a runtime whose <c>Vector.IsHardwareAccelerated</c> is false: the
+    /// same bits, other code).
     /// </summary>
     public static class Program
     {
         public static int Main(string[] args)
         {
+            if (Environment.GetEnvironmentVariable("KERNELS_VECTORS") == "off") VectorPath.Enabled = false;
             if (args.Length == 3 && args[0] == "run" && GoalWorldScene.Is(args[1]))
                 return GoalWorldScene.Run(args[1], int.Parse(args[2], CultureInfo.InvariantCulture));
             if (args.Length == 3 && args[0] == "run")

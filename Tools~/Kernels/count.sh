@@ -3,6 +3,7 @@
 #   bash "Tools~/Kernels/count.sh" SCENE [SHORT LONG] [--annotate]
 # KERNELS_ISA=x86-64-v3 publishes for AVX2 (Vector<double> of 4 lanes, as the JIT uses on these machines); unset, the
 # NativeAOT default (x86-64-v2: 128-bit vectors), which every count recorded before 2026-12-02 used.
+# KERNELS_VECTORS=off runs the scalar paths (VectorPath off, as where Vector.IsHardwareAccelerated is false).
 # Publishes the probe ahead-of-time (once per call), strips its DWARF (valgrind cannot read the DWARF 5 the AOT
 # toolchain writes), runs `run SCENE SHORT` and `run SCENE LONG` under callgrind and prints
 # (Ir_long − Ir_short) · 90 / (LONG − SHORT): start-up and scene building cancel; for the 16-segment chains also the

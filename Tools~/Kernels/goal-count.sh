@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Instructions of issue 18's goal frame, native code (NativeAOT) under callgrind, by count.sh's method.
-#   bash "Tools~/Kernels/goal-count.sh" [ROPES]        (default 100; KERNELS_OUT, KERNELS_ISA as for count.sh)
+#   bash "Tools~/Kernels/goal-count.sh" [ROPES]        (default 100; KERNELS_OUT, KERNELS_ISA as for count.sh; KERNELS_VECTORS=off: scalar paths)
 # Counts the scene goal-world:ROPES (ROPES lanyards x 64 segments + 16-sided tube meshes in one RopeWorld on 1 worker,
 # Tools~/Bench/GoalScene.cs) and goal-step:ROPES (the same frames without the mesh fills) with count.sh, 0 against
 # WINDOW frames after the bench's warm-up (the frames the bench's goal rows time: GoalScene.WindowFrames), so
@@ -31,6 +31,8 @@ units=$(echo "$line" | sed -n 's/.* units \([0-9]*\) .*/\1/p')
 vertices=$(echo "$line" | sed -n 's/.* vertices \([0-9]*\).*/\1/p')
 frames=$(echo "$line" | sed -n 's/.* frames \([0-9]*-[0-9]*\):.*/\1/p')
 isa="${KERNELS_ISA:-default}"
+# KERNELS_VECTORS=off counts the scalar paths (VectorPath off): a source of its own, never compared with the lanes'
+if [ "${KERNELS_VECTORS:-on}" = off ]; then isa="$isa-scalar"; fi
 file="$out/goal-count.txt"
 awk -v w="$world" -v s="$step" -v u="$units" -v v="$vertices" -v n="$window" -v r="$ropes" -v fr="$frames" \
     -v c="$commit" -v k="$code" -v d="$changes" -v i="$isa" 'BEGIN {
