@@ -269,7 +269,7 @@ namespace HookeRope.Solver
         /// one it drives deeper than its gap is held; friction follows its cone (<see cref="ChainContacts"/>). Returns the
         /// number of solves (1 when the set holds). A fresh hanging rope, released at its rest length, takes up to
         /// <see cref="MaxPasses"/> while its tension front runs down it: the chain below the front falls free, its segments
-        /// at zero force either way, and each pass moves the released set (solver.md, "Why the exact solve is far from 25 ns").
+        /// at zero force either way, and each pass moves the released set (solver.md, "The exact solve against the segment count").
         /// </summary>
         private static int SolveActiveSet(ChainState c, bool tensionOnly, bool contacts, bool first)
         {
