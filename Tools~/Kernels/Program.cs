@@ -15,7 +15,9 @@ namespace HookeRope.Kernels
     /// lanyards with / without mesh fills (<see cref="GoalWorldScene"/>; goal-count.sh counts them).</item>
     /// <item><c>hash [STEPS]</c>: the state hash of every scene after STEPS (default 900) steps, for bit-identity checks.</item>
     /// <item><c>time [--quick]</c>: wall-clock ns per Gauss–Seidel projection and per exact segment-iteration, 16 … 10 000
-    /// segments (whole step at 8 substeps × 1 iteration, and marginal: 10 against 2 iterations at 1 substep).</item>
+    /// segments (whole step at 8 substeps × 1 iteration, and marginal: 10 against 2 iterations at 1 substep); the exact
+    /// solve on the fresh and the resting hanging rope, with its Newton iterations per substep, linear solves per iteration
+    /// and ns per segment-solve performed (<see cref="KernelTimer"/>).</item>
     /// </list>
     /// With the environment variable <c>KERNELS_VECTORS=off</c> every command runs the scalar paths
     /// (<see cref="VectorPath.Enabled"/> false, as on a runtime whose <c>Vector.IsHardwareAccelerated</c> is false: the

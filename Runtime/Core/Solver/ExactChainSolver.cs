@@ -75,9 +75,10 @@ namespace HookeRope.Solver
         /// branch; or a contact released in this substep was driven back into its surface
         /// (<see cref="ChainContacts.ReleasedInside"/>). <paramref name="violent"/>: the linearisation was off by more than
         /// <see cref="NonlinearTolerance"/> (its step went through <see cref="ChainLineSearch"/>), or a released segment ended
-        /// stretched by more than that; <paramref name="shortened"/>: the line search took a step below 1.
+        /// stretched by more than that; <paramref name="shortened"/>: the line search took a step below 1;
+        /// <paramref name="solves"/>: the linear solves of the iteration's active-set passes (<see cref="SolveActiveSet"/>).
         /// </summary>
-        public static bool Iterate(ChainState c, double h, double beta, bool tensionOnly, bool first, out bool violent, out bool shortened)
+        public static bool Iterate(ChainState c, double h, double beta, bool tensionOnly, bool first, out bool violent, out bool shortened, out int solves)
         {
             double invH2 = 1.0 / (h * h);
             if (first) ClearForces(c);
@@ -88,7 +89,7 @@ namespace HookeRope.Solver
                 ChainContacts.Prepare(c);
                 ChainContacts.DropContactsWithoutMobility(c);
             }
-            SolveActiveSet(c, tensionOnly, contacts, first);
+            solves = SolveActiveSet(c, tensionOnly, contacts, first);
             // a contact released in this substep stays free in its active-set passes; if the solution drives it back into the
             // surface, another iteration follows, whose detection holds it where the collision pass put it
             bool reentered = contacts && ChainContacts.ReleasedInside(c);
@@ -265,9 +266,12 @@ namespace HookeRope.Solver
         /// <see cref="MaxPasses"/> solves, or <see cref="MaxFrictionPasses"/> while contact friction is still moving to its
         /// cone): a tension-only segment whose total force would push is released (its force returns to zero), a released
         /// one the solution stretches is re-admitted; a held contact the chain pulls off the surface is released, a released
-        /// one it drives deeper than its gap is held; friction follows its cone (<see cref="ChainContacts"/>).
+        /// one it drives deeper than its gap is held; friction follows its cone (<see cref="ChainContacts"/>). Returns the
+        /// number of solves (1 when the set holds). A fresh hanging rope, released at its rest length, takes up to
+        /// <see cref="MaxPasses"/> while its tension front runs down it: the chain below the front falls free, its segments
+        /// at zero force either way, and each pass moves the released set (solver.md, "The exact solve against the segment count").
         /// </summary>
-        private static void SolveActiveSet(ChainState c, bool tensionOnly, bool contacts, bool first)
+        private static int SolveActiveSet(ChainState c, bool tensionOnly, bool contacts, bool first)
         {
             bool frictionMoving = false;
             // the first row the forward sweep must redo: between passes without contacts only the tension-only flags change,
@@ -278,7 +282,7 @@ namespace HookeRope.Solver
             for (int pass = 1; ; pass++)
             {
                 SegmentForceSystem.Solve(c, from);
-                if ((!tensionOnly && !contacts) || pass >= MaxFrictionPasses || (pass >= MaxPasses && !frictionMoving)) return;
+                if ((!tensionOnly && !contacts) || pass >= MaxFrictionPasses || (pass >= MaxPasses && !frictionMoving)) return pass;
                 // from: the tension-only pass's first changed row, 0 once the contacts may have changed (without tensionOnly
                 // there are contacts, so every path past the return above sets it)
                 bool changed = tensionOnly && UpdateTensionOnlySet(c, out from);
@@ -287,7 +291,7 @@ namespace HookeRope.Solver
                     changed |= ChainContacts.Update(c, first, out frictionMoving);
                     from = 0;
                 }
-                if (!changed) return;
+                if (!changed) return pass;
             }
         }
 

@@ -45,7 +45,7 @@ namespace HookeRope.Solver
                 loadPeakForce[l] = 0f;
             }
 
-            reportIterations = 0; reportViolent = 0; reportShortened = 0; reportUnconverged = 0;
+            reportIterations = 0; reportSolves = 0; reportViolent = 0; reportShortened = 0; reportUnconverged = 0;
             TimeIntegrator integrator = settings.Integrator;
             bool secondOrder = integrator != TimeIntegrator.BackwardEuler;
             bool drag = settings.HasDrag, viscousDrag = drag && settings.ViscousDrag > 0f;
@@ -97,7 +97,7 @@ namespace HookeRope.Solver
 
             return new StepReport
             {
-                Residual = ComputeResidual(), Iterations = iterations, Substeps = substeps, SolveIterations = reportIterations,
+                Residual = ComputeResidual(), Iterations = iterations, Substeps = substeps, SolveIterations = reportIterations, LinearSolves = reportSolves,
                 ViolentSubsteps = reportViolent, ShortenedSteps = reportShortened, UnconvergedSubsteps = reportUnconverged,
             };
         }
@@ -192,7 +192,7 @@ namespace HookeRope.Solver
         public const int MaxViolentNewtonIterations = 32;
 
         // what the solve did in this host step (StepReport)
-        private int reportIterations, reportViolent, reportShortened, reportUnconverged;
+        private int reportIterations, reportSolves, reportViolent, reportShortened, reportUnconverged;
 
         /// <summary>
         /// Phase 3: the constraint iterations. Each folds in the compliant pins, solves the chain (one Newton iteration of
@@ -215,7 +215,8 @@ namespace HookeRope.Solver
                 bool softPins = hasCompliantPins && ProjectCompliantPins(hEff, t);
                 if (exact)
                 {
-                    unconverged = ExactChainSolver.Iterate(chain, hEff, solveBeta, tensionOnly, it == 0, out bool violent, out bool shortened);
+                    unconverged = ExactChainSolver.Iterate(chain, hEff, solveBeta, tensionOnly, it == 0, out bool violent, out bool shortened, out int solves);
+                    reportSolves += solves;
                     if (violent) cap = MaxViolentNewtonIterations;
                     if (shortened) reportShortened++;
                     if (unconverged && it == total - 1 && total < cap) total++;

@@ -18,6 +18,12 @@ namespace HookeRope.Solver
         /// </summary>
         public int SolveIterations;
         /// <summary>
+        /// Linear solves of the chain system the exact solve ran over the substeps: one per Newton iteration, more where its
+        /// active-set passes changed the set of released tension-only segments or held contacts (up to 8 per iteration, 64
+        /// while contact friction is still moving to its cone). Each costs about one pass over the segments; 0 for Gauss–Seidel.
+        /// </summary>
+        public int LinearSolves;
+        /// <summary>
         /// Substeps whose exact solve was violent (a linearisation off by more than 10⁻³ of a rest length: a rope released far
         /// stretched, a teleported anchor): their iterations went through the line search, up to
         /// <see cref="Rope.MaxViolentNewtonIterations"/>, and a second-order integrator restarted with backward Euler.
