@@ -204,10 +204,14 @@ namespace HookeRope.Solver
         /// </summary>
         private static void MoveParticlesLanes(ChainState c)
         {
-            int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = (s - 1) / lanes;
+            int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes;
             // particle 0, whose pull has no segment before it
             MoveParticle(c, 0, c.StepX[0], c.StepY[0], c.StepZ[0]);
-            ReadOnlySpan<Vector<float>> w = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Shifted(c.InverseMass, s - 1));
+            // the last particle's pull, −δΛ_{s−1}, is (−0) − δΛ_{s−1} on the lanes (the same bits for every δΛ, zeros
+            // included): with −0 in the step arrays' spare entry the runs reach particle s, with no scalar tail when s is a
+            // multiple of the lanes
+            c.StepX[s] = -0.0; c.StepY[s] = -0.0; c.StepZ[s] = -0.0;
+            ReadOnlySpan<Vector<float>> w = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Shifted(c.InverseMass, s));
             for (int k = 0; k < runs; k++)
             {
                 Vector.Widen(w[k], out Vector<double> wLow, out Vector<double> wHigh);
@@ -215,10 +219,8 @@ namespace HookeRope.Solver
                 MoveLanes(c.StepY, c.DY, c.DLowY, c.MotionY, s, k, wLow, wHigh);
                 MoveLanes(c.StepZ, c.DZ, c.DLowZ, c.MotionZ, s, k, wLow, wHigh);
             }
-            for (int i = 1 + runs * lanes; i < s; i++)
+            for (int i = 1 + runs * lanes; i <= s; i++)
                 MoveParticle(c, i, c.StepX[i] - c.StepX[i - 1], c.StepY[i] - c.StepY[i - 1], c.StepZ[i] - c.StepZ[i - 1]);
-            // the last particle, pulled by its segment alone (Move's w·pull, as the scalar pass)
-            MoveParticle(c, s, -c.StepX[s - 1], -c.StepY[s - 1], -c.StepZ[s - 1]);
             LengthErrorLanes(c);
         }
 
@@ -238,11 +240,11 @@ namespace HookeRope.Solver
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static void MoveLanes(double[] step, float[] d, float[] low, double[] motion, int s, int k, Vector<double> wLow, Vector<double> wHigh)
         {
-            ReadOnlySpan<Vector<double>> after = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Shifted(step, s - 1));
-            ReadOnlySpan<Vector<double>> before = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(step, s - 1));
-            Span<Vector<double>> m = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Shifted(motion, s - 1));
-            Span<Vector<float>> dv = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Shifted(d, s - 1));
-            Span<Vector<float>> lv = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Shifted(low, s - 1));
+            ReadOnlySpan<Vector<double>> after = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Shifted(step, s));
+            ReadOnlySpan<Vector<double>> before = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(step, s));
+            Span<Vector<double>> m = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Shifted(motion, s));
+            Span<Vector<float>> dv = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Shifted(d, s));
+            Span<Vector<float>> lv = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Shifted(low, s));
             Vector<double> mLow = wLow * (after[2 * k] - before[2 * k]), mHigh = wHigh * (after[2 * k + 1] - before[2 * k + 1]);
             m[2 * k] = mLow; m[2 * k + 1] = mHigh;
             Vector.Widen(dv[k], out Vector<double> dLow, out Vector<double> dHigh);
