@@ -143,21 +143,22 @@ namespace HookeRope.Solver
             ReadOnlySpan<double> byy = ChainState.Exactly(c.BlockYY, s), byz = ChainState.Exactly(c.BlockYZ, s), bzz = ChainState.Exactly(c.BlockZZ, s);
             Span<EliminatedRow> rows = ChainState.Exactly(c.Eliminated, s);
             ReadOnlySpan<double> rx = ChainState.Exactly(c.ResidualX, s), ry = ChainState.Exactly(c.ResidualY, s), rz = ChainState.Exactly(c.ResidualZ, s);
-            ReadOnlySpan<double> fx = ChainState.Exactly(c.ForceX, s), fy = ChainState.Exactly(c.ForceY, s), fz = ChainState.Exactly(c.ForceZ, s);
             ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
             // the row before (its inverse pivot G and reduced vector p) is read from where it was stored, not carried in
             // registers: the loads fold into the arithmetic, and the sweep's other pointers and the row's own block keep
             // the registers (row 0 reads nothing of it)
             ref EliminatedRow before = ref rows[from > 0 ? from - 1 : 0];
             bool previousActive = from > 0 && active[from - 1];
-            for (int j = from; j < s; j++)
+            // (uint) bound: j is an index (from ≥ 0), so every span of s entries is read without a bounds check
+            for (int j = from; (uint)j < (uint)s; j++)
             {
                 double sxx, sxy, sxz, syy, syz, szz, bx, by, bz;
                 bool rowActive = active[j];
                 if (!rowActive)
                 {
+                    // the forces read from the arrays: the few released rows pay the checks, the loop keeps three pointers fewer
                     sxx = 1; sxy = 0; sxz = 0; syy = 1; syz = 0; szz = 1;
-                    bx = -fx[j]; by = -fy[j]; bz = -fz[j];
+                    bx = -c.ForceX[j]; by = -c.ForceY[j]; bz = -c.ForceZ[j];
                 }
                 else
                 {
