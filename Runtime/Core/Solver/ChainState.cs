@@ -56,11 +56,11 @@ namespace HookeRope.Solver
 
         // exact solve (double, N·s² per segment; see ExactChainSolver): the segment force vectors Λ = h²·F accumulated over
         // the substep's iterations, this iteration's change δΛ, the residual R (m), the block Thomas sweep's inverse
-        // pivots (6 per segment, symmetric 3×3) and reduced right-hand sides (kept for the next active-set pass, which redoes
+        // pivots (symmetric 3×3) and reduced right-hand sides, side by side per segment (kept for the next active-set pass, which redoes
         // only the rows from the first changed one), the axial and transverse compliances of
         // Λ (m per N·s²), and the active flags (tension-only, valid rows)
         public readonly double[] ForceX, ForceY, ForceZ, StepX, StepY, StepZ, ResidualX, ResidualY, ResidualZ;
-        public readonly double[] PivotInverse, ReducedX, ReducedY, ReducedZ;
+        public readonly SegmentForceSystem.EliminatedRow[] Eliminated;
         public readonly double[] AxialCompliance, TransverseCompliance, EstimatedTension;
         // each row's free block A_j = (w_j + w_{j+1}) I + α̃ n nᵀ + τ (I − n nᵀ) (symmetric 3×3, 1/kg), built once per
         // linearisation for every active-set pass (SegmentForceSystem.PrepareBlocks)
@@ -141,9 +141,9 @@ namespace HookeRope.Solver
             Tension = new float[s]; PeakTension = new float[s]; MeanTension = new float[s]; Length = new float[s]; Broken = new bool[s];
             DirX = new float[s]; DirY = new float[s]; DirZ = new float[s];
             ForceX = new double[s]; ForceY = new double[s]; ForceZ = new double[s];
-            StepX = new double[s]; StepY = new double[s]; StepZ = new double[s];
+            StepX = new double[n]; StepY = new double[n]; StepZ = new double[n]; // entry s: spare (ExactChainSolver.MoveParticlesLanes)
             ResidualX = new double[s]; ResidualY = new double[s]; ResidualZ = new double[s];
-            PivotInverse = new double[6 * s]; ReducedX = new double[s]; ReducedY = new double[s]; ReducedZ = new double[s];
+            Eliminated = new SegmentForceSystem.EliminatedRow[s];
             AxialCompliance = new double[s]; TransverseCompliance = new double[s]; EstimatedTension = new double[s];
             BlockXX = new double[s]; BlockXY = new double[s]; BlockXZ = new double[s];
             BlockYY = new double[s]; BlockYZ = new double[s]; BlockZZ = new double[s];

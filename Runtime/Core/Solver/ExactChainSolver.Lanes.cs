@@ -19,9 +19,10 @@ namespace HookeRope.Solver
         {
             int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes;
             var v = new AssemblyViews(c, s);
-            Span<double> rx = ChainState.Exactly(c.ResidualX, s), ry = ChainState.Exactly(c.ResidualY, s), rz = ChainState.Exactly(c.ResidualZ, s);
-            Span<double> axial = ChainState.Exactly(c.AxialCompliance, s), transverse = ChainState.Exactly(c.TransverseCompliance, s), estimate = ChainState.Exactly(c.EstimatedTension, s);
-            Span<double> effectiveRest = ChainState.Exactly(c.EffectiveRest, s);
+            // the outputs as runs of VectorPath.DoubleLanes (one check per store, not a slice each)
+            Span<Vector<double>> rx = Doubles(c.ResidualX, s), ry = Doubles(c.ResidualY, s), rz = Doubles(c.ResidualZ, s);
+            Span<Vector<double>> axial = Doubles(c.AxialCompliance, s), transverse = Doubles(c.TransverseCompliance, s), estimate = Doubles(c.EstimatedTension, s);
+            Span<Vector<double>> effectiveRest = Doubles(c.EffectiveRest, s);
             Span<Vector<float>> dirX = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(c.DirX, s));
             Span<Vector<float>> dirY = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(c.DirY, s));
             Span<Vector<float>> dirZ = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(c.DirZ, s));
@@ -39,8 +40,8 @@ namespace HookeRope.Solver
                     continue;
                 }
                 if (!Vector.EqualsAll(low.Rigid | high.Rigid, Vector<long>.Zero)) c.RigidInSolve = true;
-                low.Store(rx, ry, rz, axial, transverse, estimate, effectiveRest, j);
-                high.Store(rx, ry, rz, axial, transverse, estimate, effectiveRest, j + VectorPath.DoubleLanes);
+                low.Store(rx, ry, rz, axial, transverse, estimate, effectiveRest, 2 * k);
+                high.Store(rx, ry, rz, axial, transverse, estimate, effectiveRest, 2 * k + 1);
                 dirX[k] = Vector.Narrow(low.Nx, high.Nx); dirY[k] = Vector.Narrow(low.Ny, high.Ny); dirZ[k] = Vector.Narrow(low.Nz, high.Nz);
                 length[k] = Vector.Narrow(low.Length, high.Length);
                 assembled.Slice(j, lanes).Fill(true);
@@ -151,18 +152,17 @@ namespace HookeRope.Solver
             public Vector<double> Nx, Ny, Nz, Length, Rx, Ry, Rz, Axial, Transverse, Estimate, Rest;
 
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
-            public void Store(Span<double> rx, Span<double> ry, Span<double> rz, Span<double> axial, Span<double> transverse,
-                Span<double> estimate, Span<double> effectiveRest, int j)
+            public void Store(Span<Vector<double>> rx, Span<Vector<double>> ry, Span<Vector<double>> rz, Span<Vector<double>> axial,
+                Span<Vector<double>> transverse, Span<Vector<double>> estimate, Span<Vector<double>> effectiveRest, int h)
             {
-                Put(rx, j, Rx); Put(ry, j, Ry); Put(rz, j, Rz);
-                Put(axial, j, Axial); Put(transverse, j, Transverse); Put(estimate, j, Estimate); Put(effectiveRest, j, Rest);
+                rx[h] = Rx; ry[h] = Ry; rz[h] = Rz;
+                axial[h] = Axial; transverse[h] = Transverse; estimate[h] = Estimate; effectiveRest[h] = Rest;
             }
         }
 
-        /// <summary>Writes v to values[j …].</summary>
+        /// <summary>An array's first s entries as runs of <see cref="VectorPath.DoubleLanes"/>.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static void Put(Span<double> values, int j, Vector<double> v) =>
-            MemoryMarshal.Cast<double, Vector<double>>(values.Slice(j, VectorPath.DoubleLanes))[0] = v;
+        private static Span<Vector<double>> Doubles(double[] values, int s) => VectorPath.AsLanes(ChainState.Exactly(values, s));
 
         /// <summary>
         /// The inputs of <see cref="AssembleHalf{THalf}"/> as runs of <see cref="VectorPath.FloatLanes"/> (A: a segment's
@@ -204,21 +204,27 @@ namespace HookeRope.Solver
         /// </summary>
         private static void MoveParticlesLanes(ChainState c)
         {
-            int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = (s - 1) / lanes;
+            int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes;
             // particle 0, whose pull has no segment before it
             MoveParticle(c, 0, c.StepX[0], c.StepY[0], c.StepZ[0]);
-            ReadOnlySpan<Vector<float>> w = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Shifted(c.InverseMass, s - 1));
+            // the last particle's pull, −δΛ_{s−1}, is (−0) − δΛ_{s−1} on the lanes (the same bits for every δΛ, zeros
+            // included): with −0 in the step arrays' spare entry the runs reach particle s, with no scalar tail when s is a
+            // multiple of the lanes
+            c.StepX[s] = -0.0; c.StepY[s] = -0.0; c.StepZ[s] = -0.0;
+            ReadOnlySpan<Vector<float>> w = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Shifted(c.InverseMass, s));
+            // the views once per call, not per run and axis
+            var x = new MoveViews(c.StepX, c.DX, c.DLowX, c.MotionX, s);
+            var y = new MoveViews(c.StepY, c.DY, c.DLowY, c.MotionY, s);
+            var z = new MoveViews(c.StepZ, c.DZ, c.DLowZ, c.MotionZ, s);
             for (int k = 0; k < runs; k++)
             {
                 Vector.Widen(w[k], out Vector<double> wLow, out Vector<double> wHigh);
-                MoveLanes(c.StepX, c.DX, c.DLowX, c.MotionX, s, k, wLow, wHigh);
-                MoveLanes(c.StepY, c.DY, c.DLowY, c.MotionY, s, k, wLow, wHigh);
-                MoveLanes(c.StepZ, c.DZ, c.DLowZ, c.MotionZ, s, k, wLow, wHigh);
+                MoveLanes(in x, k, wLow, wHigh);
+                MoveLanes(in y, k, wLow, wHigh);
+                MoveLanes(in z, k, wLow, wHigh);
             }
-            for (int i = 1 + runs * lanes; i < s; i++)
+            for (int i = 1 + runs * lanes; i <= s; i++)
                 MoveParticle(c, i, c.StepX[i] - c.StepX[i - 1], c.StepY[i] - c.StepY[i - 1], c.StepZ[i] - c.StepZ[i - 1]);
-            // the last particle, pulled by its segment alone (Move's w·pull, as the scalar pass)
-            MoveParticle(c, s, -c.StepX[s - 1], -c.StepY[s - 1], -c.StepZ[s - 1]);
             LengthErrorLanes(c);
         }
 
@@ -236,22 +242,38 @@ namespace HookeRope.Solver
         /// masses), added to the displacement d + low in double and split back as <see cref="ChainState.Add"/> does.
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static void MoveLanes(double[] step, float[] d, float[] low, double[] motion, int s, int k, Vector<double> wLow, Vector<double> wHigh)
+        private static void MoveLanes(in MoveViews v, int k, Vector<double> wLow, Vector<double> wHigh)
         {
-            ReadOnlySpan<Vector<double>> after = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Shifted(step, s - 1));
-            ReadOnlySpan<Vector<double>> before = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(step, s - 1));
-            Span<Vector<double>> m = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Shifted(motion, s - 1));
-            Span<Vector<float>> dv = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Shifted(d, s - 1));
-            Span<Vector<float>> lv = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Shifted(low, s - 1));
-            Vector<double> mLow = wLow * (after[2 * k] - before[2 * k]), mHigh = wHigh * (after[2 * k + 1] - before[2 * k + 1]);
-            m[2 * k] = mLow; m[2 * k + 1] = mHigh;
-            Vector.Widen(dv[k], out Vector<double> dLow, out Vector<double> dHigh);
-            Vector.Widen(lv[k], out Vector<double> lLow, out Vector<double> lHigh);
+            Vector<double> mLow = wLow * (v.After[2 * k] - v.Before[2 * k]), mHigh = wHigh * (v.After[2 * k + 1] - v.Before[2 * k + 1]);
+            v.Motion[2 * k] = mLow; v.Motion[2 * k + 1] = mHigh;
+            Vector.Widen(v.D[k], out Vector<double> dLow, out Vector<double> dHigh);
+            Vector.Widen(v.Low[k], out Vector<double> lLow, out Vector<double> lHigh);
             Vector<double> xLow = (dLow + lLow) + mLow, xHigh = (dHigh + lHigh) + mHigh;
             Vector<float> f = Vector.Narrow(xLow, xHigh);
             Vector.Widen(f, out Vector<double> fLow, out Vector<double> fHigh);
-            dv[k] = f;
-            lv[k] = Vector.Narrow(xLow - fLow, xHigh - fHigh);
+            v.D[k] = f;
+            v.Low[k] = Vector.Narrow(xLow - fLow, xHigh - fHigh);
+        }
+
+        /// <summary>
+        /// One axis of <see cref="MoveParticlesLanes"/> as runs from particle 1: the step δΛ at and before each particle (the
+        /// step arrays' spare entry s included), its motion and its displacement with remainder.
+        /// </summary>
+        private readonly ref struct MoveViews
+        {
+            public readonly ReadOnlySpan<Vector<double>> After, Before;
+            public readonly Span<Vector<double>> Motion;
+            public readonly Span<Vector<float>> D, Low;
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            public MoveViews(double[] step, float[] d, float[] low, double[] motion, int s)
+            {
+                After = VectorPath.AsLanes(ChainState.Shifted(step, s));
+                Before = VectorPath.AsLanes(ChainState.Exactly(step, s));
+                Motion = VectorPath.AsLanes(ChainState.Shifted(motion, s));
+                D = VectorPath.AsLanes(ChainState.Shifted(d, s));
+                Low = VectorPath.AsLanes(ChainState.Shifted(low, s));
+            }
         }
 
         /// <summary>

@@ -1,4 +1,5 @@
 using System;
+using System.Numerics;
 using HookeRope.Mathematics;
 
 namespace HookeRope.Solver
@@ -114,14 +115,24 @@ namespace HookeRope.Solver
         private static void ClearForces(ChainState c)
         {
             int s = c.SegmentCount;
-            // one loop: for the short arrays of a rope three calls to Array.Clear cost more than the stores
+            // one loop: for the short arrays of a rope three calls to Array.Clear cost more than the stores; on lanes the
+            // forces take one store per VectorPath.DoubleLanes segments (goal lanyard: 609 → 150 instructions per call)
             Span<double> fx = ChainState.Exactly(c.ForceX, s), fy = ChainState.Exactly(c.ForceY, s), fz = ChainState.Exactly(c.ForceZ, s);
-            Span<bool> active = ChainState.Exactly(c.Active, s);
-            for (int j = 0; j < s; j++)
+            int from = 0;
+            if (VectorPath.Enabled)
+            {
+                Span<Vector<double>> lx = VectorPath.AsLanes(fx), ly = VectorPath.AsLanes(fy), lz = VectorPath.AsLanes(fz);
+                for (int k = 0; k < lx.Length; k++)
+                {
+                    lx[k] = Vector<double>.Zero; ly[k] = Vector<double>.Zero; lz[k] = Vector<double>.Zero;
+                }
+                from = lx.Length * VectorPath.DoubleLanes;
+            }
+            for (int j = from; j < s; j++)
             {
                 fx[j] = 0.0; fy[j] = 0.0; fz[j] = 0.0;
-                active[j] = true;
             }
+            ChainState.Exactly(c.Active, s).Fill(true);
         }
 
         /// <summary>
@@ -344,7 +355,37 @@ namespace HookeRope.Solver
         /// values in registers.
         /// </summary>
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
-        private static bool Restores(ChainState c, int j) => IsRestorable(c, j) && StretchAfter(c, j, c.DirX[j], c.DirY[j], c.DirZ[j]) > 0.0;
+        private static bool Restores(ChainState c, int j) => c.ContactCount == 0 && c.BrokenCount == 0
+            ? FreeRestores(c, j) : IsRestorable(c, j) && StretchAfter(c, j, c.DirX[j], c.DirY[j], c.DirZ[j]) > 0.0;
+
+        /// <summary>
+        /// <see cref="Restores"/> of a chain without contacts or broken segments: <see cref="IsRestorable"/> and
+        /// <see cref="StretchAfter"/> with the ends' motions w_i·pull written out, operation for operation (the same bits;
+        /// goal lanyard: 200 → 75 instructions per released segment and pass).
+        /// </summary>
+        private static bool FreeRestores(ChainState c, int j)
+        {
+            float[] w = c.InverseMass;
+            double wa = w[j], wb = w[j + 1];
+            if (!(wa + wb > 0.0 || c.Compliance[j] > 0f)) return false;
+            int s = c.SegmentCount;
+            double x = FreeStretchAlong(c.StepX, c.ResidualX[j], j, s, wa, wb);
+            double y = FreeStretchAlong(c.StepY, c.ResidualY[j], j, s, wa, wb);
+            double z = FreeStretchAlong(c.StepZ, c.ResidualZ[j], j, s, wa, wb);
+            return (double)c.DirX[j] * x + (double)c.DirY[j] * y + (double)c.DirZ[j] * z > 0.0;
+        }
+
+        /// <summary>
+        /// One axis of <see cref="FreeRestores"/>: the residual plus the relative motion of segment j's ends, (R + w_b·pull_b)
+        /// − w_a·pull_a, the pulls as <see cref="SegmentForceSystem.Pull"/> forms them (step: δΛ of that axis).
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static double FreeStretchAlong(double[] step, double residual, int j, int s, double wa, double wb)
+        {
+            double pullA = j > 0 ? step[j] - step[j - 1] : step[j];
+            double pullB = (j + 1 < s ? step[j + 1] : 0.0) - step[j];
+            return residual + wb * pullB - wa * pullA;
+        }
 
         /// <summary>A released segment that may rejoin the system (it has mobility or compliance, unlike an invalid row).</summary>
         private static bool IsRestorable(ChainState c, int j) => (double)c.InverseMass[j] + c.InverseMass[j + 1] > 0.0 || c.Compliance[j] > 0f;

@@ -127,41 +127,38 @@ namespace HookeRope.Solver
         internal struct NoContacts { }
 
         /// <summary>
-        /// Forward sweep from row <paramref name="from"/>: S_j = A_j − L_j S_{j−1}⁻¹ U_{j−1} (its inverse into PivotInverse),
-        /// y_j = R_j − L_j S_{j−1}⁻¹ y_{j−1} (into Reduced), carried in from the stored row before.
+        /// Forward sweep from row <paramref name="from"/>: S_j = A_j − L_j S_{j−1}⁻¹ U_{j−1} (its inverse) and
+        /// y_j = R_j − L_j S_{j−1}⁻¹ y_{j−1}, into ChainState.Eliminated (from the stored row before).
         /// </summary>
         private static void Forward<T, TBlocks>(ChainState c, int from) where T : struct where TBlocks : struct
         {
             bool contacts = typeof(T) == typeof(WithContacts), stored = typeof(TBlocks) == typeof(StoredBlocks);
             int s = c.SegmentCount;
+            if (from >= s) return;
             // spans of exactly s entries (the loop bound) index without bounds checks; wB[j] is particle j + 1's
             ReadOnlySpan<float> wA = ChainState.Exactly(c.InverseMass, s), wB = ChainState.Shifted(c.InverseMass, s);
             ReadOnlySpan<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
             ReadOnlySpan<double> axial = ChainState.Exactly(c.AxialCompliance, s), transverse = ChainState.Exactly(c.TransverseCompliance, s);
             ReadOnlySpan<double> bxx = ChainState.Exactly(c.BlockXX, s), bxy = ChainState.Exactly(c.BlockXY, s), bxz = ChainState.Exactly(c.BlockXZ, s);
             ReadOnlySpan<double> byy = ChainState.Exactly(c.BlockYY, s), byz = ChainState.Exactly(c.BlockYZ, s), bzz = ChainState.Exactly(c.BlockZZ, s);
-            Span<double> gi = ChainState.Exactly(c.PivotInverse, 6 * s);
-            Span<double> yx = ChainState.Exactly(c.ReducedX, s), yy = ChainState.Exactly(c.ReducedY, s), yz = ChainState.Exactly(c.ReducedZ, s);
+            Span<EliminatedRow> rows = ChainState.Exactly(c.Eliminated, s);
             ReadOnlySpan<double> rx = ChainState.Exactly(c.ResidualX, s), ry = ChainState.Exactly(c.ResidualY, s), rz = ChainState.Exactly(c.ResidualZ, s);
-            ReadOnlySpan<double> fx = ChainState.Exactly(c.ForceX, s), fy = ChainState.Exactly(c.ForceY, s), fz = ChainState.Exactly(c.ForceZ, s);
             ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
-            double gxx = 1, gxy = 0, gxz = 0, gyy = 1, gyz = 0, gzz = 1, px = 0, py = 0, pz = 0;
-            bool previousActive = false;
-            if (from > 0)
-            {
-                ReadOnlySpan<double> kept = gi.Slice(6 * (from - 1), 6);
-                gxx = kept[0]; gxy = kept[1]; gxz = kept[2]; gyy = kept[3]; gyz = kept[4]; gzz = kept[5];
-                px = yx[from - 1]; py = yy[from - 1]; pz = yz[from - 1];
-                previousActive = active[from - 1];
-            }
-            for (int j = from; j < s; j++)
+            // the row before (its inverse pivot G and reduced vector p) is read from where it was stored, not carried in
+            // registers: the loads fold into the arithmetic, and the sweep's other pointers and the row's own block keep
+            // the registers (row 0 reads nothing of it)
+            ref EliminatedRow before = ref rows[from > 0 ? from - 1 : 0];
+            bool previousActive = from > 0 && active[from - 1];
+            // (uint) bound: j is an index (from ≥ 0), so every span of s entries is read without a bounds check
+            for (int j = from; (uint)j < (uint)s; j++)
             {
                 double sxx, sxy, sxz, syy, syz, szz, bx, by, bz;
                 bool rowActive = active[j];
                 if (!rowActive)
                 {
+                    // the forces read from the arrays: the few released rows pay the checks, the loop keeps three pointers fewer
                     sxx = 1; sxy = 0; sxz = 0; syy = 1; syz = 0; szz = 1;
-                    bx = -fx[j]; by = -fy[j]; bz = -fz[j];
+                    bx = -c.ForceX[j]; by = -c.ForceY[j]; bz = -c.ForceZ[j];
                 }
                 else
                 {
@@ -177,7 +174,7 @@ namespace HookeRope.Solver
                         SubtractHeldNormal(c, j + 1, ref row.XX, ref row.XY, ref row.XZ, ref row.YY, ref row.YZ, ref row.ZZ);
                         held = j > 0 && c.ContactActive[j];
                         if (held)
-                            EliminateHeld(c, j, previousActive, gxx, gxy, gxz, gyy, gyz, gzz, px, py, pz,
+                            EliminateHeld(c, j, previousActive, before.XX, before.XY, before.XZ, before.YY, before.YZ, before.ZZ, before.X, before.Y, before.Z,
                                 ref row.XX, ref row.XY, ref row.XZ, ref row.YY, ref row.YZ, ref row.ZZ, ref row.X, ref row.Y, ref row.Z);
                         sxx = row.XX; sxy = row.XY; sxz = row.XZ; syy = row.YY; syz = row.YZ; szz = row.ZZ; bx = row.X; by = row.Y; bz = row.Z;
                     }
@@ -188,18 +185,18 @@ namespace HookeRope.Solver
                         if (previousActive)
                         {
                             double k = wj * wj;
-                            sxx -= k * gxx; sxy -= k * gxy; sxz -= k * gxz; syy -= k * gyy; syz -= k * gyz; szz -= k * gzz;
+                            sxx -= k * before.XX; sxy -= k * before.XY; sxz -= k * before.XZ; syy -= k * before.YY; syz -= k * before.YZ; szz -= k * before.ZZ;
                         }
-                        bx += wj * (gxx * px + gxy * py + gxz * pz);
-                        by += wj * (gxy * px + gyy * py + gyz * pz);
-                        bz += wj * (gxz * px + gyz * py + gzz * pz);
+                        bx += wj * (before.XX * before.X + before.XY * before.Y + before.XZ * before.Z);
+                        by += wj * (before.XY * before.X + before.YY * before.Y + before.YZ * before.Z);
+                        bz += wj * (before.XZ * before.X + before.YZ * before.Y + before.ZZ * before.Z);
                     }
                 }
-                Invert(sxx, sxy, sxz, syy, syz, szz, out gxx, out gxy, out gxz, out gyy, out gyz, out gzz);
-                Span<double> pivot = gi.Slice(6 * j, 6);
-                pivot[0] = gxx; pivot[1] = gxy; pivot[2] = gxz; pivot[3] = gyy; pivot[4] = gyz; pivot[5] = gzz;
-                yx[j] = bx; yy[j] = by; yz[j] = bz;
-                px = bx; py = by; pz = bz;
+                Invert(sxx, sxy, sxz, syy, syz, szz, out double gxx, out double gxy, out double gxz, out double gyy, out double gyz, out double gzz);
+                ref EliminatedRow eliminated = ref rows[j];
+                eliminated.XX = gxx; eliminated.XY = gxy; eliminated.XZ = gxz; eliminated.YY = gyy; eliminated.YZ = gyz; eliminated.ZZ = gzz;
+                eliminated.X = bx; eliminated.Y = by; eliminated.Z = bz;
+                before = ref eliminated;
                 previousActive = rowActive;
             }
         }
@@ -213,17 +210,18 @@ namespace HookeRope.Solver
             bool contacts = typeof(T) == typeof(WithContacts);
             int s = c.SegmentCount;
             ReadOnlySpan<float> wB = ChainState.Shifted(c.InverseMass, s);
-            ReadOnlySpan<double> gi = ChainState.Exactly(c.PivotInverse, 6 * s);
+            ReadOnlySpan<EliminatedRow> rows = ChainState.Exactly(c.Eliminated, s);
             ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
-            ReadOnlySpan<double> yx = ChainState.Exactly(c.ReducedX, s), yy = ChainState.Exactly(c.ReducedY, s), yz = ChainState.Exactly(c.ReducedZ, s);
             Span<double> dx = ChainState.Exactly(c.StepX, s), dy = ChainState.Exactly(c.StepY, s), dz = ChainState.Exactly(c.StepZ, s);
             int last = s - 1;
             if (last < 0) return;
-            BackRow(gi.Slice(6 * last, 6), yx[last], yy[last], yz[last], out double nx, out double ny, out double nz);
+            ref readonly EliminatedRow end = ref rows[last];
+            BackRow(in end, end.X, end.Y, end.Z, out double nx, out double ny, out double nz);
             dx[last] = nx; dy[last] = ny; dz[last] = nz;
             for (int j = last - 1; j >= 0; j--)
             {
-                double vx = yx[j], vy = yy[j], vz = yz[j];
+                ref readonly EliminatedRow row = ref rows[j];
+                double vx = row.X, vy = row.Y, vz = row.Z;
                 if (active[j])
                 {
                     double mx, my, mz;
@@ -235,18 +233,28 @@ namespace HookeRope.Solver
                     }
                     vx += mx; vy += my; vz += mz;
                 }
-                BackRow(gi.Slice(6 * j, 6), vx, vy, vz, out nx, out ny, out nz);
+                BackRow(in row, vx, vy, vz, out nx, out ny, out nz);
                 dx[j] = nx; dy[j] = ny; dz[j] = nz;
             }
         }
 
         /// <summary>One row of <see cref="Back{T}"/>: the symmetric inverse pivot times v.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static void BackRow(ReadOnlySpan<double> pivot, double vx, double vy, double vz, out double ox, out double oy, out double oz)
+        private static void BackRow(in EliminatedRow pivot, double vx, double vy, double vz, out double ox, out double oy, out double oz)
         {
-            ox = pivot[0] * vx + pivot[1] * vy + pivot[2] * vz;
-            oy = pivot[1] * vx + pivot[3] * vy + pivot[4] * vz;
-            oz = pivot[2] * vx + pivot[4] * vy + pivot[5] * vz;
+            ox = pivot.XX * vx + pivot.XY * vy + pivot.XZ * vz;
+            oy = pivot.XY * vx + pivot.YY * vy + pivot.YZ * vz;
+            oz = pivot.XZ * vx + pivot.YZ * vy + pivot.ZZ * vz;
+        }
+
+        /// <summary>
+        /// One row of the forward sweep's result (ChainState.Eliminated): the inverse pivot S_j⁻¹ (symmetric, XX … ZZ, kg) and
+        /// the reduced right-hand side y_j (X, Y, Z; m), side by side, so the sweep reads the row before and the back
+        /// substitution its row through one pointer.
+        /// </summary>
+        internal struct EliminatedRow
+        {
+            public double XX, XY, XZ, YY, YZ, ZZ, X, Y, Z;
         }
 
         /// <summary>A row's symmetric block (XX … ZZ) and right-hand side (X, Y, Z) while the contact terms change it.</summary>
