@@ -20,6 +20,8 @@ namespace HookeRope.Solver
             if (!(hostDeltaTime > 0f && hostDeltaTime <= MaxHostDeltaTime))
                 throw new ArgumentOutOfRangeException(nameof(hostDeltaTime), hostDeltaTime, "hostDeltaTime must be in (0, 1] s");
             if (settings.Version != appliedVersion) ApplySettings();
+            // the opt-in fused single-precision Gauss–Seidel step, for the ropes it serves (Rope.FusedStep.cs)
+            if (FusedStepApplies()) return StepFused(hostDeltaTime);
 
             int substeps = settings.Substeps;
             int iterations = settings.Iterations;
