@@ -12,11 +12,12 @@ namespace HookeRope.Solver
         /// </summary>
         Precise,
         /// <summary>
-        /// Opt-in: one fused single-precision pass per substep (predict particle j + 1, project segment j), positions and
-        /// velocities in float (position Verlet). About 2.5× fewer instructions; a segment's stretch is resolved only to
-        /// the float step of its coordinates (1.2·10⁻⁷ m at 1–2 m from the rope's origin), so a stiff rope's tension reads
-        /// noisy. Runs only for a backward-Euler rope without colliders, drag, compliant pins or plasticity; any other rope
-        /// runs <see cref="Precise"/>.
+        /// Opt-in: one fused single-precision pass per substep (predict particle j + 1, project segment j, commit particle
+        /// j), positions, velocities and the substep's displacements in float, no sub-float remainders. About 3× fewer
+        /// instructions (0.91× PositionBasedDynamics' distance-constraint kernel on a 16-segment chain); tensions within
+        /// 0.05 % of <see cref="Precise"/> where Gauss–Seidel converges, coarser far from the rope's origin. Runs only for a
+        /// backward-Euler rope without colliders, drag, compliant pins or plasticity; any other rope runs
+        /// <see cref="Precise"/>.
         /// </summary>
         FusedSingle,
     }

@@ -7,7 +7,7 @@ namespace HookeRope.Solver
     /// The host step of <see cref="GaussSeidelKernel.FusedSingle"/> (<see cref="FusedChain"/>): the chain is packed into
     /// float structs at the start of the step, each substep is one fused pass (and one more sweep per further iteration),
     /// and the chain is written back at the end with the read-outs the precise step gives: positions (no sub-float
-    /// remainder), velocities (x − p)/h, tensions T = −λ/h² of the last substep, their peak and mean over the substeps,
+    /// remainder), velocities, tensions T = −λ/h² of the last substep, their peak and mean over the substeps,
     /// segment lengths and directions, pin forces (and pin breaks, checked every substep when a pin can break), load
     /// forces and peaks, the residual. A particle whose end of step is not finite falls back to its position at the start
     /// of the step, at rest.
@@ -39,21 +39,10 @@ namespace HookeRope.Solver
             Float3 g = settings.Gravity;
             float invH = (float)(1.0 / hd);
             float ghx = (float)(g.X * hd), ghy = (float)(g.Y * hd), ghz = (float)(g.Z * hd);
-            int particles = chain.ParticleCount;
             if (fused == null) fused = new FusedChain(chain.SegmentCount);
-            Array.Copy(chain.X, chain.StepStartX, particles);
-            Array.Copy(chain.Y, chain.StepStartY, particles);
-            Array.Copy(chain.Z, chain.StepStartZ, particles);
+            BeginStep();
             PackFused();
             PackFusedSegments(hd, true);
-            for (int l = 0; l < loadCount; l++)
-            {
-                int i = loadParticle[l];
-                loadStartVelocity[l] = new Float3((float)chain.VelX[i], (float)chain.VelY[i], (float)chain.VelZ[i]);
-                loadStartPosition[l] = new Float3(chain.X[i], chain.Y[i], chain.Z[i]);
-                loadSubstepVelocity[l] = loadStartVelocity[l];
-                loadPeakForce[l] = 0f;
-            }
             reportIterations = 0; reportViolent = 0; reportShortened = 0; reportUnconverged = 0;
             // the precise step's BDF2 history does not survive a fused step
             historyValid = false;
@@ -80,15 +69,7 @@ namespace HookeRope.Solver
                 }
             }
             UnpackFused(hd, substeps);
-            for (int p = 0; p < pinCount; p++) pinStart[p] = pinEnd[p];
-            lastStepTime = hostDeltaTime;
-            float invDt = 1f / hostDeltaTime;
-            for (int l = 0; l < loadCount; l++)
-            {
-                int i = loadParticle[l];
-                var v = new Float3((float)chain.VelX[i], (float)chain.VelY[i], (float)chain.VelZ[i]);
-                loadForce[l] = ((v - loadStartVelocity[l]) * invDt - g) * loadMass[l];
-            }
+            EndStep(hostDeltaTime, g);
             return new StepReport { Residual = ComputeResidual(), Iterations = iterations, Substeps = substeps };
         }
 
@@ -196,13 +177,7 @@ namespace HookeRope.Solver
                 Float3 force = g * chain.Mass[i];
                 if (i < chain.SegmentCount && !chain.Broken[i]) force += FusedDirection(i) * (float)(-fused.Segments[i].Lambda * invH2);
                 if (i > 0 && !chain.Broken[i - 1]) force -= FusedDirection(i - 1) * (float)(-fused.Segments[i - 1].Lambda * invH2);
-                pinForce[p] = force;
-                if (force.Length > pinBreakForce[p])
-                {
-                    pinBroken[p] = true;
-                    pinForce[p] = Float3.Zero;
-                    released = true;
-                }
+                if (SetPinForce(p, force)) released = true;
             }
             if (released) RefreshKinematic();
             return released;
