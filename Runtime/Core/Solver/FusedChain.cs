@@ -124,8 +124,17 @@ namespace HookeRope.Solver
                     float rel = s.Gamma * (nx * cx + ny * cy + nz * cz);
                     float numerator = predict ? s.Rest - len - rel : s.Rest - len - s.AlphaTilde * lambda - rel;
                     float d = numerator * s.InverseDenominator;
-                    if (tensionOnly && lambda + d > 0f) d = -lambda;
-                    lambda += d;
+                    // λ starts from 0 in the first sweep: the clamp and the sum without the zero
+                    if (predict)
+                    {
+                        if (tensionOnly && d > 0f) d = 0f;
+                        lambda = d;
+                    }
+                    else
+                    {
+                        if (tensionOnly && lambda + d > 0f) d = -lambda;
+                        lambda += d;
+                    }
                     float ma = a.W * d, mb = b.W * d;
                     dxa -= nx * ma; dya -= ny * ma; dza -= nz * ma;
                     dxb += nx * mb; dyb += ny * mb; dzb += nz * mb;

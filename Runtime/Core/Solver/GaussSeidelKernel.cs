@@ -14,7 +14,7 @@ namespace HookeRope.Solver
         /// <summary>
         /// Opt-in: one fused single-precision pass per substep (predict particle j + 1, project segment j, commit particle
         /// j), positions, velocities and the substep's displacements in float, no sub-float remainders. About 3× fewer
-        /// instructions (0.91× PositionBasedDynamics' distance-constraint kernel on a 16-segment chain); tensions within
+        /// instructions (0.89× PositionBasedDynamics' distance-constraint kernel on a 16-segment chain); tensions within
         /// 0.05 % of <see cref="Precise"/> where Gauss–Seidel converges, coarser far from the rope's origin. Runs only for a
         /// backward-Euler rope without colliders, drag, compliant pins or plasticity; any other rope runs
         /// <see cref="Precise"/>.

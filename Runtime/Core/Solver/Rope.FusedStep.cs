@@ -209,7 +209,7 @@ namespace HookeRope.Solver
             if (packed.Length != n) ChainState.ThrowSizes();
             for (int i = 0; i < n; i++)
             {
-                FusedChain.Particle q = packed[i];
+                ref readonly FusedChain.Particle q = ref packed[i];
                 if (float.IsFinite(q.X + q.Y + q.Z + q.VX + q.VY + q.VZ))
                 {
                     x[i] = q.X; y[i] = q.Y; z[i] = q.Z;
@@ -232,9 +232,9 @@ namespace HookeRope.Solver
             ReadOnlySpan<bool> broken = ChainState.Exactly(chain.Broken, s);
             if (segments.Length != s) ChainState.ThrowSizes();
             double invH2 = 1.0 / (h * h), meanScale = invH2 / substeps;
-            for (int j = 0; j < s; j++)
+            for (int j = 0; j < segments.Length; j++)
             {
-                FusedChain.Segment q = segments[j];
+                ref readonly FusedChain.Segment q = ref segments[j];
                 bool intact = !broken[j];
                 lambda[j] = intact ? q.Lambda : 0.0;
                 tension[j] = intact ? Tension(q.Lambda, invH2) : 0f;
