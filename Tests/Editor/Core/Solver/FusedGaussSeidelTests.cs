@@ -186,6 +186,26 @@ namespace HookeRope.Tests.Solver
         }
 
         [Test]
+        public void TheSimulationFacadeReadsTheFusedRopeAsThePreciseOne()
+        {
+            // RopeSimulation (radius model, read-outs) on top of the fused step: the hanging rope of the load case at 64 × 1
+            double[] top = new double[2], pin = new double[2];
+            for (int kernel = 0; kernel < 2; kernel++)
+            {
+                var settings = Settings((GaussSeidelKernel)kernel, 1e9f, 0.01f, 64, 1);
+                var simulation = new RopeSimulation(settings, Float3.Zero, new Float3(0f, -1f, 0f), new HookeRope.Radius.RadiusSettings());
+                simulation.Rope.AddPin(0, Float3.Zero);
+                simulation.Rope.AddLoad(16, 0.5f);
+                for (int i = 0; i < 360; i++) simulation.Step(RopeTestKit.HostStep);
+                top[kernel] = simulation.Rope.Tensions[0];
+                pin[kernel] = simulation.Rope.GetPinForce(0).Length;
+                Assert.That(RopeTestKit.AllFinite(simulation.Rope), Is.True);
+            }
+            Assert.That(top[1], Is.EqualTo(top[0]).Within(0.05).Percent);
+            Assert.That(pin[1], Is.EqualTo(pin[0]).Within(0.05).Percent);
+        }
+
+        [Test]
         public void AStepAllocatesNothing()
         {
             var rope = RopeTestKit.Hanging(Settings(GaussSeidelKernel.FusedSingle, 1e9f, 0.002f, 8, 1), 0.5f, out _);
