@@ -33,7 +33,9 @@ namespace HookeRope.Solver
             Float3 g = settings.Gravity;
             bool hasColliders = colliders.Count > 0;
             int compliantPins = CountCompliantPins();
+            // the interpolation start and the loads' start state (shared with the fused step, Rope.FusedStep.cs)
             BeginStep();
+
             reportIterations = 0; reportViolent = 0; reportShortened = 0; reportUnconverged = 0;
             TimeIntegrator integrator = settings.Integrator;
             bool secondOrder = integrator != TimeIntegrator.BackwardEuler;
@@ -73,45 +75,14 @@ namespace HookeRope.Solver
             ScaleMeanTensions(1f / substeps);
             RefreshLengths();
             if (hasColliders) colliders.EndStep();
+            // the pins' targets reached and the loads' forces over the step (shared with the fused step)
             EndStep(hostDeltaTime, g);
+
             return new StepReport
             {
                 Residual = ComputeResidual(), Iterations = iterations, Substeps = substeps, SolveIterations = reportIterations,
                 ViolentSubsteps = reportViolent, ShortenedSteps = reportShortened, UnconvergedSubsteps = reportUnconverged,
             };
-        }
-
-        /// <summary>The start of a host step in either kernel: the positions kept for <see cref="Interpolate"/>, each load's start state, its peak restarted.</summary>
-        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
-        private void BeginStep()
-        {
-            int particles = chain.ParticleCount;
-            Array.Copy(chain.X, chain.StepStartX, particles);
-            Array.Copy(chain.Y, chain.StepStartY, particles);
-            Array.Copy(chain.Z, chain.StepStartZ, particles);
-            for (int l = 0; l < loadCount; l++)
-            {
-                int i = loadParticle[l];
-                loadStartVelocity[l] = new Float3((float)chain.VelX[i], (float)chain.VelY[i], (float)chain.VelZ[i]);
-                loadStartPosition[l] = new Float3(chain.X[i], chain.Y[i], chain.Z[i]);
-                loadSubstepVelocity[l] = loadStartVelocity[l];
-                loadPeakForce[l] = 0f;
-            }
-        }
-
-        /// <summary>The end of a host step (hostDeltaTime s, g m/s²) in either kernel: the pins' targets reached, each load's force over the step.</summary>
-        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
-        private void EndStep(float hostDeltaTime, Float3 g)
-        {
-            for (int p = 0; p < pinCount; p++) pinStart[p] = pinEnd[p];
-            lastStepTime = hostDeltaTime;
-            float invDt = 1f / hostDeltaTime;
-            for (int l = 0; l < loadCount; l++)
-            {
-                int i = loadParticle[l];
-                var v = new Float3((float)chain.VelX[i], (float)chain.VelY[i], (float)chain.VelZ[i]);
-                loadForce[l] = ((v - loadStartVelocity[l]) * invDt - g) * loadMass[l];
-            }
         }
 
         /// <summary>
@@ -550,17 +521,6 @@ namespace HookeRope.Solver
                 if (SetPinForce(p, force)) released = true;
             }
             if (released) RefreshKinematic();
-        }
-
-        /// <summary>Stores pin p's force (N) of this substep; above its break force the pin breaks (force 0). Returns true when it broke.</summary>
-        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
-        private bool SetPinForce(int p, Float3 force)
-        {
-            pinForce[p] = force;
-            if (!(force.Length > pinBreakForce[p])) return false;
-            pinBroken[p] = true;
-            pinForce[p] = Float3.Zero;
-            return true;
         }
 
         private float ComputeResidual()
