@@ -22,7 +22,7 @@ namespace HookeRope.Editor
 
         SerializedProperty m_StiffnessInput, m_YoungsModulus, m_AxialStiffness, m_Density, m_PoissonRatio, m_Damping;
         SerializedProperty m_RestLength, m_Radius, m_SegmentCount;
-        SerializedProperty m_Solver, m_Substeps, m_Iterations, m_TensionModel, m_Integrator, m_Gravity;
+        SerializedProperty m_Solver, m_Substeps, m_Iterations, m_TensionModel, m_Integrator, m_GaussSeidelKernel, m_Gravity;
         SerializedProperty m_Start, m_End, m_AttachmentCompliance, m_OnStepped;
         SerializedProperty m_CollisionMode, m_Colliders, m_CollisionLayers, m_Planes, m_Friction;
         SerializedProperty m_ViscousDrag, m_DragCoefficient, m_SkinFriction, m_AirDensity, m_Wind;
@@ -45,6 +45,7 @@ namespace HookeRope.Editor
             m_Iterations = so.FindProperty(nameof(m_Iterations));
             m_TensionModel = so.FindProperty(nameof(m_TensionModel));
             m_Integrator = so.FindProperty(nameof(m_Integrator));
+            m_GaussSeidelKernel = so.FindProperty(nameof(m_GaussSeidelKernel));
             m_Gravity = so.FindProperty(nameof(m_Gravity));
             m_Start = so.FindProperty(nameof(m_Start));
             m_End = so.FindProperty(nameof(m_End));
@@ -104,6 +105,7 @@ namespace HookeRope.Editor
                 Field(m_Iterations);
                 Field(m_TensionModel);
                 Field(m_Integrator);
+                if (m_Solver.hasMultipleDifferentValues || m_Solver.intValue == (int)ConstraintSolverKind.GaussSeidel) Field(m_GaussSeidelKernel);
                 Field(m_Gravity);
                 StretchWarning(rope);
             }

@@ -57,6 +57,9 @@ namespace HookeRope
         [SerializeField, Tooltip(RopeParameters.Integrator.Tooltip)]
         TimeIntegrator m_Integrator = RopeParameters.Integrator.Default;
 
+        [SerializeField, Tooltip(RopeParameters.GaussSeidelKernel.Tooltip)]
+        GaussSeidelKernel m_GaussSeidelKernel = RopeParameters.GaussSeidelKernel.Default;
+
         [SerializeField, Min(RopeParameters.Gravity.Min), Tooltip(RopeParameters.Gravity.Tooltip)]
         Vector3 m_Gravity = new Vector3(RopeParameters.Gravity.DefaultX, RopeParameters.Gravity.DefaultY, RopeParameters.Gravity.DefaultZ);
 
@@ -216,6 +219,17 @@ namespace HookeRope
         {
             get => m_Integrator;
             set { m_Integrator = value; ApplySettings(); }
+        }
+
+        /// <summary>
+        /// The Gauss–Seidel kernel (Gauss–Seidel solver only; <see cref="RopeParameters.GaussSeidelKernel"/>): Precise
+        /// (default) or the opt-in Fused Single, one single-precision pass per substep for a backward-Euler rope without
+        /// colliders, drag, compliant pins or plastic material (any other rope runs Precise).
+        /// </summary>
+        public GaussSeidelKernel GaussSeidelKernel
+        {
+            get => m_GaussSeidelKernel;
+            set { m_GaussSeidelKernel = value; ApplySettings(); }
         }
 
         /// <summary>Gravity on the rope (m/s²).</summary>
@@ -425,6 +439,7 @@ namespace HookeRope
             settings.Solver = m_Solver;
             settings.Tension = m_TensionModel;
             settings.Integrator = m_Integrator;
+            settings.GaussSeidelKernel = m_GaussSeidelKernel;
             settings.ViscousDrag = m_ViscousDrag;
             settings.DragCoefficient = m_DragCoefficient;
             settings.SkinFriction = m_SkinFriction;

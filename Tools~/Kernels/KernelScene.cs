@@ -115,6 +115,13 @@ namespace HookeRope.Kernels
                     rope.AddCollider(ColliderShape.Plane(new Float3(0f, -2.5f, 0f), new Float3(0.2f, 1f, 0f).NormalizedOr(new Float3(0f, 1f, 0f)), 0.4f));
                     return rope;
                 }
+                case "gs-fast-chain16":
+                {
+                    // gs-be-chain16 with the opt-in fused single-precision kernel (not hashed: a new kernel, not a changed one)
+                    Rope rope = Chain(ConstraintSolverKind.GaussSeidel, TimeIntegrator.BackwardEuler, 16);
+                    rope.Settings.GaussSeidelKernel = GaussSeidelKernel.FusedSingle;
+                    return rope;
+                }
                 default: throw new ArgumentException("unknown scene " + name + " (known: " + string.Join(", ", Names) + ")", nameof(name));
             }
         }

@@ -20,6 +20,8 @@ namespace HookeRope.Solver
             if (!(hostDeltaTime > 0f && hostDeltaTime <= MaxHostDeltaTime))
                 throw new ArgumentOutOfRangeException(nameof(hostDeltaTime), hostDeltaTime, "hostDeltaTime must be in (0, 1] s");
             if (settings.Version != appliedVersion) ApplySettings();
+            // the opt-in fused single-precision Gauss–Seidel step, for the ropes it serves (Rope.FusedStep.cs)
+            if (settings.GaussSeidelKernel == GaussSeidelKernel.FusedSingle && FusedStepApplies()) return StepFused(hostDeltaTime);
 
             int substeps = settings.Substeps;
             int iterations = settings.Iterations;
@@ -31,19 +33,8 @@ namespace HookeRope.Solver
             Float3 g = settings.Gravity;
             bool hasColliders = colliders.Count > 0;
             int compliantPins = CountCompliantPins();
-            int particles = chain.ParticleCount;
-            Array.Copy(chain.X, chain.StepStartX, particles);
-            Array.Copy(chain.Y, chain.StepStartY, particles);
-            Array.Copy(chain.Z, chain.StepStartZ, particles);
-
-            for (int l = 0; l < loadCount; l++)
-            {
-                int i = loadParticle[l];
-                loadStartVelocity[l] = new Float3((float)chain.VelX[i], (float)chain.VelY[i], (float)chain.VelZ[i]);
-                loadStartPosition[l] = new Float3(chain.X[i], chain.Y[i], chain.Z[i]);
-                loadSubstepVelocity[l] = loadStartVelocity[l];
-                loadPeakForce[l] = 0f;
-            }
+            // the interpolation start and the loads' start state (shared with the fused step, Rope.FusedStep.cs)
+            BeginStep();
 
             reportIterations = 0; reportSolves = 0; reportViolent = 0; reportShortened = 0; reportUnconverged = 0;
             TimeIntegrator integrator = settings.Integrator;
@@ -84,16 +75,8 @@ namespace HookeRope.Solver
             ScaleMeanTensions(1f / substeps);
             RefreshLengths();
             if (hasColliders) colliders.EndStep();
-            for (int p = 0; p < pinCount; p++) pinStart[p] = pinEnd[p];
-
-            lastStepTime = hostDeltaTime;
-            float invDt = 1f / hostDeltaTime;
-            for (int l = 0; l < loadCount; l++)
-            {
-                int i = loadParticle[l];
-                var v = new Float3((float)chain.VelX[i], (float)chain.VelY[i], (float)chain.VelZ[i]);
-                loadForce[l] = ((v - loadStartVelocity[l]) * invDt - g) * loadMass[l];
-            }
+            // the pins' targets reached and the loads' forces over the step (shared with the fused step)
+            EndStep(hostDeltaTime, g);
 
             return new StepReport
             {
@@ -536,13 +519,7 @@ namespace HookeRope.Solver
                     if (i > 0 && !chain.Broken[i - 1])
                         force -= new Float3(chain.DirX[i - 1], chain.DirY[i - 1], chain.DirZ[i - 1]) * chain.Tension[i - 1];
                 }
-                pinForce[p] = force;
-                if (force.Length > pinBreakForce[p])
-                {
-                    pinBroken[p] = true;
-                    pinForce[p] = Float3.Zero;
-                    released = true;
-                }
+                if (SetPinForce(p, force)) released = true;
             }
             if (released) RefreshKinematic();
         }

@@ -27,6 +27,7 @@ namespace HookeRope.Solver
         private ConstraintSolverKind solver = RopeParameters.Solver.Default;
         private TensionModel tension = RopeParameters.TensionModel.Default;
         private TimeIntegrator integrator = DefaultIntegrator;
+        private GaussSeidelKernel gaussSeidelKernel = RopeParameters.GaussSeidelKernel.Default;
         private float viscousDrag = RopeParameters.ViscousDrag.Default;
         private float dragCoefficient = RopeParameters.DragCoefficient.Default;
         private float skinFriction = RopeParameters.SkinFriction.Default;
@@ -112,6 +113,21 @@ namespace HookeRope.Solver
         {
             get => integrator;
             set { CheckChoice((int)value, (int)TimeIntegrator.BackwardEuler, (int)TimeIntegrator.Bdf2, nameof(Integrator)); integrator = value; Version++; }
+        }
+
+        /// <summary>
+        /// The Gauss–Seidel kernel (<see cref="RopeParameters.GaussSeidelKernel"/>; read only when <see cref="Solver"/> is
+        /// <see cref="ConstraintSolverKind.GaussSeidel"/>): <see cref="Solver.GaussSeidelKernel.Precise"/> (default, every
+        /// result as before) or the opt-in <see cref="Solver.GaussSeidelKernel.FusedSingle"/>, one single-precision pass
+        /// per substep, which runs only for a rope with <see cref="Integrator"/> = <see cref="TimeIntegrator.BackwardEuler"/>,
+        /// no colliders, no drag (<see cref="HasDrag"/> false), no compliant pins and the elastic material without an
+        /// energy absorber; any other rope runs the precise kernel. An unknown value throws an
+        /// <see cref="ArgumentException"/> naming the property and changes nothing.
+        /// </summary>
+        public GaussSeidelKernel GaussSeidelKernel
+        {
+            get => gaussSeidelKernel;
+            set { CheckChoice((int)value, (int)GaussSeidelKernel.Precise, (int)GaussSeidelKernel.FusedSingle, nameof(GaussSeidelKernel)); gaussSeidelKernel = value; Version++; }
         }
 
         /// <summary>

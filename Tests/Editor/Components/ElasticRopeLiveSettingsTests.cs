@@ -193,6 +193,7 @@ namespace HookeRope.Tests.Components
         [TestCase("m_Iterations", 3, true)]
         [TestCase("m_TensionModel", 1, true)]
         [TestCase("m_Integrator", 1 - (int)RopeParameters.Integrator.Default, true)]   // the other integrator
+        [TestCase("m_GaussSeidelKernel", 1, true)]
         [TestCase("m_Gravity", -5f, true)]
         [TestCase("m_ViscousDrag", 0.3f, true)]
         [TestCase("m_DragCoefficient", 1.2f, true)]

@@ -18,6 +18,8 @@ namespace HookeRope.Tests.Lint
             // Solver
             "HookeRope.Solver.Rope", "HookeRope.Solver.RopeSettings", "HookeRope.Solver.StepReport", "HookeRope.Solver.RopeBreakEvent",
             "HookeRope.Solver.ColliderShape", "HookeRope.Solver.ColliderKind", "HookeRope.Solver.ConstraintSolverKind", "HookeRope.Solver.TensionModel", "HookeRope.Solver.TimeIntegrator",
+            // the opt-in fused single-precision Gauss–Seidel kernel (issue 18 item 1)
+            "HookeRope.Solver.GaussSeidelKernel",
             // Material law (issue 15): the model, its quasi-static curve (inspector preview, lab plot), the fall-arrest limits the read-outs judge by
             "HookeRope.Solver.MaterialModel", "HookeRope.Solver.ForceElongationCurve", "HookeRope.FallArrestLimits",
             // Radius model (read-only queries) and its analytic formulas

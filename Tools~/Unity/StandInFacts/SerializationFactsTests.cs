@@ -52,7 +52,7 @@ namespace HookeRope.StandIn.Facts
                 "SpeedInAwake", "OnValidateCalls",
             }));
             Assert.That(SerializedLayout.Of(typeof(ProbeEnd)).Members.Select(m => m.Name), Is.EqualTo(new[] { "point", "m_Weight" }));
-            Assert.That(SerializedLayout.Of(typeof(ElasticRope)).Members.Count, Is.EqualTo(46), "33 + the 8 fields of the material law and the 5 of the drag (issue 15)");
+            Assert.That(SerializedLayout.Of(typeof(ElasticRope)).Members.Count, Is.EqualTo(47), "33 + the 8 fields of the material law and the 5 of the drag (issue 15) + the Gauss–Seidel kernel (issue 18)");
         }
 
         // ---- Object.Instantiate ---------------------------------------------------------------------------------
