@@ -15,8 +15,9 @@ namespace HookeRope.Bench
     /// flagging rises over 10 %. The instruction figures come from the file Tools~/Kernels/goal-count.sh writes
     /// (<see cref="GoalCounts"/>; <c>--instructions</c> runs the script first, 2–4 minutes; <c>--counts</c> names
     /// another file); <c>--match</c> keeps the rows whose name contains TEXT (e.g. "goal"); <c>--save</c> stores the
-    /// rows as the new baseline. <c>frames R S W N</c> steps the goal scene N
-    /// frames and exits.
+    /// rows as the new baseline. Without <c>--match</c> it ends with the kernel figures of issue 18 items 1 and 2 against
+    /// the issue's (<see cref="KernelFigures"/>; their instructions from kernel-count.sh's file next to the goal count's,
+    /// which <c>--instructions</c> also runs). <c>frames R S W N</c> steps the goal scene N frames and exits.
     /// </summary>
     internal static class GoalCommand
     {
@@ -31,7 +32,11 @@ namespace HookeRope.Bench
             string baselinePath = Baseline.PathInRepository(root);
             var stored = Baseline.Load(baselinePath);
             string countsPath = countsAt >= 0 && countsAt + 1 < args.Length ? args[countsAt + 1] : GoalCounts.DefaultPath();
-            if (instructions) RunCountScript(root, countsPath);
+            if (instructions)
+            {
+                RunCountScript(root, "goal-count.sh", countsPath, "100");
+                RunCountScript(root, "kernel-count.sh", countsPath);
+            }
             GoalCounts counts = CurrentCounts(root, countsPath);
             Console.WriteLine($"HookeRope bench · goal  {Environment.ProcessorCount} logical processors, load average {GoalBench.LoadAverage().ToString("F2", c)}, " +
                               $"{System.Runtime.InteropServices.RuntimeInformation.FrameworkDescription}");
@@ -75,6 +80,7 @@ namespace HookeRope.Bench
                 Console.WriteLine(string.Format(c, "instructions ({0}, 1 worker, counted at {1}): {2:F0} per frame = step {3:F0} per segment-substep + mesh {4:F1} per vertex; {5:F0} per segment-substep in all",
                     one.InstructionSource, counts.Commit, one.InstructionsPerFrame, one.StepInstructionsPerUnit, one.MeshInstructionsPerVertex, one.InstructionsPerUnit));
             Console.WriteLine("wall-clock rows are medians on whatever load the machine has (see 'load'); compare instruction counts for ratios.");
+            if (match == null) KernelFigures.Print(root, Path.Combine(Path.GetDirectoryName(Path.GetFullPath(countsPath)), "kernel-count.txt"), quick, one);
             if (save)
             {
                 Baseline.Save(baselinePath, rows);
@@ -103,12 +109,12 @@ namespace HookeRope.Bench
             return counts;
         }
 
-        /// <summary>Runs Tools~/Kernels/goal-count.sh for the goal's 100 ropes, writing <paramref name="path"/>'s directory (its KERNELS_OUT).</summary>
-        private static void RunCountScript(string root, string path)
+        /// <summary>Runs Tools~/Kernels/<paramref name="script"/> with <paramref name="arguments"/>, writing <paramref name="path"/>'s directory (its KERNELS_OUT).</summary>
+        private static void RunCountScript(string root, string script, string path, params string[] arguments)
         {
             var info = new ProcessStartInfo("bash") { UseShellExecute = false };
-            info.ArgumentList.Add(Path.Combine(root, "Tools~", "Kernels", "goal-count.sh"));
-            info.ArgumentList.Add("100");
+            info.ArgumentList.Add(Path.Combine(root, "Tools~", "Kernels", script));
+            foreach (string argument in arguments) info.ArgumentList.Add(argument);
             info.Environment["KERNELS_OUT"] = Path.GetDirectoryName(Path.GetFullPath(path));
             using (var process = Process.Start(info)) process.WaitForExit();
         }

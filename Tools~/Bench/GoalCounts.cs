@@ -51,6 +51,17 @@ namespace HookeRope.Bench
         /// <summary>The counts in <paramref name="path"/>, or null when the file is missing or incomplete.</summary>
         public static GoalCounts Load(string path)
         {
+            var values = ReadCountFile(path, "ropes", "segments", "window", "instructions_per_frame",
+                "instructions_per_unit", "step_instructions_per_unit", "mesh_instructions_per_vertex");
+            return values == null ? null : new GoalCounts(values);
+        }
+
+        /// <summary>
+        /// The key=value lines of a count file the Kernels scripts write (goal-count.sh, kernel-count.sh), or null when the
+        /// file is missing or lacks the provenance keys (commit, code, changes, isa) or any of <paramref name="keys"/>.
+        /// </summary>
+        public static Dictionary<string, string> ReadCountFile(string path, params string[] keys)
+        {
             if (!File.Exists(path)) return null;
             var values = new Dictionary<string, string>();
             foreach (string line in File.ReadAllLines(path))
@@ -58,10 +69,11 @@ namespace HookeRope.Bench
                 int eq = line.IndexOf('=');
                 if (eq > 0) values[line.Substring(0, eq)] = line.Substring(eq + 1).Trim();
             }
-            foreach (string key in new[] { "commit", "code", "changes", "isa", "ropes", "segments", "window", "instructions_per_frame",
-                         "instructions_per_unit", "step_instructions_per_unit", "mesh_instructions_per_vertex" })
+            foreach (string key in new[] { "commit", "code", "changes", "isa" })
                 if (!values.ContainsKey(key)) return null;
-            return new GoalCounts(values);
+            foreach (string key in keys)
+                if (!values.ContainsKey(key)) return null;
+            return values;
         }
 
         /// <summary>Writes the counts onto <paramref name="row"/> when it is the counted configuration (any worker count).</summary>

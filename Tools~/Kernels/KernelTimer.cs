@@ -43,14 +43,14 @@ namespace HookeRope.Kernels
         }
 
         /// <summary>A rope after <see cref="SettleSteps"/> host steps.</summary>
-        private static Rope Settled(Rope rope)
+        internal static Rope Settled(Rope rope)
         {
             for (int i = 0; i < SettleSteps; i++) rope.Step(KernelScene.HostStep);
             return rope;
         }
 
         /// <summary>What the timed steps of one rope cost and did.</summary>
-        private struct Timing
+        internal struct Timing
         {
             /// <summary>Best ns per host step.</summary>
             public double StepNs;
@@ -68,7 +68,7 @@ namespace HookeRope.Kernels
         }
 
         /// <summary>Best ns per host step over rounds of a fixed work size, with the solve counts of every timed step.</summary>
-        private static Timing Time(Rope rope, int rounds)
+        internal static Timing Time(Rope rope, int rounds)
         {
             int segments = rope.SegmentCount, substeps = rope.Settings.Substeps, iterations = rope.Settings.Iterations;
             int steps = Math.Max(4, 400000 / (segments * substeps * iterations));

@@ -15,8 +15,11 @@ scene="${1:?scene name}"; short="${2:-20}"; long="${3:-200}"; annotate="${4:-}"
 out="${KERNELS_OUT:-/tmp/hookerope-kernels-$(id -u)}"
 isa=()
 if [ -n "${KERNELS_ISA:-}" ]; then isa=("-p:IlcInstructionSet=$KERNELS_ISA"); fi
-dotnet publish "$here/HookeRope.Kernels.csproj" -c Release -r linux-x64 -o "$out/publish" -nologo -v quiet "${isa[@]}" >/dev/null
-objcopy --strip-debug "$out/publish/HookeRope.Kernels" "$out/probe"
+# KERNELS_REUSE=1 counts with the probe an earlier call left in $KERNELS_OUT (kernel-count.sh: one publish for its scenes)
+if [ "${KERNELS_REUSE:-}" != 1 ] || [ ! -x "$out/probe" ]; then
+  dotnet publish "$here/HookeRope.Kernels.csproj" -c Release -r linux-x64 -o "$out/publish" -nologo -v quiet "${isa[@]}" >/dev/null
+  objcopy --strip-debug "$out/publish/HookeRope.Kernels" "$out/probe"
+fi
 count() {
   valgrind --tool=callgrind --callgrind-out-file="$out/cg.$1" "$out/probe" run "$scene" "$1" 2>&1 >/dev/null | sed -n 's/.*Collected : \([0-9]*\).*/\1/p'
 }
