@@ -317,7 +317,7 @@ namespace HookeRope.Geometry
             return anyThin;
         }
 
-        /// <summary>Tests only: every build runs the whole of the ring limits (the backward cone pass, the strip-normal marks), where a cheap test would have skipped them.</summary>
+        /// <summary>Tests only: every build runs the whole of the ring limits (the backward cone pass, the strip-normal marks, the frame loop with its fold repair at every ring instead of the two passes of <see cref="FramesClearOfFolds"/>), where a cheap test would have skipped them.</summary>
         internal bool ForceFullLimits { get; set; }
 
         /// <summary>Per ring: its normals are drawn from its two strips (<see cref="WriteRingOnStrips"/>), not the tube's own formula.</summary>
