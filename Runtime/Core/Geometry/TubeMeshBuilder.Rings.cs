@@ -60,22 +60,24 @@ namespace HookeRope.Geometry
         /// </summary>
         private void ComputeCenters(int a, int b, int first, int last, ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z)
         {
-            ReadOnlySpan<int> ringSegments = layout.RingSegments;
-            ReadOnlySpan<float> ringFractions = layout.RingFractions;
-            Span<Float3> centre = centers;
-            Span<float> spacing = spacing2;
-            ReadOnlySpan<float> radius = ringRadii;
+            // spans of exactly the piece's rings, indexed by i = k − first (the loop's bound is their length)
+            int count = last - first + 1;
+            Span<Float3> centre = new Span<Float3>(centers, first, count);
+            ReadOnlySpan<int> ringSegments = layout.RingSegments.Slice(first, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> ringFractions = layout.RingFractions.Slice(first, count).Slice(0, centre.Length);
+            Span<float> spacing = new Span<float>(spacing2, first, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> radius = new ReadOnlySpan<float>(ringRadii, first, count).Slice(0, centre.Length);
             float ox = frameOrigin.X, oy = frameOrigin.Y, oz = frameOrigin.Z;
             // the control points of the segment the rings are in (the rings of a segment are consecutive)
             int held = -1;
             Vector4 p0 = default, p1 = default, p2 = default, p3 = default;
             Float3 previous = Float3.Zero;
-            for (int k = first; k <= last; k++)
+            for (int i = 0; i < centre.Length; i++)
             {
-                int j = ringSegments[k];
-                float t = ringFractions[k];
+                int j = ringSegments[i];
+                float t = ringFractions[i];
                 float cx, cy, cz;
-                if (k == last)
+                if (i == centre.Length - 1)
                 {
                     cx = x[b] - ox; cy = y[b] - oy; cz = z[b] - oz;
                 }
@@ -107,27 +109,27 @@ namespace HookeRope.Geometry
                 }
                 if (!(float.IsFinite(cx) && float.IsFinite(cy) && float.IsFinite(cz)))
                 {
-                    Float3 fallback = k > first ? previous : Float3.Zero;
+                    Float3 fallback = i > 0 ? previous : Float3.Zero;
                     cx = fallback.X; cy = fallback.Y; cz = fallback.Z;
                 }
-                spacing[k] = float.PositiveInfinity;
-                if (k > first)
+                spacing[i] = float.PositiveInfinity;
+                if (i > 0)
                 {
                     // a ring closer than PushDistance·r to the previous one is pushed forward (no zero-area triangles)
                     float dx = cx - previous.X, dy = cy - previous.Y, dz = cz - previous.Z;
-                    float minimum = PushDistance * radius[k] + 1e-7f;
+                    float minimum = PushDistance * radius[i] + 1e-7f;
                     float gap2 = dx * dx + dy * dy + dz * dz;
-                    spacing[k] = gap2;
+                    spacing[i] = gap2;
                     if (gap2 < minimum * minimum)
                     {
-                        spacing[k] = float.NaN; // the centre now depends on the radius: no radius-only rebuild
-                        PushDirection(a, b, k > first + 1, previous, k > first + 1 ? centre[k - 2] : previous, x, y, z,
+                        spacing[i] = float.NaN; // the centre now depends on the radius: no radius-only rebuild
+                        PushDirection(a, b, i > 1, previous, i > 1 ? centre[i - 2] : previous, x, y, z,
                             out float ux, out float uy, out float uz);
                         cx = previous.X + ux * minimum; cy = previous.Y + uy * minimum; cz = previous.Z + uz * minimum;
                     }
                 }
                 previous = new Float3(cx, cy, cz);
-                centre[k] = previous;
+                centre[i] = previous;
             }
         }
 
@@ -263,21 +265,24 @@ namespace HookeRope.Geometry
         /// </summary>
         private void ComputeSlopes(int first, int last, bool distancesKept)
         {
-            ReadOnlySpan<Float3> c = centers;
-            ReadOnlySpan<float> r = ringRadii;
-            ReadOnlySpan<bool> tip = foldTip;
-            Span<float> distance = slopeDistance, slope = slopes;
-            for (int k = first; k <= last; k++)
+            // spans of exactly the piece's rings, indexed by i = k − first
+            int count = last - first + 1;
+            ReadOnlySpan<Float3> c = new ReadOnlySpan<Float3>(centers, first, count);
+            ReadOnlySpan<float> r = new ReadOnlySpan<float>(ringRadii, first, count).Slice(0, c.Length);
+            ReadOnlySpan<bool> tip = new ReadOnlySpan<bool>(foldTip, first, count).Slice(0, c.Length);
+            Span<float> distance = new Span<float>(slopeDistance, first, count).Slice(0, c.Length);
+            Span<float> slope = new Span<float>(slopes, first, count).Slice(0, c.Length);
+            for (int i = 0; i < c.Length; i++)
             {
-                int ahead = k < last ? k + 1 : k;
-                int behind = k > first ? k - 1 : k;
+                int ahead = i < c.Length - 1 ? i + 1 : i;
+                int behind = i > 0 ? i - 1 : i;
                 if (!distancesKept)
                 {
                     Float3 ca = c[ahead], cb = c[behind];
                     float dx = ca.X - cb.X, dy = ca.Y - cb.Y, dz = ca.Z - cb.Z;
-                    distance[k] = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
+                    distance[i] = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
                 }
-                slope[k] = tip[k] ? 0f : Slope(r[ahead], r[behind], distance[k]);
+                slope[i] = tip[i] ? 0f : Slope(r[ahead], r[behind], distance[i]);
             }
         }
 
@@ -352,9 +357,15 @@ namespace HookeRope.Geometry
                 var negativeZero = new Vector4(-0f);
                 half[21] = o0; half[20] = negativeZero; half[19] = negativeZero; half[18] = o0;
             }
-            ReadOnlySpan<Float3> centre = centers, tangent = tangents, normal = normals;
-            ReadOnlySpan<float> radius = ringRadii, slopeOf = slopes, vOf = ringV;
-            for (int k = first, at = 0; k <= last; k++, at += stride)
+            // the rings' values from spans of exactly the rings (the loop's bound is their length)
+            int count = last - first + 1;
+            ReadOnlySpan<Float3> centre = new ReadOnlySpan<Float3>(centers, first, count);
+            ReadOnlySpan<Float3> tangent = new ReadOnlySpan<Float3>(tangents, first, count).Slice(0, centre.Length);
+            ReadOnlySpan<Float3> normal = new ReadOnlySpan<Float3>(normals, first, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> radius = new ReadOnlySpan<float>(ringRadii, first, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> slopeOf = new ReadOnlySpan<float>(slopes, first, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> vOf = new ReadOnlySpan<float>(ringV, first, count).Slice(0, centre.Length);
+            for (int k = 0, at = 0; k < centre.Length; k++, at += stride)
             {
                 Float3 c = centre[k], t = tangent[k], nrm = normal[k];
                 float nx = nrm.X, ny = nrm.Y, nz = nrm.Z;
@@ -557,8 +568,9 @@ namespace HookeRope.Geometry
         private void AddRingsBounds(int first, int last, ref Bounds bounds)
         {
             int count = last - first + 1;
-            ReadOnlySpan<Float3> centre = new ReadOnlySpan<Float3>(centers, first, count), tangent = new ReadOnlySpan<Float3>(tangents, first, count);
-            ReadOnlySpan<float> radius = new ReadOnlySpan<float>(ringRadii, first, count);
+            ReadOnlySpan<Float3> centre = new ReadOnlySpan<Float3>(centers, first, count);
+            ReadOnlySpan<Float3> tangent = new ReadOnlySpan<Float3>(tangents, first, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> radius = new ReadOnlySpan<float>(ringRadii, first, count).Slice(0, centre.Length);
             float minX = bounds.Min.X, minY = bounds.Min.Y, minZ = bounds.Min.Z;
             float maxX = bounds.Max.X, maxY = bounds.Max.Y, maxZ = bounds.Max.Z;
             for (int i = 0; i < centre.Length; i++)

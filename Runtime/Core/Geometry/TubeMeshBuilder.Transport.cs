@@ -249,7 +249,7 @@ namespace HookeRope.Geometry
         private void TransportNormals(int a, int first, int count)
         {
             ReadOnlySpan<Float3> tangent = new ReadOnlySpan<Float3>(tangents, first, count);
-            Span<Float3> normal = new Span<Float3>(normals, first, count);
+            Span<Float3> normal = new Span<Float3>(normals, first, count).Slice(0, tangent.Length);
             Float3 t0 = tangent[0];
             Float3 n = particleNormal[a];
             if (!(particleFrameValid[a] && particleTangent[a].Equals(t0)))
