@@ -568,6 +568,9 @@ namespace HookeRope.Geometry
         private void AddRingsBounds(int first, int last, ref Bounds bounds)
         {
             int count = last - first + 1;
+            // a piece whose frame pass ran on lanes: its centres and tangents are in the lane scratch
+            if (lanePieceFirst == first && lanePieceCount == count && VectorPath.Enabled && AddRingsBoundsOnLanes(first, count, ref bounds))
+                return;
             ReadOnlySpan<Float3> centre = new ReadOnlySpan<Float3>(centers, first, count);
             ReadOnlySpan<Float3> tangent = new ReadOnlySpan<Float3>(tangents, first, count).Slice(0, centre.Length);
             ReadOnlySpan<float> radius = new ReadOnlySpan<float>(ringRadii, first, count).Slice(0, centre.Length);

@@ -33,9 +33,12 @@ namespace HookeRope.Geometry
             Span<float> distance = new Span<float>(slopeDistance, first, count);
             Span<float> cap = new Span<float>(capSquared, first, count), gap = new Span<float>(gapSquared, first, count);
             Span<bool> tip = new Span<bool>(foldTip, first, count), skew = new Span<bool>(skewed, first, count);
+            lanePieceFirst = -1;
             if (VectorPath.Enabled && count >= Vector<float>.Count && FramePassOnLanes(first, count))
             {
                 FramePiecesOnLanes++;
+                lanePieceFirst = first;
+                lanePieceCount = count;
                 TransportNormals(a, first, count);
                 return true;
             }
@@ -102,6 +105,63 @@ namespace HookeRope.Geometry
         /// <summary>Pieces whose first frame pass ran on lanes (<see cref="FramePassOnLanes"/>), since construction: for tests.</summary>
         internal int FramePiecesOnLanes { get; private set; }
 
+        /// <summary>The piece whose centres and tangents the lane scratch holds (first ring, −1: none; ring count), from the last <see cref="FramePassOnLanes"/>.</summary>
+        private int lanePieceFirst = -1, lanePieceCount;
+
+        /// <summary>
+        /// <see cref="AddRingsBounds"/> on lanes for the piece the lane scratch holds (its centres and final tangents
+        /// from <see cref="FramePassOnLanes"/>, the drawn radii from the ring array): each lane with the scalar's
+        /// operations (Vector4.Max(0, q) as its select: +0 where q ≤ 0, q otherwise and for NaN), a running corner per
+        /// lane over its rings, then the lanes into the corners in order. The minimum and maximum of a set do not depend
+        /// on the order but for the sign of a zero (−0 and +0 compare equal, the first seen stays): a corner that comes
+        /// out zero returns false (nothing written) and the scalar loop takes the piece.
+        /// </summary>
+        private bool AddRingsBoundsOnLanes(int first, int count, ref Bounds bounds)
+        {
+            int lanes = Vector<float>.Count;
+            Span<float> radius = laneRadius;
+            new ReadOnlySpan<float>(ringRadii, first, count).CopyTo(radius);
+            radius.Slice(count, lanes).Clear();
+            Span<float> x = laneX, y = laneY, z = laneZ, tx = laneTX, ty = laneTY, tz = laneTZ;
+            var countLanes = new Vector<int>(count);
+            var zero = Vector<float>.Zero;
+            var one = new Vector<float>(1f);
+            var grow = new Vector<float>(1.000001f);
+            Vector<float> minX = new Vector<float>(bounds.Min.X), minY = new Vector<float>(bounds.Min.Y), minZ = new Vector<float>(bounds.Min.Z);
+            Vector<float> maxX = new Vector<float>(bounds.Max.X), maxY = new Vector<float>(bounds.Max.Y), maxZ = new Vector<float>(bounds.Max.Z);
+            for (int i = 0; i < count; i += lanes)
+            {
+                Vector<int> inside = Vector.LessThan(laneIndex + new Vector<int>(i), countLanes);
+                Vector<float> r = Lane(radius, i);
+                Vector<float> qx = Lane(tx, i), qy = Lane(ty, i), qz = Lane(tz, i);
+                qx = one - qx * qx; qy = one - qy * qy; qz = one - qz * qz;
+                qx = Vector.ConditionalSelect(Vector.LessThanOrEqual(qx, zero), zero, qx);
+                qy = Vector.ConditionalSelect(Vector.LessThanOrEqual(qy, zero), zero, qy);
+                qz = Vector.ConditionalSelect(Vector.LessThanOrEqual(qz, zero), zero, qz);
+                Vector<float> ex = r * Vector.SquareRoot(qx) * grow, ey = r * Vector.SquareRoot(qy) * grow, ez = r * Vector.SquareRoot(qz) * grow;
+                // ring i's centre is scratch slot i + 1
+                Vector<float> cx = Lane(x, i + 1), cy = Lane(y, i + 1), cz = Lane(z, i + 1);
+                Vector<float> lx = cx - ex, ly = cy - ey, lz = cz - ez, hx = cx + ex, hy = cy + ey, hz = cz + ez;
+                minX = Vector.ConditionalSelect(inside & Vector.LessThan(lx, minX), lx, minX);
+                minY = Vector.ConditionalSelect(inside & Vector.LessThan(ly, minY), ly, minY);
+                minZ = Vector.ConditionalSelect(inside & Vector.LessThan(lz, minZ), lz, minZ);
+                maxX = Vector.ConditionalSelect(inside & Vector.GreaterThan(hx, maxX), hx, maxX);
+                maxY = Vector.ConditionalSelect(inside & Vector.GreaterThan(hy, maxY), hy, maxY);
+                maxZ = Vector.ConditionalSelect(inside & Vector.GreaterThan(hz, maxZ), hz, maxZ);
+            }
+            float loX = bounds.Min.X, loY = bounds.Min.Y, loZ = bounds.Min.Z, hiX = bounds.Max.X, hiY = bounds.Max.Y, hiZ = bounds.Max.Z;
+            for (int j = 0; j < lanes; j++)
+            {
+                float ax = minX[j], ay = minY[j], az = minZ[j], bx = maxX[j], by = maxY[j], bz = maxZ[j];
+                loX = ax < loX ? ax : loX; loY = ay < loY ? ay : loY; loZ = az < loZ ? az : loZ;
+                hiX = bx > hiX ? bx : hiX; hiY = by > hiY ? by : hiY; hiZ = bz > hiZ ? bz : hiZ;
+            }
+            if (loX == 0f || loY == 0f || loZ == 0f || hiX == 0f || hiY == 0f || hiZ == 0f) return false;
+            bounds.Min = new Float3(loX, loY, loZ);
+            bounds.Max = new Float3(hiX, hiY, hiZ);
+            return true;
+        }
+
         /// <summary>Lane i holds i (which lanes of a run lie inside the piece).</summary>
         private readonly Vector<int> laneIndex = LaneIndex();
 
@@ -149,7 +209,7 @@ namespace HookeRope.Geometry
             for (int i = count + 1; i <= count + lanes; i++) { x[i] = x[count]; y[i] = y[count]; z[i] = z[count]; }
             Span<float> radius = laneRadius;
             new ReadOnlySpan<float>(ringRadii, first, count).CopyTo(radius);
-            radius.Slice(count).Clear();
+            radius.Slice(count, lanes).Clear();
             Span<float> tx = laneTX, ty = laneTY, tz = laneTZ, distance = laneDistance, gap = laneGap, cap = laneCap, previous = lanePrevious;
             var countLanes = new Vector<int>(count);
             Vector<int> failed = Vector<int>.Zero;

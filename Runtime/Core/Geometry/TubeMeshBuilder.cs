@@ -610,6 +610,7 @@ namespace HookeRope.Geometry
             // which rings must be written: all of them after new positions, the changed ones after new radii only
             // a full build of a piece no ring of which takes strip normals: every ring dirty and drawn by WriteRing
             bool plain = false;
+            lanePieceFirst = -1;
             if (!radiiOnly)
             {
                 int count = last - first + 1;
