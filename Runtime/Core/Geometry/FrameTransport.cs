@@ -16,9 +16,7 @@ namespace HookeRope.Geometry
         /// </summary>
         public static Float3 Transport(Float3 normal, Float3 fromTangent, Float3 toTangent)
         {
-            float x = normal.X, y = normal.Y, z = normal.Z;
-            Transport(ref x, ref y, ref z, fromTangent.X, fromTangent.Y, fromTangent.Z, toTangent.X, toTangent.Y, toTangent.Z);
-            return new Float3(x, y, z);
+            return Transported(normal.X, normal.Y, normal.Z, fromTangent.X, fromTangent.Y, fromTangent.Z, toTangent.X, toTangent.Y, toTangent.Z);
         }
 
         /// <summary>
@@ -27,14 +25,24 @@ namespace HookeRope.Geometry
         /// </summary>
         public static Float3 Perpendicular(Float3 candidate, Float3 tangent)
         {
-            float x = candidate.X, y = candidate.Y, z = candidate.Z;
-            Perpendicular(ref x, ref y, ref z, tangent.X, tangent.Y, tangent.Z);
-            return new Float3(x, y, z);
+            return Perpendicular(candidate.X, candidate.Y, candidate.Z, tangent.X, tangent.Y, tangent.Z);
         }
 
         /// <summary>Scalar <see cref="Transport(Float3, Float3, Float3)"/>: (nx, ny, nz) is transported in place from tangent f to tangent t.</summary>
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         public static void Transport(ref float nx, ref float ny, ref float nz, float fx, float fy, float fz, float tx, float ty, float tz)
+        {
+            Float3 m = Transported(nx, ny, nz, fx, fy, fz, tx, ty, tz);
+            nx = m.X; ny = m.Y; nz = m.Z;
+        }
+
+        /// <summary>
+        /// <see cref="Transport(ref float, ref float, ref float, float, float, float, float, float, float)"/> by value: normal
+        /// (nx, ny, nz) transported from tangent f to tangent t. A loop that carries the normal in locals calls this form,
+        /// whose arguments are values (a local passed by reference lives on the stack, not in a register).
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        public static Float3 Transported(float nx, float ny, float nz, float fx, float fy, float fz, float tx, float ty, float tz)
         {
             float c = fx * tx + fy * ty + fz * tz;
             if (c > -0.9999f)
@@ -47,12 +55,20 @@ namespace HookeRope.Geometry
                 float mz = nz * c + (kx * ny - ky * nx) + kz * s;
                 nx = mx; ny = my; nz = mz;
             }
-            Perpendicular(ref nx, ref ny, ref nz, tx, ty, tz);
+            return Perpendicular(nx, ny, nz, tx, ty, tz);
         }
 
         /// <summary>Scalar <see cref="Perpendicular(Float3, Float3)"/>: (x, y, z) made unit and perpendicular to unit tangent t in place.</summary>
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         public static void Perpendicular(ref float x, ref float y, ref float z, float tx, float ty, float tz)
+        {
+            Float3 p = Perpendicular(x, y, z, tx, ty, tz);
+            x = p.X; y = p.Y; z = p.Z;
+        }
+
+        /// <summary>The value form of <see cref="Perpendicular(ref float, ref float, ref float, float, float, float)"/>: (x, y, z) made unit and perpendicular to unit tangent t.</summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        public static Float3 Perpendicular(float x, float y, float z, float tx, float ty, float tz)
         {
             float d = x * tx + y * ty + z * tz;
             float px = x - tx * d, py = y - ty * d, pz = z - tz * d;
@@ -60,15 +76,14 @@ namespace HookeRope.Geometry
             if (lengthSquared > 1e-8f && float.IsFinite(lengthSquared))
             {
                 float inverse = 1f / System.MathF.Sqrt(lengthSquared);
-                x = px * inverse; y = py * inverse; z = pz * inverse;
-                return;
+                return new Float3(px * inverse, py * inverse, pz * inverse);
             }
-            AxisPerpendicular(out x, out y, out z, tx, ty, tz);
+            return AxisPerpendicular(tx, ty, tz);
         }
 
-        /// <summary><see cref="Perpendicular(ref float, ref float, ref float, float, float, float)"/>'s fallback, out of line (the callers' loops rarely need it): the least-aligned axis made perpendicular to t.</summary>
+        /// <summary><see cref="Perpendicular(float, float, float, float, float, float)"/>'s fallback, out of line (the callers' loops rarely need it): the least-aligned axis made perpendicular to t.</summary>
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.NoInlining)]
-        private static void AxisPerpendicular(out float x, out float y, out float z, float tx, float ty, float tz)
+        private static Float3 AxisPerpendicular(float tx, float ty, float tz)
         {
             float ax = System.MathF.Abs(tx), ay = System.MathF.Abs(ty), az = System.MathF.Abs(tz);
             float qx = 0f, qy = 0f, qz = 0f;
@@ -79,12 +94,9 @@ namespace HookeRope.Geometry
             if (q2 > 1e-20f)
             {
                 float inverse = 1f / System.MathF.Sqrt(q2);
-                x = qx * inverse; y = qy * inverse; z = qz * inverse;
+                return new Float3(qx * inverse, qy * inverse, qz * inverse);
             }
-            else
-            {
-                x = 1f; y = 0f; z = 0f;
-            }
+            return new Float3(1f, 0f, 0f);
         }
     }
 }

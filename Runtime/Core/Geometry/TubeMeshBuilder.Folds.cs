@@ -272,40 +272,49 @@ namespace HookeRope.Geometry
         private bool LimitRadii(int first, int last, ReadOnlySpan<float> radii)
         {
             Span<float> drawn = drawnRadii;
-            ReadOnlySpan<float> cap = capSquared, gap = gapSquared;
-            ReadOnlySpan<bool> tip = foldTip;
             Span<bool> thin = thinned;
             const float slope2 = ConeSlope * ConeSlope;
             bool falls = false, anyThin = false;
-            float previous = 0f;
-            for (int k = first; k <= last; k++)
             {
-                float r = Clamped(radii[k]);
-                float cap2 = cap[k];
-                float d = r;
-                if (tip[k]) d = FoldRadius * r;
-                else if (r * r > cap2)
+                // the forward loop over spans of exactly the piece's rings, indexed by i = k − first
+                int count = last - first + 1;
+                ReadOnlySpan<float> given = radii.Slice(first, count);
+                ReadOnlySpan<float> cap = new ReadOnlySpan<float>(capSquared, first, count).Slice(0, given.Length);
+                ReadOnlySpan<float> gap = new ReadOnlySpan<float>(gapSquared, first, count).Slice(0, given.Length);
+                ReadOnlySpan<bool> tip = new ReadOnlySpan<bool>(foldTip, first, count).Slice(0, given.Length);
+                Span<float> drawnHere = drawn.Slice(first, count).Slice(0, given.Length);
+                Span<bool> thinHere = thin.Slice(first, count).Slice(0, given.Length);
+                float previous = 0f;
+                for (int i = 0; i < given.Length; i++)
                 {
-                    d = MathF.Sqrt(cap2);
-                    if (!(d >= FoldRadius * r)) d = FoldRadius * r;
+                    float r = Clamped(given[i]);
+                    float cap2 = cap[i];
+                    float d = r;
+                    if (tip[i]) d = FoldRadius * r;
+                    else if (r * r > cap2)
+                    {
+                        d = MathF.Sqrt(cap2);
+                        if (!(d >= FoldRadius * r)) d = FoldRadius * r;
+                    }
+                    if (i > 0)
+                    {
+                        float rise = d - previous;
+                        if (rise > 0f && rise * rise > slope2 * gap[i]) d = previous + ConeSlope * MathF.Sqrt(gap[i]);
+                        else if (rise < 0f && rise * rise > slope2 * gap[i]) falls = true;
+                    }
+                    drawnHere[i] = d;
+                    bool thinner = d != r;
+                    thinHere[i] = thinner;
+                    anyThin |= thinner;
+                    previous = d;
                 }
-                if (k > first)
-                {
-                    float rise = d - previous;
-                    if (rise > 0f && rise * rise > slope2 * gap[k]) d = previous + ConeSlope * MathF.Sqrt(gap[k]);
-                    else if (rise < 0f && rise * rise > slope2 * gap[k]) falls = true;
-                }
-                drawn[k] = d;
-                bool thinner = d != r;
-                thin[k] = thinner;
-                anyThin |= thinner;
-                previous = d;
             }
             if (!falls && !ForceFullLimits) return anyThin;
+            ReadOnlySpan<float> gapSquaredAll = gapSquared;
             for (int k = last - 1; k >= first; k--)
             {
                 float next = drawn[k + 1], rise = drawn[k] - next;
-                if (rise > 0f && rise * rise > slope2 * gap[k + 1]) drawn[k] = next + ConeSlope * MathF.Sqrt(gap[k + 1]);
+                if (rise > 0f && rise * rise > slope2 * gapSquaredAll[k + 1]) drawn[k] = next + ConeSlope * MathF.Sqrt(gapSquaredAll[k + 1]);
             }
             anyThin = false;
             for (int k = first; k <= last; k++)
@@ -317,7 +326,7 @@ namespace HookeRope.Geometry
             return anyThin;
         }
 
-        /// <summary>Tests only: every build runs the whole of the ring limits (the backward cone pass, the strip-normal marks), where a cheap test would have skipped them.</summary>
+        /// <summary>Tests only: every build runs the whole of the ring limits (the backward cone pass, the strip-normal marks, the frame loop with its fold repair at every ring instead of the two passes of <see cref="FramesClearOfFolds"/>), where a cheap test would have skipped them.</summary>
         internal bool ForceFullLimits { get; set; }
 
         /// <summary>Per ring: its normals are drawn from its two strips (<see cref="WriteRingOnStrips"/>), not the tube's own formula.</summary>

@@ -50,6 +50,7 @@ namespace HookeRope.Geometry
             Array.Resize(ref dirty, size);
             Array.Resize(ref lastRadii, size);
             EnsureFoldStorage(size);
+            EnsureLaneStorage(size);
         }
 
         /// <summary>
@@ -59,22 +60,24 @@ namespace HookeRope.Geometry
         /// </summary>
         private void ComputeCenters(int a, int b, int first, int last, ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z)
         {
-            ReadOnlySpan<int> ringSegments = layout.RingSegments;
-            ReadOnlySpan<float> ringFractions = layout.RingFractions;
-            Span<Float3> centre = centers;
-            Span<float> spacing = spacing2;
-            ReadOnlySpan<float> radius = ringRadii;
+            // spans of exactly the piece's rings, indexed by i = k − first (the loop's bound is their length)
+            int count = last - first + 1;
+            Span<Float3> centre = new Span<Float3>(centers, first, count);
+            ReadOnlySpan<int> ringSegments = layout.RingSegments.Slice(first, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> ringFractions = layout.RingFractions.Slice(first, count).Slice(0, centre.Length);
+            Span<float> spacing = new Span<float>(spacing2, first, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> radius = new ReadOnlySpan<float>(ringRadii, first, count).Slice(0, centre.Length);
             float ox = frameOrigin.X, oy = frameOrigin.Y, oz = frameOrigin.Z;
             // the control points of the segment the rings are in (the rings of a segment are consecutive)
             int held = -1;
             Vector4 p0 = default, p1 = default, p2 = default, p3 = default;
             Float3 previous = Float3.Zero;
-            for (int k = first; k <= last; k++)
+            for (int i = 0; i < centre.Length; i++)
             {
-                int j = ringSegments[k];
-                float t = ringFractions[k];
+                int j = ringSegments[i];
+                float t = ringFractions[i];
                 float cx, cy, cz;
-                if (k == last)
+                if (i == centre.Length - 1)
                 {
                     cx = x[b] - ox; cy = y[b] - oy; cz = z[b] - oz;
                 }
@@ -106,27 +109,27 @@ namespace HookeRope.Geometry
                 }
                 if (!(float.IsFinite(cx) && float.IsFinite(cy) && float.IsFinite(cz)))
                 {
-                    Float3 fallback = k > first ? previous : Float3.Zero;
+                    Float3 fallback = i > 0 ? previous : Float3.Zero;
                     cx = fallback.X; cy = fallback.Y; cz = fallback.Z;
                 }
-                spacing[k] = float.PositiveInfinity;
-                if (k > first)
+                spacing[i] = float.PositiveInfinity;
+                if (i > 0)
                 {
                     // a ring closer than PushDistance·r to the previous one is pushed forward (no zero-area triangles)
                     float dx = cx - previous.X, dy = cy - previous.Y, dz = cz - previous.Z;
-                    float minimum = PushDistance * radius[k] + 1e-7f;
+                    float minimum = PushDistance * radius[i] + 1e-7f;
                     float gap2 = dx * dx + dy * dy + dz * dz;
-                    spacing[k] = gap2;
+                    spacing[i] = gap2;
                     if (gap2 < minimum * minimum)
                     {
-                        spacing[k] = float.NaN; // the centre now depends on the radius: no radius-only rebuild
-                        PushDirection(a, b, k > first + 1, previous, k > first + 1 ? centre[k - 2] : previous, x, y, z,
+                        spacing[i] = float.NaN; // the centre now depends on the radius: no radius-only rebuild
+                        PushDirection(a, b, i > 1, previous, i > 1 ? centre[i - 2] : previous, x, y, z,
                             out float ux, out float uy, out float uz);
                         cx = previous.X + ux * minimum; cy = previous.Y + uy * minimum; cz = previous.Z + uz * minimum;
                     }
                 }
                 previous = new Float3(cx, cy, cz);
-                centre[k] = previous;
+                centre[i] = previous;
             }
         }
 
@@ -162,6 +165,12 @@ namespace HookeRope.Geometry
         /// </summary>
         private bool ComputeFrames(int a, int b, int first, int last, out bool anySkewed)
         {
+            // a piece without folds: the two passes (the same bits)
+            if (!ForceFullLimits && FramesClearOfFolds(a, first, last, out anySkewed))
+            {
+                KeepParticleFrames(a, b);
+                return true;
+            }
             // the ring arrays once (RepairFold writes centers[k] through the field: the same array)
             ReadOnlySpan<Float3> c = centers;
             Span<Float3> tangent = tangents, normal = normals;
@@ -217,13 +226,7 @@ namespace HookeRope.Geometry
                 normal[k] = new Float3(nx, ny, nz);
                 px = tx; py = ty; pz = tz;
             }
-            for (int j = a; j <= b; j++)
-            {
-                int k = layout.FirstRing(j);
-                particleNormal[j] = normals[k];
-                particleTangent[j] = tangents[k];
-                particleFrameValid[j] = true;
-            }
+            KeepParticleFrames(a, b);
             if (tips) LimitTipFans(first, last);
             anySkewed = skews;
             // a fold tip moved a centre after its neighbours' distances were taken: ComputeSlopes measures them again
@@ -262,21 +265,24 @@ namespace HookeRope.Geometry
         /// </summary>
         private void ComputeSlopes(int first, int last, bool distancesKept)
         {
-            ReadOnlySpan<Float3> c = centers;
-            ReadOnlySpan<float> r = ringRadii;
-            ReadOnlySpan<bool> tip = foldTip;
-            Span<float> distance = slopeDistance, slope = slopes;
-            for (int k = first; k <= last; k++)
+            // spans of exactly the piece's rings, indexed by i = k − first
+            int count = last - first + 1;
+            ReadOnlySpan<Float3> c = new ReadOnlySpan<Float3>(centers, first, count);
+            ReadOnlySpan<float> r = new ReadOnlySpan<float>(ringRadii, first, count).Slice(0, c.Length);
+            ReadOnlySpan<bool> tip = new ReadOnlySpan<bool>(foldTip, first, count).Slice(0, c.Length);
+            Span<float> distance = new Span<float>(slopeDistance, first, count).Slice(0, c.Length);
+            Span<float> slope = new Span<float>(slopes, first, count).Slice(0, c.Length);
+            for (int i = 0; i < c.Length; i++)
             {
-                int ahead = k < last ? k + 1 : k;
-                int behind = k > first ? k - 1 : k;
+                int ahead = i < c.Length - 1 ? i + 1 : i;
+                int behind = i > 0 ? i - 1 : i;
                 if (!distancesKept)
                 {
                     Float3 ca = c[ahead], cb = c[behind];
                     float dx = ca.X - cb.X, dy = ca.Y - cb.Y, dz = ca.Z - cb.Z;
-                    distance[k] = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
+                    distance[i] = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
                 }
-                slope[k] = tip[k] ? 0f : Slope(r[ahead], r[behind], distance[k]);
+                slope[i] = tip[i] ? 0f : Slope(r[ahead], r[behind], distance[i]);
             }
         }
 
@@ -326,79 +332,102 @@ namespace HookeRope.Geometry
         /// on, two vertices at a time are three 8-float vectors (<see cref="PairLanes"/>), each float with the same
         /// operations in the same order (<see cref="WritePairs"/>; the odd last vertex of an even side count is the seam).
         /// </summary>
-        private void WriteRing(int k, Span<TubeVertex> ring)
+        private void WriteRing(int k, Span<TubeVertex> ring) => WriteRings(k, k, ring);
+
+        /// <summary>
+        /// <see cref="WriteRing"/> for rings <paramref name="first"/> … <paramref name="last"/>, each written by the ring
+        /// kernel into the next radial + 1 vertices of <paramref name="rings"/> (one ring: at most radial + 1 of them). One
+        /// call per piece: the switch, the tables and the frame origin's lanes are read once, not once per ring.
+        /// </summary>
+        private void WriteRings(int first, int last, Span<TubeVertex> rings)
         {
             // read first: the switch is a static field, whose first read may call the runtime, which would push the
             // ring's coefficients out of registers
             bool wide = Vector<float>.Count == 8 && VectorPath.Enabled;
-            Float3 c = centers[k], t = tangents[k], nrm = normals[k];
-            float nx = nrm.X, ny = nrm.Y, nz = nrm.Z;
-            // binormal = t × n
-            float bx = t.Y * nz - t.Z * ny, by = t.Z * nx - t.X * nz, bz = t.X * ny - t.Y * nx;
-            float r = ringRadii[k];
-            float slope = slopes[k];
-            // the normal tilts for a varying radius: (e_r − slope·t)/sqrt(1 + slope²)
-            float inverse = 1f / MathF.Sqrt(1f + slope * slope);
-            float sx = t.X * slope, sy = t.Y * slope, sz = t.Z * slope;
-            // the radial offset first, then the centre, then the origin: (c + offset) + origin rounds monotonically in the
-            // offset, so the ring's bounds (c ± r·sqrt(1 − t²)·(1 + 1e-6), + origin) hold its vertices
-            var a0 = new Vector4(c.X, c.Y, c.Z, -(sx * inverse));
-            var o0 = new Vector4(frameOrigin.X, frameOrigin.Y, frameOrigin.Z, 0f);
-            var b0 = new Vector4(nx * r, ny * r, nz * r, nx * inverse);
-            var c0 = new Vector4(bx * r, by * r, bz * r, bx * inverse);
-            var a1 = new Vector4(-(sy * inverse), -(sz * inverse), 0f, 0f);
-            var b1 = new Vector4(ny * inverse, nz * inverse, bx, by);
-            var c1 = new Vector4(by * inverse, bz * inverse, -nx, -ny);
-            var a2 = new Vector4(0f, 0f, 0f, ringV[k]);
-            var b2 = new Vector4(bz, 0f, 0f, 0f);
-            var c2 = new Vector4(-nz, 0f, 0f, 0f);
             ReadOnlySpan<SideLanes> sides = sideLanes;
-            Span<VertexLanes> vertices = MemoryMarshal.Cast<TubeVertex, VertexLanes>(ring);
-            if (vertices.Length > sides.Length) vertices = vertices.Slice(0, sides.Length);
-            if (wide && vertices.Length >= 2)
+            int stride = first == last ? Math.Min(rings.Length, sides.Length) : sides.Length;
+            var o0 = new Vector4(frameOrigin.X, frameOrigin.Y, frameOrigin.Z, 0f);
+            // the wide kernel's coefficient vectors, two 4-float lanes each, through the builder's scratch (no
+            // allocation): the origin's (and −0's) once, the ring's per ring
+            Span<Vector<float>> coefficients = ringCoefficients;
+            Span<Vector4> half = MemoryMarshal.Cast<Vector<float>, Vector4>(coefficients);
+            ReadOnlySpan<PairLanes> pairs = pairLanes;
+            if (wide)
             {
-                // the wide kernel: vertices 2p and 2p + 1 are the 24 floats First Middle | Last First | Middle Last, three
-                // 8-float vectors, each ((B·cos + C·sin) + A) + O with B, C, A, O per ring in that lane pattern (O the frame
-                // origin on the position lanes and −0 elsewhere, which adds nothing; the third vector has no O) and cos, sin
-                // per pair of sides (PairLanes). The last lane's u moves into the cos table (1·u + 0·sin + −0 is u, as
-                // 0·cos + 0·sin + u is) and its other constants a2 + U are added here, as the loop below adds them per
-                // vertex (0 + 0, 0 + 1, v + 0).
-                var a2u = new Vector4(0f + 0f, 0f + 1f, -0f, ringV[k] + 0f);
-                var b2u = new Vector4(bz, 0f, 1f, 0f);
                 var negativeZero = new Vector4(-0f);
-                // the ring's coefficient vectors, two 4-float lanes each, through the builder's scratch (no allocation)
-                Span<Vector4> half = MemoryMarshal.Cast<Vector<float>, Vector4>(ringCoefficients);
                 half[21] = o0; half[20] = negativeZero; half[19] = negativeZero; half[18] = o0;
-                half[0] = b0; half[1] = b1; half[2] = b2u; half[3] = b0; half[4] = b1; half[5] = b2u;
-                half[6] = c0; half[7] = c1; half[8] = c2; half[9] = c0; half[10] = c1; half[11] = c2;
-                half[12] = a0; half[13] = a1; half[14] = a2u; half[15] = a0; half[16] = a1; half[17] = a2u;
-                WritePairs(vertices);
-                return;
             }
-            // one table entry and one vertex per side, read and written through refs: the loop runs over the vertices'
-            // span, so its index is range-checked only against the side table (once per side, not once per lane)
-            for (int i = 0; i < vertices.Length; i++)
+            // the rings' values from spans of exactly the rings (the loop's bound is their length)
+            int count = last - first + 1;
+            ReadOnlySpan<Float3> centre = new ReadOnlySpan<Float3>(centers, first, count);
+            ReadOnlySpan<Float3> tangent = new ReadOnlySpan<Float3>(tangents, first, count).Slice(0, centre.Length);
+            ReadOnlySpan<Float3> normal = new ReadOnlySpan<Float3>(normals, first, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> radius = new ReadOnlySpan<float>(ringRadii, first, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> slopeOf = new ReadOnlySpan<float>(slopes, first, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> vOf = new ReadOnlySpan<float>(ringV, first, count).Slice(0, centre.Length);
+            for (int k = 0, at = 0; k < centre.Length; k++, at += stride)
             {
-                ref readonly SideLanes side = ref sides[i];
-                ref VertexLanes vertex = ref vertices[i];
-                Vector4 ci = side.Cos, si = side.Sin;
-                vertex.Last = (b2 * ci + c2 * si) + (a2 + side.U);
-                vertex.First = ((b0 * ci + c0 * si) + a0) + o0;
-                vertex.Middle = (b1 * ci + c1 * si) + a1;
+                Float3 c = centre[k], t = tangent[k], nrm = normal[k];
+                float nx = nrm.X, ny = nrm.Y, nz = nrm.Z;
+                // binormal = t × n
+                float bx = t.Y * nz - t.Z * ny, by = t.Z * nx - t.X * nz, bz = t.X * ny - t.Y * nx;
+                float r = radius[k];
+                float slope = slopeOf[k];
+                float v = vOf[k];
+                // the normal tilts for a varying radius: (e_r − slope·t)/sqrt(1 + slope²)
+                float inverse = 1f / MathF.Sqrt(1f + slope * slope);
+                float sx = t.X * slope, sy = t.Y * slope, sz = t.Z * slope;
+                // the radial offset first, then the centre, then the origin: (c + offset) + origin rounds monotonically in the
+                // offset, so the ring's bounds (c ± r·sqrt(1 − t²)·(1 + 1e-6), + origin) hold its vertices
+                var a0 = new Vector4(c.X, c.Y, c.Z, -(sx * inverse));
+                var b0 = new Vector4(nx * r, ny * r, nz * r, nx * inverse);
+                var c0 = new Vector4(bx * r, by * r, bz * r, bx * inverse);
+                var a1 = new Vector4(-(sy * inverse), -(sz * inverse), 0f, 0f);
+                var b1 = new Vector4(ny * inverse, nz * inverse, bx, by);
+                var c1 = new Vector4(by * inverse, bz * inverse, -nx, -ny);
+                var c2 = new Vector4(-nz, 0f, 0f, 0f);
+                Span<VertexLanes> vertices = MemoryMarshal.Cast<TubeVertex, VertexLanes>(rings.Slice(at, stride));
+                if (wide && vertices.Length >= 2)
+                {
+                    // the wide kernel: vertices 2p and 2p + 1 are the 24 floats First Middle | Last First | Middle Last, three
+                    // 8-float vectors, each ((B·cos + C·sin) + A) + O with B, C, A, O per ring in that lane pattern (O the frame
+                    // origin on the position lanes and −0 elsewhere, which adds nothing; the third vector has no O) and cos, sin
+                    // per pair of sides (PairLanes). The last lane's u moves into the cos table (1·u + 0·sin + −0 is u, as
+                    // 0·cos + 0·sin + u is) and its other constants a2 + U are added here, as the loop below adds them per
+                    // vertex (0 + 0, 0 + 1, v + 0).
+                    var a2u = new Vector4(0f + 0f, 0f + 1f, -0f, v + 0f);
+                    var b2u = new Vector4(bz, 0f, 1f, 0f);
+                    half[0] = b0; half[1] = b1; half[2] = b2u; half[3] = b0; half[4] = b1; half[5] = b2u;
+                    half[6] = c0; half[7] = c1; half[8] = c2; half[9] = c0; half[10] = c1; half[11] = c2;
+                    half[12] = a0; half[13] = a1; half[14] = a2u; half[15] = a0; half[16] = a1; half[17] = a2u;
+                    WritePairs(vertices, pairs, coefficients);
+                    continue;
+                }
+                var a2 = new Vector4(0f, 0f, 0f, v);
+                var b2 = new Vector4(bz, 0f, 0f, 0f);
+                // one table entry and one vertex per side, read and written through refs: the loop runs over the vertices'
+                // span, so its index is range-checked only against the side table (once per side, not once per lane)
+                for (int i = 0; i < vertices.Length; i++)
+                {
+                    ref readonly SideLanes side = ref sides[i];
+                    ref VertexLanes vertex = ref vertices[i];
+                    Vector4 ci = side.Cos, si = side.Sin;
+                    vertex.Last = (b2 * ci + c2 * si) + (a2 + side.U);
+                    vertex.First = ((b0 * ci + c0 * si) + a0) + o0;
+                    vertex.Middle = (b1 * ci + c1 * si) + a1;
+                }
             }
         }
 
         /// <summary>
         /// The wide kernel's loop (<see cref="WriteRing"/>), with the ring's coefficient vectors in
-        /// <see cref="ringCoefficients"/>: pairs of vertices, then an odd last vertex as the first 8 floats of a pair and
+        /// <paramref name="q"/> (<see cref="ringCoefficients"/>) and the pair table <paramref name="pairs"/> (<see cref="pairLanes"/>): pairs of vertices, then an odd last vertex as the first 8 floats of a pair and
         /// the last 4 through the scratch vector (the same operations per float); at the seam, a copy of vertex 0 with the
         /// seam's u. Inlined: the eleven coefficient vectors stay in registers through the loop.
         /// </summary>
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
-        private void WritePairs(Span<VertexLanes> vertices)
+        private void WritePairs(Span<VertexLanes> vertices, ReadOnlySpan<PairLanes> pairs, Span<Vector<float>> q)
         {
-            ReadOnlySpan<PairLanes> pairs = pairLanes;
-            Span<Vector<float>> q = ringCoefficients;
             Vector<float> bA = q[0], bB = q[1], bC = q[2], cA = q[3], cB = q[4], cC = q[5];
             Vector<float> aA = q[6], aB = q[7], aC = q[8], oA = q[9], oB = q[10];
             // one table entry and one pair of vertices per step, through refs (one range check each, as the 4-float loop)
@@ -508,21 +537,56 @@ namespace HookeRope.Geometry
         }
 
         /// <summary>
-        /// The ring lies on the circle of radius r around c in the plane normal to t: per axis c ± r·sqrt(1 − t²). The three
-        /// square roots are one 4-lane square root (correctly rounded per lane, so the same bits as three scalar ones), and
-        /// the box goes into the bounds with one comparison per axis and side (c − e ≤ c + e).
+        /// The ring lies on the circle of radius r around c in the plane normal to t: per axis c ± r·sqrt(1 − t²)
+        /// (<see cref="RingExtent"/>), and the box goes into the bounds with one comparison per axis and side (c − e ≤ c + e).
         /// </summary>
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         private void AddRingBounds(int k, ref Bounds bounds)
         {
-            Float3 c = centers[k], t = tangents[k];
-            float r = ringRadii[k];
+            Float3 c = centers[k];
+            Float3 e = RingExtent(tangents[k], ringRadii[k]);
+            bounds.AddBox(c.X - e.X, c.Y - e.Y, c.Z - e.Z, c.X + e.X, c.Y + e.Y, c.Z + e.Z);
+        }
+
+        /// <summary>
+        /// Half the extent per axis (m) of a ring of radius <paramref name="r"/> normal to unit <paramref name="t"/>:
+        /// r·sqrt(max(0, 1 − t²))·(1 + 1e-6) per axis, the three square roots as one 4-lane square root (correctly rounded
+        /// per lane, so the same bits as three scalar ones).
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static Float3 RingExtent(Float3 t, float r)
+        {
             var t4 = new Vector4(t.X, t.Y, t.Z, 0f);
             Vector4 root = Vector4.SquareRoot(Vector4.Max(Vector4.Zero, Vector4.One - t4 * t4));
-            float ex = r * root.X * 1.000001f;
-            float ey = r * root.Y * 1.000001f;
-            float ez = r * root.Z * 1.000001f;
-            bounds.AddBox(c.X - ex, c.Y - ey, c.Z - ez, c.X + ex, c.Y + ey, c.Z + ez);
+            return new Float3(r * root.X * 1.000001f, r * root.Y * 1.000001f, r * root.Z * 1.000001f);
+        }
+
+        /// <summary>
+        /// <see cref="AddRingBounds"/> for rings first … last: the box's corners carried in locals through the loop (the
+        /// same comparisons in the same order, so the same bits) and written back once.
+        /// </summary>
+        private void AddRingsBounds(int first, int last, ref Bounds bounds)
+        {
+            int count = last - first + 1;
+            // a piece whose frame pass ran on lanes: its centres and tangents are in the lane scratch
+            if (lanePieceFirst == first && lanePieceCount == count && VectorPath.Enabled && AddRingsBoundsOnLanes(first, count, ref bounds))
+                return;
+            ReadOnlySpan<Float3> centre = new ReadOnlySpan<Float3>(centers, first, count);
+            ReadOnlySpan<Float3> tangent = new ReadOnlySpan<Float3>(tangents, first, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> radius = new ReadOnlySpan<float>(ringRadii, first, count).Slice(0, centre.Length);
+            float minX = bounds.Min.X, minY = bounds.Min.Y, minZ = bounds.Min.Z;
+            float maxX = bounds.Max.X, maxY = bounds.Max.Y, maxZ = bounds.Max.Z;
+            for (int i = 0; i < centre.Length; i++)
+            {
+                Float3 c = centre[i];
+                Float3 e = RingExtent(tangent[i], radius[i]);
+                float ex = e.X, ey = e.Y, ez = e.Z;
+                float lx = c.X - ex, ly = c.Y - ey, lz = c.Z - ez, hx = c.X + ex, hy = c.Y + ey, hz = c.Z + ez;
+                minX = lx < minX ? lx : minX; minY = ly < minY ? ly : minY; minZ = lz < minZ ? lz : minZ;
+                maxX = hx > maxX ? hx : maxX; maxY = hy > maxY ? hy : maxY; maxZ = hz > maxZ ? hz : maxZ;
+            }
+            bounds.Min = new Float3(minX, minY, minZ);
+            bounds.Max = new Float3(maxX, maxY, maxZ);
         }
 
         /// <summary>(x, y, z) scaled to unit length and true, or unchanged and false when its length² is not above 1e-20 (as Float3.NormalizedOr).</summary>

@@ -610,6 +610,7 @@ namespace HookeRope.Geometry
             // which rings must be written: all of them after new positions, the changed ones after new radii only
             // a full build of a piece no ring of which takes strip normals: every ring dirty and drawn by WriteRing
             bool plain = false;
+            lanePieceFirst = -1;
             if (!radiiOnly)
             {
                 int count = last - first + 1;
@@ -649,13 +650,10 @@ namespace HookeRope.Geometry
             Neighbour afterLast = DanglingNeighbour(endBroken && dangling != null && stripNormals[last], b, false, last);
             if (plain && !writeIndices)
             {
-                // the loop below with its tests decided: each ring written and bounded, the strips' indices kept
-                int ringBase = vertexBase;
-                for (int k = first; k <= last; k++, ringBase += stride)
-                {
-                    WriteRing(k, vertices.AsSpan(ringBase, stride));
-                    AddRingBounds(k, ref bounds);
-                }
+                // the loop below with its tests decided: each ring written (in one call for the piece) and bounded, the
+                // strips' indices kept
+                WriteRings(first, last, vertices.AsSpan(vertexBase, (last - first + 1) * stride));
+                AddRingsBounds(first, last, ref bounds);
                 tubeCursor += (last - first) * radial * 6;
             }
             else
@@ -696,12 +694,17 @@ namespace HookeRope.Geometry
 
         private void WriteStripIndices(int baseA, int baseB, int[] indices, ref int tubeCursor)
         {
+            // the strip's span once and each step's six indices through a slice of length 6 (one range check per step,
+            // the cursor in a register rather than through its reference)
+            Span<int> strip = new Span<int>(indices, tubeCursor, radial * 6);
             for (int i = 0; i < radial; i++)
             {
                 int a0 = baseA + i, a1 = a0 + 1, b0 = baseB + i, b1 = b0 + 1;
-                indices[tubeCursor++] = a0; indices[tubeCursor++] = a1; indices[tubeCursor++] = b0;
-                indices[tubeCursor++] = a1; indices[tubeCursor++] = b1; indices[tubeCursor++] = b0;
+                Span<int> step = strip.Slice(6 * i, 6);
+                step[0] = a0; step[1] = a1; step[2] = b0;
+                step[3] = a1; step[4] = b1; step[5] = b0;
             }
+            tubeCursor += radial * 6;
         }
 
         /// <summary>

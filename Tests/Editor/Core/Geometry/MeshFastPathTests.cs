@@ -79,11 +79,37 @@ namespace HookeRope.Tests.Core.Geometry
         }
 
         /// <summary>
+        /// Issue 18 (s15): the frames of a piece without folds in two passes (the centres' pass, then the transport alone)
+        /// give the bits of the one frame loop that repairs folds as it goes (<see cref="TubeMeshBuilder.ForceFullLimits"/>),
+        /// both with the vector paths off: the dropped and whipped lanyard, 150 frames.
+        /// </summary>
+        [TestCaseSource(nameof(Sides))]
+        public void TheTwoFramePassesDrawTheBitsOfTheOneFrameLoop(int sides)
+        {
+            DropAndWhip(64, 0f, 1.8f, sides, true, 150, 60, "lanyard, two passes", fullLimits: true, fastVectors: false);
+        }
+
+        /// <summary>
+        /// Issue 18 (s15): the first frame pass on <see cref="System.Numerics.Vector{T}"/> lanes (tangents, ring distances,
+        /// fold tests, crossing caps of several rings at once) gives the bits of the scalar pass (vector paths off, the same
+        /// two passes): the dropped and whipped lanyard, 150 frames, and the lane pass did draw pieces where the runtime
+        /// accelerates vectors.
+        /// </summary>
+        [TestCaseSource(nameof(Sides))]
+        public void TheFramePassOnLanesDrawsTheBitsOfTheScalarPass(int sides)
+        {
+            Pair pair = DropAndWhip(64, 0f, 1.8f, sides, true, 150, 60, "lanyard, frame lanes", fullLimits: false, fastVectors: true);
+            if (System.Numerics.Vector.IsHardwareAccelerated)
+                Assert.That(pair.Fast.Mesh.Builder.FramePiecesOnLanes, Is.GreaterThanOrEqualTo(60), "pieces whose first frame pass ran on lanes (at least the 60 frames of the drop)");
+        }
+
+        /// <summary>
         /// A lanyard of <paramref name="segments"/> pinned at x … x + span, dropped from straight and, from frame
         /// <paramref name="whipFrom"/>, whipped by its far pin (0.4 m at 3 Hz, up and down and toward the near pin), its
         /// meshes compared at every frame.
         /// </summary>
-        private static Pair DropAndWhip(int segments, float x, float span, int sides, bool caps, int frames, int whipFrom, string what)
+        private static Pair DropAndWhip(int segments, float x, float span, int sides, bool caps, int frames, int whipFrom, string what,
+            bool fullLimits = true, bool fastVectors = true)
         {
             var settings = new RopeSettings { SegmentCount = segments };
             RopeSimulation Make()
@@ -93,7 +119,7 @@ namespace HookeRope.Tests.Core.Geometry
                 s.MeshSettings.CapEnds = caps;
                 return s;
             }
-            var pair = new Pair(Make(), Make());
+            var pair = new Pair(Make(), Make()) { FullLimits = fullLimits, FastVectors = fastVectors };
             for (int frame = 0; frame < frames; frame++)
             {
                 if (frame >= whipFrom)
@@ -143,6 +169,10 @@ namespace HookeRope.Tests.Core.Geometry
             private TubeVertex[] fullVertices = new TubeVertex[0], fastVertices = new TubeVertex[0];
             private int[] fullIndices = new int[0], fastIndices = new int[0];
             public int MostRings;
+            /// <summary>Full runs every limit pass and the one frame loop (<see cref="TubeMeshBuilder.ForceFullLimits"/>); false: the cheap tests and the frame passes, as Fast.</summary>
+            public bool FullLimits = true;
+            /// <summary>Fast fills with the vector paths on; false: off, as Full.</summary>
+            public bool FastVectors = true;
 
             public Pair(RopeSimulation full, RopeSimulation fast)
             {
@@ -166,10 +196,10 @@ namespace HookeRope.Tests.Core.Geometry
                 {
                     VectorPath.Enabled = false;
                     TubeMeshBuilder builder = Full.Mesh.Builder;
-                    builder.ForceFullLimits = true;
+                    builder.ForceFullLimits = FullLimits;
                     builder.AlwaysRebuild = true;
                     full = Full.FillMesh(fullVertices, fullIndices);
-                    VectorPath.Enabled = true;
+                    VectorPath.Enabled = FastVectors;
                     fast = Fast.FillMesh(fastVertices, fastIndices);
                 }
                 finally
