@@ -65,6 +65,9 @@ namespace HookeRope.Solver
         // each row's free block A_j = (w_j + w_{j+1}) I + α̃ n nᵀ + τ (I − n nᵀ) (symmetric 3×3, 1/kg), built once per
         // linearisation for every active-set pass (SegmentForceSystem.PrepareBlocks)
         public readonly double[] BlockXX, BlockXY, BlockXZ, BlockYY, BlockYZ, BlockZZ;
+        // the float inputs of the assembly run on lanes (ExactChainSolver.AssembleLanes), read once per run for both of its
+        // halves: a field, not a local of the assembly, which would zero it on every call
+        public ExactChainSolver.RunInputs AssemblyRun;
         public readonly bool[] Active;
         // the convergence test and line search of the exact solve (see ExactChainSolver.Apply and Mismatched, ChainLineSearch): each
         // segment's effective rest length L' (m, damping folded in) and whether it was assembled this iteration (not broken,
