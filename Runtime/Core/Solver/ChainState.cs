@@ -1,4 +1,5 @@
 using System;
+using System.Numerics;
 using System.Runtime.CompilerServices;
 
 namespace HookeRope.Solver
@@ -316,6 +317,18 @@ namespace HookeRope.Solver
             }
             nx = dirX[j]; ny = dirY[j]; nz = dirZ[j];
             return len <= float.MaxValue ? len : 0.0;
+        }
+
+        /// <summary>
+        /// <see cref="Vector.Widen(Vector{float}, out Vector{double}, out Vector{double})"/> with the upper half converted
+        /// first: the lower half's conversion is then the source register's last use, and the JIT drops the copy it otherwise
+        /// makes of it (the same conversions, the same bits).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static void Widen(Vector<float> source, out Vector<double> low, out Vector<double> high)
+        {
+            Vector.Widen(source, out _, out high);
+            Vector.Widen(source, out low, out _);
         }
 
         /// <summary>

@@ -131,7 +131,7 @@ namespace HookeRope.Solver
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static Vector<double> Wide<THalf>(Vector<float> run) where THalf : struct
         {
-            Vector.Widen(run, out Vector<double> low, out Vector<double> high);
+            ChainState.Widen(run, out Vector<double> low, out Vector<double> high);
             return typeof(THalf) == typeof(HighHalf) ? high : low;
         }
 
@@ -240,7 +240,7 @@ namespace HookeRope.Solver
             var z = new MoveViews(c.StepZ, c.DZ, c.DLowZ, c.MotionZ, s);
             for (int k = 0; k < runs; k++)
             {
-                Vector.Widen(w[k], out Vector<double> wLow, out Vector<double> wHigh);
+                ChainState.Widen(w[k], out Vector<double> wLow, out Vector<double> wHigh);
                 MoveLanes(in x, k, wLow, wHigh);
                 MoveLanes(in y, k, wLow, wHigh);
                 MoveLanes(in z, k, wLow, wHigh);
@@ -267,11 +267,11 @@ namespace HookeRope.Solver
         {
             Vector<double> mLow = wLow * (v.After[2 * k] - v.Before[2 * k]), mHigh = wHigh * (v.After[2 * k + 1] - v.Before[2 * k + 1]);
             v.Motion[2 * k] = mLow; v.Motion[2 * k + 1] = mHigh;
-            Vector.Widen(v.D[k], out Vector<double> dLow, out Vector<double> dHigh);
-            Vector.Widen(v.Low[k], out Vector<double> lLow, out Vector<double> lHigh);
+            ChainState.Widen(v.D[k], out Vector<double> dLow, out Vector<double> dHigh);
+            ChainState.Widen(v.Low[k], out Vector<double> lLow, out Vector<double> lHigh);
             Vector<double> xLow = (dLow + lLow) + mLow, xHigh = (dHigh + lHigh) + mHigh;
             Vector<float> f = Vector.Narrow(xLow, xHigh);
-            Vector.Widen(f, out Vector<double> fLow, out Vector<double> fHigh);
+            ChainState.Widen(f, out Vector<double> fLow, out Vector<double> fHigh);
             v.D[k] = f;
             v.Low[k] = Vector.Narrow(xLow - fLow, xHigh - fHigh);
         }
@@ -368,15 +368,15 @@ namespace HookeRope.Solver
                     ApplyRows(c, k * lanes, (k + 1) * lanes, tensionOnly, invH2, ref tests);
                     continue;
                 }
-                Vector.Widen(dirX[k], out Vector<double> exLow, out Vector<double> exHigh);
-                Vector.Widen(dirY[k], out Vector<double> eyLow, out Vector<double> eyHigh);
-                Vector.Widen(dirZ[k], out Vector<double> ezLow, out Vector<double> ezHigh);
-                Vector.Widen(rest[k], out Vector<double> rLow, out Vector<double> rHigh);
+                ChainState.Widen(dirX[k], out Vector<double> exLow, out Vector<double> exHigh);
+                ChainState.Widen(dirY[k], out Vector<double> eyLow, out Vector<double> eyHigh);
+                ChainState.Widen(dirZ[k], out Vector<double> ezLow, out Vector<double> ezHigh);
+                ChainState.Widen(rest[k], out Vector<double> rLow, out Vector<double> rHigh);
                 int a = 2 * k, b = 2 * k + 1;
                 if (lengthErrors)
                 {
                     // the run's second-order length errors (LengthErrors, as the rows' LengthError) from the motions just recorded
-                    Vector.Widen(length[k], out Vector<double> lengthLow, out Vector<double> lengthHigh);
+                    ChainState.Widen(length[k], out Vector<double> lengthLow, out Vector<double> lengthHigh);
                     error[a] = LengthErrors(bx[a] - ax[a], by[a] - ay[a], bz[a] - az[a], exLow, eyLow, ezLow, lengthLow, micro * rLow, two);
                     error[b] = LengthErrors(bx[b] - ax[b], by[b] - ay[b], bz[b] - az[b], exHigh, eyHigh, ezHigh, lengthHigh, micro * rHigh, two);
                 }
@@ -431,9 +431,9 @@ namespace HookeRope.Solver
             {
                 if (AllTrue(active, k * lanes))
                 {
-                    Vector.Widen(dirX[k], out Vector<double> exLow, out Vector<double> exHigh);
-                    Vector.Widen(dirY[k], out Vector<double> eyLow, out Vector<double> eyHigh);
-                    Vector.Widen(dirZ[k], out Vector<double> ezLow, out Vector<double> ezHigh);
+                    ChainState.Widen(dirX[k], out Vector<double> exLow, out Vector<double> exHigh);
+                    ChainState.Widen(dirY[k], out Vector<double> eyLow, out Vector<double> eyHigh);
+                    ChainState.Widen(dirZ[k], out Vector<double> ezLow, out Vector<double> ezHigh);
                     int a = 2 * k, b = 2 * k + 1;
                     Vector<double> alongLow = (fx[a] + dx[a]) * exLow + (fy[a] + dy[a]) * eyLow + (fz[a] + dz[a]) * ezLow;
                     Vector<double> alongHigh = (fx[b] + dx[b]) * exHigh + (fy[b] + dy[b]) * eyHigh + (fz[b] + dz[b]) * ezHigh;

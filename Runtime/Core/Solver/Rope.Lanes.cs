@@ -102,10 +102,10 @@ namespace HookeRope.Solver
                 Vector<double> w0 = vs[a], w1 = vs[z];
                 // m = (4v − v_prev)/3; d_pred = (D + DLow)/3 + e·m + c·g, rounded to float; base = m + e·g − d_pred/h
                 Vector<double> m0 = (four * w0 - us[a]) / three, m1 = (four * w1 - us[z]) / three;
-                Vector.Widen(ds[k], out Vector<double> d0, out Vector<double> d1);
-                Vector.Widen(ls[k], out Vector<double> l0, out Vector<double> l1);
+                ChainState.Widen(ds[k], out Vector<double> d0, out Vector<double> d1);
+                ChainState.Widen(ls[k], out Vector<double> l0, out Vector<double> l1);
                 Vector<float> o = Vector.Narrow((d0 + l0) / three + ev * m0 + cgv, (d1 + l1) / three + ev * m1 + cgv);
-                Vector.Widen(o, out Vector<double> o0, out Vector<double> o1);
+                ChainState.Widen(o, out Vector<double> o0, out Vector<double> o1);
                 bs[a] = m0 + egv - o0 * invHv;
                 bs[z] = m1 + egv - o1 * invHv;
                 ds[k] = o;
@@ -193,9 +193,9 @@ namespace HookeRope.Solver
             ReadOnlySpan<Vector<double>> bs, Span<Vector<double>> vs, Vector<double> invH, Vector<double> k, out Vector<double> c0, out Vector<double> c1) where TMark : struct
         {
             int a = 2 * b, z = a + 1;
-            Vector.Widen(d, out Vector<double> d0, out Vector<double> d1);
-            Vector.Widen(low, out Vector<double> l0, out Vector<double> l1);
-            Vector.Widen(q, out Vector<double> q0, out Vector<double> q1);
+            ChainState.Widen(d, out Vector<double> d0, out Vector<double> d1);
+            ChainState.Widen(low, out Vector<double> l0, out Vector<double> l1);
+            ChainState.Widen(q, out Vector<double> q0, out Vector<double> q1);
             Vector<double> m0 = d0 + l0, m1 = d1 + l1, e0, e1;
             if (typeof(TMark) == typeof(ImpliedStartMark)) { e0 = StartMarks(q0); e1 = StartMarks(q1); }
             else { e0 = s[a]; e1 = s[z]; }
@@ -262,10 +262,10 @@ namespace HookeRope.Solver
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static Vector<float> Committed(Vector<float> previous, Vector<float> low, Vector<float> d, Vector<float> dLow, out Vector<double> e0, out Vector<double> e1)
         {
-            Vector.Widen(previous, out Vector<double> p0, out Vector<double> p1);
-            Vector.Widen(low, out Vector<double> l0, out Vector<double> l1);
-            Vector.Widen(d, out Vector<double> d0, out Vector<double> d1);
-            Vector.Widen(dLow, out Vector<double> r0, out Vector<double> r1);
+            ChainState.Widen(previous, out Vector<double> p0, out Vector<double> p1);
+            ChainState.Widen(low, out Vector<double> l0, out Vector<double> l1);
+            ChainState.Widen(d, out Vector<double> d0, out Vector<double> d1);
+            ChainState.Widen(dLow, out Vector<double> r0, out Vector<double> r1);
             e0 = p0 + l0 + (d0 + r0);
             e1 = p1 + l1 + (d1 + r1);
             return Vector.Narrow(e0, e1);
@@ -275,7 +275,7 @@ namespace HookeRope.Solver
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static Vector<float> Remainder(Vector<double> e0, Vector<double> e1, Vector<float> f)
         {
-            Vector.Widen(f, out Vector<double> f0, out Vector<double> f1);
+            ChainState.Widen(f, out Vector<double> f0, out Vector<double> f1);
             return Vector.Narrow(e0 - f0, e1 - f1);
         }
 

@@ -84,11 +84,11 @@ namespace HookeRope.Solver
             Span<Vector<double>> byy = VectorPath.AsLanes(ChainState.Exactly(c.BlockYY, s)), byz = VectorPath.AsLanes(ChainState.Exactly(c.BlockYZ, s)), bzz = VectorPath.AsLanes(ChainState.Exactly(c.BlockZZ, s));
             for (int k = 0; k < runs; k++)
             {
-                Vector.Widen(dirX[k], out Vector<double> nxLow, out Vector<double> nxHigh);
-                Vector.Widen(dirY[k], out Vector<double> nyLow, out Vector<double> nyHigh);
-                Vector.Widen(dirZ[k], out Vector<double> nzLow, out Vector<double> nzHigh);
-                Vector.Widen(wA[k], out Vector<double> aLow, out Vector<double> aHigh);
-                Vector.Widen(wB[k], out Vector<double> bLow, out Vector<double> bHigh);
+                ChainState.Widen(dirX[k], out Vector<double> nxLow, out Vector<double> nxHigh);
+                ChainState.Widen(dirY[k], out Vector<double> nyLow, out Vector<double> nyHigh);
+                ChainState.Widen(dirZ[k], out Vector<double> nzLow, out Vector<double> nzHigh);
+                ChainState.Widen(wA[k], out Vector<double> aLow, out Vector<double> aHigh);
+                ChainState.Widen(wB[k], out Vector<double> bLow, out Vector<double> bHigh);
                 int h = 2 * k;
                 BlockLanes(nxLow, nyLow, nzLow, transverse[h], axial[h], aLow + bLow,
                     out bxx[h], out bxy[h], out bxz[h], out byy[h], out byz[h], out bzz[h]);
