@@ -1,4 +1,5 @@
 using System;
+using System.Numerics;
 using System.Runtime.CompilerServices;
 
 namespace HookeRope.Solver
@@ -65,6 +66,9 @@ namespace HookeRope.Solver
         // each row's free block A_j = (w_j + w_{j+1}) I + α̃ n nᵀ + τ (I − n nᵀ) (symmetric 3×3, 1/kg), built once per
         // linearisation for every active-set pass (SegmentForceSystem.PrepareBlocks)
         public readonly double[] BlockXX, BlockXY, BlockXZ, BlockYY, BlockYZ, BlockZZ;
+        // the float inputs of the assembly run on lanes (ExactChainSolver.AssembleLanes), read once per run for both of its
+        // halves: a field, not a local of the assembly, which would zero it on every call
+        public ExactChainSolver.RunInputs AssemblyRun;
         public readonly bool[] Active;
         // the convergence test and line search of the exact solve (see ExactChainSolver.Apply and Mismatched, ChainLineSearch): each
         // segment's effective rest length L' (m, damping folded in) and whether it was assembled this iteration (not broken,
@@ -313,6 +317,18 @@ namespace HookeRope.Solver
             }
             nx = dirX[j]; ny = dirY[j]; nz = dirZ[j];
             return len <= float.MaxValue ? len : 0.0;
+        }
+
+        /// <summary>
+        /// <see cref="Vector.Widen(Vector{float}, out Vector{double}, out Vector{double})"/> with the upper half converted
+        /// first: the lower half's conversion is then the source register's last use, and the JIT drops the copy it otherwise
+        /// makes of it (the same conversions, the same bits).
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        public static void Widen(Vector<float> source, out Vector<double> low, out Vector<double> high)
+        {
+            Vector.Widen(source, out _, out high);
+            Vector.Widen(source, out low, out _);
         }
 
         /// <summary>

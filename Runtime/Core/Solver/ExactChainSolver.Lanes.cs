@@ -29,10 +29,13 @@ namespace HookeRope.Solver
             Span<Vector<float>> length = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(c.Length, s));
             Span<bool> assembled = ChainState.Exactly(c.Assembled, s);
             var p = new AssemblyParameters { InvH2 = invH2, Gamma = gammaAll, First = first, TensionOnly = tensionOnly, Contacts = c.ContactCount > 0 };
+            // the run's float inputs read once (one check each) for both halves, which read them from there
+            ref RunInputs r = ref c.AssemblyRun;
             for (int k = 0; k < runs; k++)
             {
-                AssembleHalf<LowHalf>(in v, k, in p, out AssembledLanes low);
-                AssembleHalf<HighHalf>(in v, k, in p, out AssembledLanes high);
+                v.Load(k, out r);
+                AssembleHalf<LowHalf>(in r, in v, k, in p, out AssembledLanes low);
+                AssembleHalf<HighHalf>(in r, in v, k, in p, out AssembledLanes high);
                 int j = k * lanes;
                 if (!Vector.EqualsAll(low.Unusual | high.Unusual, Vector<long>.Zero))
                 {
@@ -54,30 +57,30 @@ namespace HookeRope.Solver
         /// lane does <see cref="AssembleRows"/>'s operations in its order, and both sides of each of its branches are computed
         /// on every lane and selected, so every lane keeps the row's bits.
         /// </summary>
-        private static void AssembleHalf<THalf>(in AssemblyViews v, int k, in AssemblyParameters p, out AssembledLanes o) where THalf : struct
+        private static void AssembleHalf<THalf>(in RunInputs v, in AssemblyViews views, int k, in AssemblyParameters p, out AssembledLanes o) where THalf : struct
         {
             int h = 2 * k + (typeof(THalf) == typeof(HighHalf) ? 1 : 0);
             Vector<double> zero = Vector<double>.Zero, one = Vector<double>.One, invH2 = new Vector<double>(p.InvH2);
             // ChainState.Change, Component and Normalise
-            Vector<double> ddx = (Wide<THalf>(v.DxB[k]) - Wide<THalf>(v.DxA[k])) + (Wide<THalf>(v.DlxB[k]) - Wide<THalf>(v.DlxA[k]));
-            Vector<double> ddy = (Wide<THalf>(v.DyB[k]) - Wide<THalf>(v.DyA[k])) + (Wide<THalf>(v.DlyB[k]) - Wide<THalf>(v.DlyA[k]));
-            Vector<double> ddz = (Wide<THalf>(v.DzB[k]) - Wide<THalf>(v.DzA[k])) + (Wide<THalf>(v.DlzB[k]) - Wide<THalf>(v.DlzA[k]));
-            Vector<double> sx = Wide<THalf>(v.PxB[k]) - Wide<THalf>(v.PxA[k]), lx = Wide<THalf>(v.LxB[k]) - Wide<THalf>(v.LxA[k]);
-            Vector<double> sy = Wide<THalf>(v.PyB[k]) - Wide<THalf>(v.PyA[k]), ly = Wide<THalf>(v.LyB[k]) - Wide<THalf>(v.LyA[k]);
-            Vector<double> sz = Wide<THalf>(v.PzB[k]) - Wide<THalf>(v.PzA[k]), lz = Wide<THalf>(v.LzB[k]) - Wide<THalf>(v.LzA[k]);
+            Vector<double> ddx = (Wide<THalf>(v.DxB) - Wide<THalf>(v.DxA)) + (Wide<THalf>(v.DlxB) - Wide<THalf>(v.DlxA));
+            Vector<double> ddy = (Wide<THalf>(v.DyB) - Wide<THalf>(v.DyA)) + (Wide<THalf>(v.DlyB) - Wide<THalf>(v.DlyA));
+            Vector<double> ddz = (Wide<THalf>(v.DzB) - Wide<THalf>(v.DzA)) + (Wide<THalf>(v.DlzB) - Wide<THalf>(v.DlzA));
+            Vector<double> sx = Wide<THalf>(v.PxB) - Wide<THalf>(v.PxA), lx = Wide<THalf>(v.LxB) - Wide<THalf>(v.LxA);
+            Vector<double> sy = Wide<THalf>(v.PyB) - Wide<THalf>(v.PyA), ly = Wide<THalf>(v.LyB) - Wide<THalf>(v.LyA);
+            Vector<double> sz = Wide<THalf>(v.PzB) - Wide<THalf>(v.PzA), lz = Wide<THalf>(v.LzB) - Wide<THalf>(v.LzA);
             Vector<double> cx = sx + (lx + ddx), cy = sy + (ly + ddy), cz = sz + (lz + ddz);
             Vector<double> len = Vector.SquareRoot(cx * cx + cy * cy + cz * cz);
             Vector<long> unusual = ~(Vector.GreaterThan(len, new Vector<double>(1e-12)) & Vector.LessThanOrEqual(len, new Vector<double>(float.MaxValue)));
             Vector<double> inv = one / len;
             Vector<double> nx = cx * inv, ny = cy * inv, nz = cz * inv;
-            Vector<double> alpha = Wide<THalf>(v.Compliance[k]);
-            Vector<double> mobility = Wide<THalf>(v.WA[k]) + Wide<THalf>(v.WB[k]);
+            Vector<double> alpha = Wide<THalf>(v.Compliance);
+            Vector<double> mobility = Wide<THalf>(v.WA) + Wide<THalf>(v.WB);
             Vector<long> rigid = Vector.Equals(alpha, zero);
             unusual |= Vector.Equals(mobility, zero) & rigid;
             // g = alpha > 0 ? gammaAll : 0, damped where g > 0
             Vector<long> compliant = Vector.GreaterThan(alpha, zero);
             Vector<double> g = Vector.ConditionalSelect(compliant, new Vector<double>(p.Gamma), zero);
-            Vector<double> restJ = Wide<THalf>(v.Rest[k]);
+            Vector<double> restJ = Wide<THalf>(v.Rest);
             Vector<double> alphaTilde = alpha * invH2, restEffective = restJ;
             if (p.Gamma > 0.0)
             {
@@ -94,7 +97,7 @@ namespace HookeRope.Solver
                 restEffective = Vector.ConditionalSelect(compliant, (restJ + g * (len - rate)) / onePlusG, restJ);
                 alphaTilde = Vector.ConditionalSelect(compliant, alphaTilde / onePlusG, alphaTilde);
             }
-            Vector<double> fx = v.Fx[h], fy = v.Fy[h], fz = v.Fz[h];
+            Vector<double> fx = views.Fx[h], fy = views.Fy[h], fz = views.Fz[h];
             Vector<double> magnitude = Vector.SquareRoot(fx * fx + fy * fy + fz * fz);
             Vector<long> loaded = Vector.GreaterThan(magnitude, zero);
             Vector<double> sense = Vector.ConditionalSelect(Vector.GreaterThanOrEqual(fx * nx + fy * ny + fz * nz, zero), one, -one);
@@ -105,7 +108,7 @@ namespace HookeRope.Solver
             Vector<double> ez = Vector.ConditionalSelect(loaded, fz * inverse, nz);
             // beside a held contact a force far off its segment takes the rows' test (BesideHeldContact)
             if (p.Contacts) unusual |= loaded & Vector.LessThan(ex * nx + ey * ny + ez * nz, new Vector<double>(MinForceAlignment));
-            Vector<double> last = Wide<THalf>(v.LastTension[k]);
+            Vector<double> last = Wide<THalf>(v.LastTension);
             Vector<double> tension = p.First ? Vector.Abs(last) : Vector.Abs(signed * invH2);
             Vector<double> target = restEffective + alphaTilde * signed;
             Vector<double> floor = new Vector<double>(1e-6) * restJ;
@@ -128,7 +131,7 @@ namespace HookeRope.Solver
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static Vector<double> Wide<THalf>(Vector<float> run) where THalf : struct
         {
-            Vector.Widen(run, out Vector<double> low, out Vector<double> high);
+            ChainState.Widen(run, out Vector<double> low, out Vector<double> high);
             return typeof(THalf) == typeof(HighHalf) ? high : low;
         }
 
@@ -160,6 +163,13 @@ namespace HookeRope.Solver
             }
         }
 
+        /// <summary>One run's float inputs of <see cref="AssembleHalf{THalf}"/> (the fields of <see cref="AssemblyViews"/> at run k).</summary>
+        internal struct RunInputs
+        {
+            public Vector<float> WA, WB, DxA, DxB, DyA, DyB, DzA, DzB, DlxA, DlxB, DlyA, DlyB, DlzA, DlzB;
+            public Vector<float> PxA, PxB, PyA, PyB, PzA, PzB, LxA, LxB, LyA, LyB, LzA, LzB, Rest, Compliance, LastTension;
+        }
+
         /// <summary>An array's first s entries as runs of <see cref="VectorPath.DoubleLanes"/>.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static Span<Vector<double>> Doubles(double[] values, int s) => VectorPath.AsLanes(ChainState.Exactly(values, s));
@@ -188,6 +198,18 @@ namespace HookeRope.Solver
                 Fz = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.ForceZ, s));
             }
 
+            /// <summary>Run k of every float input into <paramref name="r"/>.</summary>
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            public void Load(int k, out RunInputs r)
+            {
+                r.WA = WA[k]; r.WB = WB[k];
+                r.DxA = DxA[k]; r.DxB = DxB[k]; r.DyA = DyA[k]; r.DyB = DyB[k]; r.DzA = DzA[k]; r.DzB = DzB[k];
+                r.DlxA = DlxA[k]; r.DlxB = DlxB[k]; r.DlyA = DlyA[k]; r.DlyB = DlyB[k]; r.DlzA = DlzA[k]; r.DlzB = DlzB[k];
+                r.PxA = PxA[k]; r.PxB = PxB[k]; r.PyA = PyA[k]; r.PyB = PyB[k]; r.PzA = PzA[k]; r.PzB = PzB[k];
+                r.LxA = LxA[k]; r.LxB = LxB[k]; r.LyA = LyA[k]; r.LyB = LyB[k]; r.LzA = LzA[k]; r.LzB = LzB[k];
+                r.Rest = Rest[k]; r.Compliance = Compliance[k]; r.LastTension = LastTension[k];
+            }
+
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             private static ReadOnlySpan<Vector<float>> A(float[] values, int s) => VectorPath.AsLanes(ChainState.Exactly(values, s));
 
@@ -198,9 +220,9 @@ namespace HookeRope.Solver
         /// <summary>
         /// <see cref="MoveParticles{T}"/> of a chain without contacts or broken segments on lanes: the particle pass (motion
         /// w_i·(δΛ_i − δΛ_{i−1}) and the displacement's double split) on runs of <see cref="VectorPath.FloatLanes"/>
-        /// particles from particle 1, then the segments' second-order length errors from the recorded motions on runs of
-        /// segments (a run with a released segment writes only its active lanes, row by row). Each lane does the scalar
-        /// pass's operations in its order, so the bits are the same.
+        /// particles from particle 1; the segments' second-order length errors from the recorded motions are left to
+        /// <see cref="ApplyLanes"/> (lengthErrors), which has the runs' directions and rest lengths at hand. Each lane does
+        /// the scalar pass's operations in its order, so the bits are the same.
         /// </summary>
         private static void MoveParticlesLanes(ChainState c)
         {
@@ -218,14 +240,13 @@ namespace HookeRope.Solver
             var z = new MoveViews(c.StepZ, c.DZ, c.DLowZ, c.MotionZ, s);
             for (int k = 0; k < runs; k++)
             {
-                Vector.Widen(w[k], out Vector<double> wLow, out Vector<double> wHigh);
+                ChainState.Widen(w[k], out Vector<double> wLow, out Vector<double> wHigh);
                 MoveLanes(in x, k, wLow, wHigh);
                 MoveLanes(in y, k, wLow, wHigh);
                 MoveLanes(in z, k, wLow, wHigh);
             }
             for (int i = 1 + runs * lanes; i <= s; i++)
                 MoveParticle(c, i, c.StepX[i] - c.StepX[i - 1], c.StepY[i] - c.StepY[i - 1], c.StepZ[i] - c.StepZ[i - 1]);
-            LengthErrorLanes(c);
         }
 
         /// <summary>Particle i moved by its inverse mass times the pull (N·s²), recorded as its motion (the scalar pass's step).</summary>
@@ -246,11 +267,11 @@ namespace HookeRope.Solver
         {
             Vector<double> mLow = wLow * (v.After[2 * k] - v.Before[2 * k]), mHigh = wHigh * (v.After[2 * k + 1] - v.Before[2 * k + 1]);
             v.Motion[2 * k] = mLow; v.Motion[2 * k + 1] = mHigh;
-            Vector.Widen(v.D[k], out Vector<double> dLow, out Vector<double> dHigh);
-            Vector.Widen(v.Low[k], out Vector<double> lLow, out Vector<double> lHigh);
+            ChainState.Widen(v.D[k], out Vector<double> dLow, out Vector<double> dHigh);
+            ChainState.Widen(v.Low[k], out Vector<double> lLow, out Vector<double> lHigh);
             Vector<double> xLow = (dLow + lLow) + mLow, xHigh = (dHigh + lHigh) + mHigh;
             Vector<float> f = Vector.Narrow(xLow, xHigh);
-            Vector.Widen(f, out Vector<double> fLow, out Vector<double> fHigh);
+            ChainState.Widen(f, out Vector<double> fLow, out Vector<double> fHigh);
             v.D[k] = f;
             v.Low[k] = Vector.Narrow(xLow - fLow, xHigh - fHigh);
         }
@@ -274,38 +295,6 @@ namespace HookeRope.Solver
                 D = VectorPath.AsLanes(ChainState.Shifted(d, s));
                 Low = VectorPath.AsLanes(ChainState.Shifted(low, s));
             }
-        }
-
-        /// <summary>
-        /// The active segments' second-order length errors (<see cref="LengthError"/>) from the motions of their ends, on runs
-        /// of <see cref="VectorPath.FloatLanes"/> segments; a run with a released segment and the tail go row by row.
-        /// </summary>
-        private static void LengthErrorLanes(ChainState c)
-        {
-            int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes;
-            ReadOnlySpan<Vector<double>> ax = VectorPath.AsLanes(ChainState.Exactly(c.MotionX, s)), ay = VectorPath.AsLanes(ChainState.Exactly(c.MotionY, s)), az = VectorPath.AsLanes(ChainState.Exactly(c.MotionZ, s));
-            ReadOnlySpan<Vector<double>> bx = VectorPath.AsLanes(ChainState.Shifted(c.MotionX, s)), by = VectorPath.AsLanes(ChainState.Shifted(c.MotionY, s)), bz = VectorPath.AsLanes(ChainState.Shifted(c.MotionZ, s));
-            ReadOnlySpan<Vector<float>> dirX = VectorPath.AsLanes(ChainState.Exactly(c.DirX, s)), dirY = VectorPath.AsLanes(ChainState.Exactly(c.DirY, s)), dirZ = VectorPath.AsLanes(ChainState.Exactly(c.DirZ, s));
-            ReadOnlySpan<Vector<float>> length = VectorPath.AsLanes(ChainState.Exactly(c.Length, s)), rest = VectorPath.AsLanes(ChainState.Exactly(c.RestLength, s));
-            Span<Vector<double>> error = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.LengthError, s));
-            ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
-            Vector<double> two = new Vector<double>(2.0), micro = new Vector<double>(1e-6);
-            for (int k = 0; k < runs; k++)
-            {
-                if (!AllTrue(active, k * lanes))
-                {
-                    LengthErrorRows(c, k * lanes, (k + 1) * lanes);
-                    continue;
-                }
-                Vector.Widen(dirX[k], out Vector<double> exLow, out Vector<double> exHigh);
-                Vector.Widen(dirY[k], out Vector<double> eyLow, out Vector<double> eyHigh);
-                Vector.Widen(dirZ[k], out Vector<double> ezLow, out Vector<double> ezHigh);
-                Vector.Widen(length[k], out Vector<double> lLow, out Vector<double> lHigh);
-                Vector.Widen(rest[k], out Vector<double> rLow, out Vector<double> rHigh);
-                error[2 * k] = LengthErrors(bx[2 * k] - ax[2 * k], by[2 * k] - ay[2 * k], bz[2 * k] - az[2 * k], exLow, eyLow, ezLow, lLow, micro * rLow, two);
-                error[2 * k + 1] = LengthErrors(bx[2 * k + 1] - ax[2 * k + 1], by[2 * k + 1] - ay[2 * k + 1], bz[2 * k + 1] - az[2 * k + 1], exHigh, eyHigh, ezHigh, lHigh, micro * rHigh, two);
-            }
-            LengthErrorRows(c, runs * lanes, s);
         }
 
         /// <summary><see cref="LengthError"/> per lane (floor: 1e-6 times the rest length).</summary>
@@ -349,14 +338,20 @@ namespace HookeRope.Solver
         /// quietly — no tension above twice its estimate, a pushing segment's error within the tolerance, a pulling one's
         /// within the round-off floor — which then only accumulate their forces and write λ (the lanes' bits are the rows').
         /// Any other run goes to <see cref="ApplyRows"/> whole, in order, before anything of it is stored. Returns the
-        /// first segment not done.
+        /// first segment not done. With <paramref name="lengthErrors"/> (after <see cref="MoveParticlesLanes"/>) each run
+        /// first writes its active segments' length errors (<see cref="LengthErrors"/> on lanes, a run with a released
+        /// segment and the tail row by row: <see cref="LengthErrorRows"/>), so every error is written before the rows or
+        /// <see cref="Mismatched"/> read it.
         /// </summary>
-        private static int ApplyLanes(ChainState c, bool tensionOnly, double invH2, ref ConvergenceTests tests)
+        private static int ApplyLanes(ChainState c, bool tensionOnly, double invH2, bool lengthErrors, ref ConvergenceTests tests)
         {
             int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes;
             ReadOnlySpan<Vector<float>> dirX = VectorPath.AsLanes(ChainState.Exactly(c.DirX, s)), dirY = VectorPath.AsLanes(ChainState.Exactly(c.DirY, s)), dirZ = VectorPath.AsLanes(ChainState.Exactly(c.DirZ, s));
-            ReadOnlySpan<Vector<float>> rest = VectorPath.AsLanes(ChainState.Exactly(c.RestLength, s));
-            ReadOnlySpan<Vector<double>> error = VectorPath.AsLanes(ChainState.Exactly(c.LengthError, s)), estimate = VectorPath.AsLanes(ChainState.Exactly(c.EstimatedTension, s));
+            ReadOnlySpan<Vector<float>> rest = VectorPath.AsLanes(ChainState.Exactly(c.RestLength, s)), length = VectorPath.AsLanes(ChainState.Exactly(c.Length, s));
+            Span<Vector<double>> error = VectorPath.AsLanes(ChainState.Exactly(c.LengthError, s));
+            ReadOnlySpan<Vector<double>> estimate = VectorPath.AsLanes(ChainState.Exactly(c.EstimatedTension, s));
+            ReadOnlySpan<Vector<double>> ax = VectorPath.AsLanes(ChainState.Exactly(c.MotionX, s)), ay = VectorPath.AsLanes(ChainState.Exactly(c.MotionY, s)), az = VectorPath.AsLanes(ChainState.Exactly(c.MotionZ, s));
+            ReadOnlySpan<Vector<double>> bx = VectorPath.AsLanes(ChainState.Shifted(c.MotionX, s)), by = VectorPath.AsLanes(ChainState.Shifted(c.MotionY, s)), bz = VectorPath.AsLanes(ChainState.Shifted(c.MotionZ, s));
             ReadOnlySpan<Vector<double>> sx = VectorPath.AsLanes(ChainState.Exactly(c.StepX, s)), sy = VectorPath.AsLanes(ChainState.Exactly(c.StepY, s)), sz = VectorPath.AsLanes(ChainState.Exactly(c.StepZ, s));
             Span<Vector<double>> fx = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.ForceX, s));
             Span<Vector<double>> fy = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.ForceY, s));
@@ -364,19 +359,27 @@ namespace HookeRope.Solver
             Span<Vector<double>> lambda = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.Lambda, s));
             ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
             Vector<double> h2 = new Vector<double>(invH2), two = new Vector<double>(2.0), tolerance = new Vector<double>(NonlinearTolerance);
-            Vector<double> floor = new Vector<double>(tests.Floor);
+            Vector<double> floor = new Vector<double>(tests.Floor), micro = new Vector<double>(1e-6);
             for (int k = 0; k < runs; k++)
             {
                 if (!AllTrue(active, k * lanes))
                 {
+                    if (lengthErrors) LengthErrorRows(c, k * lanes, (k + 1) * lanes);
                     ApplyRows(c, k * lanes, (k + 1) * lanes, tensionOnly, invH2, ref tests);
                     continue;
                 }
-                Vector.Widen(dirX[k], out Vector<double> exLow, out Vector<double> exHigh);
-                Vector.Widen(dirY[k], out Vector<double> eyLow, out Vector<double> eyHigh);
-                Vector.Widen(dirZ[k], out Vector<double> ezLow, out Vector<double> ezHigh);
-                Vector.Widen(rest[k], out Vector<double> rLow, out Vector<double> rHigh);
+                ChainState.Widen(dirX[k], out Vector<double> exLow, out Vector<double> exHigh);
+                ChainState.Widen(dirY[k], out Vector<double> eyLow, out Vector<double> eyHigh);
+                ChainState.Widen(dirZ[k], out Vector<double> ezLow, out Vector<double> ezHigh);
+                ChainState.Widen(rest[k], out Vector<double> rLow, out Vector<double> rHigh);
                 int a = 2 * k, b = 2 * k + 1;
+                if (lengthErrors)
+                {
+                    // the run's second-order length errors (LengthErrors, as the rows' LengthError) from the motions just recorded
+                    ChainState.Widen(length[k], out Vector<double> lengthLow, out Vector<double> lengthHigh);
+                    error[a] = LengthErrors(bx[a] - ax[a], by[a] - ay[a], bz[a] - az[a], exLow, eyLow, ezLow, lengthLow, micro * rLow, two);
+                    error[b] = LengthErrors(bx[b] - ax[b], by[b] - ay[b], bz[b] - az[b], exHigh, eyHigh, ezHigh, lengthHigh, micro * rHigh, two);
+                }
                 Vector<double> gxLow = fx[a] + sx[a], gyLow = fy[a] + sy[a], gzLow = fz[a] + sz[a];
                 Vector<double> gxHigh = fx[b] + sx[b], gyHigh = fy[b] + sy[b], gzHigh = fz[b] + sz[b];
                 // λ = −(g·n): the sign bit flipped as the scalar negation does (Vector's unary minus may be 0 − x, which
@@ -392,6 +395,7 @@ namespace HookeRope.Solver
                 fx[a] = gxLow; fy[a] = gyLow; fz[a] = gzLow; fx[b] = gxHigh; fy[b] = gyHigh; fz[b] = gzHigh;
                 lambda[a] = lLow; lambda[b] = lHigh;
             }
+            if (lengthErrors) LengthErrorRows(c, runs * lanes, s);
             return runs * lanes;
         }
 
@@ -427,9 +431,9 @@ namespace HookeRope.Solver
             {
                 if (AllTrue(active, k * lanes))
                 {
-                    Vector.Widen(dirX[k], out Vector<double> exLow, out Vector<double> exHigh);
-                    Vector.Widen(dirY[k], out Vector<double> eyLow, out Vector<double> eyHigh);
-                    Vector.Widen(dirZ[k], out Vector<double> ezLow, out Vector<double> ezHigh);
+                    ChainState.Widen(dirX[k], out Vector<double> exLow, out Vector<double> exHigh);
+                    ChainState.Widen(dirY[k], out Vector<double> eyLow, out Vector<double> eyHigh);
+                    ChainState.Widen(dirZ[k], out Vector<double> ezLow, out Vector<double> ezHigh);
                     int a = 2 * k, b = 2 * k + 1;
                     Vector<double> alongLow = (fx[a] + dx[a]) * exLow + (fy[a] + dy[a]) * eyLow + (fz[a] + dz[a]) * ezLow;
                     Vector<double> alongHigh = (fx[b] + dx[b]) * exHigh + (fy[b] + dy[b]) * eyHigh + (fz[b] + dz[b]) * ezHigh;

@@ -413,13 +413,15 @@ namespace HookeRope.Solver
         /// </summary>
         private static double Apply(ChainState c, bool contacts, bool tensionOnly, double invH2, out bool unconverged, out bool estimateTooLow)
         {
+            // the particle pass on lanes leaves the length errors to ApplyLanes, which computes them per run of segments
+            bool lanes = !contacts && VectorPath.Enabled && c.BrokenCount == 0 && c.SegmentCount > VectorPath.FloatLanes;
             if (contacts) MoveParticles<SegmentForceSystem.WithContacts>(c);
-            else if (VectorPath.Enabled && c.BrokenCount == 0 && c.SegmentCount > VectorPath.FloatLanes) MoveParticlesLanes(c);
+            else if (lanes) MoveParticlesLanes(c);
             else MoveParticles<SegmentForceSystem.NoContacts>(c);
             int s = c.SegmentCount;
             var tests = new ConvergenceTests { Floor = RoundOffFloor * c.Size };
             // the lanes take the runs of active segments whose tests all pass quietly; the rows the rest, in order
-            int from = VectorPath.Enabled ? ApplyLanes(c, tensionOnly, invH2, ref tests) : 0;
+            int from = VectorPath.Enabled ? ApplyLanes(c, tensionOnly, invH2, lanes, ref tests) : 0;
             if (from < s) ApplyRows(c, from, s, tensionOnly, invH2, ref tests);
             unconverged = tests.Unconverged;
             estimateTooLow = tests.EstimateTooLow;

@@ -87,6 +87,8 @@ namespace HookeRope.Solver
             Span<Vector<double>> bs = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(b, n));
             var four = new Vector<double>(4.0);
             var three = new Vector<double>(3.0);
+            // the coordinate's factors broadcast once, not per run
+            Vector<double> ev = new Vector<double>(e), egv = new Vector<double>(eg), cgv = new Vector<double>(cg), invHv = new Vector<double>(invH);
             for (int k = 0; k < xs.Length; k++)
             {
                 Vector<float> xk = xs[k];
@@ -100,12 +102,12 @@ namespace HookeRope.Solver
                 Vector<double> w0 = vs[a], w1 = vs[z];
                 // m = (4v − v_prev)/3; d_pred = (D + DLow)/3 + e·m + c·g, rounded to float; base = m + e·g − d_pred/h
                 Vector<double> m0 = (four * w0 - us[a]) / three, m1 = (four * w1 - us[z]) / three;
-                Vector.Widen(ds[k], out Vector<double> d0, out Vector<double> d1);
-                Vector.Widen(ls[k], out Vector<double> l0, out Vector<double> l1);
-                Vector<float> o = Vector.Narrow((d0 + l0) / three + e * m0 + new Vector<double>(cg), (d1 + l1) / three + e * m1 + new Vector<double>(cg));
-                Vector.Widen(o, out Vector<double> o0, out Vector<double> o1);
-                bs[a] = m0 + new Vector<double>(eg) - o0 * invH;
-                bs[z] = m1 + new Vector<double>(eg) - o1 * invH;
+                ChainState.Widen(ds[k], out Vector<double> d0, out Vector<double> d1);
+                ChainState.Widen(ls[k], out Vector<double> l0, out Vector<double> l1);
+                Vector<float> o = Vector.Narrow((d0 + l0) / three + ev * m0 + cgv, (d1 + l1) / three + ev * m1 + cgv);
+                ChainState.Widen(o, out Vector<double> o0, out Vector<double> o1);
+                bs[a] = m0 + egv - o0 * invHv;
+                bs[z] = m1 + egv - o1 * invHv;
                 ds[k] = o;
                 ls[k] = Vector<float>.Zero;
                 us[a] = w0; us[z] = w1;
@@ -143,18 +145,20 @@ namespace HookeRope.Solver
             ReadOnlySpan<Vector<double>> sx = Doubles(chain.SolveDX, n), sy = Doubles(chain.SolveDY, n), sz = Doubles(chain.SolveDZ, n);
             ReadOnlySpan<Vector<double>> bx = Doubles(chain.BaseVelX, n), by = Doubles(chain.BaseVelY, n), bz = Doubles(chain.BaseVelZ, n);
             Span<Vector<double>> vx = Doubles(chain.VelX, n), vy = Doubles(chain.VelY, n), vz = Doubles(chain.VelZ, n);
+            // 1/h and κ broadcast once, not per run and coordinate
+            Vector<double> invHv = new Vector<double>(invH), kv = new Vector<double>(k);
             for (int b = 0; b < dx.Length; b++)
             {
                 int a = 2 * b, z = a + 1;
-                VelocityLanes<TMark>(b, dx[b], lx[b], qx[b], sx, bx, vx, invH, k, out Vector<double> cx0, out Vector<double> cx1);
-                VelocityLanes<TMark>(b, dy[b], ly[b], qy[b], sy, by, vy, invH, k, out Vector<double> cy0, out Vector<double> cy1);
-                VelocityLanes<TMark>(b, dz[b], lz[b], qz[b], sz, bz, vz, invH, k, out Vector<double> cz0, out Vector<double> cz1);
+                VelocityLanes<TMark>(b, dx[b], lx[b], qx[b], sx, bx, vx, invHv, kv, out Vector<double> cx0, out Vector<double> cx1);
+                VelocityLanes<TMark>(b, dy[b], ly[b], qy[b], sy, by, vy, invHv, kv, out Vector<double> cy0, out Vector<double> cy1);
+                VelocityLanes<TMark>(b, dz[b], lz[b], qz[b], sz, bz, vz, invHv, kv, out Vector<double> cz0, out Vector<double> cz1);
                 // the history boost v_prev += c/h of a particle some push moved (c ≠ 0 in any coordinate), as the scalar branch
                 Vector<long> still0 = Vector.Equals(cx0, Vector<double>.Zero) & Vector.Equals(cy0, Vector<double>.Zero) & Vector.Equals(cz0, Vector<double>.Zero);
                 Vector<long> still1 = Vector.Equals(cx1, Vector<double>.Zero) & Vector.Equals(cy1, Vector<double>.Zero) & Vector.Equals(cz1, Vector<double>.Zero);
-                wx[a] = Vector.ConditionalSelect(still0, wx[a], wx[a] + cx0 * invH); wx[z] = Vector.ConditionalSelect(still1, wx[z], wx[z] + cx1 * invH);
-                wy[a] = Vector.ConditionalSelect(still0, wy[a], wy[a] + cy0 * invH); wy[z] = Vector.ConditionalSelect(still1, wy[z], wy[z] + cy1 * invH);
-                wz[a] = Vector.ConditionalSelect(still0, wz[a], wz[a] + cz0 * invH); wz[z] = Vector.ConditionalSelect(still1, wz[z], wz[z] + cz1 * invH);
+                wx[a] = Vector.ConditionalSelect(still0, wx[a], wx[a] + cx0 * invHv); wx[z] = Vector.ConditionalSelect(still1, wx[z], wx[z] + cx1 * invHv);
+                wy[a] = Vector.ConditionalSelect(still0, wy[a], wy[a] + cy0 * invHv); wy[z] = Vector.ConditionalSelect(still1, wy[z], wy[z] + cy1 * invHv);
+                wz[a] = Vector.ConditionalSelect(still0, wz[a], wz[a] + cz0 * invHv); wz[z] = Vector.ConditionalSelect(still1, wz[z], wz[z] + cz1 * invHv);
             }
             int full = dx.Length * width;
             for (int start = 0; start < full; start += width)
@@ -182,16 +186,16 @@ namespace HookeRope.Solver
 
         /// <summary>
         /// One coordinate of a block of free particles' second-order velocities: d = D + DLow, Δ (stored or marked as TMark says),
-        /// the push c = d − d_pred − Δ (returned) and v = base + d/h + κ·Δ (κ = k).
+        /// the push c = d − d_pred − Δ (returned) and v = base + d/h + κ·Δ (κ = k; invH and k broadcast by the caller).
         /// </summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static void VelocityLanes<TMark>(int b, Vector<float> d, Vector<float> low, Vector<float> q, ReadOnlySpan<Vector<double>> s,
-            ReadOnlySpan<Vector<double>> bs, Span<Vector<double>> vs, double invH, double k, out Vector<double> c0, out Vector<double> c1) where TMark : struct
+            ReadOnlySpan<Vector<double>> bs, Span<Vector<double>> vs, Vector<double> invH, Vector<double> k, out Vector<double> c0, out Vector<double> c1) where TMark : struct
         {
             int a = 2 * b, z = a + 1;
-            Vector.Widen(d, out Vector<double> d0, out Vector<double> d1);
-            Vector.Widen(low, out Vector<double> l0, out Vector<double> l1);
-            Vector.Widen(q, out Vector<double> q0, out Vector<double> q1);
+            ChainState.Widen(d, out Vector<double> d0, out Vector<double> d1);
+            ChainState.Widen(low, out Vector<double> l0, out Vector<double> l1);
+            ChainState.Widen(q, out Vector<double> q0, out Vector<double> q1);
             Vector<double> m0 = d0 + l0, m1 = d1 + l1, e0, e1;
             if (typeof(TMark) == typeof(ImpliedStartMark)) { e0 = StartMarks(q0); e1 = StartMarks(q1); }
             else { e0 = s[a]; e1 = s[z]; }
@@ -258,10 +262,10 @@ namespace HookeRope.Solver
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static Vector<float> Committed(Vector<float> previous, Vector<float> low, Vector<float> d, Vector<float> dLow, out Vector<double> e0, out Vector<double> e1)
         {
-            Vector.Widen(previous, out Vector<double> p0, out Vector<double> p1);
-            Vector.Widen(low, out Vector<double> l0, out Vector<double> l1);
-            Vector.Widen(d, out Vector<double> d0, out Vector<double> d1);
-            Vector.Widen(dLow, out Vector<double> r0, out Vector<double> r1);
+            ChainState.Widen(previous, out Vector<double> p0, out Vector<double> p1);
+            ChainState.Widen(low, out Vector<double> l0, out Vector<double> l1);
+            ChainState.Widen(d, out Vector<double> d0, out Vector<double> d1);
+            ChainState.Widen(dLow, out Vector<double> r0, out Vector<double> r1);
             e0 = p0 + l0 + (d0 + r0);
             e1 = p1 + l1 + (d1 + r1);
             return Vector.Narrow(e0, e1);
@@ -271,7 +275,7 @@ namespace HookeRope.Solver
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static Vector<float> Remainder(Vector<double> e0, Vector<double> e1, Vector<float> f)
         {
-            Vector.Widen(f, out Vector<double> f0, out Vector<double> f1);
+            ChainState.Widen(f, out Vector<double> f0, out Vector<double> f1);
             return Vector.Narrow(e0 - f0, e1 - f1);
         }
 

@@ -84,11 +84,11 @@ namespace HookeRope.Solver
             Span<Vector<double>> byy = VectorPath.AsLanes(ChainState.Exactly(c.BlockYY, s)), byz = VectorPath.AsLanes(ChainState.Exactly(c.BlockYZ, s)), bzz = VectorPath.AsLanes(ChainState.Exactly(c.BlockZZ, s));
             for (int k = 0; k < runs; k++)
             {
-                Vector.Widen(dirX[k], out Vector<double> nxLow, out Vector<double> nxHigh);
-                Vector.Widen(dirY[k], out Vector<double> nyLow, out Vector<double> nyHigh);
-                Vector.Widen(dirZ[k], out Vector<double> nzLow, out Vector<double> nzHigh);
-                Vector.Widen(wA[k], out Vector<double> aLow, out Vector<double> aHigh);
-                Vector.Widen(wB[k], out Vector<double> bLow, out Vector<double> bHigh);
+                ChainState.Widen(dirX[k], out Vector<double> nxLow, out Vector<double> nxHigh);
+                ChainState.Widen(dirY[k], out Vector<double> nyLow, out Vector<double> nyHigh);
+                ChainState.Widen(dirZ[k], out Vector<double> nzLow, out Vector<double> nzHigh);
+                ChainState.Widen(wA[k], out Vector<double> aLow, out Vector<double> aHigh);
+                ChainState.Widen(wB[k], out Vector<double> bLow, out Vector<double> bHigh);
                 int h = 2 * k;
                 BlockLanes(nxLow, nyLow, nzLow, transverse[h], axial[h], aLow + bLow,
                     out bxx[h], out bxy[h], out bxz[h], out byy[h], out byz[h], out bzz[h]);
@@ -135,6 +135,9 @@ namespace HookeRope.Solver
             bool contacts = typeof(T) == typeof(WithContacts), stored = typeof(TBlocks) == typeof(StoredBlocks);
             int s = c.SegmentCount;
             if (from >= s) return;
+            // row 0 (no row before it) goes first, so the loop eliminates through particle j on every row it does; called
+            // before the spans are made, which then need not live across a call (in callee-saved registers or spilled)
+            if (from == 0) FirstRow<T, TBlocks>(c);
             // spans of exactly s entries (the loop bound) index without bounds checks; wB[j] is particle j + 1's
             ReadOnlySpan<float> wA = ChainState.Exactly(c.InverseMass, s), wB = ChainState.Shifted(c.InverseMass, s);
             ReadOnlySpan<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
@@ -144,17 +147,17 @@ namespace HookeRope.Solver
             Span<EliminatedRow> rows = ChainState.Exactly(c.Eliminated, s);
             ReadOnlySpan<double> rx = ChainState.Exactly(c.ResidualX, s), ry = ChainState.Exactly(c.ResidualY, s), rz = ChainState.Exactly(c.ResidualZ, s);
             ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
+            int start = from > 0 ? from : 1;
             // the row before (its inverse pivot G and reduced vector p) is read from where it was stored, not carried in
             // registers: the loads fold into the arithmetic, and the sweep's other pointers and the row's own block keep
-            // the registers (row 0 reads nothing of it)
-            ref EliminatedRow before = ref rows[from > 0 ? from - 1 : 0];
-            bool previousActive = from > 0 && active[from - 1];
-            // (uint) bound: j is an index (from ≥ 0), so every span of s entries is read without a bounds check
-            for (int j = from; (uint)j < (uint)s; j++)
+            // the registers
+            ref EliminatedRow before = ref rows[start - 1];
+            bool previousActive = active[start - 1];
+            // (uint) bound: j is an index (start ≥ 1), so every span of s entries is read without a bounds check
+            for (int j = start; (uint)j < (uint)s; j++)
             {
                 double sxx, sxy, sxz, syy, syz, szz, bx, by, bz;
-                bool rowActive = active[j];
-                if (!rowActive)
+                if (!active[j])
                 {
                     // the forces read from the arrays: the few released rows pay the checks, the loop keeps three pointers fewer
                     sxx = 1; sxy = 0; sxz = 0; syy = 1; syz = 0; szz = 1;
@@ -172,13 +175,13 @@ namespace HookeRope.Solver
                         var row = new Row { XX = sxx, XY = sxy, XZ = sxz, YY = syy, YZ = syz, ZZ = szz, X = bx, Y = by, Z = bz };
                         SubtractHeldNormal(c, j, ref row.XX, ref row.XY, ref row.XZ, ref row.YY, ref row.YZ, ref row.ZZ);
                         SubtractHeldNormal(c, j + 1, ref row.XX, ref row.XY, ref row.XZ, ref row.YY, ref row.YZ, ref row.ZZ);
-                        held = j > 0 && c.ContactActive[j];
+                        held = c.ContactActive[j];
                         if (held)
                             EliminateHeld(c, j, previousActive, before.XX, before.XY, before.XZ, before.YY, before.YZ, before.ZZ, before.X, before.Y, before.Z,
                                 ref row.XX, ref row.XY, ref row.XZ, ref row.YY, ref row.YZ, ref row.ZZ, ref row.X, ref row.Y, ref row.Z);
                         sxx = row.XX; sxy = row.XY; sxz = row.XZ; syy = row.YY; syz = row.YZ; szz = row.ZZ; bx = row.X; by = row.Y; bz = row.Z;
                     }
-                    if (j > 0 && !held)
+                    if (!held)
                     {
                         // elimination through a free particle j (isotropic coupling −w_j I)
                         double wj = wA[j];
@@ -187,9 +190,11 @@ namespace HookeRope.Solver
                             double k = wj * wj;
                             sxx -= k * before.XX; sxy -= k * before.XY; sxz -= k * before.XZ; syy -= k * before.YY; syz -= k * before.YZ; szz -= k * before.ZZ;
                         }
-                        bx += wj * (before.XX * before.X + before.XY * before.Y + before.XZ * before.Z);
-                        by += wj * (before.XY * before.X + before.YY * before.Y + before.YZ * before.Z);
-                        bz += wj * (before.XZ * before.X + before.YZ * before.Y + before.ZZ * before.Z);
+                        // p in locals first: each product then reads its pivot entry from memory
+                        double px = before.X, py = before.Y, pz = before.Z;
+                        bx += wj * (before.XX * px + before.XY * py + before.XZ * pz);
+                        by += wj * (before.XY * px + before.YY * py + before.YZ * pz);
+                        bz += wj * (before.XZ * px + before.YZ * py + before.ZZ * pz);
                     }
                 }
                 Invert(sxx, sxy, sxz, syy, syz, szz, out double gxx, out double gxy, out double gxz, out double gyy, out double gyz, out double gzz);
@@ -197,8 +202,39 @@ namespace HookeRope.Solver
                 eliminated.XX = gxx; eliminated.XY = gxy; eliminated.XZ = gxz; eliminated.YY = gyy; eliminated.YZ = gyz; eliminated.ZZ = gzz;
                 eliminated.X = bx; eliminated.Y = by; eliminated.Z = bz;
                 before = ref eliminated;
-                previousActive = rowActive;
+                // read again, not carried: the row's flag keeps no register through the row
+                previousActive = active[j];
             }
+        }
+
+        /// <summary>
+        /// Row 0 of <see cref="Forward{T, TBlocks}"/>: its block (with the held contacts' terms) and right-hand side, no row
+        /// before it to eliminate.
+        /// </summary>
+        private static void FirstRow<T, TBlocks>(ChainState c) where T : struct where TBlocks : struct
+        {
+            double sxx, sxy, sxz, syy, syz, szz, bx, by, bz;
+            if (!c.Active[0])
+            {
+                sxx = 1; sxy = 0; sxz = 0; syy = 1; syz = 0; szz = 1;
+                bx = -c.ForceX[0]; by = -c.ForceY[0]; bz = -c.ForceZ[0];
+            }
+            else
+            {
+                if (typeof(TBlocks) == typeof(StoredBlocks)) { sxx = c.BlockXX[0]; sxy = c.BlockXY[0]; sxz = c.BlockXZ[0]; syy = c.BlockYY[0]; syz = c.BlockYZ[0]; szz = c.BlockZZ[0]; }
+                else Block(c.DirX[0], c.DirY[0], c.DirZ[0], c.TransverseCompliance[0], c.AxialCompliance[0], (double)c.InverseMass[0] + c.InverseMass[1],
+                    out sxx, out sxy, out sxz, out syy, out syz, out szz);
+                bx = c.ResidualX[0]; by = c.ResidualY[0]; bz = c.ResidualZ[0];
+                if (typeof(T) == typeof(WithContacts))
+                {
+                    SubtractHeldNormal(c, 0, ref sxx, ref sxy, ref sxz, ref syy, ref syz, ref szz);
+                    SubtractHeldNormal(c, 1, ref sxx, ref sxy, ref sxz, ref syy, ref syz, ref szz);
+                }
+            }
+            Invert(sxx, sxy, sxz, syy, syz, szz, out double gxx, out double gxy, out double gxz, out double gyy, out double gyz, out double gzz);
+            ref EliminatedRow first = ref c.Eliminated[0];
+            first.XX = gxx; first.XY = gxy; first.XZ = gxz; first.YY = gyy; first.YZ = gyz; first.ZZ = gzz;
+            first.X = bx; first.Y = by; first.Z = bz;
         }
 
         /// <summary>
@@ -218,7 +254,9 @@ namespace HookeRope.Solver
             ref readonly EliminatedRow end = ref rows[last];
             BackRow(in end, end.X, end.Y, end.Z, out double nx, out double ny, out double nz);
             dx[last] = nx; dy[last] = ny; dz[last] = nz;
-            for (int j = last - 1; j >= 0; j--)
+            // (uint) bound: the loop ends when j passes 0 (−1 is above every index), and every span of s entries is read
+            // without a bounds check
+            for (int j = last - 1; (uint)j < (uint)s; j--)
             {
                 ref readonly EliminatedRow row = ref rows[j];
                 double vx = row.X, vy = row.Y, vz = row.Z;
