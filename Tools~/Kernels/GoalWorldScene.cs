@@ -1,5 +1,7 @@
 using System;
 using System.Globalization;
+using System.Runtime.InteropServices;
+using HookeRope.Geometry;
 using HookeRope.Bench;
 using HookeRope.World;
 
@@ -50,6 +52,38 @@ namespace HookeRope.Kernels
             int first = GoalScene.WarmUpFrames + 1;
             Console.WriteLine(string.Format(CultureInfo.InvariantCulture, "{0} frames {1}-{2}: {3:x16} units {4} vertices {5}",
                 name, first, first + frames - 1, hash, units, vertices));
+            return 0;
+        }
+
+        /// <summary>
+        /// Builds the goal world of <paramref name="ropes"/> lanyards, steps and fills <paramref name="frames"/> frames of the
+        /// window and prints an FNV-1a hash of every filled vertex's and index's bits, every frame (a mesh change that is meant
+        /// to be bit-identical keeps it), with the vertex count.
+        /// </summary>
+        public static int MeshHash(int ropes, int frames)
+        {
+            if (ropes < 1) throw new ArgumentOutOfRangeException(nameof(ropes), ropes, "the rope count of mesh-hash must be at least 1.");
+            if (frames < 1) throw new ArgumentOutOfRangeException(nameof(frames), frames, "the frame count of mesh-hash must be at least 1.");
+            ulong hash = 14695981039346656037UL;
+            long vertices = 0;
+            using (var world = GoalScene.Build(ropes, Segments, 1, warmUpFrames: GoalScene.WarmUpFrames))
+            {
+                for (int f = 0; f < frames; f++)
+                {
+                    world.StepAndFillMeshes(GoalScene.Frame);
+                    for (int i = 0; i < world.Count; i++)
+                    {
+                        RopeMeshSlot slot = world.GetMeshSlot(i);
+                        ReadOnlySpan<byte> bytes = MemoryMarshal.AsBytes(new ReadOnlySpan<TubeVertex>(slot.Vertices, 0, slot.Update.VertexCount));
+                        for (int b = 0; b < bytes.Length; b++) hash = (hash ^ bytes[b]) * 1099511628211UL;
+                        ReadOnlySpan<byte> indices = MemoryMarshal.AsBytes(new ReadOnlySpan<int>(slot.Indices, 0, slot.Update.IndexCount));
+                        for (int b = 0; b < indices.Length; b++) hash = (hash ^ indices[b]) * 1099511628211UL;
+                        vertices += slot.Update.VertexCount;
+                    }
+                }
+            }
+            Console.WriteLine(string.Format(CultureInfo.InvariantCulture, "mesh-hash goal-world:{0} frames {1}-{2}: {3:x16} vertices {4}",
+                ropes, GoalScene.WarmUpFrames + 1, GoalScene.WarmUpFrames + frames, hash, vertices));
             return 0;
         }
     }

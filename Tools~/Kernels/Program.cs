@@ -14,6 +14,8 @@ namespace HookeRope.Kernels
     /// <c>run goal-world:N K</c> / <c>run goal-step:N K</c>: K frames of the goal bench's window in a world of N
     /// lanyards with / without mesh fills (<see cref="GoalWorldScene"/>; goal-count.sh counts them).</item>
     /// <item><c>hash [STEPS]</c>: the state hash of every scene after STEPS (default 900) steps, for bit-identity checks.</item>
+    /// <item><c>mesh-hash [ROPES] [FRAMES]</c>: the hash of every tube vertex and index the goal world (default 10 ropes) fills
+    /// in FRAMES (default the bench's window) frames, for bit-identity checks of the mesh.</item>
     /// <item><c>time [--quick]</c>: wall-clock ns per Gauss–Seidel projection and per exact segment-iteration, 16 … 10 000
     /// segments (whole step at 8 substeps × 1 iteration, and marginal: 10 against 2 iterations at 1 substep); the exact
     /// solve on the fresh and the resting hanging rope, with its Newton iterations per substep, linear solves per iteration
@@ -51,8 +53,11 @@ namespace HookeRope.Kernels
                 }
                 return 0;
             }
+            if (args.Length >= 1 && args[0] == "mesh-hash")
+                return GoalWorldScene.MeshHash(args.Length > 1 ? int.Parse(args[1], CultureInfo.InvariantCulture) : 10,
+                    args.Length > 2 ? int.Parse(args[2], CultureInfo.InvariantCulture) : HookeRope.Bench.GoalScene.WindowFrames);
             if (args.Length >= 1 && args[0] == "time") return KernelTimer.Execute(args.Length > 1 && args[1] == "--quick");
-            Console.Error.WriteLine("usage: run SCENE STEPS | hash [STEPS] | time [--quick]   (scenes: " + string.Join(", ", KernelScene.Names) + ", goal-world:N, goal-step:N)");
+            Console.Error.WriteLine("usage: run SCENE STEPS | hash [STEPS] | mesh-hash [ROPES] [FRAMES] | time [--quick]   (scenes: " + string.Join(", ", KernelScene.Names) + ", goal-world:N, goal-step:N)");
             return 2;
         }
 
