@@ -69,6 +69,8 @@ namespace HookeRope.Solver
         // the float inputs of the assembly run on lanes (ExactChainSolver.AssembleLanes), read once per run for both of its
         // halves: a field, not a local of the assembly, which would zero it on every call
         public ExactChainSolver.RunInputs AssemblyRun;
+        // the two halves' results of that run (ExactChainSolver.AssembleHalf), for the same reason
+        public ExactChainSolver.AssembledLanes AssemblyLow, AssemblyHigh;
         public readonly bool[] Active;
         // the convergence test and line search of the exact solve (see ExactChainSolver.Apply and Mismatched, ChainLineSearch): each
         // segment's effective rest length L' (m, damping folded in) and whether it was assembled this iteration (not broken,

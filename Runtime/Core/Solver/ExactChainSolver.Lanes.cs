@@ -13,29 +13,39 @@ namespace HookeRope.Solver
         /// plasticity), each run as two halves of <see cref="VectorPath.DoubleLanes"/> (<see cref="AssembleHalf{THalf}"/>).
         /// A run with a segment the rows treat apart — a vanishing or non-finite span, no mobility and no compliance, or a
         /// force far off its segment while the chain has contacts — goes to <see cref="AssembleRows"/> whole, before anything
-        /// of it is stored. Returns the first segment not assembled (the rows take the rest).
+        /// of it is stored. Returns the first segment not assembled (the rows take the rest). <paramref name="views"/>: the
+        /// chain's views, built once per host step (<see cref="StepViews"/>) or for this call (<see cref="AssembleLanesOwnViews"/>).
         /// </summary>
-        private static int AssembleLanes(ChainState c, double invH2, double gammaAll, bool first, bool tensionOnly)
+        private static int AssembleLanes(ChainState c, in StepViews views, double invH2, double gammaAll, bool first, bool tensionOnly)
         {
             int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes;
-            var v = new AssemblyViews(c, s);
-            // the outputs as runs of VectorPath.DoubleLanes (one check per store, not a slice each)
-            Span<Vector<double>> rx = Doubles(c.ResidualX, s), ry = Doubles(c.ResidualY, s), rz = Doubles(c.ResidualZ, s);
-            Span<Vector<double>> axial = Doubles(c.AxialCompliance, s), transverse = Doubles(c.TransverseCompliance, s), estimate = Doubles(c.EstimatedTension, s);
-            Span<Vector<double>> effectiveRest = Doubles(c.EffectiveRest, s);
-            Span<Vector<float>> dirX = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(c.DirX, s));
-            Span<Vector<float>> dirY = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(c.DirY, s));
-            Span<Vector<float>> dirZ = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(c.DirZ, s));
-            Span<Vector<float>> length = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Exactly(c.Length, s));
-            Span<bool> assembled = ChainState.Exactly(c.Assembled, s);
             var p = new AssemblyParameters { InvH2 = invH2, Gamma = gammaAll, First = first, TensionOnly = tensionOnly, Contacts = c.ContactCount > 0 };
-            // the run's float inputs read once (one check each) for both halves, which read them from there
+            // the views copied into locals, one by one: indexed through the reference, each access would add an address
+            // computation, and a copy of the whole struct takes a bulk move with write barriers
+            ReadOnlySpan<Vector<float>> wa = views.WA, wb = views.WB;
+            ReadOnlySpan<Vector<float>> dxA = views.DxA, dxB = views.DxB, dyA = views.DyA, dyB = views.DyB, dzA = views.DzA, dzB = views.DzB;
+            ReadOnlySpan<Vector<float>> dlxA = views.DlxA, dlxB = views.DlxB, dlyA = views.DlyA, dlyB = views.DlyB, dlzA = views.DlzA, dlzB = views.DlzB;
+            ReadOnlySpan<Vector<float>> pxA = views.PxA, pxB = views.PxB, pyA = views.PyA, pyB = views.PyB, pzA = views.PzA, pzB = views.PzB;
+            ReadOnlySpan<Vector<float>> lxA = views.LxA, lxB = views.LxB, lyA = views.LyA, lyB = views.LyB, lzA = views.LzA, lzB = views.LzB;
+            ReadOnlySpan<Vector<float>> rest = views.Rest, compliance = views.Compliance, lastTension = views.LastTension;
+            Span<Vector<double>> rx = views.ResidualXOut, ry = views.ResidualYOut, rz = views.ResidualZOut;
+            Span<Vector<double>> axial = views.AxialOut, transverse = views.TransverseOut, estimate = views.EstimateOut, effectiveRest = views.RestOut;
+            Span<Vector<float>> dirX = views.DirXOut, dirY = views.DirYOut, dirZ = views.DirZOut, length = views.LengthOut;
+            Span<bool> assembled = views.AssembledOut;
+            // the run's float inputs read once (one check each) for both halves, which read them from there; the halves'
+            // results in the chain's fields too (as locals they would be zeroed on every call)
             ref RunInputs r = ref c.AssemblyRun;
+            ref AssembledLanes low = ref c.AssemblyLow, high = ref c.AssemblyHigh;
             for (int k = 0; k < runs; k++)
             {
-                v.Load(k, out r);
-                AssembleHalf<LowHalf>(in r, in v, k, in p, out AssembledLanes low);
-                AssembleHalf<HighHalf>(in r, in v, k, in p, out AssembledLanes high);
+                r.WA = wa[k]; r.WB = wb[k];
+                r.DxA = dxA[k]; r.DxB = dxB[k]; r.DyA = dyA[k]; r.DyB = dyB[k]; r.DzA = dzA[k]; r.DzB = dzB[k];
+                r.DlxA = dlxA[k]; r.DlxB = dlxB[k]; r.DlyA = dlyA[k]; r.DlyB = dlyB[k]; r.DlzA = dlzA[k]; r.DlzB = dlzB[k];
+                r.PxA = pxA[k]; r.PxB = pxB[k]; r.PyA = pyA[k]; r.PyB = pyB[k]; r.PzA = pzA[k]; r.PzB = pzB[k];
+                r.LxA = lxA[k]; r.LxB = lxB[k]; r.LyA = lyA[k]; r.LyB = lyB[k]; r.LzA = lzA[k]; r.LzB = lzB[k];
+                r.Rest = rest[k]; r.Compliance = compliance[k]; r.LastTension = lastTension[k];
+                AssembleHalf<LowHalf>(in r, in views, k, in p, out low);
+                AssembleHalf<HighHalf>(in r, in views, k, in p, out high);
                 int j = k * lanes;
                 if (!Vector.EqualsAll(low.Unusual | high.Unusual, Vector<long>.Zero))
                 {
@@ -43,8 +53,11 @@ namespace HookeRope.Solver
                     continue;
                 }
                 if (!Vector.EqualsAll(low.Rigid | high.Rigid, Vector<long>.Zero)) c.RigidInSolve = true;
-                low.Store(rx, ry, rz, axial, transverse, estimate, effectiveRest, 2 * k);
-                high.Store(rx, ry, rz, axial, transverse, estimate, effectiveRest, 2 * k + 1);
+                int a = 2 * k, b = 2 * k + 1;
+                rx[a] = low.Rx; ry[a] = low.Ry; rz[a] = low.Rz;
+                axial[a] = low.Axial; transverse[a] = low.Transverse; estimate[a] = low.Estimate; effectiveRest[a] = low.Rest;
+                rx[b] = high.Rx; ry[b] = high.Ry; rz[b] = high.Rz;
+                axial[b] = high.Axial; transverse[b] = high.Transverse; estimate[b] = high.Estimate; effectiveRest[b] = high.Rest;
                 dirX[k] = Vector.Narrow(low.Nx, high.Nx); dirY[k] = Vector.Narrow(low.Ny, high.Ny); dirZ[k] = Vector.Narrow(low.Nz, high.Nz);
                 length[k] = Vector.Narrow(low.Length, high.Length);
                 assembled.Slice(j, lanes).Fill(true);
@@ -52,12 +65,20 @@ namespace HookeRope.Solver
             return runs * lanes;
         }
 
+        /// <summary><see cref="AssembleLanes"/> with views built for this call (no <see cref="StepViews"/> of the chain).</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static int AssembleLanesOwnViews(ChainState c, double invH2, double gammaAll, bool first, bool tensionOnly)
+        {
+            var v = new StepViews(c, true);
+            return AssembleLanes(c, in v, invH2, gammaAll, first, tensionOnly);
+        }
+
         /// <summary>
         /// The rows of one half of run k (<typeparamref name="THalf"/>: <see cref="LowHalf"/> or <see cref="HighHalf"/>): each
         /// lane does <see cref="AssembleRows"/>'s operations in its order, and both sides of each of its branches are computed
         /// on every lane and selected, so every lane keeps the row's bits.
         /// </summary>
-        private static void AssembleHalf<THalf>(in RunInputs v, in AssemblyViews views, int k, in AssemblyParameters p, out AssembledLanes o) where THalf : struct
+        private static void AssembleHalf<THalf>(in RunInputs v, in StepViews views, int k, in AssemblyParameters p, out AssembledLanes o) where THalf : struct
         {
             int h = 2 * k + (typeof(THalf) == typeof(HighHalf) ? 1 : 0);
             Vector<double> zero = Vector<double>.Zero, one = Vector<double>.One, invH2 = new Vector<double>(p.InvH2);
@@ -149,21 +170,13 @@ namespace HookeRope.Solver
         }
 
         /// <summary>One half run's results of <see cref="AssembleHalf{THalf}"/>, stored only when no lane of the run is unusual.</summary>
-        private struct AssembledLanes
+        internal struct AssembledLanes
         {
             public Vector<long> Unusual, Rigid;
             public Vector<double> Nx, Ny, Nz, Length, Rx, Ry, Rz, Axial, Transverse, Estimate, Rest;
-
-            [MethodImpl(MethodImplOptions.AggressiveInlining)]
-            public void Store(Span<Vector<double>> rx, Span<Vector<double>> ry, Span<Vector<double>> rz, Span<Vector<double>> axial,
-                Span<Vector<double>> transverse, Span<Vector<double>> estimate, Span<Vector<double>> effectiveRest, int h)
-            {
-                rx[h] = Rx; ry[h] = Ry; rz[h] = Rz;
-                axial[h] = Axial; transverse[h] = Transverse; estimate[h] = Estimate; effectiveRest[h] = Rest;
-            }
         }
 
-        /// <summary>One run's float inputs of <see cref="AssembleHalf{THalf}"/> (the fields of <see cref="AssemblyViews"/> at run k).</summary>
+        /// <summary>One run's float inputs of <see cref="AssembleHalf{THalf}"/> (the fields of <see cref="StepViews"/> at run k).</summary>
         internal struct RunInputs
         {
             public Vector<float> WA, WB, DxA, DxB, DyA, DyB, DzA, DzB, DlxA, DlxB, DlyA, DlyB, DlzA, DlzB;
@@ -175,18 +188,34 @@ namespace HookeRope.Solver
         private static Span<Vector<double>> Doubles(double[] values, int s) => VectorPath.AsLanes(ChainState.Exactly(values, s));
 
         /// <summary>
-        /// The inputs of <see cref="AssembleHalf{THalf}"/> as runs of <see cref="VectorPath.FloatLanes"/> (A: a segment's
-        /// first particle, B: its second; the forces as runs of <see cref="VectorPath.DoubleLanes"/>).
+        /// The views of one chain the exact solve's lane kernels read and write, built once per host step (the step of
+        /// <see cref="Rope"/>, for the exact solve on lanes) instead of once per pass: the arrays of a <see cref="ChainState"/>
+        /// are fixed at its construction. <see cref="Chain"/> is the chain they view (null for none: a kernel then builds
+        /// its own). For <see cref="AssembleLanes"/>: the inputs of <see cref="AssembleHalf{THalf}"/> as runs of
+        /// <see cref="VectorPath.FloatLanes"/> (A: a segment's first particle, B: its second; the forces as runs of
+        /// <see cref="VectorPath.DoubleLanes"/>) and its outputs (…Out, the doubles as runs of
+        /// <see cref="VectorPath.DoubleLanes"/>: one check per store, not a slice each).
         /// </summary>
-        private readonly ref struct AssemblyViews
+        internal readonly ref struct StepViews
         {
+            public readonly ChainState Chain;
             public readonly ReadOnlySpan<Vector<float>> WA, WB, DxA, DxB, DyA, DyB, DzA, DzB, DlxA, DlxB, DlyA, DlyB, DlzA, DlzB;
             public readonly ReadOnlySpan<Vector<float>> PxA, PxB, PyA, PyB, PzA, PzB, LxA, LxB, LyA, LyB, LzA, LzB, Rest, Compliance, LastTension;
             public readonly ReadOnlySpan<Vector<double>> Fx, Fy, Fz;
+            public readonly Span<Vector<double>> ResidualXOut, ResidualYOut, ResidualZOut, AxialOut, TransverseOut, EstimateOut, RestOut;
+            public readonly Span<Vector<float>> DirXOut, DirYOut, DirZOut, LengthOut;
+            public readonly Span<bool> AssembledOut;
 
-            [MethodImpl(MethodImplOptions.AggressiveInlining)]
-            public AssemblyViews(ChainState c, int s)
+            /// <summary>
+            /// The views of chain c (its arrays at c.SegmentCount) when <paramref name="build"/>, else none (built in place
+            /// either way: a conditional between the two would copy the views).
+            /// </summary>
+            public StepViews(ChainState c, bool build)
             {
+                this = default;
+                if (!build) return;
+                Chain = c;
+                int s = c.SegmentCount;
                 WA = A(c.InverseMass, s); WB = B(c.InverseMass, s);
                 DxA = A(c.DX, s); DxB = B(c.DX, s); DyA = A(c.DY, s); DyB = B(c.DY, s); DzA = A(c.DZ, s); DzB = B(c.DZ, s);
                 DlxA = A(c.DLowX, s); DlxB = B(c.DLowX, s); DlyA = A(c.DLowY, s); DlyB = B(c.DLowY, s); DlzA = A(c.DLowZ, s); DlzB = B(c.DLowZ, s);
@@ -196,18 +225,12 @@ namespace HookeRope.Solver
                 Fx = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.ForceX, s));
                 Fy = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.ForceY, s));
                 Fz = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.ForceZ, s));
-            }
-
-            /// <summary>Run k of every float input into <paramref name="r"/>.</summary>
-            [MethodImpl(MethodImplOptions.AggressiveInlining)]
-            public void Load(int k, out RunInputs r)
-            {
-                r.WA = WA[k]; r.WB = WB[k];
-                r.DxA = DxA[k]; r.DxB = DxB[k]; r.DyA = DyA[k]; r.DyB = DyB[k]; r.DzA = DzA[k]; r.DzB = DzB[k];
-                r.DlxA = DlxA[k]; r.DlxB = DlxB[k]; r.DlyA = DlyA[k]; r.DlyB = DlyB[k]; r.DlzA = DlzA[k]; r.DlzB = DlzB[k];
-                r.PxA = PxA[k]; r.PxB = PxB[k]; r.PyA = PyA[k]; r.PyB = PyB[k]; r.PzA = PzA[k]; r.PzB = PzB[k];
-                r.LxA = LxA[k]; r.LxB = LxB[k]; r.LyA = LyA[k]; r.LyB = LyB[k]; r.LzA = LzA[k]; r.LzB = LzB[k];
-                r.Rest = Rest[k]; r.Compliance = Compliance[k]; r.LastTension = LastTension[k];
+                ResidualXOut = Doubles(c.ResidualX, s); ResidualYOut = Doubles(c.ResidualY, s); ResidualZOut = Doubles(c.ResidualZ, s);
+                AxialOut = Doubles(c.AxialCompliance, s); TransverseOut = Doubles(c.TransverseCompliance, s); EstimateOut = Doubles(c.EstimatedTension, s);
+                RestOut = Doubles(c.EffectiveRest, s);
+                DirXOut = VectorPath.AsLanes(ChainState.Exactly(c.DirX, s)); DirYOut = VectorPath.AsLanes(ChainState.Exactly(c.DirY, s));
+                DirZOut = VectorPath.AsLanes(ChainState.Exactly(c.DirZ, s)); LengthOut = VectorPath.AsLanes(ChainState.Exactly(c.Length, s));
+                AssembledOut = ChainState.Exactly(c.Assembled, s);
             }
 
             [MethodImpl(MethodImplOptions.AggressiveInlining)]

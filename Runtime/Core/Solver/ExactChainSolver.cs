@@ -78,12 +78,14 @@ namespace HookeRope.Solver
         /// <see cref="NonlinearTolerance"/> (its step went through <see cref="ChainLineSearch"/>), or a released segment ended
         /// stretched by more than that; <paramref name="shortened"/>: the line search took a step below 1;
         /// <paramref name="solves"/>: the linear solves of the iteration's active-set passes (<see cref="SolveActiveSet"/>).
+        /// <paramref name="views"/>: the chain's views for the lane kernels, built once per host step (<see cref="StepViews"/>;
+        /// <c>default</c> or another chain's: the kernels build their own).
         /// </summary>
-        public static bool Iterate(ChainState c, double h, double beta, bool tensionOnly, bool first, out bool violent, out bool shortened, out int solves)
+        public static bool Iterate(ChainState c, in StepViews views, double h, double beta, bool tensionOnly, bool first, out bool violent, out bool shortened, out int solves)
         {
             double invH2 = 1.0 / (h * h);
             if (first) ClearForces(c);
-            Assemble(c, invH2, beta / h, first, tensionOnly);
+            Assemble(c, in views, invH2, beta / h, first, tensionOnly);
             bool contacts = c.ContactCount > 0;
             if (contacts)
             {
@@ -142,13 +144,15 @@ namespace HookeRope.Solver
         /// along n; n while Λ = 0, and n for a bilateral segment with no geometric stiffness in the system). A segment with
         /// no mobility and no compliance is not in the system.
         /// </summary>
-        private static void Assemble(ChainState c, double invH2, double gammaAll, bool first, bool tensionOnly)
+        private static void Assemble(ChainState c, in StepViews views, double invH2, double gammaAll, bool first, bool tensionOnly)
         {
             c.RigidInSolve = false;
             // the lanes path takes whole runs of VectorPath.FloatLanes segments of an unbroken, non-plastic chain (and falls
             // back to the rows below for a run with an unusual segment); the rows take the rest
-            int from = VectorPath.Enabled && c.Plasticity == null && c.BrokenCount == 0
-                ? AssembleLanes(c, invH2, gammaAll, first, tensionOnly) : 0;
+            int from = 0;
+            if (VectorPath.Enabled && c.Plasticity == null && c.BrokenCount == 0)
+                from = views.Chain == c ? AssembleLanes(c, in views, invH2, gammaAll, first, tensionOnly)
+                    : AssembleLanesOwnViews(c, invH2, gammaAll, first, tensionOnly);
             if (from < c.SegmentCount) AssembleRows(c, from, c.SegmentCount, invH2, gammaAll, first, tensionOnly);
         }
 

@@ -41,6 +41,8 @@ namespace HookeRope.Solver
             bool secondOrder = integrator != TimeIntegrator.BackwardEuler;
             bool drag = settings.HasDrag, viscousDrag = drag && settings.ViscousDrag > 0f;
             if (drag) PrepareDrag();
+            // the exact solve's lane views of the chain, once for every pass of the step's substeps
+            var views = new ExactChainSolver.StepViews(chain, exact && VectorPath.Enabled);
             for (int k = 0; k < substeps; k++)
             {
                 float t = (float)(k + 1) / substeps;
@@ -56,7 +58,7 @@ namespace HookeRope.Solver
                 PredictAndCollide(t, secondOrder, scheme, h, hd, hEff, g, drag);
                 bool impact = scheme == TimeIntegrator.Bdf2 && hasColliders && NewImpact();
                 int unconvergedBefore = reportUnconverged;
-                bool violentSolve = SolveWithViscousDrag(h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder, viscousDrag);
+                bool violentSolve = SolveWithViscousDrag(in views, h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder, viscousDrag);
                 if (impact && violentSolve && reportUnconverged > unconvergedBefore)
                 {
                     // an impact left the BDF2 solve violent and unconverged: the substep runs again as backward Euler from
@@ -64,7 +66,7 @@ namespace HookeRope.Solver
                     scheme = TimeIntegrator.BackwardEuler;
                     hEff = BeginSubstep(scheme, hd);
                     PredictAndCollide(t, secondOrder, scheme, h, hd, hEff, g, drag);
-                    violentSolve = SolveWithViscousDrag(h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder, viscousDrag);
+                    violentSolve = SolveWithViscousDrag(in views, h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder, viscousDrag);
                 }
                 if (secondOrder) UpdateVelocitiesSecondOrder(scheme, hd, violentSolve || Violent(), hasColliders);
                 else UpdateVelocities(hd);
@@ -111,10 +113,10 @@ namespace HookeRope.Solver
         }
 
         /// <summary><see cref="SolvePhase"/> with the viscous drag folded into the solve around it when <paramref name="viscousDrag"/>. Returns true for a violent substep.</summary>
-        private bool SolveWithViscousDrag(float h, double hd, double hEff, float t, double beta, bool tensionOnly, bool exact, int iterations, bool hasCompliantPins, bool trackSolve, bool viscousDrag)
+        private bool SolveWithViscousDrag(in ExactChainSolver.StepViews views, float h, double hd, double hEff, float t, double beta, bool tensionOnly, bool exact, int iterations, bool hasCompliantPins, bool trackSolve, bool viscousDrag)
         {
             if (viscousDrag) FoldViscousDrag(hEff);
-            bool violent = SolvePhase(h, hd, hEff, t, beta, tensionOnly, exact, iterations, hasCompliantPins, trackSolve);
+            bool violent = SolvePhase(in views, h, hd, hEff, t, beta, tensionOnly, exact, iterations, hasCompliantPins, trackSolve);
             if (viscousDrag) UnfoldViscousDrag();
             return violent;
         }
@@ -181,9 +183,10 @@ namespace HookeRope.Solver
         /// Phase 3: the constraint iterations. Each folds in the compliant pins, solves the chain (one Newton iteration of
         /// the exact solve, or a Gauss–Seidel sweep), releases the pins and runs a collision pass. The exact solve adds
         /// iterations, up to <see cref="MaxNewtonIterations"/> (<see cref="MaxViolentNewtonIterations"/> in a violent
-        /// substep), while it is unconverged. Returns true for a violent substep.
+        /// substep), while it is unconverged. Returns true for a violent substep. <paramref name="views"/>: the chain's views
+        /// for the exact solve's lane kernels, built once per host step (<see cref="ExactChainSolver.StepViews"/>).
         /// </summary>
-        private bool SolvePhase(float h, double hd, double hEff, float t, double beta, bool tensionOnly, bool exact, int iterations, bool hasCompliantPins, bool trackSolve)
+        private bool SolvePhase(in ExactChainSolver.StepViews views, float h, double hd, double hEff, float t, double beta, bool tensionOnly, bool exact, int iterations, bool hasCompliantPins, bool trackSolve)
         {
             // the solve runs with α̃ = α/h_eff² (the integrator's effective step) and keeps the dashpot γ = β/h
             double solveBeta = beta * (hEff / hd);
@@ -198,7 +201,7 @@ namespace HookeRope.Solver
                 bool softPins = hasCompliantPins && ProjectCompliantPins(hEff, t);
                 if (exact)
                 {
-                    unconverged = ExactChainSolver.Iterate(chain, hEff, solveBeta, tensionOnly, it == 0, out bool violent, out bool shortened, out int solves);
+                    unconverged = ExactChainSolver.Iterate(chain, in views, hEff, solveBeta, tensionOnly, it == 0, out bool violent, out bool shortened, out int solves);
                     reportSolves += solves;
                     if (violent) cap = MaxViolentNewtonIterations;
                     if (shortened) reportShortened++;
