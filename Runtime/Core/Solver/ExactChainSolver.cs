@@ -560,20 +560,27 @@ namespace HookeRope.Solver
         private static bool Mismatched(ChainState c, bool tensionOnly, double floor)
         {
             double mismatch = 0.0, reference = 0.0;
-            for (int j = 0; j < c.SegmentCount; j++)
+            // spans of exactly the loop bounds: indexed without bounds checks, each array's reference loaded once
+            int s = c.SegmentCount, n = c.ParticleCount;
+            ReadOnlySpan<bool> assembled = ChainState.Exactly(c.Assembled, s), active = ChainState.Exactly(c.Active, s);
+            ReadOnlySpan<double> axial = ChainState.Exactly(c.AxialCompliance, s), lambda = ChainState.Exactly(c.Lambda, s), error = ChainState.Exactly(c.LengthError, s);
+            ReadOnlySpan<double> fx = ChainState.Exactly(c.ForceX, s), fy = ChainState.Exactly(c.ForceY, s), fz = ChainState.Exactly(c.ForceZ, s);
+            for (int j = 0; j < s; j++)
             {
-                if (!c.Assembled[j]) continue;
-                double alpha = c.AxialCompliance[j], squared = c.ForceX[j] * c.ForceX[j] + c.ForceY[j] * c.ForceY[j] + c.ForceZ[j] * c.ForceZ[j];
-                if (c.Active[j]) reference += 0.5 * alpha * squared;
-                bool counted = c.Active[j] ? c.Lambda[j] <= 0.0 : tensionOnly;
-                double e = c.LengthError[j];
+                if (!assembled[j]) continue;
+                double alpha = axial[j], squared = fx[j] * fx[j] + fy[j] * fy[j] + fz[j] * fz[j];
+                if (active[j]) reference += 0.5 * alpha * squared;
+                bool counted = active[j] ? lambda[j] <= 0.0 : tensionOnly;
+                double e = error[j];
                 if (!counted || e <= floor || alpha == 0.0) continue;
-                mismatch += (c.Active[j] ? Math.Sqrt(squared) * e : 0.0) + 0.5 * e * e / alpha;
+                mismatch += (active[j] ? Math.Sqrt(squared) * e : 0.0) + 0.5 * e * e / alpha;
             }
-            for (int i = 0; i < c.ParticleCount; i++)
+            ReadOnlySpan<float> inverseMass = ChainState.Exactly(c.InverseMass, n);
+            ReadOnlySpan<float> dx = ChainState.Exactly(c.DX, n), dy = ChainState.Exactly(c.DY, n), dz = ChainState.Exactly(c.DZ, n);
+            for (int i = 0; i < n; i++)
             {
-                double w = c.InverseMass[i];
-                if (w > 0.0) reference += 0.5 * ((double)c.DX[i] * c.DX[i] + (double)c.DY[i] * c.DY[i] + (double)c.DZ[i] * c.DZ[i]) / w;
+                double w = inverseMass[i];
+                if (w > 0.0) reference += 0.5 * ((double)dx[i] * dx[i] + (double)dy[i] * dy[i] + (double)dz[i] * dz[i]) / w;
             }
             return mismatch > EnergyTolerance * reference;
         }

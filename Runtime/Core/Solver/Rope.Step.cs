@@ -531,14 +531,20 @@ namespace HookeRope.Solver
         {
             double worst = 0.0;
             bool tensionOnly = settings.Tension == TensionModel.TensionOnly;
-            for (int j = 0; j < chain.SegmentCount; j++)
+            // spans of exactly the loop bound (indexed without bounds checks); ChainState.CurrentRest written out
+            int s = chain.SegmentCount;
+            ReadOnlySpan<bool> broken = ChainState.Exactly(chain.Broken, s);
+            ReadOnlySpan<float> restLength = ChainState.Exactly(chain.RestLength, s), length = ChainState.Exactly(chain.Length, s);
+            ReadOnlySpan<float> tensions = ChainState.Exactly(chain.Tension, s), compliance = ChainState.Exactly(chain.Compliance, s);
+            SegmentPlasticity plasticity = chain.Plasticity;
+            for (int j = 0; j < s; j++)
             {
-                if (chain.Broken[j]) continue;
-                double rest = chain.RestLength[j];
-                double c = chain.Length[j] - chain.CurrentRest(j);
-                double tension = chain.Tension[j];
+                if (broken[j]) continue;
+                double rest = restLength[j];
+                double c = length[j] - (plasticity != null ? plasticity.Rest(j) : restLength[j]);
+                double tension = tensions[j];
                 if (tensionOnly && tension <= 0.0 && c <= 0.0) continue; // slack: no constraint to meet
-                double error = Math.Abs(c - chain.Compliance[j] * tension) / rest;
+                double error = Math.Abs(c - compliance[j] * tension) / rest;
                 if (error > worst) worst = error;
             }
             return (float)worst;
