@@ -418,7 +418,7 @@ namespace HookeRope.Solver
                 fx[a] = gxLow; fy[a] = gyLow; fz[a] = gzLow; fx[b] = gxHigh; fy[b] = gyHigh; fz[b] = gzHigh;
                 lambda[a] = lLow; lambda[b] = lHigh;
             }
-            if (lengthErrors) LengthErrorRows(c, runs * lanes, s);
+            if (lengthErrors && runs * lanes < s) LengthErrorRows(c, runs * lanes, s);
             return runs * lanes;
         }
 

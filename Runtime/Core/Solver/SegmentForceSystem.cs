@@ -45,7 +45,11 @@ namespace HookeRope.Solver
         /// instructions as the sweep's own scalar build it replaces (goal lanyard, x86-64-v2: +1.8 k per host step), so there
         /// the sweep builds each block itself. Either way the blocks have the same bits.
         /// </summary>
-        internal static bool StoresBlocks => VectorPath.Enabled && VectorPath.DoubleLanes >= 4;
+        internal static bool StoresBlocks
+        {
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            get => VectorPath.Enabled && VectorPath.DoubleLanes >= 4;
+        }
 
         /// <summary>
         /// Builds every row's free block A_j (<see cref="Block"/>, into ChainState.BlockXX … BlockZZ) from the stored float
@@ -59,6 +63,8 @@ namespace HookeRope.Solver
             if (!StoresBlocks) return;
             int s = c.SegmentCount;
             int from = PrepareBlockLanes(c);
+            // no tail (64 segments fill the runs): none of the rows' spans made
+            if (from >= s) return;
             ReadOnlySpan<float> wA = ChainState.Exactly(c.InverseMass, s), wB = ChainState.Shifted(c.InverseMass, s);
             ReadOnlySpan<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
             ReadOnlySpan<double> axial = ChainState.Exactly(c.AxialCompliance, s), transverse = ChainState.Exactly(c.TransverseCompliance, s);
@@ -138,12 +144,16 @@ namespace HookeRope.Solver
             // row 0 (no row before it) goes first, so the loop eliminates through particle j on every row it does; called
             // before the spans are made, which then need not live across a call (in callee-saved registers or spilled)
             if (from == 0) FirstRow<T, TBlocks>(c);
-            // spans of exactly s entries (the loop bound) index without bounds checks; wB[j] is particle j + 1's
-            ReadOnlySpan<float> wA = ChainState.Exactly(c.InverseMass, s), wB = ChainState.Shifted(c.InverseMass, s);
-            ReadOnlySpan<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
-            ReadOnlySpan<double> axial = ChainState.Exactly(c.AxialCompliance, s), transverse = ChainState.Exactly(c.TransverseCompliance, s);
-            ReadOnlySpan<double> bxx = ChainState.Exactly(c.BlockXX, s), bxy = ChainState.Exactly(c.BlockXY, s), bxz = ChainState.Exactly(c.BlockXZ, s);
-            ReadOnlySpan<double> byy = ChainState.Exactly(c.BlockYY, s), byz = ChainState.Exactly(c.BlockYZ, s), bzz = ChainState.Exactly(c.BlockZZ, s);
+            // spans of exactly s entries (the loop bound) index without bounds checks; wB[j] is particle j + 1's. Only the
+            // spans the blocks' variant reads are made (each costs a null and a length check per call)
+            ReadOnlySpan<float> wA = ChainState.Exactly(c.InverseMass, s), wB = stored ? default : ChainState.Shifted(c.InverseMass, s);
+            ReadOnlySpan<float> dirX = stored ? default : ChainState.Exactly(c.DirX, s), dirY = stored ? default : ChainState.Exactly(c.DirY, s);
+            ReadOnlySpan<float> dirZ = stored ? default : ChainState.Exactly(c.DirZ, s);
+            ReadOnlySpan<double> axial = stored ? default : ChainState.Exactly(c.AxialCompliance, s);
+            ReadOnlySpan<double> transverse = stored ? default : ChainState.Exactly(c.TransverseCompliance, s);
+            ReadOnlySpan<double> bxx = stored ? ChainState.Exactly(c.BlockXX, s) : default, bxy = stored ? ChainState.Exactly(c.BlockXY, s) : default;
+            ReadOnlySpan<double> bxz = stored ? ChainState.Exactly(c.BlockXZ, s) : default, byy = stored ? ChainState.Exactly(c.BlockYY, s) : default;
+            ReadOnlySpan<double> byz = stored ? ChainState.Exactly(c.BlockYZ, s) : default, bzz = stored ? ChainState.Exactly(c.BlockZZ, s) : default;
             Span<EliminatedRow> rows = ChainState.Exactly(c.Eliminated, s);
             ReadOnlySpan<double> rx = ChainState.Exactly(c.ResidualX, s), ry = ChainState.Exactly(c.ResidualY, s), rz = ChainState.Exactly(c.ResidualZ, s);
             ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
