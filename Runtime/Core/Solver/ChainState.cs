@@ -41,6 +41,10 @@ namespace HookeRope.Solver
         public readonly float[] InverseMass;
         public readonly float[] LoadMass;
         public readonly bool[] Kinematic;
+        // the kinematic particles' indices in ascending order (the first KinematicCount entries; Rope.RefreshKinematic), so
+        // the lane passes fix their kinematic particles up without scanning the flags
+        public readonly int[] KinematicParticles;
+        public int KinematicCount;
         public readonly float[] Radius;
 
         // segments
@@ -142,7 +146,7 @@ namespace HookeRope.Solver
             DLowX = new float[n]; DLowY = new float[n]; DLowZ = new float[n];
             VelX = new double[n]; VelY = new double[n]; VelZ = new double[n];
             Mass = new float[n]; InverseMass = new float[n]; LoadMass = new float[n];
-            Kinematic = new bool[n]; Radius = new float[n];
+            Kinematic = new bool[n]; Radius = new float[n]; KinematicParticles = new int[n];
             RestLength = new float[s]; Compliance = new float[s]; Lambda = new double[s];
             Tension = new float[s]; PeakTension = new float[s]; MeanTension = new float[s]; Length = new float[s]; Broken = new bool[s];
             DirX = new float[s]; DirY = new float[s]; DirZ = new float[s];

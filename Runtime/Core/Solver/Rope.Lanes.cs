@@ -18,17 +18,6 @@ namespace HookeRope.Solver
     /// </summary>
     public sealed partial class Rope
     {
-        /// <summary>True when none of the flags [i, i + one float vector) is set (the bools read as one word).</summary>
-        [MethodImpl(MethodImplOptions.AggressiveInlining)]
-        private static bool NoneSet(ReadOnlySpan<bool> flags, int i)
-        {
-            ReadOnlySpan<byte> bytes = MemoryMarshal.AsBytes(flags.Slice(i, Vector<float>.Count));
-            if (Vector<float>.Count == 8) return MemoryMarshal.Read<ulong>(bytes) == 0UL;
-            if (Vector<float>.Count == 4) return MemoryMarshal.Read<uint>(bytes) == 0U;
-            for (int k = 0; k < bytes.Length; k++) if (bytes[k] != 0) return false;
-            return true;
-        }
-
         /// <summary>Δ's start mark 0 − (q + 0) per lane, as <see cref="StartMark"/> of (q, 0f) computes it.</summary>
         [MethodImpl(MethodImplOptions.AggressiveInlining)]
         private static Vector<double> StartMarks(Vector<double> q) => Vector<double>.Zero + new Vector<double>(-1.0) * (q + Vector<double>.Zero);
@@ -51,17 +40,15 @@ namespace HookeRope.Solver
         {
             int n = chain.ParticleCount, width = Vector<float>.Count;
             double invH = 1.0 / h, h2 = h * h, c = 4.0 * h2 / 9.0, e = 2.0 * h / 3.0;
-            ReadOnlySpan<bool> kinematic = ChainState.Exactly(chain.Kinematic, n);
             Vector<float> lanes = Vector<float>.Zero;
             lanes = PredictLanes<TSize>(n, chain.X, chain.PrevX, chain.VelX, chain.PrevVelX, chain.DX, chain.DLowX, chain.BaseVelX, chain.PredictedDX, invH, e, e * g.X, c * g.X, lanes);
             lanes = PredictLanes<TSize>(n, chain.Y, chain.PrevY, chain.VelY, chain.PrevVelY, chain.DY, chain.DLowY, chain.BaseVelY, chain.PredictedDY, invH, e, e * g.Y, c * g.Y, lanes);
             lanes = PredictLanes<TSize>(n, chain.Z, chain.PrevZ, chain.VelZ, chain.PrevVelZ, chain.DZ, chain.DLowZ, chain.BaseVelZ, chain.PredictedDZ, invH, e, e * g.Z, c * g.Z, lanes);
             int full = n / width * width;
-            for (int start = 0; start < full; start += width)
-            {
-                if (NoneSet(kinematic, start)) continue;
-                for (int i = start; i < start + width; i++) if (kinematic[i]) PredictKinematic(i, markSolveStart);
-            }
+            // the kinematic particles the lanes took (from the list, not a scan of the flags)
+            ReadOnlySpan<int> fixedParticles = ChainState.Exactly(chain.KinematicParticles, chain.KinematicCount);
+            for (int q = 0; q < fixedParticles.Length; q++)
+                if (fixedParticles[q] < full) PredictKinematic(fixedParticles[q], markSolveStart);
             float size = n - full == 1 ? PredictSecondOrderParticle<TSize>(TimeIntegrator.Bdf2, h, g, markSolveStart, full)
                 : full < n ? PredictSecondOrderRange<TSize>(TimeIntegrator.Bdf2, h, g, markSolveStart, full, n - full, 0f) : 0f;
             if (typeof(TSize) == typeof(Sized))
@@ -137,7 +124,6 @@ namespace HookeRope.Solver
         {
             int n = chain.ParticleCount, width = Vector<float>.Count;
             double invH = 1.0 / h, k = scheme == TimeIntegrator.Bdf2 ? 0.5 * invH : 0.0;
-            ReadOnlySpan<bool> kinematic = ChainState.Exactly(chain.Kinematic, n);
             ReadOnlySpan<Vector<float>> dx = Floats(chain.DX, n), dy = Floats(chain.DY, n), dz = Floats(chain.DZ, n);
             ReadOnlySpan<Vector<float>> lx = Floats(chain.DLowX, n), ly = Floats(chain.DLowY, n), lz = Floats(chain.DLowZ, n);
             ReadOnlySpan<Vector<float>> qx = Floats(chain.PredictedDX, n), qy = Floats(chain.PredictedDY, n), qz = Floats(chain.PredictedDZ, n);
@@ -161,11 +147,10 @@ namespace HookeRope.Solver
                 wz[a] = Vector.ConditionalSelect(still0, wz[a], wz[a] + cz0 * invHv); wz[z] = Vector.ConditionalSelect(still1, wz[z], wz[z] + cz1 * invHv);
             }
             int full = dx.Length * width;
-            for (int start = 0; start < full; start += width)
-            {
-                if (NoneSet(kinematic, start)) continue;
-                for (int i = start; i < start + width; i++) if (kinematic[i]) KinematicVelocity<TMark>(i, invH, k);
-            }
+            // the kinematic particles the lanes took (from the list, not a scan of the flags)
+            ReadOnlySpan<int> fixedParticles = ChainState.Exactly(chain.KinematicParticles, chain.KinematicCount);
+            for (int q = 0; q < fixedParticles.Length; q++)
+                if (fixedParticles[q] < full) KinematicVelocity<TMark>(fixedParticles[q], invH, k);
             if (n - full == 1) SecondOrderVelocityParticle<TMark>(scheme, h, full);
             else if (full < n) SecondOrderVelocitiesRange<TMark>(scheme, h, full, n - full);
         }
