@@ -312,6 +312,87 @@ namespace HookeRope.Solver
         }
 
         /// <summary>
+        /// <see cref="RefreshLengths"/> on runs of <see cref="Vector{T}"/> segments: each lane forms the segment vector
+        /// ((double)x_b − x_a) + ((double)low_b − low_a) per axis, its length in double and the float of it, as the rows do.
+        /// Returns the first segment not done (the rows take the rest).
+        /// </summary>
+        private int RefreshLengthLanes()
+        {
+            int s = chain.SegmentCount;
+            ReadOnlySpan<Vector<float>> xA = Floats(chain.X, s), yA = Floats(chain.Y, s), zA = Floats(chain.Z, s);
+            ReadOnlySpan<Vector<float>> xB = VectorPath.AsLanes(ChainState.Shifted(chain.X, s)), yB = VectorPath.AsLanes(ChainState.Shifted(chain.Y, s));
+            ReadOnlySpan<Vector<float>> zB = VectorPath.AsLanes(ChainState.Shifted(chain.Z, s));
+            ReadOnlySpan<Vector<float>> lxA = Floats(chain.LowX, s), lyA = Floats(chain.LowY, s), lzA = Floats(chain.LowZ, s);
+            ReadOnlySpan<Vector<float>> lxB = VectorPath.AsLanes(ChainState.Shifted(chain.LowX, s)), lyB = VectorPath.AsLanes(ChainState.Shifted(chain.LowY, s));
+            ReadOnlySpan<Vector<float>> lzB = VectorPath.AsLanes(ChainState.Shifted(chain.LowZ, s));
+            Span<Vector<float>> length = Floats(chain.Length, s);
+            for (int k = 0; k < length.Length; k++)
+            {
+                SegmentAxis(xA[k], xB[k], lxA[k], lxB[k], out Vector<double> x0, out Vector<double> x1);
+                SegmentAxis(yA[k], yB[k], lyA[k], lyB[k], out Vector<double> y0, out Vector<double> y1);
+                SegmentAxis(zA[k], zB[k], lzA[k], lzB[k], out Vector<double> z0, out Vector<double> z1);
+                length[k] = Vector.Narrow(Vector.SquareRoot(x0 * x0 + y0 * y0 + z0 * z0), Vector.SquareRoot(x1 * x1 + y1 * y1 + z1 * z1));
+            }
+            return length.Length * Vector<float>.Count;
+        }
+
+        /// <summary>One axis of a run of segment vectors, ((double)b − a) + ((double)lowB − lowA), as its two double halves.</summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static void SegmentAxis(Vector<float> a, Vector<float> b, Vector<float> lowA, Vector<float> lowB, out Vector<double> first, out Vector<double> second)
+        {
+            ChainState.Widen(a, out Vector<double> a0, out Vector<double> a1);
+            ChainState.Widen(b, out Vector<double> b0, out Vector<double> b1);
+            ChainState.Widen(lowA, out Vector<double> l0, out Vector<double> l1);
+            ChainState.Widen(lowB, out Vector<double> m0, out Vector<double> m1);
+            first = (b0 - a0) + (m0 - l0);
+            second = (b1 - a1) + (m1 - l1);
+        }
+
+        /// <summary>
+        /// <see cref="ComputeResidual"/> of an unbroken chain without plasticity on runs of <see cref="Vector{T}"/> segments:
+        /// each lane keeps the largest |c − α·T|/L of its segments by the rows' test (error &gt; worst, so a NaN never enters),
+        /// then the lanes are combined by the same test: the largest error of a set does not depend on the order it is found
+        /// in. Returns it; <paramref name="from"/>: the first segment not done.
+        /// </summary>
+        private double ResidualLanes(bool tensionOnly, out int from)
+        {
+            int s = chain.SegmentCount;
+            ReadOnlySpan<Vector<float>> length = Floats(chain.Length, s), rest = Floats(chain.RestLength, s);
+            ReadOnlySpan<Vector<float>> tension = Floats(chain.Tension, s), compliance = Floats(chain.Compliance, s);
+            Vector<double> worst0 = Vector<double>.Zero, worst1 = Vector<double>.Zero;
+            for (int k = 0; k < length.Length; k++)
+            {
+                ChainState.Widen(length[k], out Vector<double> l0, out Vector<double> l1);
+                ChainState.Widen(rest[k], out Vector<double> r0, out Vector<double> r1);
+                ChainState.Widen(tension[k], out Vector<double> t0, out Vector<double> t1);
+                ChainState.Widen(compliance[k], out Vector<double> a0, out Vector<double> a1);
+                worst0 = WorstResidual(l0 - r0, r0, t0, a0, tensionOnly, worst0);
+                worst1 = WorstResidual(l1 - r1, r1, t1, a1, tensionOnly, worst1);
+            }
+            double worst = 0.0;
+            for (int l = 0; l < Vector<double>.Count; l++)
+            {
+                if (worst0[l] > worst) worst = worst0[l];
+                if (worst1[l] > worst) worst = worst1[l];
+            }
+            from = length.Length * Vector<float>.Count;
+            return worst;
+        }
+
+        /// <summary>
+        /// One half run of <see cref="ResidualLanes"/>: the error |c − α·T|/L (c = l − L) where the rows take it (not a slack
+        /// tension-only segment: T ≤ 0 and c ≤ 0), raised into worst where it is larger.
+        /// </summary>
+        [MethodImpl(MethodImplOptions.AggressiveInlining)]
+        private static Vector<double> WorstResidual(Vector<double> c, Vector<double> rest, Vector<double> tension, Vector<double> compliance, bool tensionOnly, Vector<double> worst)
+        {
+            Vector<double> error = Vector.Abs(c - compliance * tension) / rest;
+            Vector<long> larger = Vector.GreaterThan(error, worst);
+            if (tensionOnly) larger = Vector.AndNot(larger, Vector.LessThanOrEqual(tension, Vector<double>.Zero) & Vector.LessThanOrEqual(c, Vector<double>.Zero));
+            return Vector.ConditionalSelect(larger, error, worst);
+        }
+
+        /// <summary>
         /// FNV-1a over the bits of every particle's and segment's state the substep passes write (positions and their
         /// remainders, displacements, the double velocities and the second-order history, multipliers, tensions): tests compare
         /// it with <see cref="VectorPath.Enabled"/> off and on.

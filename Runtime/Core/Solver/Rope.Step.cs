@@ -537,7 +537,10 @@ namespace HookeRope.Solver
             ReadOnlySpan<float> restLength = ChainState.Exactly(chain.RestLength, s), length = ChainState.Exactly(chain.Length, s);
             ReadOnlySpan<float> tensions = ChainState.Exactly(chain.Tension, s), compliance = ChainState.Exactly(chain.Compliance, s);
             SegmentPlasticity plasticity = chain.Plasticity;
-            for (int j = 0; j < s; j++)
+            // an unbroken chain without plasticity on lanes first (the same largest error), the rows the rest
+            int from = 0;
+            if (VectorPath.Enabled && plasticity == null && chain.BrokenCount == 0) worst = ResidualLanes(tensionOnly, out from);
+            for (int j = from; j < s; j++)
             {
                 if (broken[j]) continue;
                 double rest = restLength[j];

@@ -300,13 +300,16 @@ namespace HookeRope.Solver
         private void RefreshLengths()
         {
             int s = chain.SegmentCount;
+            // on lanes while VectorPath.Enabled (runs of Vector<float> segments, the same bits); the rows below take the rest
+            int from = VectorPath.Enabled ? RefreshLengthLanes() : 0;
+            if (from >= s) return;
             // ChainState.Span on spans of exactly s entries (A: particle j, B: particle j + 1), indexed without bounds checks
             ReadOnlySpan<float> xA = ChainState.Exactly(chain.X, s), yA = ChainState.Exactly(chain.Y, s), zA = ChainState.Exactly(chain.Z, s);
             ReadOnlySpan<float> xB = ChainState.Shifted(chain.X, s), yB = ChainState.Shifted(chain.Y, s), zB = ChainState.Shifted(chain.Z, s);
             ReadOnlySpan<float> lxA = ChainState.Exactly(chain.LowX, s), lyA = ChainState.Exactly(chain.LowY, s), lzA = ChainState.Exactly(chain.LowZ, s);
             ReadOnlySpan<float> lxB = ChainState.Shifted(chain.LowX, s), lyB = ChainState.Shifted(chain.LowY, s), lzB = ChainState.Shifted(chain.LowZ, s);
             Span<float> length = ChainState.Exactly(chain.Length, s);
-            for (int j = 0; j < s; j++)
+            for (int j = from; j < s; j++)
             {
                 double dx = ((double)xB[j] - xA[j]) + ((double)lxB[j] - lxA[j]);
                 double dy = ((double)yB[j] - yA[j]) + ((double)lyB[j] - lyA[j]);
