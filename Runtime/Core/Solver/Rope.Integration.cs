@@ -1,4 +1,5 @@
 using System;
+using System.Numerics;
 using HookeRope.Mathematics;
 
 namespace HookeRope.Solver
@@ -252,11 +253,59 @@ namespace HookeRope.Solver
             ReadOnlySpan<float> qx = ChainState.Exactly(chain.PredictedDX, n), qy = ChainState.Exactly(chain.PredictedDY, n), qz = ChainState.Exactly(chain.PredictedDZ, n);
             ReadOnlySpan<bool> kinematic = ChainState.Exactly(chain.Kinematic, n);
             Span<double> sx = ChainState.Exactly(chain.SolveDX, n), sy = ChainState.Exactly(chain.SolveDY, n), sz = ChainState.Exactly(chain.SolveDZ, n);
-            for (int i = 0; i < n; i++)
+            // the blocks of Vector<float> particles without a kinematic one on lanes (the same operations), the others and the
+            // tail by the loop below
+            int from = 0, width = Vector<float>.Count;
+            if (VectorPath.Enabled)
+            {
+                ReadOnlySpan<int> fixedParticles = ChainState.Exactly(chain.KinematicParticles, chain.KinematicCount);
+                ReadOnlySpan<Vector<float>> vdx = VectorPath.AsLanes(dx), vdy = VectorPath.AsLanes(dy), vdz = VectorPath.AsLanes(dz);
+                ReadOnlySpan<Vector<float>> vlx = VectorPath.AsLanes(lx), vly = VectorPath.AsLanes(ly), vlz = VectorPath.AsLanes(lz);
+                ReadOnlySpan<Vector<float>> vqx = VectorPath.AsLanes(qx), vqy = VectorPath.AsLanes(qy), vqz = VectorPath.AsLanes(qz);
+                Span<Vector<double>> vsx = VectorPath.AsLanes(sx), vsy = VectorPath.AsLanes(sy), vsz = VectorPath.AsLanes(sz);
+                int q = 0, blocks = vdx.Length;
+                for (int b = 0; b < blocks; b++)
+                {
+                    int start = b * width, end = start + width;
+                    while (q < fixedParticles.Length && fixedParticles[q] < start) q++;
+                    if (q < fixedParticles.Length && fixedParticles[q] < end)
+                    {
+                        EndFromPrediction(start, end, dx, dy, dz, lx, ly, lz, qx, qy, qz, kinematic, sx, sy, sz);
+                        continue;
+                    }
+                    EndFromPredictionLanes(b, vdx[b], vlx[b], vqx[b], vsx);
+                    EndFromPredictionLanes(b, vdy[b], vly[b], vqy[b], vsy);
+                    EndFromPredictionLanes(b, vdz[b], vlz[b], vqz[b], vsz);
+                }
+                from = blocks * width;
+            }
+            EndFromPrediction(from, n, dx, dy, dz, lx, ly, lz, qx, qy, qz, kinematic, sx, sy, sz);
+        }
+
+        /// <summary><see cref="TrackSolveEndFromPrediction"/> of particles from … to − 1 (the spans: the chain's arrays of n entries).</summary>
+        private static void EndFromPrediction(int from, int to, ReadOnlySpan<float> dx, ReadOnlySpan<float> dy, ReadOnlySpan<float> dz,
+            ReadOnlySpan<float> lx, ReadOnlySpan<float> ly, ReadOnlySpan<float> lz, ReadOnlySpan<float> qx, ReadOnlySpan<float> qy, ReadOnlySpan<float> qz,
+            ReadOnlySpan<bool> kinematic, Span<double> sx, Span<double> sy, Span<double> sz)
+        {
+            for (int i = from; i < to; i++)
             {
                 if (!kinematic[i]) { sx[i] = StartMark(qx[i], 0f); sy[i] = StartMark(qy[i], 0f); sz[i] = StartMark(qz[i], 0f); }
                 sx[i] += 1.0 * ((double)dx[i] + lx[i]); sy[i] += 1.0 * ((double)dy[i] + ly[i]); sz[i] += 1.0 * ((double)dz[i] + lz[i]);
             }
+        }
+
+        /// <summary>
+        /// One axis of <see cref="TrackSolveEndFromPrediction"/> for block b of free particles on lanes: Δ = (0 − (PredictedD +
+        /// 0)) + 1·(D + DLow) per lane (<see cref="StartMarks"/>), as the loop forms it.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static void EndFromPredictionLanes(int b, Vector<float> d, Vector<float> low, Vector<float> predicted, Span<Vector<double>> marks)
+        {
+            ChainState.Widen(d, out Vector<double> d0, out Vector<double> d1);
+            ChainState.Widen(low, out Vector<double> l0, out Vector<double> l1);
+            ChainState.Widen(predicted, out Vector<double> q0, out Vector<double> q1);
+            marks[2 * b] = StartMarks(q0) + new Vector<double>(1.0) * (d0 + l0);
+            marks[2 * b + 1] = StartMarks(q1) + new Vector<double>(1.0) * (d1 + l1);
         }
 
         /// <summary>Velocities from Δ as stored (<see cref="SecondOrderVelocities{TMark}"/>).</summary>

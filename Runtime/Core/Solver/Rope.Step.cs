@@ -1,4 +1,5 @@
 using System;
+using System.Numerics;
 using HookeRope.Mathematics;
 
 namespace HookeRope.Solver
@@ -496,8 +497,16 @@ namespace HookeRope.Solver
         /// <summary>Turns the summed substep tensions into their mean (factor = 1/substeps).</summary>
         private void ScaleMeanTensions(float factor)
         {
-            float[] mean = chain.MeanTension;
-            for (int j = 0; j < chain.SegmentCount; j++) mean[j] *= factor;
+            int s = chain.SegmentCount, from = 0;
+            Span<float> mean = ChainState.Exactly(chain.MeanTension, s);
+            if (VectorPath.Enabled)
+            {
+                // runs of Vector<float> segments (the same products), the rest below
+                Span<Vector<float>> lanes = VectorPath.AsLanes(mean);
+                for (int k = 0; k < lanes.Length; k++) lanes[k] *= factor;
+                from = lanes.Length * Vector<float>.Count;
+            }
+            for (int j = from; j < s; j++) mean[j] *= factor;
         }
 
         private void UpdatePinForces(double h, Float3 g)
