@@ -450,10 +450,12 @@ namespace HookeRope.Solver
         /// <summary>Δ's start mark of every particle <see cref="MovePins"/> placed (the rigid pins; see <see cref="solveMarksFused"/>).</summary>
         private void MarkPinnedSolveStarts()
         {
-            for (int p = 0; p < pinCount; p++)
+            // the particles of the unbroken rigid pins are exactly the kinematic ones (RefreshKinematic): their list, each
+            // once (a particle two pins hold took the same mark twice)
+            ReadOnlySpan<int> pinned = ChainState.Exactly(chain.KinematicParticles, chain.KinematicCount);
+            for (int q = 0; q < pinned.Length; q++)
             {
-                if (pinBroken[p] || pinCompliance[p] != 0f) continue;
-                int i = pinParticle[p];
+                int i = pinned[q];
                 chain.SolveDX[i] = StartMark(chain.DX[i], chain.DLowX[i]);
                 chain.SolveDY[i] = StartMark(chain.DY[i], chain.DLowY[i]);
                 chain.SolveDZ[i] = StartMark(chain.DZ[i], chain.DLowZ[i]);
