@@ -188,8 +188,8 @@ namespace HookeRope.Solver
         private static Span<Vector<double>> Doubles(double[] values, int s) => VectorPath.AsLanes(ChainState.Exactly(values, s));
 
         /// <summary>
-        /// The views of one chain the exact solve's lane kernels read and write, built once per host step (the step of
-        /// <see cref="Rope"/>, for the exact solve on lanes) instead of once per pass: the arrays of a <see cref="ChainState"/>
+        /// The views of one chain the exact solve's assembly on lanes reads and writes, built once per host step (the step of
+        /// <see cref="Rope"/>, for the exact solve on lanes) instead of once per iteration: the arrays of a <see cref="ChainState"/>
         /// are fixed at its construction. <see cref="Chain"/> is the chain they view (null for none: a kernel then builds
         /// its own). For <see cref="AssembleLanes"/>: the inputs of <see cref="AssembleHalf{THalf}"/> as runs of
         /// <see cref="VectorPath.FloatLanes"/> (A: a segment's first particle, B: its second; the forces as runs of

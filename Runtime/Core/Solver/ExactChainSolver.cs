@@ -78,7 +78,7 @@ namespace HookeRope.Solver
         /// <see cref="NonlinearTolerance"/> (its step went through <see cref="ChainLineSearch"/>), or a released segment ended
         /// stretched by more than that; <paramref name="shortened"/>: the line search took a step below 1;
         /// <paramref name="solves"/>: the linear solves of the iteration's active-set passes (<see cref="SolveActiveSet"/>).
-        /// <paramref name="views"/>: the chain's views for the lane kernels, built once per host step (<see cref="StepViews"/>;
+        /// <paramref name="views"/>: the chain's views for the assembly on lanes, built once per host step (<see cref="StepViews"/>;
         /// <c>default</c> or another chain's: the kernels build their own).
         /// </summary>
         public static bool Iterate(ChainState c, in StepViews views, double h, double beta, bool tensionOnly, bool first, out bool violent, out bool shortened, out int solves)

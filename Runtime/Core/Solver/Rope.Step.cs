@@ -42,7 +42,7 @@ namespace HookeRope.Solver
             bool secondOrder = integrator != TimeIntegrator.BackwardEuler;
             bool drag = settings.HasDrag, viscousDrag = drag && settings.ViscousDrag > 0f;
             if (drag) PrepareDrag();
-            // the exact solve's lane views of the chain, once for every pass of the step's substeps
+            // the exact solve's assembly views of the chain (lanes), once for every iteration of the step's substeps
             var views = new ExactChainSolver.StepViews(chain, exact && VectorPath.Enabled);
             for (int k = 0; k < substeps; k++)
             {
