@@ -1,3 +1,4 @@
+using System;
 using HookeRope.Mathematics;
 
 namespace HookeRope.Geometry
@@ -56,6 +57,48 @@ namespace HookeRope.Geometry
                 nx = mx; ny = my; nz = mz;
             }
             return Perpendicular(nx, ny, nz, tx, ty, tz);
+        }
+
+        /// <summary>
+        /// Carries <paramref name="normal"/>[from − 1] (from ≥ 1) along <paramref name="tangent"/> (the same length) ring by ring:
+        /// normal[i] = <see cref="Transported"/>(normal[i − 1], tangent[i − 1], tangent[i]) for i = from, from + 1, … with
+        /// that method's operations in its order, as long as the re-normalisation does not degenerate. Returns the first i
+        /// it did not write (tangent.Length when it wrote all): there <see cref="Perpendicular(float, float, float, float, float, float)"/>
+        /// needs its out-of-line fallback, which the caller applies by <see cref="Transported"/> from that ring on. With no
+        /// call in it, the loop keeps the normal and the tangent before in registers.
+        /// </summary>
+        public static int TransportRun(ReadOnlySpan<Float3> tangent, Span<Float3> normal, int from)
+        {
+            if (from >= tangent.Length) return tangent.Length;
+            normal = normal.Slice(0, tangent.Length);
+            Float3 n = normal[from - 1], f = tangent[from - 1];
+            float nx = n.X, ny = n.Y, nz = n.Z, fx = f.X, fy = f.Y, fz = f.Z;
+            int i = from;
+            for (; i < tangent.Length; i++)
+            {
+                Float3 t = tangent[i];
+                float tx = t.X, ty = t.Y, tz = t.Z;
+                float c = fx * tx + fy * ty + fz * tz;
+                if (c > -0.9999f)
+                {
+                    float kx = fy * tz - fz * ty, ky = fz * tx - fx * tz, kz = fx * ty - fy * tx;
+                    float s = (kx * nx + ky * ny + kz * nz) / (1f + c);
+                    float mx = nx * c + (ky * nz - kz * ny) + kx * s;
+                    float my = ny * c + (kz * nx - kx * nz) + ky * s;
+                    float mz = nz * c + (kx * ny - ky * nx) + kz * s;
+                    nx = mx; ny = my; nz = mz;
+                }
+                float d = nx * tx + ny * ty + nz * tz;
+                float px = nx - tx * d, py = ny - ty * d, pz = nz - tz * d;
+                float lengthSquared = px * px + py * py + pz * pz;
+                // Perpendicular's test: above 1e-8 and finite (a NaN fails both comparisons)
+                if (!(lengthSquared > 1e-8f && lengthSquared < float.PositiveInfinity)) break;
+                float inverse = 1f / MathF.Sqrt(lengthSquared);
+                nx = px * inverse; ny = py * inverse; nz = pz * inverse;
+                normal[i] = new Float3(nx, ny, nz);
+                fx = tx; fy = ty; fz = tz;
+            }
+            return i;
         }
 
         /// <summary>Scalar <see cref="Perpendicular(Float3, Float3)"/>: (x, y, z) made unit and perpendicular to unit tangent t in place.</summary>

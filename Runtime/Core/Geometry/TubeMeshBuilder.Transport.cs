@@ -315,14 +315,15 @@ namespace HookeRope.Geometry
             if (!(particleFrameValid[a] && particleTangent[a].Equals(t0)))
                 n = FrameTransport.Perpendicular(n.X, n.Y, n.Z, t0.X, t0.Y, t0.Z);
             normal[0] = n;
-            // the normal and the tangent before in locals passed by value (kept in registers through the loop)
-            float px = t0.X, py = t0.Y, pz = t0.Z;
-            for (int i = 1; i < tangent.Length; i++)
+            // the rings whose re-normalisation holds in the call-free run; from a ring that needs Perpendicular's axis
+            // fallback on, ring by ring (rare), then the run again
+            int i = 1;
+            while ((i = FrameTransport.TransportRun(tangent, normal, i)) < tangent.Length)
             {
-                Float3 t = tangent[i];
-                n = FrameTransport.Transported(n.X, n.Y, n.Z, px, py, pz, t.X, t.Y, t.Z);
-                normal[i] = n;
-                px = t.X; py = t.Y; pz = t.Z;
+                Float3 before = tangent[i - 1], t = tangent[i];
+                n = normal[i - 1];
+                normal[i] = FrameTransport.Transported(n.X, n.Y, n.Z, before.X, before.Y, before.Z, t.X, t.Y, t.Z);
+                i++;
             }
         }
 
