@@ -199,10 +199,14 @@ namespace HookeRope.Geometry
             int lanes = Vector<float>.Count;
             Span<float> x = laneX, y = laneY, z = laneZ;
             ReadOnlySpan<Float3> c = new ReadOnlySpan<Float3>(centers, first, count);
-            for (int i = 0; i < c.Length; i++)
             {
-                Float3 p = c[i];
-                x[i + 1] = p.X; y[i + 1] = p.Y; z[i + 1] = p.Z;
+                // ring i's centre into slot i + 1, through slices of exactly the piece's rings (no range checks)
+                Span<float> xs = x.Slice(1, c.Length), ys = y.Slice(1, c.Length), zs = z.Slice(1, c.Length);
+                for (int i = 0; i < c.Length; i++)
+                {
+                    Float3 p = c[i];
+                    xs[i] = p.X; ys[i] = p.Y; zs[i] = p.Z;
+                }
             }
             x[0] = x[1]; y[0] = y[1]; z[0] = z[1];
             // the last ring after itself, and again under the lanes past the piece (finite values, never used)
@@ -214,21 +218,28 @@ namespace HookeRope.Geometry
             var countLanes = new Vector<int>(count);
             Vector<int> failed = Vector<int>.Zero;
 
-            // the tangents: ring i's neighbours are scratch slots i and i + 2
+            // the tangents: ring i's neighbours are scratch slots i and i + 2; run j of lanes is rings i = lanes·j …,
+            // read and written through views of whole vectors from slot 0, 1 or 2 (Runs: one range check a vector)
             var one = new Vector<float>(1f);
             var tiny = new Vector<float>(1e-20f);
-            for (int i = 0; i < count; i += lanes)
+            int runs = (count + lanes - 1) / lanes;
             {
-                Vector<float> dx = Lane(x, i + 2) - Lane(x, i), dy = Lane(y, i + 2) - Lane(y, i), dz = Lane(z, i + 2) - Lane(z, i);
-                Vector<float> lengthSquared = dx * dx + dy * dy + dz * dz;
-                Vector<float> length = Vector.SquareRoot(lengthSquared);
-                Vector<int> inside = Vector.LessThan(laneIndex + new Vector<int>(i), countLanes);
-                failed |= Vector.AndNot(inside, Vector.GreaterThan(lengthSquared, tiny));
-                Vector<float> inverse = one / length;
-                SetLane(distance, i, length);
-                SetLane(tx, i, dx * inverse);
-                SetLane(ty, i, dy * inverse);
-                SetLane(tz, i, dz * inverse);
+                ReadOnlySpan<Vector<float>> x0 = Runs(x, 0, runs), y0 = Runs(y, 0, runs), z0 = Runs(z, 0, runs);
+                ReadOnlySpan<Vector<float>> x2 = Runs(x, 2, runs), y2 = Runs(y, 2, runs), z2 = Runs(z, 2, runs);
+                Span<Vector<float>> distanceRuns = Runs(distance, 0, runs), txRuns = Runs(tx, 0, runs), tyRuns = Runs(ty, 0, runs), tzRuns = Runs(tz, 0, runs);
+                for (int j = 0; j < runs; j++)
+                {
+                    Vector<float> dx = x2[j] - x0[j], dy = y2[j] - y0[j], dz = z2[j] - z0[j];
+                    Vector<float> lengthSquared = dx * dx + dy * dy + dz * dz;
+                    Vector<float> length = Vector.SquareRoot(lengthSquared);
+                    Vector<int> inside = Vector.LessThan(laneIndex + new Vector<int>(j * lanes), countLanes);
+                    failed |= Vector.AndNot(inside, Vector.GreaterThan(lengthSquared, tiny));
+                    Vector<float> inverse = one / length;
+                    distanceRuns[j] = length;
+                    txRuns[j] = dx * inverse;
+                    tyRuns[j] = dy * inverse;
+                    tzRuns[j] = dz * inverse;
+                }
             }
             if (!Vector.EqualsAll(failed, Vector<int>.Zero)) return false;
 
@@ -244,33 +255,42 @@ namespace HookeRope.Geometry
             var heldLanes = new Vector<float>(held);
             var skewLanes = new Vector<float>(skew2);
             var marginLanes = new Vector<float>(margin2);
-            for (int i = 1; i < count; i += lanes)
+            // run j of pairs: rings i − 1, i for i = 1 + lanes·j …, through views from slot 0, 1 or 2
+            int pairRuns = (count - 1 + lanes - 1) / lanes;
+            ReadOnlySpan<Vector<float>> x1 = Runs(x, 1, pairRuns), y1 = Runs(y, 1, pairRuns), z1 = Runs(z, 1, pairRuns);
+            ReadOnlySpan<Vector<float>> xa = Runs(x, 2, pairRuns), ya = Runs(y, 2, pairRuns), za = Runs(z, 2, pairRuns);
+            ReadOnlySpan<Vector<float>> pxRuns = Runs(tx, 0, pairRuns), pyRuns = Runs(ty, 0, pairRuns), pzRuns = Runs(tz, 0, pairRuns);
+            ReadOnlySpan<Vector<float>> qxRuns = Runs(tx, 1, pairRuns), qyRuns = Runs(ty, 1, pairRuns), qzRuns = Runs(tz, 1, pairRuns);
+            ReadOnlySpan<Vector<float>> radiusHere = Runs(radius, 1, pairRuns), radiusBefore = Runs(radius, 0, pairRuns);
+            Span<Vector<float>> gapRuns = Runs(gap, 1, pairRuns), capRuns = Runs(cap, 1, pairRuns), previousRuns = Runs(previous, 0, pairRuns);
+            for (int j = 0; j < pairRuns; j++)
             {
-                Vector<float> sx = Lane(x, i + 1) - Lane(x, i), sy = Lane(y, i + 1) - Lane(y, i), sz = Lane(z, i + 1) - Lane(z, i);
+                int i = 1 + j * lanes;
+                Vector<float> sx = xa[j] - x1[j], sy = ya[j] - y1[j], sz = za[j] - z1[j];
                 Vector<float> gap2 = sx * sx + sy * sy + sz * sz;
-                Vector<float> px = Lane(tx, i - 1), py = Lane(ty, i - 1), pz = Lane(tz, i - 1);
-                Vector<float> qx = Lane(tx, i), qy = Lane(ty, i), qz = Lane(tz, i);
+                Vector<float> px = pxRuns[j], py = pyRuns[j], pz = pzRuns[j];
+                Vector<float> qx = qxRuns[j], qy = qyRuns[j], qz = qzRuns[j];
                 Vector<float> past = sx * px + sy * py + sz * pz, before = sx * qx + sy * qy + sz * qz;
                 // ClearOfFold, then LimitPair's skew marks (none on the lanes)
                 Vector<float> chord2 = gap2 * chordShare;
                 Vector<int> clear = Vector.GreaterThan(past, zero) & Vector.GreaterThan(before, zero)
-                    & Vector.GreaterThanOrEqual(past * margin, foldRadius * Lane(radius, i) * heldLanes)
-                    & Vector.GreaterThanOrEqual(before * margin, foldRadius * Lane(radius, i - 1) * heldLanes)
+                    & Vector.GreaterThanOrEqual(past * margin, foldRadius * radiusHere[j] * heldLanes)
+                    & Vector.GreaterThanOrEqual(before * margin, foldRadius * radiusBefore[j] * heldLanes)
                     & Vector.GreaterThanOrEqual(past * past, chord2) & Vector.GreaterThanOrEqual(before * before, chord2);
                 Vector<float> skewGap = skewLanes * gap2;
                 Vector<int> skews = Vector.LessThan(past * past, skewGap) | Vector.LessThan(past, zero)
                     | Vector.LessThan(before * before, skewGap) | Vector.LessThan(before, zero);
                 Vector<int> inside = Vector.LessThan(laneIndex + new Vector<int>(i), countLanes);
                 failed |= Vector.AndNot(inside, clear) | (inside & skews);
-                SetLane(gap, i, gap2);
+                gapRuns[j] = gap2;
                 // LimitPair's caps: the pair's cap of ring i (+∞ unless lower) and of ring i − 1 (+∞: none)
                 Vector<float> nx = py * qz - pz * qy, ny = pz * qx - px * qz, nz = px * qy - py * qx;
                 Vector<float> sine2 = nx * nx + ny * ny + nz * nz;
                 Vector<int> bent = Vector.GreaterThan(sine2, zero);
                 Vector<float> scale = marginLanes / sine2;
                 Vector<float> capNext = past * past * scale, capPrevious = before * before * scale;
-                SetLane(cap, i, Vector.ConditionalSelect(bent & Vector.LessThan(capNext, infinity), capNext, infinity));
-                SetLane(previous, i - 1, Vector.ConditionalSelect(bent, capPrevious, infinity));
+                capRuns[j] = Vector.ConditionalSelect(bent & Vector.LessThan(capNext, infinity), capNext, infinity);
+                previousRuns[j] = Vector.ConditionalSelect(bent, capPrevious, infinity);
             }
             if (!Vector.EqualsAll(failed, Vector<int>.Zero)) return false;
 
@@ -293,13 +313,13 @@ namespace HookeRope.Geometry
             return true;
         }
 
+        /// <summary><paramref name="runs"/> whole vectors of <paramref name="values"/> from slot <paramref name="from"/>: vector j holds slots from + lanes·j ….</summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static Span<Vector<float>> Runs(Span<float> values, int from, int runs) => VectorPath.AsLanes(values.Slice(from)).Slice(0, runs);
+
         /// <summary>The lanes of <paramref name="values"/> from <paramref name="at"/>.</summary>
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         private static Vector<float> Lane(Span<float> values, int at) => VectorPath.AsLanes(values.Slice(at, Vector<float>.Count))[0];
-
-        /// <summary>Writes <paramref name="lanes"/> into <paramref name="values"/> from <paramref name="at"/>.</summary>
-        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
-        private static void SetLane(Span<float> values, int at, Vector<float> lanes) => VectorPath.AsLanes(values.Slice(at, Vector<float>.Count))[0] = lanes;
 
         /// <summary>
         /// Pass 2 of <see cref="FramesClearOfFolds"/>: the normals of the <paramref name="count"/> rings from
