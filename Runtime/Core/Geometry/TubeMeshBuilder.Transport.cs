@@ -129,18 +129,21 @@ namespace HookeRope.Geometry
             var grow = new Vector<float>(1.000001f);
             Vector<float> minX = new Vector<float>(bounds.Min.X), minY = new Vector<float>(bounds.Min.Y), minZ = new Vector<float>(bounds.Min.Z);
             Vector<float> maxX = new Vector<float>(bounds.Max.X), maxY = new Vector<float>(bounds.Max.Y), maxZ = new Vector<float>(bounds.Max.Z);
-            for (int i = 0; i < count; i += lanes)
+            // run j of lanes is rings i = lanes·j …; ring i's centre is scratch slot i + 1
+            int runs = (count + lanes - 1) / lanes;
+            ReadOnlySpan<Vector<float>> radiusRuns = Runs(radius, 0, runs), txRuns = Runs(tx, 0, runs), tyRuns = Runs(ty, 0, runs), tzRuns = Runs(tz, 0, runs);
+            ReadOnlySpan<Vector<float>> xRuns = Runs(x, 1, runs), yRuns = Runs(y, 1, runs), zRuns = Runs(z, 1, runs);
+            for (int j = 0; j < runs; j++)
             {
-                Vector<int> inside = Vector.LessThan(laneIndex + new Vector<int>(i), countLanes);
-                Vector<float> r = Lane(radius, i);
-                Vector<float> qx = Lane(tx, i), qy = Lane(ty, i), qz = Lane(tz, i);
+                Vector<int> inside = Vector.LessThan(laneIndex + new Vector<int>(j * lanes), countLanes);
+                Vector<float> r = radiusRuns[j];
+                Vector<float> qx = txRuns[j], qy = tyRuns[j], qz = tzRuns[j];
                 qx = one - qx * qx; qy = one - qy * qy; qz = one - qz * qz;
                 qx = Vector.ConditionalSelect(Vector.LessThanOrEqual(qx, zero), zero, qx);
                 qy = Vector.ConditionalSelect(Vector.LessThanOrEqual(qy, zero), zero, qy);
                 qz = Vector.ConditionalSelect(Vector.LessThanOrEqual(qz, zero), zero, qz);
                 Vector<float> ex = r * Vector.SquareRoot(qx) * grow, ey = r * Vector.SquareRoot(qy) * grow, ez = r * Vector.SquareRoot(qz) * grow;
-                // ring i's centre is scratch slot i + 1
-                Vector<float> cx = Lane(x, i + 1), cy = Lane(y, i + 1), cz = Lane(z, i + 1);
+                Vector<float> cx = xRuns[j], cy = yRuns[j], cz = zRuns[j];
                 Vector<float> lx = cx - ex, ly = cy - ey, lz = cz - ez, hx = cx + ex, hy = cy + ey, hz = cz + ez;
                 minX = Vector.ConditionalSelect(inside & Vector.LessThan(lx, minX), lx, minX);
                 minY = Vector.ConditionalSelect(inside & Vector.LessThan(ly, minY), ly, minY);
@@ -316,10 +319,6 @@ namespace HookeRope.Geometry
         /// <summary><paramref name="runs"/> whole vectors of <paramref name="values"/> from slot <paramref name="from"/>: vector j holds slots from + lanes·j ….</summary>
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         private static Span<Vector<float>> Runs(Span<float> values, int from, int runs) => VectorPath.AsLanes(values.Slice(from)).Slice(0, runs);
-
-        /// <summary>The lanes of <paramref name="values"/> from <paramref name="at"/>.</summary>
-        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
-        private static Vector<float> Lane(Span<float> values, int at) => VectorPath.AsLanes(values.Slice(at, Vector<float>.Count))[0];
 
         /// <summary>
         /// Pass 2 of <see cref="FramesClearOfFolds"/>: the normals of the <paramref name="count"/> rings from
