@@ -175,9 +175,14 @@ namespace HookeRope.Geometry
             return new Vector<int>(index);
         }
 
-        /// <summary>Grows <see cref="FramePassOnLanes"/>' scratch for pieces of up to <paramref name="rings"/> rings (with a run of lanes and two rings of padding).</summary>
+        /// <summary>Grows <see cref="FramePassOnLanes"/>' scratch for pieces of up to <paramref name="rings"/> rings (with a run of lanes and two rings of padding), and <see cref="LimitRadiiOnLanes"/>' (two runs of padding).</summary>
         private void EnsureLaneStorage(int rings)
         {
+            int limitSize = rings + 2 * Vector<float>.Count;
+            if (limitGiven.Length < limitSize)
+            {
+                limitGiven = new float[limitSize]; limitCap = new float[limitSize]; limitGap = new float[limitSize]; limitDrawn = new float[limitSize];
+            }
             int size = rings + Vector<float>.Count + 2;
             if (laneX.Length >= size) return;
             laneX = new float[size]; laneY = new float[size]; laneZ = new float[size];
