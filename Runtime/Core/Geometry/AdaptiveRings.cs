@@ -392,7 +392,11 @@ namespace HookeRope.Geometry
                     for (int k = first; k < first + zone.RingsIn(j); k++) layout.Add(zoneSegments[k], zoneFractions[k]);
                     continue;
                 }
-                layout.AddUniform(j, counts[j]);
+                // the run of uniform segments from j in one call
+                int end = j + 1;
+                while (end < n && !(hasBroken && brokenSegments[end]) && !forced[end]) end++;
+                layout.AddUniformRuns(j, new ReadOnlySpan<int>(counts, j, end - j));
+                j = end - 1;
             }
             layout.End();
         }
