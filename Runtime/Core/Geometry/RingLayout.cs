@@ -90,6 +90,9 @@ namespace HookeRope.Geometry
         /// <summary>Index of the ring at particle <paramref name="particle"/> (0 … SegmentCount).</summary>
         public int FirstRing(int particle) => firstRing[particle];
 
+        /// <summary>The first ring at each particle (<see cref="FirstRing"/> of particles 0 … SegmentCount).</summary>
+        internal ReadOnlySpan<int> FirstRings => firstRing;
+
         /// <summary>Rings in segment <paramref name="segment"/>.</summary>
         public int RingsIn(int segment) => firstRing[segment + 1] - firstRing[segment];
 

@@ -362,13 +362,18 @@ namespace HookeRope.Geometry
         /// <summary>Keeps each particle's ring frame of piece [a, b] (the seed of the next build's transport).</summary>
         private void KeepParticleFrames(int a, int b)
         {
-            for (int j = a; j <= b; j++)
+            // spans of exactly the piece's particles (their ring index read once, one range check per ring array)
+            ReadOnlySpan<int> ring = layout.FirstRings.Slice(a, b - a + 1);
+            Span<Float3> keptNormal = new Span<Float3>(particleNormal, a, ring.Length).Slice(0, ring.Length);
+            Span<Float3> keptTangent = new Span<Float3>(particleTangent, a, ring.Length).Slice(0, ring.Length);
+            ReadOnlySpan<Float3> normal = normals, tangent = tangents;
+            for (int i = 0; i < ring.Length; i++)
             {
-                int k = layout.FirstRing(j);
-                particleNormal[j] = normals[k];
-                particleTangent[j] = tangents[k];
-                particleFrameValid[j] = true;
+                int k = ring[i];
+                keptNormal[i] = normal[k];
+                keptTangent[i] = tangent[k];
             }
+            new Span<bool>(particleFrameValid, a, ring.Length).Fill(true);
         }
     }
 }
