@@ -39,7 +39,7 @@ namespace HookeRope.Geometry
                 FramePiecesOnLanes++;
                 lanePieceFirst = first;
                 lanePieceCount = count;
-                TransportNormals(a, first, count);
+                TransportNormals(a, first, count, true);
                 return true;
             }
             Float3 span = c[count - 1] - c[0];
@@ -91,7 +91,7 @@ namespace HookeRope.Geometry
                 bx = hx; by = hy; bz = hz;
                 hx = ax; hy = ay; hz = az;
             }
-            TransportNormals(a, first, count);
+            TransportNormals(a, first, count, false);
             anySkewed = skews;
             return true;
         }
@@ -101,6 +101,9 @@ namespace HookeRope.Geometry
         private float[] laneTX = Array.Empty<float>(), laneTY = Array.Empty<float>(), laneTZ = Array.Empty<float>();
         private float[] laneDistance = Array.Empty<float>(), laneGap = Array.Empty<float>(), laneCap = Array.Empty<float>(), lanePrevious = Array.Empty<float>();
         private float[] laneRadius = Array.Empty<float>();
+
+        /// <summary>Scratch of <see cref="FramePassOnLanes"/> for the transport: per ring i its pair's t_{i−1}·t_i and t_{i−1} × t_i (slot i; ring 0 none).</summary>
+        private float[] laneCosine = Array.Empty<float>(), laneKX = Array.Empty<float>(), laneKY = Array.Empty<float>(), laneKZ = Array.Empty<float>();
 
         /// <summary>Pieces whose first frame pass ran on lanes (<see cref="FramePassOnLanes"/>), since construction: for tests.</summary>
         internal int FramePiecesOnLanes { get; private set; }
@@ -189,6 +192,7 @@ namespace HookeRope.Geometry
             laneTX = new float[size]; laneTY = new float[size]; laneTZ = new float[size];
             laneDistance = new float[size]; laneGap = new float[size]; laneCap = new float[size]; lanePrevious = new float[size];
             laneRadius = new float[size];
+            laneCosine = new float[size]; laneKX = new float[size]; laneKY = new float[size]; laneKZ = new float[size];
         }
 
         /// <summary>
@@ -271,6 +275,7 @@ namespace HookeRope.Geometry
             ReadOnlySpan<Vector<float>> qxRuns = Runs(tx, 1, pairRuns), qyRuns = Runs(ty, 1, pairRuns), qzRuns = Runs(tz, 1, pairRuns);
             ReadOnlySpan<Vector<float>> radiusHere = Runs(radius, 1, pairRuns), radiusBefore = Runs(radius, 0, pairRuns);
             Span<Vector<float>> gapRuns = Runs(gap, 1, pairRuns), capRuns = Runs(cap, 1, pairRuns), previousRuns = Runs(previous, 0, pairRuns);
+            Span<Vector<float>> cosineRuns = Runs(laneCosine, 1, pairRuns), kxRuns = Runs(laneKX, 1, pairRuns), kyRuns = Runs(laneKY, 1, pairRuns), kzRuns = Runs(laneKZ, 1, pairRuns);
             for (int j = 0; j < pairRuns; j++)
             {
                 int i = 1 + j * lanes;
@@ -293,6 +298,9 @@ namespace HookeRope.Geometry
                 gapRuns[j] = gap2;
                 // LimitPair's caps: the pair's cap of ring i (+∞ unless lower) and of ring i − 1 (+∞: none)
                 Vector<float> nx = py * qz - pz * qy, ny = pz * qx - px * qz, nz = px * qy - py * qx;
+                // the transport's cosine and axis of the pair (FrameTransport.Transported's operations in its order)
+                cosineRuns[j] = px * qx + py * qy + pz * qz;
+                kxRuns[j] = nx; kyRuns[j] = ny; kzRuns[j] = nz;
                 Vector<float> sine2 = nx * nx + ny * ny + nz * nz;
                 Vector<int> bent = Vector.GreaterThan(sine2, zero);
                 Vector<float> scale = marginLanes / sine2;
@@ -328,9 +336,11 @@ namespace HookeRope.Geometry
         /// <summary>
         /// Pass 2 of <see cref="FramesClearOfFolds"/>: the normals of the <paramref name="count"/> rings from
         /// <paramref name="first"/> along their finished tangents, the first ring's from the last build's normal at
-        /// particle <paramref name="a"/> (re-projected only when its tangent changed), each next by parallel transport.
+        /// particle <paramref name="a"/> (re-projected only when its tangent changed), each next by parallel transport;
+        /// <paramref name="prepared"/>: with the pairs' cosines and cross products <see cref="FramePassOnLanes"/> left in
+        /// the lane scratch (ring i at slot i).
         /// </summary>
-        private void TransportNormals(int a, int first, int count)
+        private void TransportNormals(int a, int first, int count, bool prepared)
         {
             ReadOnlySpan<Float3> tangent = new ReadOnlySpan<Float3>(tangents, first, count);
             Span<Float3> normal = new Span<Float3>(normals, first, count).Slice(0, tangent.Length);
@@ -342,7 +352,9 @@ namespace HookeRope.Geometry
             // the rings whose re-normalisation holds in the call-free run; from a ring that needs Perpendicular's axis
             // fallback on, ring by ring (rare), then the run again
             int i = 1;
-            while ((i = FrameTransport.TransportRun(tangent, normal, i)) < tangent.Length)
+            while ((i = prepared
+                       ? FrameTransport.TransportRun(tangent, normal, i, laneCosine, laneKX, laneKY, laneKZ)
+                       : FrameTransport.TransportRun(tangent, normal, i)) < tangent.Length)
             {
                 Float3 before = tangent[i - 1], t = tangent[i];
                 n = normal[i - 1];
