@@ -312,16 +312,22 @@ namespace HookeRope.Geometry
 
             // everything final: into the ring arrays (ring 0 has no pair behind it, the last ring none ahead)
             Span<Float3> tangent = new Span<Float3>(tangents, first, count);
-            Span<float> ringCap = new Span<float>(capSquared, first, count);
             cap[0] = float.PositiveInfinity;
             previous[count - 1] = float.PositiveInfinity;
             gap[0] = 0f;
-            for (int i = 0; i < tangent.Length; i++)
             {
-                tangent[i] = new Float3(tx[i], ty[i], tz[i]);
-                float ahead = cap[i], behind = previous[i];
-                ringCap[i] = behind < ahead ? behind : ahead;
+                // each ring's cap, the scalar's merge (behind < ahead ? behind : ahead) as a select, into the cap scratch
+                Span<Vector<float>> aheadRuns = Runs(cap, 0, runs);
+                ReadOnlySpan<Vector<float>> behindRuns = Runs(previous, 0, runs);
+                for (int j = 0; j < aheadRuns.Length; j++)
+                {
+                    Vector<float> ahead = aheadRuns[j], behind = behindRuns[j];
+                    aheadRuns[j] = Vector.ConditionalSelect(Vector.LessThan(behind, ahead), behind, ahead);
+                }
             }
+            ReadOnlySpan<float> ux = tx.Slice(0, tangent.Length), uy = ty.Slice(0, tangent.Length), uz = tz.Slice(0, tangent.Length);
+            for (int i = 0; i < tangent.Length; i++) tangent[i] = new Float3(ux[i], uy[i], uz[i]);
+            cap.Slice(0, count).CopyTo(new Span<float>(capSquared, first, count));
             distance.Slice(0, count).CopyTo(new Span<float>(slopeDistance, first, count));
             gap.Slice(0, count).CopyTo(new Span<float>(gapSquared, first, count));
             new Span<bool>(foldTip, first, count).Clear();
