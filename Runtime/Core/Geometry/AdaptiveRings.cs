@@ -415,6 +415,10 @@ namespace HookeRope.Geometry
         private bool SyncPieces(ReadOnlySpan<bool> brokenSegments)
         {
             bool hasBroken = brokenSegments.Length > 0;
+            // the usual case first, by a vectorised comparison of the flags: nothing changed
+            ReadOnlySpan<bool> kept = new ReadOnlySpan<bool>(pieceBroken, 0, n);
+            if (hasBroken ? brokenSegments.Length >= n && brokenSegments.Slice(0, n).SequenceEqual(kept) : kept.IndexOf(true) < 0)
+                return false;
             bool changed = false;
             for (int j = 0; j < n; j++)
             {
