@@ -286,8 +286,15 @@ namespace HookeRope.Geometry
         private int Demand(int a, int b, bool withZone, float margin)
         {
             int demand = 0;
+            if (!withZone)
+            {
+                // no neck stations: the needs alone, through a span of exactly the piece's segments
+                ReadOnlySpan<float> needs = new ReadOnlySpan<float>(need, a, b - a);
+                for (int i = 0; i < needs.Length; i++) demand += Rounded(needs[i] * margin);
+                return demand;
+            }
             for (int j = a; j < b; j++)
-                demand += withZone && zone.RingsIn(j) > 1 ? zone.RingsIn(j) : Rounded(need[j] * margin);
+                demand += zone.RingsIn(j) > 1 ? zone.RingsIn(j) : Rounded(need[j] * margin);
             return demand;
         }
 
@@ -312,6 +319,22 @@ namespace HookeRope.Geometry
             }
             int left = total;
             int sum = 0;
+            if (!withZone)
+            {
+                // no neck stations: every segment free, its count its rounded need (spans of exactly the piece's segments)
+                ReadOnlySpan<float> needs = new ReadOnlySpan<float>(need, a, b - a);
+                Span<int> dealt = new Span<int>(counts, a, needs.Length).Slice(0, needs.Length);
+                new Span<bool>(forced, a, needs.Length).Clear();
+                for (int i = 0; i < needs.Length; i++)
+                {
+                    int count = Rounded(needs[i]);
+                    dealt[i] = count;
+                    sum += count;
+                }
+                if (sum > left) Shrink(a, b, left);
+                Spread(a, b, left);
+                return;
+            }
             for (int j = a; j < b; j++)
             {
                 forced[j] = withZone && zone.RingsIn(j) > 1;
