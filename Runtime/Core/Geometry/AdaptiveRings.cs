@@ -365,27 +365,31 @@ namespace HookeRope.Geometry
         /// <summary>Gives the free segments' surplus (<paramref name="left"/> − their rings) out in proportion to need, by cumulative rounding.</summary>
         private void Spread(int a, int b, int left)
         {
+            // spans of exactly the piece's segments (index i = j − a)
+            ReadOnlySpan<float> needs = new ReadOnlySpan<float>(need, a, b - a);
+            ReadOnlySpan<bool> held = new ReadOnlySpan<bool>(forced, a, needs.Length).Slice(0, needs.Length);
+            Span<int> dealt = new Span<int>(counts, a, needs.Length).Slice(0, needs.Length);
             int sum = 0;
             double weight = 0.0;
-            for (int j = a; j < b; j++)
+            for (int i = 0; i < needs.Length; i++)
             {
-                if (!IsFree(j)) continue;
-                sum += counts[j];
-                if (counts[j] < MaxRingsPerSegment) weight += need[j] + 0.01;
+                if (held[i]) continue;
+                sum += dealt[i];
+                if (dealt[i] < MaxRingsPerSegment) weight += needs[i] + 0.01;
             }
             int surplus = left - sum;
             if (surplus <= 0 || weight <= 0.0) return;
             double cumulative = 0.0;
             int given = 0;
-            for (int j = a; j < b && given < surplus; j++)
+            for (int i = 0; i < needs.Length && given < surplus; i++)
             {
-                if (!IsFree(j) || counts[j] >= MaxRingsPerSegment) continue;
-                cumulative += (need[j] + 0.01) / weight * surplus;
+                if (held[i] || dealt[i] >= MaxRingsPerSegment) continue;
+                cumulative += (needs[i] + 0.01) / weight * surplus;
                 int share = (int)Math.Round(cumulative) - given;
-                if (share > MaxRingsPerSegment - counts[j]) share = MaxRingsPerSegment - counts[j];
+                if (share > MaxRingsPerSegment - dealt[i]) share = MaxRingsPerSegment - dealt[i];
                 if (share > surplus - given) share = surplus - given;
                 if (share <= 0) continue;
-                counts[j] += share;
+                dealt[i] += share;
                 given += share;
             }
             // what the caps turned away goes to the first segments with room
