@@ -286,8 +286,15 @@ namespace HookeRope.Geometry
         private int Demand(int a, int b, bool withZone, float margin)
         {
             int demand = 0;
+            if (!withZone)
+            {
+                // no neck stations: the needs alone, through a span of exactly the piece's segments
+                ReadOnlySpan<float> needs = new ReadOnlySpan<float>(need, a, b - a);
+                for (int i = 0; i < needs.Length; i++) demand += Rounded(needs[i] * margin);
+                return demand;
+            }
             for (int j = a; j < b; j++)
-                demand += withZone && zone.RingsIn(j) > 1 ? zone.RingsIn(j) : Rounded(need[j] * margin);
+                demand += zone.RingsIn(j) > 1 ? zone.RingsIn(j) : Rounded(need[j] * margin);
             return demand;
         }
 
@@ -312,6 +319,22 @@ namespace HookeRope.Geometry
             }
             int left = total;
             int sum = 0;
+            if (!withZone)
+            {
+                // no neck stations: every segment free, its count its rounded need (spans of exactly the piece's segments)
+                ReadOnlySpan<float> needs = new ReadOnlySpan<float>(need, a, b - a);
+                Span<int> dealt = new Span<int>(counts, a, needs.Length).Slice(0, needs.Length);
+                new Span<bool>(forced, a, needs.Length).Clear();
+                for (int i = 0; i < needs.Length; i++)
+                {
+                    int count = Rounded(needs[i]);
+                    dealt[i] = count;
+                    sum += count;
+                }
+                if (sum > left) Shrink(a, b, left);
+                Spread(a, b, left);
+                return;
+            }
             for (int j = a; j < b; j++)
             {
                 forced[j] = withZone && zone.RingsIn(j) > 1;
@@ -342,27 +365,31 @@ namespace HookeRope.Geometry
         /// <summary>Gives the free segments' surplus (<paramref name="left"/> − their rings) out in proportion to need, by cumulative rounding.</summary>
         private void Spread(int a, int b, int left)
         {
+            // spans of exactly the piece's segments (index i = j − a)
+            ReadOnlySpan<float> needs = new ReadOnlySpan<float>(need, a, b - a);
+            ReadOnlySpan<bool> held = new ReadOnlySpan<bool>(forced, a, needs.Length).Slice(0, needs.Length);
+            Span<int> dealt = new Span<int>(counts, a, needs.Length).Slice(0, needs.Length);
             int sum = 0;
             double weight = 0.0;
-            for (int j = a; j < b; j++)
+            for (int i = 0; i < needs.Length; i++)
             {
-                if (!IsFree(j)) continue;
-                sum += counts[j];
-                if (counts[j] < MaxRingsPerSegment) weight += need[j] + 0.01;
+                if (held[i]) continue;
+                sum += dealt[i];
+                if (dealt[i] < MaxRingsPerSegment) weight += needs[i] + 0.01;
             }
             int surplus = left - sum;
             if (surplus <= 0 || weight <= 0.0) return;
             double cumulative = 0.0;
             int given = 0;
-            for (int j = a; j < b && given < surplus; j++)
+            for (int i = 0; i < needs.Length && given < surplus; i++)
             {
-                if (!IsFree(j) || counts[j] >= MaxRingsPerSegment) continue;
-                cumulative += (need[j] + 0.01) / weight * surplus;
+                if (held[i] || dealt[i] >= MaxRingsPerSegment) continue;
+                cumulative += (needs[i] + 0.01) / weight * surplus;
                 int share = (int)Math.Round(cumulative) - given;
-                if (share > MaxRingsPerSegment - counts[j]) share = MaxRingsPerSegment - counts[j];
+                if (share > MaxRingsPerSegment - dealt[i]) share = MaxRingsPerSegment - dealt[i];
                 if (share > surplus - given) share = surplus - given;
                 if (share <= 0) continue;
-                counts[j] += share;
+                dealt[i] += share;
                 given += share;
             }
             // what the caps turned away goes to the first segments with room
@@ -392,7 +419,11 @@ namespace HookeRope.Geometry
                     for (int k = first; k < first + zone.RingsIn(j); k++) layout.Add(zoneSegments[k], zoneFractions[k]);
                     continue;
                 }
-                layout.AddUniform(j, counts[j]);
+                // the run of uniform segments from j in one call
+                int end = j + 1;
+                while (end < n && !(hasBroken && brokenSegments[end]) && !forced[end]) end++;
+                layout.AddUniformRuns(j, new ReadOnlySpan<int>(counts, j, end - j));
+                j = end - 1;
             }
             layout.End();
         }
@@ -411,6 +442,10 @@ namespace HookeRope.Geometry
         private bool SyncPieces(ReadOnlySpan<bool> brokenSegments)
         {
             bool hasBroken = brokenSegments.Length > 0;
+            // the usual case first, by a vectorised comparison of the flags: nothing changed
+            ReadOnlySpan<bool> kept = new ReadOnlySpan<bool>(pieceBroken, 0, n);
+            if (hasBroken ? brokenSegments.Length >= n && brokenSegments.Slice(0, n).SequenceEqual(kept) : kept.IndexOf(true) < 0)
+                return false;
             bool changed = false;
             for (int j = 0; j < n; j++)
             {

@@ -1,3 +1,4 @@
+using System;
 using HookeRope.Mathematics;
 
 namespace HookeRope.Geometry
@@ -56,6 +57,92 @@ namespace HookeRope.Geometry
                 nx = mx; ny = my; nz = mz;
             }
             return Perpendicular(nx, ny, nz, tx, ty, tz);
+        }
+
+        /// <summary>
+        /// Carries <paramref name="normal"/>[from − 1] (from ≥ 1) along <paramref name="tangent"/> (the same length) ring by ring:
+        /// normal[i] = <see cref="Transported"/>(normal[i − 1], tangent[i − 1], tangent[i]) for i = from, from + 1, … with
+        /// that method's operations in its order, as long as the re-normalisation does not degenerate. Returns the first i
+        /// it did not write (tangent.Length when it wrote all): there <see cref="Perpendicular(float, float, float, float, float, float)"/>
+        /// needs its out-of-line fallback, which the caller applies by <see cref="Transported"/> from that ring on. With no
+        /// call in it, the loop keeps the normal and the tangent before in registers.
+        /// </summary>
+        public static int TransportRun(ReadOnlySpan<Float3> tangent, Span<Float3> normal, int from)
+        {
+            if (from >= tangent.Length) return tangent.Length;
+            normal = normal.Slice(0, tangent.Length);
+            Float3 n = normal[from - 1], f = tangent[from - 1];
+            float nx = n.X, ny = n.Y, nz = n.Z, fx = f.X, fy = f.Y, fz = f.Z;
+            int i = from;
+            for (; i < tangent.Length; i++)
+            {
+                Float3 t = tangent[i];
+                float tx = t.X, ty = t.Y, tz = t.Z;
+                float c = fx * tx + fy * ty + fz * tz;
+                if (c > -0.9999f)
+                {
+                    float kx = fy * tz - fz * ty, ky = fz * tx - fx * tz, kz = fx * ty - fy * tx;
+                    float s = (kx * nx + ky * ny + kz * nz) / (1f + c);
+                    float mx = nx * c + (ky * nz - kz * ny) + kx * s;
+                    float my = ny * c + (kz * nx - kx * nz) + ky * s;
+                    float mz = nz * c + (kx * ny - ky * nx) + kz * s;
+                    nx = mx; ny = my; nz = mz;
+                }
+                float d = nx * tx + ny * ty + nz * tz;
+                float px = nx - tx * d, py = ny - ty * d, pz = nz - tz * d;
+                float lengthSquared = px * px + py * py + pz * pz;
+                // Perpendicular's test: above 1e-8 and finite (a NaN fails both comparisons)
+                if (!(lengthSquared > 1e-8f && lengthSquared < float.PositiveInfinity)) break;
+                float inverse = 1f / MathF.Sqrt(lengthSquared);
+                nx = px * inverse; ny = py * inverse; nz = pz * inverse;
+                normal[i] = new Float3(nx, ny, nz);
+                fx = tx; fy = ty; fz = tz;
+            }
+            return i;
+        }
+
+        /// <summary>
+        /// <see cref="TransportRun(ReadOnlySpan{Float3}, Span{Float3}, int)"/> with what depends on the tangents alone
+        /// formed before, per ring i (the pair i − 1, i): <paramref name="cosine"/>[i] = t_{i−1}·t_i and k = t_{i−1} × t_i in
+        /// <paramref name="kx"/>, <paramref name="ky"/>, <paramref name="kz"/> (each by <see cref="Transported"/>'s operations
+        /// in its order, so the same bits); the loop then carries only the normal. Returns as that method does.
+        /// </summary>
+        public static int TransportRun(ReadOnlySpan<Float3> tangent, Span<Float3> normal, int from,
+            ReadOnlySpan<float> cosine, ReadOnlySpan<float> kx, ReadOnlySpan<float> ky, ReadOnlySpan<float> kz)
+        {
+            if (from >= tangent.Length) return tangent.Length;
+            int count = tangent.Length - from;
+            // the rings from `from` on, indexed from 0 (spans of one length: no range checks in the loop)
+            ReadOnlySpan<Float3> t = tangent.Slice(from, count);
+            Span<Float3> written = normal.Slice(from, count).Slice(0, t.Length);
+            ReadOnlySpan<float> cs = cosine.Slice(from, count).Slice(0, t.Length);
+            ReadOnlySpan<float> ax = kx.Slice(from, count).Slice(0, t.Length), ay = ky.Slice(from, count).Slice(0, t.Length), az = kz.Slice(from, count).Slice(0, t.Length);
+            Float3 n = normal[from - 1];
+            float nx = n.X, ny = n.Y, nz = n.Z;
+            int i = 0;
+            for (; i < t.Length; i++)
+            {
+                float c = cs[i];
+                if (c > -0.9999f)
+                {
+                    float kxi = ax[i], kyi = ay[i], kzi = az[i];
+                    float s = (kxi * nx + kyi * ny + kzi * nz) / (1f + c);
+                    float mx = nx * c + (kyi * nz - kzi * ny) + kxi * s;
+                    float my = ny * c + (kzi * nx - kxi * nz) + kyi * s;
+                    float mz = nz * c + (kxi * ny - kyi * nx) + kzi * s;
+                    nx = mx; ny = my; nz = mz;
+                }
+                Float3 ti = t[i];
+                float tx = ti.X, ty = ti.Y, tz = ti.Z;
+                float d = nx * tx + ny * ty + nz * tz;
+                float px = nx - tx * d, py = ny - ty * d, pz = nz - tz * d;
+                float lengthSquared = px * px + py * py + pz * pz;
+                if (!(lengthSquared > 1e-8f && lengthSquared < float.PositiveInfinity)) break;
+                float inverse = 1f / MathF.Sqrt(lengthSquared);
+                nx = px * inverse; ny = py * inverse; nz = pz * inverse;
+                written[i] = new Float3(nx, ny, nz);
+            }
+            return from + i;
         }
 
         /// <summary>Scalar <see cref="Perpendicular(Float3, Float3)"/>: (x, y, z) made unit and perpendicular to unit tangent t in place.</summary>

@@ -90,6 +90,9 @@ namespace HookeRope.Geometry
         /// <summary>Index of the ring at particle <paramref name="particle"/> (0 … SegmentCount).</summary>
         public int FirstRing(int particle) => firstRing[particle];
 
+        /// <summary>The first ring at each particle (<see cref="FirstRing"/> of particles 0 … SegmentCount).</summary>
+        internal ReadOnlySpan<int> FirstRings => firstRing;
+
         /// <summary>Rings in segment <paramref name="segment"/>.</summary>
         public int RingsIn(int segment) => firstRing[segment + 1] - firstRing[segment];
 
@@ -116,7 +119,7 @@ namespace HookeRope.Geometry
 
         /// <summary>
         /// Starts a rewrite in place: add every segment's rings in segment order with <see cref="Add"/> or
-        /// <see cref="AddUniform"/> (each segment at least one, starting at t = 0, fractions increasing below 1; the
+        /// <see cref="AddUniformRuns"/> (each segment at least one, starting at t = 0, fractions increasing below 1; the
         /// callers guarantee it), then <see cref="End"/>.
         /// </summary>
         internal void Begin()
@@ -138,36 +141,57 @@ namespace HookeRope.Geometry
             Put(writeCursor++, segment, t);
         }
 
-        /// <summary>Appends <paramref name="count"/> (≥ 1) evenly spaced rings of <paramref name="segment"/>, t = i/count as the uniform layouts.</summary>
-        internal void AddUniform(int segment, int count)
+        /// <summary>
+        /// Appends, for segments <paramref name="segment"/>, <paramref name="segment"/> + 1, … in order, counts[s] (≥ 1)
+        /// evenly spaced rings of segment <paramref name="segment"/> + s, t = i/count as the uniform layouts: Add's segment
+        /// step, then Put's compare-and-store per ring, with the capacity checked and the ring arrays sliced once for the
+        /// whole run of segments.
+        /// </summary>
+        internal void AddUniformRuns(int segment, ReadOnlySpan<int> counts)
         {
-            // Add's segment step and Put's capacity check once for the run of rings, then Put's compare-and-store per ring
+            if (counts.Length == 0) return;
             while (writeSegment < segment)
             {
                 writeSegment++;
                 firstRing[writeSegment] = writeCursor;
             }
-            int start = writeCursor;
-            if (start + count > ringSegment.Length)
+            int start = writeCursor, total = 0;
+            for (int s = 0; s < counts.Length; s++) total += counts[s];
+            if (start + total > ringSegment.Length)
             {
-                int size = Math.Max(start + count, 2 * ringSegment.Length);
+                int size = Math.Max(start + total, 2 * ringSegment.Length);
                 Array.Resize(ref ringSegment, size);
                 Array.Resize(ref ringFraction, size);
             }
-            Span<int> segments = new Span<int>(ringSegment, start, count);
-            Span<float> fractions = new Span<float>(ringFraction, start, count);
+            Span<int> segments = new Span<int>(ringSegment, start, total);
+            Span<float> fractions = new Span<float>(ringFraction, start, total);
+            // the first ring of each segment after the first (Add's step: one segment at a time)
+            Span<int> firsts = new Span<int>(firstRing, segment, counts.Length);
             int kept = ringCount - start; // rings below the last layout's count compare with it
             bool changed = false;
-            for (int i = 0; i < segments.Length; i++)
+            int k = 0;
+            for (int s = 0; s < counts.Length; s++)
             {
-                float t = (float)i / count;
-                if (i < kept && segments[i] == segment && fractions[i] == t) continue;
-                changed = true;
-                segments[i] = segment;
-                fractions[i] = t;
+                int count = counts[s], here = segment + s;
+                if (s > 0) firsts[s] = start + k;
+                Span<int> ringSegments = segments.Slice(k, count);
+                Span<float> ringFractions = fractions.Slice(k, count).Slice(0, ringSegments.Length);
+                int keptHere = kept - k;
+                // t = (float)i / count, with i and count as floats formed once (i counted up in floats: exact below 2²⁴)
+                float divisor = count, place = 0f;
+                for (int i = 0; i < ringSegments.Length; i++, place += 1f)
+                {
+                    float t = place / divisor;
+                    if (i < keptHere && ringSegments[i] == here && ringFractions[i] == t) continue;
+                    changed = true;
+                    ringSegments[i] = here;
+                    ringFractions[i] = t;
+                }
+                k += count;
             }
+            writeSegment = segment + counts.Length - 1;
             writeChanged |= changed;
-            writeCursor = start + count;
+            writeCursor = start + total;
         }
 
         /// <summary>Ends a rewrite with the last ring on the last particle; <see cref="Version"/> moves when a ring did.</summary>

@@ -50,6 +50,14 @@ namespace HookeRope.Geometry
                     j += lanes;
                     continue;
                 }
+                // the interior's tail too short for a vector: the last vector of interior segments, which ends at segment
+                // b − 2, overlapping the ones done (each lane is the scalar's bits, so those are written again unchanged)
+                if (vector && j > a && j < b - 1 && b - 1 - lanes > a)
+                {
+                    OfInteriorLanes(b - 1 - lanes, x, y, z, ox, oy, oz, radius, inverseTolerance, cap, need);
+                    j = b - 1;
+                    continue;
+                }
                 need[j] = OfSegment(j, a, b, x, y, z, ox, oy, oz, radius, inverseTolerance, cap);
                 j++;
             }

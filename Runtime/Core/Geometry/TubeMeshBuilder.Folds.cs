@@ -1,4 +1,5 @@
 using System;
+using System.Numerics;
 using HookeRope.Fracture;
 using HookeRope.Mathematics;
 
@@ -275,9 +276,15 @@ namespace HookeRope.Geometry
             Span<bool> thin = thinned;
             const float slope2 = ConeSlope * ConeSlope;
             bool falls = false, anyThin = false;
+            int count = last - first + 1;
+            if (VectorPath.Enabled && !ForceFullLimits && count >= Vector<float>.Count && LimitRadiiOnLanes(first, count, radii, out falls))
+            {
+                // nothing thinned and no forward cone limit: the lanes wrote the forward loop's values
+            }
+            else
             {
                 // the forward loop over spans of exactly the piece's rings, indexed by i = k − first
-                int count = last - first + 1;
+                falls = false;
                 ReadOnlySpan<float> given = radii.Slice(first, count);
                 ReadOnlySpan<float> cap = new ReadOnlySpan<float>(capSquared, first, count).Slice(0, given.Length);
                 ReadOnlySpan<float> gap = new ReadOnlySpan<float>(gapSquared, first, count).Slice(0, given.Length);
@@ -324,6 +331,81 @@ namespace HookeRope.Geometry
                 anyThin |= thinner;
             }
             return anyThin;
+        }
+
+        /// <summary>Scratch of <see cref="LimitRadiiOnLanes"/>: the piece's radii, caps², steps² and drawn radii, padded for whole runs of lanes (grown by <see cref="EnsureLaneStorage"/>).</summary>
+        private float[] limitGiven = Array.Empty<float>(), limitCap = Array.Empty<float>(), limitGap = Array.Empty<float>(), limitDrawn = Array.Empty<float>();
+
+        /// <summary>
+        /// <see cref="LimitRadii"/>'s forward loop on <see cref="Vector{T}"/> lanes for the <paramref name="count"/> rings
+        /// from <paramref name="first"/>, when it can change nothing sequential: with no fold tip in the piece, each ring's
+        /// capped radius (the clamp, the cap and the fold floor by the scalar's operations, the branches as selects) does not
+        /// depend on the ring before, and the forward cone limit is the only thing that would. So one run of lanes caps 8
+        /// rings, one tests 8 pairs with the scalar's comparisons; when no pair rises too steeply (the forward limit idle)
+        /// and no ring comes out thinner than its radius, these are the forward loop's values: they go into
+        /// <see cref="drawnRadii"/>, the piece's thinned marks are cleared and <paramref name="falls"/> tells whether the
+        /// backward pass may change something. Otherwise returns false, with nothing of the loop's written (the scalar loop
+        /// then takes the piece).
+        /// </summary>
+        private bool LimitRadiiOnLanes(int first, int count, ReadOnlySpan<float> radii, out bool falls)
+        {
+            falls = false;
+            if (new ReadOnlySpan<bool>(foldTip, first, count).IndexOf(true) >= 0) return false;
+            int lanes = Vector<float>.Count;
+            // the scratch is grown with the lane scratch (EnsureLaneStorage), never here
+            if (limitGiven.Length < count + 2 * lanes) return false;
+            // the piece's values, then finite pads past it (a pad's step² +∞: its pair never tests true)
+            Span<float> given = limitGiven, cap = limitCap, gap = limitGap, drawn = limitDrawn;
+            radii.Slice(first, count).CopyTo(given);
+            new ReadOnlySpan<float>(capSquared, first, count).CopyTo(cap);
+            new ReadOnlySpan<float>(gapSquared, first, count).CopyTo(gap);
+            given.Slice(count, 2 * lanes).Fill(1f);
+            cap.Slice(count, 2 * lanes).Fill(float.PositiveInfinity);
+            gap.Slice(count, 2 * lanes).Fill(float.PositiveInfinity);
+
+            // run j: rings lanes·j …; Clamped (1e-6 < r < +∞, which a NaN fails, else 1e-6), then the cap and the fold floor
+            var least = new Vector<float>(1e-6f);
+            var infinity = new Vector<float>(float.PositiveInfinity);
+            var foldRadius = new Vector<float>(FoldRadius);
+            Vector<int> thinner = Vector<int>.Zero;
+            int runs = (count + lanes - 1) / lanes;
+            {
+                ReadOnlySpan<Vector<float>> givenRuns = Runs(given, 0, runs), capRuns = Runs(cap, 0, runs);
+                Span<Vector<float>> drawnRuns = Runs(drawn, 0, runs);
+                for (int j = 0; j < runs; j++)
+                {
+                    Vector<float> g = givenRuns[j], cap2 = capRuns[j];
+                    Vector<float> r = Vector.ConditionalSelect(Vector.GreaterThan(g, least) & Vector.LessThan(g, infinity), g, least);
+                    Vector<float> root = Vector.SquareRoot(cap2), floor = foldRadius * r;
+                    Vector<float> capped = Vector.ConditionalSelect(Vector.GreaterThanOrEqual(root, floor), root, floor);
+                    Vector<float> d = Vector.ConditionalSelect(Vector.GreaterThan(r * r, cap2), capped, r);
+                    thinner |= ~Vector.Equals(d, r);
+                    drawnRuns[j] = d;
+                }
+            }
+            if (!Vector.EqualsAll(thinner, Vector<int>.Zero)) return false;
+
+            // the pairs i − 1, i for i = 1 + lanes·j …: a rise steeper than the slope would be limited (sequential), a fall
+            // only marks the backward pass
+            var slope2 = new Vector<float>(ConeSlope * ConeSlope);
+            var zero = Vector<float>.Zero;
+            Vector<int> rises = Vector<int>.Zero, fallsLanes = Vector<int>.Zero;
+            int pairRuns = (count - 1 + lanes - 1) / lanes;
+            {
+                ReadOnlySpan<Vector<float>> here = Runs(drawn, 1, pairRuns), before = Runs(drawn, 0, pairRuns), gapRuns = Runs(gap, 1, pairRuns);
+                for (int j = 0; j < pairRuns; j++)
+                {
+                    Vector<float> rise = here[j] - before[j];
+                    Vector<int> steep = Vector.GreaterThan(rise * rise, slope2 * gapRuns[j]);
+                    rises |= Vector.GreaterThan(rise, zero) & steep;
+                    fallsLanes |= Vector.LessThan(rise, zero) & steep;
+                }
+            }
+            if (!Vector.EqualsAll(rises, Vector<int>.Zero)) return false;
+            falls = !Vector.EqualsAll(fallsLanes, Vector<int>.Zero);
+            drawn.Slice(0, count).CopyTo(new Span<float>(drawnRadii, first, count));
+            new Span<bool>(thinned, first, count).Clear();
+            return true;
         }
 
         /// <summary>Tests only: every build runs the whole of the ring limits (the backward cone pass, the strip-normal marks, the frame loop with its fold repair at every ring instead of the two passes of <see cref="FramesClearOfFolds"/>), where a cheap test would have skipped them.</summary>

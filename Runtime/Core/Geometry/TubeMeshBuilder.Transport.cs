@@ -39,7 +39,7 @@ namespace HookeRope.Geometry
                 FramePiecesOnLanes++;
                 lanePieceFirst = first;
                 lanePieceCount = count;
-                TransportNormals(a, first, count);
+                TransportNormals(a, first, count, true);
                 return true;
             }
             Float3 span = c[count - 1] - c[0];
@@ -91,7 +91,7 @@ namespace HookeRope.Geometry
                 bx = hx; by = hy; bz = hz;
                 hx = ax; hy = ay; hz = az;
             }
-            TransportNormals(a, first, count);
+            TransportNormals(a, first, count, false);
             anySkewed = skews;
             return true;
         }
@@ -101,6 +101,9 @@ namespace HookeRope.Geometry
         private float[] laneTX = Array.Empty<float>(), laneTY = Array.Empty<float>(), laneTZ = Array.Empty<float>();
         private float[] laneDistance = Array.Empty<float>(), laneGap = Array.Empty<float>(), laneCap = Array.Empty<float>(), lanePrevious = Array.Empty<float>();
         private float[] laneRadius = Array.Empty<float>();
+
+        /// <summary>Scratch of <see cref="FramePassOnLanes"/> for the transport: per ring i its pair's t_{i−1}·t_i and t_{i−1} × t_i (slot i; ring 0 none).</summary>
+        private float[] laneCosine = Array.Empty<float>(), laneKX = Array.Empty<float>(), laneKY = Array.Empty<float>(), laneKZ = Array.Empty<float>();
 
         /// <summary>Pieces whose first frame pass ran on lanes (<see cref="FramePassOnLanes"/>), since construction: for tests.</summary>
         internal int FramePiecesOnLanes { get; private set; }
@@ -129,18 +132,21 @@ namespace HookeRope.Geometry
             var grow = new Vector<float>(1.000001f);
             Vector<float> minX = new Vector<float>(bounds.Min.X), minY = new Vector<float>(bounds.Min.Y), minZ = new Vector<float>(bounds.Min.Z);
             Vector<float> maxX = new Vector<float>(bounds.Max.X), maxY = new Vector<float>(bounds.Max.Y), maxZ = new Vector<float>(bounds.Max.Z);
-            for (int i = 0; i < count; i += lanes)
+            // run j of lanes is rings i = lanes·j …; ring i's centre is scratch slot i + 1
+            int runs = (count + lanes - 1) / lanes;
+            ReadOnlySpan<Vector<float>> radiusRuns = Runs(radius, 0, runs), txRuns = Runs(tx, 0, runs), tyRuns = Runs(ty, 0, runs), tzRuns = Runs(tz, 0, runs);
+            ReadOnlySpan<Vector<float>> xRuns = Runs(x, 1, runs), yRuns = Runs(y, 1, runs), zRuns = Runs(z, 1, runs);
+            for (int j = 0; j < runs; j++)
             {
-                Vector<int> inside = Vector.LessThan(laneIndex + new Vector<int>(i), countLanes);
-                Vector<float> r = Lane(radius, i);
-                Vector<float> qx = Lane(tx, i), qy = Lane(ty, i), qz = Lane(tz, i);
+                Vector<int> inside = Vector.LessThan(laneIndex + new Vector<int>(j * lanes), countLanes);
+                Vector<float> r = radiusRuns[j];
+                Vector<float> qx = txRuns[j], qy = tyRuns[j], qz = tzRuns[j];
                 qx = one - qx * qx; qy = one - qy * qy; qz = one - qz * qz;
                 qx = Vector.ConditionalSelect(Vector.LessThanOrEqual(qx, zero), zero, qx);
                 qy = Vector.ConditionalSelect(Vector.LessThanOrEqual(qy, zero), zero, qy);
                 qz = Vector.ConditionalSelect(Vector.LessThanOrEqual(qz, zero), zero, qz);
                 Vector<float> ex = r * Vector.SquareRoot(qx) * grow, ey = r * Vector.SquareRoot(qy) * grow, ez = r * Vector.SquareRoot(qz) * grow;
-                // ring i's centre is scratch slot i + 1
-                Vector<float> cx = Lane(x, i + 1), cy = Lane(y, i + 1), cz = Lane(z, i + 1);
+                Vector<float> cx = xRuns[j], cy = yRuns[j], cz = zRuns[j];
                 Vector<float> lx = cx - ex, ly = cy - ey, lz = cz - ez, hx = cx + ex, hy = cy + ey, hz = cz + ez;
                 minX = Vector.ConditionalSelect(inside & Vector.LessThan(lx, minX), lx, minX);
                 minY = Vector.ConditionalSelect(inside & Vector.LessThan(ly, minY), ly, minY);
@@ -172,15 +178,21 @@ namespace HookeRope.Geometry
             return new Vector<int>(index);
         }
 
-        /// <summary>Grows <see cref="FramePassOnLanes"/>' scratch for pieces of up to <paramref name="rings"/> rings (with a run of lanes and two rings of padding).</summary>
+        /// <summary>Grows <see cref="FramePassOnLanes"/>' scratch for pieces of up to <paramref name="rings"/> rings (with a run of lanes and two rings of padding), and <see cref="LimitRadiiOnLanes"/>' (two runs of padding).</summary>
         private void EnsureLaneStorage(int rings)
         {
+            int limitSize = rings + 2 * Vector<float>.Count;
+            if (limitGiven.Length < limitSize)
+            {
+                limitGiven = new float[limitSize]; limitCap = new float[limitSize]; limitGap = new float[limitSize]; limitDrawn = new float[limitSize];
+            }
             int size = rings + Vector<float>.Count + 2;
             if (laneX.Length >= size) return;
             laneX = new float[size]; laneY = new float[size]; laneZ = new float[size];
             laneTX = new float[size]; laneTY = new float[size]; laneTZ = new float[size];
             laneDistance = new float[size]; laneGap = new float[size]; laneCap = new float[size]; lanePrevious = new float[size];
             laneRadius = new float[size];
+            laneCosine = new float[size]; laneKX = new float[size]; laneKY = new float[size]; laneKZ = new float[size];
         }
 
         /// <summary>
@@ -199,10 +211,14 @@ namespace HookeRope.Geometry
             int lanes = Vector<float>.Count;
             Span<float> x = laneX, y = laneY, z = laneZ;
             ReadOnlySpan<Float3> c = new ReadOnlySpan<Float3>(centers, first, count);
-            for (int i = 0; i < c.Length; i++)
             {
-                Float3 p = c[i];
-                x[i + 1] = p.X; y[i + 1] = p.Y; z[i + 1] = p.Z;
+                // ring i's centre into slot i + 1, through slices of exactly the piece's rings (no range checks)
+                Span<float> xs = x.Slice(1, c.Length), ys = y.Slice(1, c.Length), zs = z.Slice(1, c.Length);
+                for (int i = 0; i < c.Length; i++)
+                {
+                    Float3 p = c[i];
+                    xs[i] = p.X; ys[i] = p.Y; zs[i] = p.Z;
+                }
             }
             x[0] = x[1]; y[0] = y[1]; z[0] = z[1];
             // the last ring after itself, and again under the lanes past the piece (finite values, never used)
@@ -214,21 +230,28 @@ namespace HookeRope.Geometry
             var countLanes = new Vector<int>(count);
             Vector<int> failed = Vector<int>.Zero;
 
-            // the tangents: ring i's neighbours are scratch slots i and i + 2
+            // the tangents: ring i's neighbours are scratch slots i and i + 2; run j of lanes is rings i = lanes·j …,
+            // read and written through views of whole vectors from slot 0, 1 or 2 (Runs: one range check a vector)
             var one = new Vector<float>(1f);
             var tiny = new Vector<float>(1e-20f);
-            for (int i = 0; i < count; i += lanes)
+            int runs = (count + lanes - 1) / lanes;
             {
-                Vector<float> dx = Lane(x, i + 2) - Lane(x, i), dy = Lane(y, i + 2) - Lane(y, i), dz = Lane(z, i + 2) - Lane(z, i);
-                Vector<float> lengthSquared = dx * dx + dy * dy + dz * dz;
-                Vector<float> length = Vector.SquareRoot(lengthSquared);
-                Vector<int> inside = Vector.LessThan(laneIndex + new Vector<int>(i), countLanes);
-                failed |= Vector.AndNot(inside, Vector.GreaterThan(lengthSquared, tiny));
-                Vector<float> inverse = one / length;
-                SetLane(distance, i, length);
-                SetLane(tx, i, dx * inverse);
-                SetLane(ty, i, dy * inverse);
-                SetLane(tz, i, dz * inverse);
+                ReadOnlySpan<Vector<float>> x0 = Runs(x, 0, runs), y0 = Runs(y, 0, runs), z0 = Runs(z, 0, runs);
+                ReadOnlySpan<Vector<float>> x2 = Runs(x, 2, runs), y2 = Runs(y, 2, runs), z2 = Runs(z, 2, runs);
+                Span<Vector<float>> distanceRuns = Runs(distance, 0, runs), txRuns = Runs(tx, 0, runs), tyRuns = Runs(ty, 0, runs), tzRuns = Runs(tz, 0, runs);
+                for (int j = 0; j < runs; j++)
+                {
+                    Vector<float> dx = x2[j] - x0[j], dy = y2[j] - y0[j], dz = z2[j] - z0[j];
+                    Vector<float> lengthSquared = dx * dx + dy * dy + dz * dz;
+                    Vector<float> length = Vector.SquareRoot(lengthSquared);
+                    Vector<int> inside = Vector.LessThan(laneIndex + new Vector<int>(j * lanes), countLanes);
+                    failed |= Vector.AndNot(inside, Vector.GreaterThan(lengthSquared, tiny));
+                    Vector<float> inverse = one / length;
+                    distanceRuns[j] = length;
+                    txRuns[j] = dx * inverse;
+                    tyRuns[j] = dy * inverse;
+                    tzRuns[j] = dz * inverse;
+                }
             }
             if (!Vector.EqualsAll(failed, Vector<int>.Zero)) return false;
 
@@ -244,48 +267,67 @@ namespace HookeRope.Geometry
             var heldLanes = new Vector<float>(held);
             var skewLanes = new Vector<float>(skew2);
             var marginLanes = new Vector<float>(margin2);
-            for (int i = 1; i < count; i += lanes)
+            // run j of pairs: rings i − 1, i for i = 1 + lanes·j …, through views from slot 0, 1 or 2
+            int pairRuns = (count - 1 + lanes - 1) / lanes;
+            ReadOnlySpan<Vector<float>> x1 = Runs(x, 1, pairRuns), y1 = Runs(y, 1, pairRuns), z1 = Runs(z, 1, pairRuns);
+            ReadOnlySpan<Vector<float>> xa = Runs(x, 2, pairRuns), ya = Runs(y, 2, pairRuns), za = Runs(z, 2, pairRuns);
+            ReadOnlySpan<Vector<float>> pxRuns = Runs(tx, 0, pairRuns), pyRuns = Runs(ty, 0, pairRuns), pzRuns = Runs(tz, 0, pairRuns);
+            ReadOnlySpan<Vector<float>> qxRuns = Runs(tx, 1, pairRuns), qyRuns = Runs(ty, 1, pairRuns), qzRuns = Runs(tz, 1, pairRuns);
+            ReadOnlySpan<Vector<float>> radiusHere = Runs(radius, 1, pairRuns), radiusBefore = Runs(radius, 0, pairRuns);
+            Span<Vector<float>> gapRuns = Runs(gap, 1, pairRuns), capRuns = Runs(cap, 1, pairRuns), previousRuns = Runs(previous, 0, pairRuns);
+            Span<Vector<float>> cosineRuns = Runs(laneCosine, 1, pairRuns), kxRuns = Runs(laneKX, 1, pairRuns), kyRuns = Runs(laneKY, 1, pairRuns), kzRuns = Runs(laneKZ, 1, pairRuns);
+            for (int j = 0; j < pairRuns; j++)
             {
-                Vector<float> sx = Lane(x, i + 1) - Lane(x, i), sy = Lane(y, i + 1) - Lane(y, i), sz = Lane(z, i + 1) - Lane(z, i);
+                int i = 1 + j * lanes;
+                Vector<float> sx = xa[j] - x1[j], sy = ya[j] - y1[j], sz = za[j] - z1[j];
                 Vector<float> gap2 = sx * sx + sy * sy + sz * sz;
-                Vector<float> px = Lane(tx, i - 1), py = Lane(ty, i - 1), pz = Lane(tz, i - 1);
-                Vector<float> qx = Lane(tx, i), qy = Lane(ty, i), qz = Lane(tz, i);
+                Vector<float> px = pxRuns[j], py = pyRuns[j], pz = pzRuns[j];
+                Vector<float> qx = qxRuns[j], qy = qyRuns[j], qz = qzRuns[j];
                 Vector<float> past = sx * px + sy * py + sz * pz, before = sx * qx + sy * qy + sz * qz;
                 // ClearOfFold, then LimitPair's skew marks (none on the lanes)
                 Vector<float> chord2 = gap2 * chordShare;
                 Vector<int> clear = Vector.GreaterThan(past, zero) & Vector.GreaterThan(before, zero)
-                    & Vector.GreaterThanOrEqual(past * margin, foldRadius * Lane(radius, i) * heldLanes)
-                    & Vector.GreaterThanOrEqual(before * margin, foldRadius * Lane(radius, i - 1) * heldLanes)
+                    & Vector.GreaterThanOrEqual(past * margin, foldRadius * radiusHere[j] * heldLanes)
+                    & Vector.GreaterThanOrEqual(before * margin, foldRadius * radiusBefore[j] * heldLanes)
                     & Vector.GreaterThanOrEqual(past * past, chord2) & Vector.GreaterThanOrEqual(before * before, chord2);
                 Vector<float> skewGap = skewLanes * gap2;
                 Vector<int> skews = Vector.LessThan(past * past, skewGap) | Vector.LessThan(past, zero)
                     | Vector.LessThan(before * before, skewGap) | Vector.LessThan(before, zero);
                 Vector<int> inside = Vector.LessThan(laneIndex + new Vector<int>(i), countLanes);
                 failed |= Vector.AndNot(inside, clear) | (inside & skews);
-                SetLane(gap, i, gap2);
+                gapRuns[j] = gap2;
                 // LimitPair's caps: the pair's cap of ring i (+∞ unless lower) and of ring i − 1 (+∞: none)
                 Vector<float> nx = py * qz - pz * qy, ny = pz * qx - px * qz, nz = px * qy - py * qx;
+                // the transport's cosine and axis of the pair (FrameTransport.Transported's operations in its order)
+                cosineRuns[j] = px * qx + py * qy + pz * qz;
+                kxRuns[j] = nx; kyRuns[j] = ny; kzRuns[j] = nz;
                 Vector<float> sine2 = nx * nx + ny * ny + nz * nz;
                 Vector<int> bent = Vector.GreaterThan(sine2, zero);
                 Vector<float> scale = marginLanes / sine2;
                 Vector<float> capNext = past * past * scale, capPrevious = before * before * scale;
-                SetLane(cap, i, Vector.ConditionalSelect(bent & Vector.LessThan(capNext, infinity), capNext, infinity));
-                SetLane(previous, i - 1, Vector.ConditionalSelect(bent, capPrevious, infinity));
+                capRuns[j] = Vector.ConditionalSelect(bent & Vector.LessThan(capNext, infinity), capNext, infinity);
+                previousRuns[j] = Vector.ConditionalSelect(bent, capPrevious, infinity);
             }
             if (!Vector.EqualsAll(failed, Vector<int>.Zero)) return false;
 
             // everything final: into the ring arrays (ring 0 has no pair behind it, the last ring none ahead)
             Span<Float3> tangent = new Span<Float3>(tangents, first, count);
-            Span<float> ringCap = new Span<float>(capSquared, first, count);
             cap[0] = float.PositiveInfinity;
             previous[count - 1] = float.PositiveInfinity;
             gap[0] = 0f;
-            for (int i = 0; i < tangent.Length; i++)
             {
-                tangent[i] = new Float3(tx[i], ty[i], tz[i]);
-                float ahead = cap[i], behind = previous[i];
-                ringCap[i] = behind < ahead ? behind : ahead;
+                // each ring's cap, the scalar's merge (behind < ahead ? behind : ahead) as a select, into the cap scratch
+                Span<Vector<float>> aheadRuns = Runs(cap, 0, runs);
+                ReadOnlySpan<Vector<float>> behindRuns = Runs(previous, 0, runs);
+                for (int j = 0; j < aheadRuns.Length; j++)
+                {
+                    Vector<float> ahead = aheadRuns[j], behind = behindRuns[j];
+                    aheadRuns[j] = Vector.ConditionalSelect(Vector.LessThan(behind, ahead), behind, ahead);
+                }
             }
+            ReadOnlySpan<float> ux = tx.Slice(0, tangent.Length), uy = ty.Slice(0, tangent.Length), uz = tz.Slice(0, tangent.Length);
+            for (int i = 0; i < tangent.Length; i++) tangent[i] = new Float3(ux[i], uy[i], uz[i]);
+            cap.Slice(0, count).CopyTo(new Span<float>(capSquared, first, count));
             distance.Slice(0, count).CopyTo(new Span<float>(slopeDistance, first, count));
             gap.Slice(0, count).CopyTo(new Span<float>(gapSquared, first, count));
             new Span<bool>(foldTip, first, count).Clear();
@@ -293,20 +335,18 @@ namespace HookeRope.Geometry
             return true;
         }
 
-        /// <summary>The lanes of <paramref name="values"/> from <paramref name="at"/>.</summary>
+        /// <summary><paramref name="runs"/> whole vectors of <paramref name="values"/> from slot <paramref name="from"/>: vector j holds slots from + lanes·j ….</summary>
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
-        private static Vector<float> Lane(Span<float> values, int at) => VectorPath.AsLanes(values.Slice(at, Vector<float>.Count))[0];
-
-        /// <summary>Writes <paramref name="lanes"/> into <paramref name="values"/> from <paramref name="at"/>.</summary>
-        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
-        private static void SetLane(Span<float> values, int at, Vector<float> lanes) => VectorPath.AsLanes(values.Slice(at, Vector<float>.Count))[0] = lanes;
+        private static Span<Vector<float>> Runs(Span<float> values, int from, int runs) => VectorPath.AsLanes(values.Slice(from)).Slice(0, runs);
 
         /// <summary>
         /// Pass 2 of <see cref="FramesClearOfFolds"/>: the normals of the <paramref name="count"/> rings from
         /// <paramref name="first"/> along their finished tangents, the first ring's from the last build's normal at
-        /// particle <paramref name="a"/> (re-projected only when its tangent changed), each next by parallel transport.
+        /// particle <paramref name="a"/> (re-projected only when its tangent changed), each next by parallel transport;
+        /// <paramref name="prepared"/>: with the pairs' cosines and cross products <see cref="FramePassOnLanes"/> left in
+        /// the lane scratch (ring i at slot i).
         /// </summary>
-        private void TransportNormals(int a, int first, int count)
+        private void TransportNormals(int a, int first, int count, bool prepared)
         {
             ReadOnlySpan<Float3> tangent = new ReadOnlySpan<Float3>(tangents, first, count);
             Span<Float3> normal = new Span<Float3>(normals, first, count).Slice(0, tangent.Length);
@@ -315,14 +355,17 @@ namespace HookeRope.Geometry
             if (!(particleFrameValid[a] && particleTangent[a].Equals(t0)))
                 n = FrameTransport.Perpendicular(n.X, n.Y, n.Z, t0.X, t0.Y, t0.Z);
             normal[0] = n;
-            // the normal and the tangent before in locals passed by value (kept in registers through the loop)
-            float px = t0.X, py = t0.Y, pz = t0.Z;
-            for (int i = 1; i < tangent.Length; i++)
+            // the rings whose re-normalisation holds in the call-free run; from a ring that needs Perpendicular's axis
+            // fallback on, ring by ring (rare), then the run again
+            int i = 1;
+            while ((i = prepared
+                       ? FrameTransport.TransportRun(tangent, normal, i, laneCosine, laneKX, laneKY, laneKZ)
+                       : FrameTransport.TransportRun(tangent, normal, i)) < tangent.Length)
             {
-                Float3 t = tangent[i];
-                n = FrameTransport.Transported(n.X, n.Y, n.Z, px, py, pz, t.X, t.Y, t.Z);
-                normal[i] = n;
-                px = t.X; py = t.Y; pz = t.Z;
+                Float3 before = tangent[i - 1], t = tangent[i];
+                n = normal[i - 1];
+                normal[i] = FrameTransport.Transported(n.X, n.Y, n.Z, before.X, before.Y, before.Z, t.X, t.Y, t.Z);
+                i++;
             }
         }
 
@@ -337,13 +380,18 @@ namespace HookeRope.Geometry
         /// <summary>Keeps each particle's ring frame of piece [a, b] (the seed of the next build's transport).</summary>
         private void KeepParticleFrames(int a, int b)
         {
-            for (int j = a; j <= b; j++)
+            // spans of exactly the piece's particles (their ring index read once, one range check per ring array)
+            ReadOnlySpan<int> ring = layout.FirstRings.Slice(a, b - a + 1);
+            Span<Float3> keptNormal = new Span<Float3>(particleNormal, a, ring.Length).Slice(0, ring.Length);
+            Span<Float3> keptTangent = new Span<Float3>(particleTangent, a, ring.Length).Slice(0, ring.Length);
+            ReadOnlySpan<Float3> normal = normals, tangent = tangents;
+            for (int i = 0; i < ring.Length; i++)
             {
-                int k = layout.FirstRing(j);
-                particleNormal[j] = normals[k];
-                particleTangent[j] = tangents[k];
-                particleFrameValid[j] = true;
+                int k = ring[i];
+                keptNormal[i] = normal[k];
+                keptTangent[i] = tangent[k];
             }
+            new Span<bool>(particleFrameValid, a, ring.Length).Fill(true);
         }
     }
 }

@@ -174,11 +174,32 @@ namespace HookeRope.Radius
             UpdateNeck();
             if (profileMoved || !before.Equals(new ProfileKey(this))) RadiiVersion++;
             float smallest = float.PositiveInfinity;
-            for (int i = 0; i <= n; i++)
+            if (neckDepth <= 0f && n > 0)
             {
-                float r = RadiusAt(i < n ? i : n - 1, i < n ? 0f : 1f);
-                particleRadii[i] = r;
-                if (r < smallest) smallest = r;
+                // no neck: RadiusAt's Poisson interpolation at each particle (t = 0; t = 1 on the last segment, which its
+                // clamp keeps), the range check and the neck test hoisted out (the same operations, so the same bits)
+                ReadOnlySpan<float> particle = baseParticleRadii;
+                ReadOnlySpan<bool> parted = segmentBroken;
+                Span<float> radii = particleRadii;
+                for (int i = 0; i <= n; i++)
+                {
+                    int segment = i < n ? i : n - 1;
+                    float t = i < n ? 0f : 1f;
+                    float r = parted[segment]
+                        ? particle[t <= 0.5f ? segment : segment + 1]
+                        : particle[segment] + (particle[segment + 1] - particle[segment]) * t;
+                    radii[i] = r;
+                    if (r < smallest) smallest = r;
+                }
+            }
+            else
+            {
+                for (int i = 0; i <= n; i++)
+                {
+                    float r = RadiusAt(i < n ? i : n - 1, i < n ? 0f : 1f);
+                    particleRadii[i] = r;
+                    if (r < smallest) smallest = r;
+                }
             }
             neckRadius = RadiusAt(defectSegment, defectT);
             if (s.Necking && s.NeckMode == NeckMode.Paper && paperNecking) neckRadius = Math.Min(neckRadius, paperWaist);
