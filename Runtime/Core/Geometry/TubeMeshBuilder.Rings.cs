@@ -262,9 +262,13 @@ namespace HookeRope.Geometry
         /// Radius slopes dr/ds over the distance between each ring's neighbours (the ring itself at a piece's end). The
         /// frames took those distances already (the length of the central difference they normalise), bit for bit the
         /// same, unless a fold tip moved a centre afterwards (<paramref name="distancesKept"/> false, from <see cref="ComputeFrames"/>).
+        /// With the vector paths on, the interior rings' slopes are taken on <see cref="Vector{T}"/> lanes
+        /// (<see cref="InteriorSlopesOnLanes"/>), the end rings and the tail on the scalar loop.
         /// </summary>
         private void ComputeSlopes(int first, int last, bool distancesKept)
         {
+            // read first: the switch is a static field, whose first read may call the runtime
+            bool lanes = VectorPath.Enabled;
             // spans of exactly the piece's rings, indexed by i = k − first
             int count = last - first + 1;
             ReadOnlySpan<Float3> c = new ReadOnlySpan<Float3>(centers, first, count);
@@ -272,18 +276,65 @@ namespace HookeRope.Geometry
             ReadOnlySpan<bool> tip = new ReadOnlySpan<bool>(foldTip, first, count).Slice(0, c.Length);
             Span<float> distance = new Span<float>(slopeDistance, first, count).Slice(0, c.Length);
             Span<float> slope = new Span<float>(slopes, first, count).Slice(0, c.Length);
-            for (int i = 0; i < c.Length; i++)
+            if (!distancesKept)
             {
-                int ahead = i < c.Length - 1 ? i + 1 : i;
-                int behind = i > 0 ? i - 1 : i;
-                if (!distancesKept)
+                for (int i = 0; i < c.Length; i++)
                 {
+                    int ahead = i < c.Length - 1 ? i + 1 : i;
+                    int behind = i > 0 ? i - 1 : i;
                     Float3 ca = c[ahead], cb = c[behind];
                     float dx = ca.X - cb.X, dy = ca.Y - cb.Y, dz = ca.Z - cb.Z;
                     distance[i] = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
                 }
+            }
+            if (lanes && c.Length > Vector<float>.Count + 1)
+            {
+                // ring 0, the interior rings 1 … done − 1 on lanes (a fold tip's slope is 0: set afterwards), the rest
+                int done = InteriorSlopesOnLanes(r, distance, slope);
+                ScalarSlopes(0, 1, r, tip, distance, slope);
+                if (tip.Slice(1, done - 1).IndexOf(true) >= 0)
+                    for (int i = 1; i < done; i++)
+                        if (tip[i]) slope[i] = 0f;
+                ScalarSlopes(done, c.Length, r, tip, distance, slope);
+            }
+            else ScalarSlopes(0, c.Length, r, tip, distance, slope);
+        }
+
+        /// <summary>The slopes of rings <paramref name="from"/> … <paramref name="to"/> − 1 of a piece's spans (<see cref="ComputeSlopes"/>).</summary>
+        private static void ScalarSlopes(int from, int to, ReadOnlySpan<float> r, ReadOnlySpan<bool> tip, ReadOnlySpan<float> distance, Span<float> slope)
+        {
+            for (int i = from; i < to; i++)
+            {
+                int ahead = i < r.Length - 1 ? i + 1 : i;
+                int behind = i > 0 ? i - 1 : i;
                 slope[i] = tip[i] ? 0f : Slope(r[ahead], r[behind], distance[i]);
             }
+        }
+
+        /// <summary>
+        /// <see cref="Slope"/> of the interior rings 1, 2, … of a piece's spans (at least two rings more than a vector's
+        /// lanes), <see cref="Vector{T}"/>.Count rings a step while the block's ring ahead is in the piece: per lane the scalar's operations (the quotient where the
+        /// distance is above 1e-12, else +0; below −10 or NaN −10; above 10 10), fold tips not looked at. Returns the
+        /// first ring not written.
+        /// </summary>
+        private static int InteriorSlopesOnLanes(ReadOnlySpan<float> r, ReadOnlySpan<float> distance, Span<float> slope)
+        {
+            var small = new Vector<float>(1e-12f);
+            var low = new Vector<float>(-MaxSlope);
+            var high = new Vector<float>(MaxSlope);
+            // block p is rings 1 + 8p … 8 + 8p (with 8 lanes): the radii ahead from ring 2 on, behind from ring 0, the
+            // distances and slopes from ring 1, as whole vectors; the bound is the blocks whose ring ahead is in the piece
+            ReadOnlySpan<Vector<float>> ahead = MemoryMarshal.Cast<float, Vector<float>>(r.Slice(2));
+            ReadOnlySpan<Vector<float>> behind = MemoryMarshal.Cast<float, Vector<float>>(r).Slice(0, ahead.Length);
+            ReadOnlySpan<Vector<float>> d = MemoryMarshal.Cast<float, Vector<float>>(distance.Slice(1)).Slice(0, ahead.Length);
+            Span<Vector<float>> s = MemoryMarshal.Cast<float, Vector<float>>(slope.Slice(1)).Slice(0, ahead.Length);
+            for (int p = 0; p < s.Length; p++)
+            {
+                Vector<float> q = Vector.ConditionalSelect(Vector.GreaterThan(d[p], small), (ahead[p] - behind[p]) / d[p], Vector<float>.Zero);
+                q = Vector.ConditionalSelect(Vector.GreaterThanOrEqual(q, low), q, low);
+                s[p] = Vector.ConditionalSelect(Vector.GreaterThan(q, high), high, q);
+            }
+            return 1 + s.Length * Vector<float>.Count;
         }
 
         /// <summary>dr/ds between two rings <paramref name="distance"/> apart, clamped to ±10 (NaN counts as −10).</summary>
