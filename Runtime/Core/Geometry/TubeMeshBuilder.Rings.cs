@@ -23,6 +23,8 @@ namespace HookeRope.Geometry
         private float[] slopeDistance = Array.Empty<float>();
         private float[] spacing2 = Array.Empty<float>();
         private bool[] dirty = Array.Empty<bool>();
+        // the piece's raw ring centres per axis, indexed from the piece's first ring (ComputeCenters' lanes)
+        private float[] rawX = Array.Empty<float>(), rawY = Array.Empty<float>(), rawZ = Array.Empty<float>();
         private Float3[] particleNormal;
         private Float3[] particleTangent;
         private bool[] particleFrameValid;
@@ -48,6 +50,9 @@ namespace HookeRope.Geometry
             Array.Resize(ref slopeDistance, size);
             Array.Resize(ref spacing2, size);
             Array.Resize(ref dirty, size);
+            Array.Resize(ref rawX, size);
+            Array.Resize(ref rawY, size);
+            Array.Resize(ref rawZ, size);
             Array.Resize(ref lastRadii, size);
             EnsureFoldStorage(size);
             EnsureLaneStorage(size);
@@ -57,21 +62,27 @@ namespace HookeRope.Geometry
         /// Ring centres of piece [a, b] (rings first … last) relative to the frame origin: on the particles, or on the
         /// segment's Catmull–Rom cubic (the control points as <see cref="Vector4"/> lanes x, y, z, 0, once per segment: each
         /// ring's centre is then four lane products and three lane sums, the scalar's operations in its order per lane).
+        /// Two passes: the raw centres (<see cref="centers"/>, and per axis in <see cref="rawX"/> …), then the settling
+        /// (<see cref="SettleCenters"/>: a non-finite centre takes the previous one, a ring too close to the previous one is
+        /// pushed, the spacing² kept), with the vector paths on first on <see cref="Vector{T}"/> lanes
+        /// (<see cref="SettleCentersOnLanes"/>) as far as no ring needs either.
         /// </summary>
         private void ComputeCenters(int a, int b, int first, int last, ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z)
         {
+            // read first: the switch is a static field, whose first read may call the runtime
+            bool lanes = VectorPath.Enabled;
             // spans of exactly the piece's rings, indexed by i = k − first (the loop's bound is their length)
             int count = last - first + 1;
             Span<Float3> centre = new Span<Float3>(centers, first, count);
             ReadOnlySpan<int> ringSegments = layout.RingSegments.Slice(first, count).Slice(0, centre.Length);
             ReadOnlySpan<float> ringFractions = layout.RingFractions.Slice(first, count).Slice(0, centre.Length);
-            Span<float> spacing = new Span<float>(spacing2, first, count).Slice(0, centre.Length);
-            ReadOnlySpan<float> radius = new ReadOnlySpan<float>(ringRadii, first, count).Slice(0, centre.Length);
+            Span<float> cx4 = new Span<float>(rawX, 0, count).Slice(0, centre.Length);
+            Span<float> cy4 = new Span<float>(rawY, 0, count).Slice(0, centre.Length);
+            Span<float> cz4 = new Span<float>(rawZ, 0, count).Slice(0, centre.Length);
             float ox = frameOrigin.X, oy = frameOrigin.Y, oz = frameOrigin.Z;
             // the control points of the segment the rings are in (the rings of a segment are consecutive)
             int held = -1;
             Vector4 p0 = default, p1 = default, p2 = default, p3 = default;
-            Float3 previous = Float3.Zero;
             for (int i = 0; i < centre.Length; i++)
             {
                 int j = ringSegments[i];
@@ -107,6 +118,34 @@ namespace HookeRope.Geometry
                     Vector4 c4 = p0 * w0 + p1 * w1 + p2 * w2 + p3 * w3;
                     cx = c4.X; cy = c4.Y; cz = c4.Z;
                 }
+                centre[i] = new Float3(cx, cy, cz);
+                cx4[i] = cx; cy4[i] = cy; cz4[i] = cz;
+            }
+            SettleCenters(a, b, first, count, 0, 1, x, y, z);
+            int next = 1;
+            if (lanes && count > Vector<float>.Count + 1 && float.IsFinite(cx4[0]) && float.IsFinite(cy4[0]) && float.IsFinite(cz4[0]))
+                next = SettleCentersOnLanes(first, count);
+            SettleCenters(a, b, first, count, next, count, x, y, z);
+        }
+
+        /// <summary>
+        /// The settling of <see cref="ComputeCenters"/> for rings <paramref name="from"/> … <paramref name="to"/> − 1 of
+        /// the piece's <paramref name="count"/> rings from <paramref name="first"/> (the rings before final): each raw centre
+        /// that is not finite takes the previous ring's (ring 0: zero); a ring closer than <see cref="PushDistance"/>·r to
+        /// the previous one is pushed on (<see cref="PushDirection"/>, its spacing² NaN); else its spacing² is kept
+        /// (ring 0: +∞).
+        /// </summary>
+        private void SettleCenters(int a, int b, int first, int count, int from, int to,
+            ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z)
+        {
+            Span<Float3> centre = new Span<Float3>(centers, first, count);
+            Span<float> spacing = new Span<float>(spacing2, first, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> radius = new ReadOnlySpan<float>(ringRadii, first, count).Slice(0, centre.Length);
+            Float3 previous = from > 0 ? centre[from - 1] : Float3.Zero;
+            for (int i = from; i < to; i++)
+            {
+                Float3 raw = centre[i];
+                float cx = raw.X, cy = raw.Y, cz = raw.Z;
                 if (!(float.IsFinite(cx) && float.IsFinite(cy) && float.IsFinite(cz)))
                 {
                     Float3 fallback = i > 0 ? previous : Float3.Zero;
@@ -131,6 +170,41 @@ namespace HookeRope.Geometry
                 previous = new Float3(cx, cy, cz);
                 centre[i] = previous;
             }
+        }
+
+        /// <summary>
+        /// <see cref="SettleCenters"/> from ring 1 on <see cref="Vector{T}"/> lanes, <see cref="Vector{T}"/>.Count rings a
+        /// step from the per-axis raw centres (ring 0 finite), as long as every ring of a block is finite and not pushed:
+        /// per lane the scalar's spacing² and push test in its order; such a ring keeps its raw centre, so the ring before
+        /// a block is final. Returns the first ring it did not settle (a block with a ring that needs the scalar, or the
+        /// tail shorter than a vector).
+        /// </summary>
+        private int SettleCentersOnLanes(int first, int count)
+        {
+            // block p is rings 1 + 8p … 8 + 8p (with 8 lanes), the rings before them 8p … 7 + 8p
+            ReadOnlySpan<float> xs = new ReadOnlySpan<float>(rawX, 0, count), ys = new ReadOnlySpan<float>(rawY, 0, count), zs = new ReadOnlySpan<float>(rawZ, 0, count);
+            ReadOnlySpan<Vector<float>> x1 = MemoryMarshal.Cast<float, Vector<float>>(xs.Slice(1));
+            ReadOnlySpan<Vector<float>> y1 = MemoryMarshal.Cast<float, Vector<float>>(ys.Slice(1)).Slice(0, x1.Length);
+            ReadOnlySpan<Vector<float>> z1 = MemoryMarshal.Cast<float, Vector<float>>(zs.Slice(1)).Slice(0, x1.Length);
+            ReadOnlySpan<Vector<float>> x0 = MemoryMarshal.Cast<float, Vector<float>>(xs).Slice(0, x1.Length);
+            ReadOnlySpan<Vector<float>> y0 = MemoryMarshal.Cast<float, Vector<float>>(ys).Slice(0, x1.Length);
+            ReadOnlySpan<Vector<float>> z0 = MemoryMarshal.Cast<float, Vector<float>>(zs).Slice(0, x1.Length);
+            ReadOnlySpan<Vector<float>> r = MemoryMarshal.Cast<float, Vector<float>>(new ReadOnlySpan<float>(ringRadii, first + 1, count - 1)).Slice(0, x1.Length);
+            Span<Vector<float>> spacing = MemoryMarshal.Cast<float, Vector<float>>(new Span<float>(spacing2, first + 1, count - 1)).Slice(0, x1.Length);
+            var push = new Vector<float>(PushDistance);
+            var tiny = new Vector<float>(1e-7f);
+            for (int p = 0; p < spacing.Length; p++)
+            {
+                Vector<float> cx = x1[p], cy = y1[p], cz = z1[p];
+                // x − x is +0 for a finite x and NaN for ±∞ and NaN, so the sum is 0 only where all three are finite
+                if (!Vector.EqualsAll((cx - cx) + (cy - cy) + (cz - cz), Vector<float>.Zero)) return 1 + p * Vector<float>.Count;
+                Vector<float> dx = cx - x0[p], dy = cy - y0[p], dz = cz - z0[p];
+                Vector<float> minimum = push * r[p] + tiny;
+                Vector<float> gap2 = dx * dx + dy * dy + dz * dz;
+                if (Vector.LessThanAny(gap2, minimum * minimum)) return 1 + p * Vector<float>.Count;
+                spacing[p] = gap2;
+            }
+            return 1 + spacing.Length * Vector<float>.Count;
         }
 
         /// <summary>
