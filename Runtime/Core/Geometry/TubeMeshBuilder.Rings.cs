@@ -25,6 +25,8 @@ namespace HookeRope.Geometry
         private bool[] dirty = Array.Empty<bool>();
         // the piece's raw ring centres per axis, indexed from the piece's first ring (ComputeCenters' lanes)
         private float[] rawX = Array.Empty<float>(), rawY = Array.Empty<float>(), rawZ = Array.Empty<float>();
+        // the piece's Catmull–Rom weights per ring, indexed from the piece's first ring (CatmullRomWeights)
+        private float[] weight0 = Array.Empty<float>(), weight1 = Array.Empty<float>(), weight2 = Array.Empty<float>(), weight3 = Array.Empty<float>();
         private Float3[] particleNormal;
         private Float3[] particleTangent;
         private bool[] particleFrameValid;
@@ -53,6 +55,10 @@ namespace HookeRope.Geometry
             Array.Resize(ref rawX, size);
             Array.Resize(ref rawY, size);
             Array.Resize(ref rawZ, size);
+            Array.Resize(ref weight0, size);
+            Array.Resize(ref weight1, size);
+            Array.Resize(ref weight2, size);
+            Array.Resize(ref weight3, size);
             Array.Resize(ref lastRadii, size);
             EnsureFoldStorage(size);
             EnsureLaneStorage(size);
@@ -79,6 +85,17 @@ namespace HookeRope.Geometry
             Span<float> cx4 = new Span<float>(rawX, 0, count).Slice(0, centre.Length);
             Span<float> cy4 = new Span<float>(rawY, 0, count).Slice(0, centre.Length);
             Span<float> cz4 = new Span<float>(rawZ, 0, count).Slice(0, centre.Length);
+            CatmullRomWeights(ringFractions, lanes);
+            ReadOnlySpan<float> weightOf0 = new ReadOnlySpan<float>(weight0, 0, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> weightOf1 = new ReadOnlySpan<float>(weight1, 0, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> weightOf2 = new ReadOnlySpan<float>(weight2, 0, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> weightOf3 = new ReadOnlySpan<float>(weight3, 0, count).Slice(0, centre.Length);
+            // the particles' spans of one length (the shortest: every index the loop takes is read from all three), so an
+            // index checked against it once is in range for all three
+            int particles = Math.Min(x.Length, Math.Min(y.Length, z.Length));
+            x = x.Slice(0, particles);
+            y = y.Slice(0, x.Length);
+            z = z.Slice(0, x.Length);
             float ox = frameOrigin.X, oy = frameOrigin.Y, oz = frameOrigin.Z;
             // the control points of the segment the rings are in (the rings of a segment are consecutive)
             int held = -1;
@@ -108,14 +125,8 @@ namespace HookeRope.Geometry
                         p3 = new Vector4(p3x, p3y, p3z, 0f);
                         held = j;
                     }
-                    // uniform Catmull–Rom weights of t, as RingLayout stores the fraction (the Hermite cubic with the
-                    // limited tangents, RopePieces.ControlPoints)
-                    float t2 = t * t, t3 = t2 * t;
-                    float w0 = 0.5f * (-t + 2f * t2 - t3);
-                    float w1 = 0.5f * (2f - 5f * t2 + 3f * t3);
-                    float w2 = 0.5f * (t + 4f * t2 - 3f * t3);
-                    float w3 = 0.5f * (-t2 + t3);
-                    Vector4 c4 = p0 * w0 + p1 * w1 + p2 * w2 + p3 * w3;
+                    // the uniform Catmull–Rom weights of t (CatmullRomWeights)
+                    Vector4 c4 = p0 * weightOf0[i] + p1 * weightOf1[i] + p2 * weightOf2[i] + p3 * weightOf3[i];
                     cx = c4.X; cy = c4.Y; cz = c4.Z;
                 }
                 centre[i] = new Float3(cx, cy, cz);
@@ -126,6 +137,53 @@ namespace HookeRope.Geometry
             if (lanes && count > Vector<float>.Count + 1 && float.IsFinite(cx4[0]) && float.IsFinite(cy4[0]) && float.IsFinite(cz4[0]))
                 next = SettleCentersOnLanes(first, count);
             SettleCenters(a, b, first, count, next, count, x, y, z);
+        }
+
+        /// <summary>
+        /// The uniform Catmull–Rom weights of each ring's fraction t, as RingLayout stores it (the Hermite cubic with the
+        /// limited tangents, RopePieces.ControlPoints), into <see cref="weight0"/> … <see cref="weight3"/> from index 0:
+        /// w0 = ½(−t + 2t² − t³), w1 = ½(2 − 5t² + 3t³), w2 = ½(t + 4t² − 3t³), w3 = ½(−t² + t³), with
+        /// <paramref name="lanes"/> on <see cref="Vector{T}"/> lanes (per lane the scalar's operations in its order), the
+        /// tail scalar.
+        /// </summary>
+        private void CatmullRomWeights(ReadOnlySpan<float> fractions, bool lanes)
+        {
+            int count = fractions.Length;
+            Span<float> w0 = new Span<float>(weight0, 0, count), w1 = new Span<float>(weight1, 0, count).Slice(0, w0.Length);
+            Span<float> w2 = new Span<float>(weight2, 0, count).Slice(0, w0.Length), w3 = new Span<float>(weight3, 0, count).Slice(0, w0.Length);
+            int done = 0;
+            if (lanes)
+            {
+                ReadOnlySpan<Vector<float>> t = MemoryMarshal.Cast<float, Vector<float>>(fractions);
+                Span<Vector<float>> v0 = MemoryMarshal.Cast<float, Vector<float>>(w0).Slice(0, t.Length);
+                Span<Vector<float>> v1 = MemoryMarshal.Cast<float, Vector<float>>(w1).Slice(0, t.Length);
+                Span<Vector<float>> v2 = MemoryMarshal.Cast<float, Vector<float>>(w2).Slice(0, t.Length);
+                Span<Vector<float>> v3 = MemoryMarshal.Cast<float, Vector<float>>(w3).Slice(0, t.Length);
+                var half = new Vector<float>(0.5f);
+                var two = new Vector<float>(2f);
+                var three = new Vector<float>(3f);
+                var four = new Vector<float>(4f);
+                var five = new Vector<float>(5f);
+                for (int p = 0; p < t.Length; p++)
+                {
+                    Vector<float> tp = t[p];
+                    Vector<float> t2 = tp * tp, t3 = t2 * tp;
+                    v0[p] = half * (-tp + two * t2 - t3);
+                    v1[p] = half * (two - five * t2 + three * t3);
+                    v2[p] = half * (tp + four * t2 - three * t3);
+                    v3[p] = half * (-t2 + t3);
+                }
+                done = t.Length * Vector<float>.Count;
+            }
+            for (int i = done; i < w0.Length; i++)
+            {
+                float t = fractions[i];
+                float t2 = t * t, t3 = t2 * t;
+                w0[i] = 0.5f * (-t + 2f * t2 - t3);
+                w1[i] = 0.5f * (2f - 5f * t2 + 3f * t3);
+                w2[i] = 0.5f * (t + 4f * t2 - 3f * t3);
+                w3[i] = 0.5f * (-t2 + t3);
+            }
         }
 
         /// <summary>
