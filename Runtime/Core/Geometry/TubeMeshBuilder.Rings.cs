@@ -36,7 +36,12 @@ namespace HookeRope.Geometry
             particleNormal = new Float3[segmentCount + 1];
             particleTangent = new Float3[segmentCount + 1];
             particleFrameValid = new bool[segmentCount + 1];
+            outer0X = new float[segmentCount + 1]; outer0Y = new float[segmentCount + 1]; outer0Z = new float[segmentCount + 1];
+            outer3X = new float[segmentCount + 1]; outer3Y = new float[segmentCount + 1]; outer3Z = new float[segmentCount + 1];
         }
+
+        // the outer control points p0 and p3 of each segment of the piece, indexed by j − a (PrepareControlPoints)
+        private float[] outer0X, outer0Y, outer0Z, outer3X, outer3Y, outer3Z;
 
         /// <summary>Grows the per-ring arrays to hold <paramref name="rings"/> rings (keeps their contents).</summary>
         private void EnsureRingStorage(int rings)
@@ -100,6 +105,9 @@ namespace HookeRope.Geometry
             // the control points of the segment the rings are in (the rings of a segment are consecutive)
             int held = -1;
             Vector4 p0 = default, p1 = default, p2 = default, p3 = default;
+            // with the vector paths on, the outer control points of every segment first (their limits on lanes)
+            if (lanes) PrepareControlPoints(a, b, x, y, z, ox, oy, oz);
+            ReadOnlySpan<float> outerX0 = outer0X, outerY0 = outer0Y, outerZ0 = outer0Z, outerX3 = outer3X, outerY3 = outer3Y, outerZ3 = outer3Z;
             for (int i = 0; i < centre.Length; i++)
             {
                 int j = ringSegments[i];
@@ -117,12 +125,24 @@ namespace HookeRope.Geometry
                 {
                     if (j != held)
                     {
-                        RopePieces.ControlPoints(j, a, b, x, y, z, ox, oy, oz, out float p0x, out float p0y, out float p0z,
-                            out float p1x, out float p1y, out float p1z, out float p2x, out float p2y, out float p2z, out float p3x, out float p3y, out float p3z);
-                        p0 = new Vector4(p0x, p0y, p0z, 0f);
-                        p1 = new Vector4(p1x, p1y, p1z, 0f);
-                        p2 = new Vector4(p2x, p2y, p2z, 0f);
-                        p3 = new Vector4(p3x, p3y, p3z, 0f);
+                        if (lanes)
+                        {
+                            // RopePieces.ControlPoints' p1 and p2 (the particles), and its p0 and p3 as prepared
+                            int s = j - a;
+                            p0 = new Vector4(outerX0[s], outerY0[s], outerZ0[s], 0f);
+                            p1 = new Vector4(x[j] - ox, y[j] - oy, z[j] - oz, 0f);
+                            p2 = new Vector4(x[j + 1] - ox, y[j + 1] - oy, z[j + 1] - oz, 0f);
+                            p3 = new Vector4(outerX3[s], outerY3[s], outerZ3[s], 0f);
+                        }
+                        else
+                        {
+                            RopePieces.ControlPoints(j, a, b, x, y, z, ox, oy, oz, out float p0x, out float p0y, out float p0z,
+                                out float p1x, out float p1y, out float p1z, out float p2x, out float p2y, out float p2z, out float p3x, out float p3y, out float p3z);
+                            p0 = new Vector4(p0x, p0y, p0z, 0f);
+                            p1 = new Vector4(p1x, p1y, p1z, 0f);
+                            p2 = new Vector4(p2x, p2y, p2z, 0f);
+                            p3 = new Vector4(p3x, p3y, p3z, 0f);
+                        }
                         held = j;
                     }
                     // the uniform Catmull–Rom weights of t (CatmullRomWeights)
@@ -137,6 +157,88 @@ namespace HookeRope.Geometry
             if (lanes && count > Vector<float>.Count + 1 && float.IsFinite(cx4[0]) && float.IsFinite(cy4[0]) && float.IsFinite(cz4[0]))
                 next = SettleCentersOnLanes(first, count);
             SettleCenters(a, b, first, count, next, count, x, y, z);
+        }
+
+        /// <summary>
+        /// The outer control points p0 and p3 of every segment j of piece [a, b] (<see cref="RopePieces.ControlPoints"/>,
+        /// relative to the origin (<paramref name="ox"/>, <paramref name="oy"/>, <paramref name="oz"/>)) into
+        /// <see cref="outer0X"/> … at j − a: the interior segments (both neighbours in the piece) on <see cref="Vector{T}"/>
+        /// lanes as long as no tangent of a block needs its limit (<see cref="OuterControlPointsOnLanes"/>), the end segments,
+        /// the tail and the rest from a limited block by <see cref="RopePieces.ControlPoints"/>.
+        /// </summary>
+        private void PrepareControlPoints(int a, int b, ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z, float ox, float oy, float oz)
+        {
+            int segments = b - a;
+            int next = 1;
+            if (segments > Vector<float>.Count + 2) next = OuterControlPointsOnLanes(a, b, x, y, z, ox, oy, oz);
+            for (int s = 0; s < segments; s++)
+            {
+                if (s == 1) s = next;
+                if (s >= segments) break;
+                RopePieces.ControlPoints(a + s, a, b, x, y, z, ox, oy, oz, out outer0X[s], out outer0Y[s], out outer0Z[s],
+                    out _, out _, out _, out _, out _, out _, out outer3X[s], out outer3Y[s], out outer3Z[s]);
+            }
+        }
+
+        /// <summary>
+        /// <see cref="PrepareControlPoints"/> of the interior segments a + 1, a + 2, … on <see cref="Vector{T}"/> lanes,
+        /// <see cref="Vector{T}"/>.Count segments a step while the block's last segment has both neighbours in the piece:
+        /// per lane RopePieces.ControlPoints' operations in its order (p0 the particle before, p3 the particle after, the
+        /// tangent test of RopePieces.Limit on each); a block where a lane's tangent needs its limit ends the run. Returns
+        /// the first segment (as j − a) not prepared.
+        /// </summary>
+        private int OuterControlPointsOnLanes(int a, int b, ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z, float ox, float oy, float oz)
+        {
+            // block p is segments j = a + 1 + 8p … a + 8 + 8p (with 8 lanes); the particles j − 1, j, j + 1, j + 2 from
+            // a, a + 1, a + 2, a + 3 on, as whole vectors of the interior segments' count
+            int interior = b - a - 2;
+            ReadOnlySpan<Vector<float>> x3 = MemoryMarshal.Cast<float, Vector<float>>(x.Slice(a + 3, interior));
+            ReadOnlySpan<Vector<float>> y3 = MemoryMarshal.Cast<float, Vector<float>>(y.Slice(a + 3, interior)).Slice(0, x3.Length);
+            ReadOnlySpan<Vector<float>> z3 = MemoryMarshal.Cast<float, Vector<float>>(z.Slice(a + 3, interior)).Slice(0, x3.Length);
+            ReadOnlySpan<Vector<float>> x2 = MemoryMarshal.Cast<float, Vector<float>>(x.Slice(a + 2, interior)).Slice(0, x3.Length);
+            ReadOnlySpan<Vector<float>> y2 = MemoryMarshal.Cast<float, Vector<float>>(y.Slice(a + 2, interior)).Slice(0, x3.Length);
+            ReadOnlySpan<Vector<float>> z2 = MemoryMarshal.Cast<float, Vector<float>>(z.Slice(a + 2, interior)).Slice(0, x3.Length);
+            ReadOnlySpan<Vector<float>> x1 = MemoryMarshal.Cast<float, Vector<float>>(x.Slice(a + 1, interior)).Slice(0, x3.Length);
+            ReadOnlySpan<Vector<float>> y1 = MemoryMarshal.Cast<float, Vector<float>>(y.Slice(a + 1, interior)).Slice(0, x3.Length);
+            ReadOnlySpan<Vector<float>> z1 = MemoryMarshal.Cast<float, Vector<float>>(z.Slice(a + 1, interior)).Slice(0, x3.Length);
+            ReadOnlySpan<Vector<float>> x0 = MemoryMarshal.Cast<float, Vector<float>>(x.Slice(a, interior)).Slice(0, x3.Length);
+            ReadOnlySpan<Vector<float>> y0 = MemoryMarshal.Cast<float, Vector<float>>(y.Slice(a, interior)).Slice(0, x3.Length);
+            ReadOnlySpan<Vector<float>> z0 = MemoryMarshal.Cast<float, Vector<float>>(z.Slice(a, interior)).Slice(0, x3.Length);
+            Span<Vector<float>> q0x = MemoryMarshal.Cast<float, Vector<float>>(new Span<float>(outer0X, 1, interior)).Slice(0, x3.Length);
+            Span<Vector<float>> q0y = MemoryMarshal.Cast<float, Vector<float>>(new Span<float>(outer0Y, 1, interior)).Slice(0, x3.Length);
+            Span<Vector<float>> q0z = MemoryMarshal.Cast<float, Vector<float>>(new Span<float>(outer0Z, 1, interior)).Slice(0, x3.Length);
+            Span<Vector<float>> q3x = MemoryMarshal.Cast<float, Vector<float>>(new Span<float>(outer3X, 1, interior)).Slice(0, x3.Length);
+            Span<Vector<float>> q3y = MemoryMarshal.Cast<float, Vector<float>>(new Span<float>(outer3Y, 1, interior)).Slice(0, x3.Length);
+            Span<Vector<float>> q3z = MemoryMarshal.Cast<float, Vector<float>>(new Span<float>(outer3Z, 1, interior)).Slice(0, x3.Length);
+            Vector<float> vx = new Vector<float>(ox), vy = new Vector<float>(oy), vz = new Vector<float>(oz);
+            var half = new Vector<float>(0.5f);
+            var limit = new Vector<float>(RopePieces.TangentLimit * RopePieces.TangentLimit);
+            for (int p = 0; p < q3z.Length; p++)
+            {
+                Vector<float> p1x = x1[p] - vx, p1y = y1[p] - vy, p1z = z1[p] - vz;
+                Vector<float> p2x = x2[p] - vx, p2y = y2[p] - vy, p2z = z2[p] - vz;
+                Vector<float> ex = p2x - p1x, ey = p2y - p1y, ez = p2z - p1z;
+                Vector<float> chord2 = ex * ex + ey * ey + ez * ez;
+                // p0 against p1 (its segment end) and p2 (the other end), as RopePieces.Limit
+                Vector<float> p0x = x0[p] - vx, p0y = y0[p] - vy, p0z = z0[p] - vz;
+                Vector<float> dx = p1x - p0x, dy = p1y - p0y, dz = p1z - p0z;
+                Vector<float> outer2 = dx * dx + dy * dy + dz * dz;
+                Vector<float> mx = half * (p2x - p0x), my = half * (p2y - p0y), mz = half * (p2z - p0z);
+                Vector<float> tangent2 = mx * mx + my * my + mz * mz;
+                Vector<float> limit2 = limit * Vector.ConditionalSelect(Vector.LessThan(outer2, chord2), outer2, chord2);
+                if (Vector.GreaterThanAny(tangent2, limit2)) return 1 + p * Vector<float>.Count;
+                // p3 against p2 and p1
+                Vector<float> p3x = x3[p] - vx, p3y = y3[p] - vy, p3z = z3[p] - vz;
+                dx = p2x - p3x; dy = p2y - p3y; dz = p2z - p3z;
+                outer2 = dx * dx + dy * dy + dz * dz;
+                mx = half * (p1x - p3x); my = half * (p1y - p3y); mz = half * (p1z - p3z);
+                tangent2 = mx * mx + my * my + mz * mz;
+                limit2 = limit * Vector.ConditionalSelect(Vector.LessThan(outer2, chord2), outer2, chord2);
+                if (Vector.GreaterThanAny(tangent2, limit2)) return 1 + p * Vector<float>.Count;
+                q0x[p] = p0x; q0y[p] = p0y; q0z[p] = p0z;
+                q3x[p] = p3x; q3y[p] = p3y; q3z[p] = p3z;
+            }
+            return 1 + q3z.Length * Vector<float>.Count;
         }
 
         /// <summary>
