@@ -23,6 +23,10 @@ namespace HookeRope.Geometry
         private float[] slopeDistance = Array.Empty<float>();
         private float[] spacing2 = Array.Empty<float>();
         private bool[] dirty = Array.Empty<bool>();
+        // the piece's raw ring centres per axis, indexed from the piece's first ring (ComputeCenters' lanes)
+        private float[] rawX = Array.Empty<float>(), rawY = Array.Empty<float>(), rawZ = Array.Empty<float>();
+        // the piece's Catmull–Rom weights per ring, indexed from the piece's first ring (CatmullRomWeights)
+        private float[] weight0 = Array.Empty<float>(), weight1 = Array.Empty<float>(), weight2 = Array.Empty<float>(), weight3 = Array.Empty<float>();
         private Float3[] particleNormal;
         private Float3[] particleTangent;
         private bool[] particleFrameValid;
@@ -32,7 +36,12 @@ namespace HookeRope.Geometry
             particleNormal = new Float3[segmentCount + 1];
             particleTangent = new Float3[segmentCount + 1];
             particleFrameValid = new bool[segmentCount + 1];
+            outer0X = new float[segmentCount + 1]; outer0Y = new float[segmentCount + 1]; outer0Z = new float[segmentCount + 1];
+            outer3X = new float[segmentCount + 1]; outer3Y = new float[segmentCount + 1]; outer3Z = new float[segmentCount + 1];
         }
+
+        // the outer control points p0 and p3 of each segment of the piece, indexed by j − a (PrepareControlPoints)
+        private float[] outer0X, outer0Y, outer0Z, outer3X, outer3Y, outer3Z;
 
         /// <summary>Grows the per-ring arrays to hold <paramref name="rings"/> rings (keeps their contents).</summary>
         private void EnsureRingStorage(int rings)
@@ -48,6 +57,13 @@ namespace HookeRope.Geometry
             Array.Resize(ref slopeDistance, size);
             Array.Resize(ref spacing2, size);
             Array.Resize(ref dirty, size);
+            Array.Resize(ref rawX, size);
+            Array.Resize(ref rawY, size);
+            Array.Resize(ref rawZ, size);
+            Array.Resize(ref weight0, size);
+            Array.Resize(ref weight1, size);
+            Array.Resize(ref weight2, size);
+            Array.Resize(ref weight3, size);
             Array.Resize(ref lastRadii, size);
             EnsureFoldStorage(size);
             EnsureLaneStorage(size);
@@ -57,21 +73,41 @@ namespace HookeRope.Geometry
         /// Ring centres of piece [a, b] (rings first … last) relative to the frame origin: on the particles, or on the
         /// segment's Catmull–Rom cubic (the control points as <see cref="Vector4"/> lanes x, y, z, 0, once per segment: each
         /// ring's centre is then four lane products and three lane sums, the scalar's operations in its order per lane).
+        /// Two passes: the raw centres (<see cref="centers"/>, and per axis in <see cref="rawX"/> …), then the settling
+        /// (<see cref="SettleCenters"/>: a non-finite centre takes the previous one, a ring too close to the previous one is
+        /// pushed, the spacing² kept), with the vector paths on first on <see cref="Vector{T}"/> lanes
+        /// (<see cref="SettleCentersOnLanes"/>) as far as no ring needs either.
         /// </summary>
         private void ComputeCenters(int a, int b, int first, int last, ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z)
         {
+            // read first: the switch is a static field, whose first read may call the runtime
+            bool lanes = VectorPath.Enabled;
             // spans of exactly the piece's rings, indexed by i = k − first (the loop's bound is their length)
             int count = last - first + 1;
             Span<Float3> centre = new Span<Float3>(centers, first, count);
             ReadOnlySpan<int> ringSegments = layout.RingSegments.Slice(first, count).Slice(0, centre.Length);
             ReadOnlySpan<float> ringFractions = layout.RingFractions.Slice(first, count).Slice(0, centre.Length);
-            Span<float> spacing = new Span<float>(spacing2, first, count).Slice(0, centre.Length);
-            ReadOnlySpan<float> radius = new ReadOnlySpan<float>(ringRadii, first, count).Slice(0, centre.Length);
+            Span<float> cx4 = new Span<float>(rawX, 0, count).Slice(0, centre.Length);
+            Span<float> cy4 = new Span<float>(rawY, 0, count).Slice(0, centre.Length);
+            Span<float> cz4 = new Span<float>(rawZ, 0, count).Slice(0, centre.Length);
+            CatmullRomWeights(ringFractions, lanes);
+            ReadOnlySpan<float> weightOf0 = new ReadOnlySpan<float>(weight0, 0, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> weightOf1 = new ReadOnlySpan<float>(weight1, 0, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> weightOf2 = new ReadOnlySpan<float>(weight2, 0, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> weightOf3 = new ReadOnlySpan<float>(weight3, 0, count).Slice(0, centre.Length);
+            // the particles' spans of one length (the shortest: every index the loop takes is read from all three), so an
+            // index checked against it once is in range for all three
+            int particles = Math.Min(x.Length, Math.Min(y.Length, z.Length));
+            x = x.Slice(0, particles);
+            y = y.Slice(0, x.Length);
+            z = z.Slice(0, x.Length);
             float ox = frameOrigin.X, oy = frameOrigin.Y, oz = frameOrigin.Z;
             // the control points of the segment the rings are in (the rings of a segment are consecutive)
             int held = -1;
             Vector4 p0 = default, p1 = default, p2 = default, p3 = default;
-            Float3 previous = Float3.Zero;
+            // with the vector paths on, the outer control points of every segment first (their limits on lanes)
+            if (lanes) PrepareControlPoints(a, b, x, y, z, ox, oy, oz);
+            ReadOnlySpan<float> outerX0 = outer0X, outerY0 = outer0Y, outerZ0 = outer0Z, outerX3 = outer3X, outerY3 = outer3Y, outerZ3 = outer3Z;
             for (int i = 0; i < centre.Length; i++)
             {
                 int j = ringSegments[i];
@@ -89,24 +125,187 @@ namespace HookeRope.Geometry
                 {
                     if (j != held)
                     {
-                        RopePieces.ControlPoints(j, a, b, x, y, z, ox, oy, oz, out float p0x, out float p0y, out float p0z,
-                            out float p1x, out float p1y, out float p1z, out float p2x, out float p2y, out float p2z, out float p3x, out float p3y, out float p3z);
-                        p0 = new Vector4(p0x, p0y, p0z, 0f);
-                        p1 = new Vector4(p1x, p1y, p1z, 0f);
-                        p2 = new Vector4(p2x, p2y, p2z, 0f);
-                        p3 = new Vector4(p3x, p3y, p3z, 0f);
+                        if (lanes)
+                        {
+                            // RopePieces.ControlPoints' p1 and p2 (the particles), and its p0 and p3 as prepared
+                            int s = j - a;
+                            p0 = new Vector4(outerX0[s], outerY0[s], outerZ0[s], 0f);
+                            p1 = new Vector4(x[j] - ox, y[j] - oy, z[j] - oz, 0f);
+                            p2 = new Vector4(x[j + 1] - ox, y[j + 1] - oy, z[j + 1] - oz, 0f);
+                            p3 = new Vector4(outerX3[s], outerY3[s], outerZ3[s], 0f);
+                        }
+                        else
+                        {
+                            RopePieces.ControlPoints(j, a, b, x, y, z, ox, oy, oz, out float p0x, out float p0y, out float p0z,
+                                out float p1x, out float p1y, out float p1z, out float p2x, out float p2y, out float p2z, out float p3x, out float p3y, out float p3z);
+                            p0 = new Vector4(p0x, p0y, p0z, 0f);
+                            p1 = new Vector4(p1x, p1y, p1z, 0f);
+                            p2 = new Vector4(p2x, p2y, p2z, 0f);
+                            p3 = new Vector4(p3x, p3y, p3z, 0f);
+                        }
                         held = j;
                     }
-                    // uniform Catmull–Rom weights of t, as RingLayout stores the fraction (the Hermite cubic with the
-                    // limited tangents, RopePieces.ControlPoints)
-                    float t2 = t * t, t3 = t2 * t;
-                    float w0 = 0.5f * (-t + 2f * t2 - t3);
-                    float w1 = 0.5f * (2f - 5f * t2 + 3f * t3);
-                    float w2 = 0.5f * (t + 4f * t2 - 3f * t3);
-                    float w3 = 0.5f * (-t2 + t3);
-                    Vector4 c4 = p0 * w0 + p1 * w1 + p2 * w2 + p3 * w3;
+                    // the uniform Catmull–Rom weights of t (CatmullRomWeights)
+                    Vector4 c4 = p0 * weightOf0[i] + p1 * weightOf1[i] + p2 * weightOf2[i] + p3 * weightOf3[i];
                     cx = c4.X; cy = c4.Y; cz = c4.Z;
                 }
+                centre[i] = new Float3(cx, cy, cz);
+                cx4[i] = cx; cy4[i] = cy; cz4[i] = cz;
+            }
+            SettleCenters(a, b, first, count, 0, 1, x, y, z);
+            int next = 1;
+            if (lanes && count > Vector<float>.Count + 1 && float.IsFinite(cx4[0]) && float.IsFinite(cy4[0]) && float.IsFinite(cz4[0]))
+                next = SettleCentersOnLanes(first, count);
+            SettleCenters(a, b, first, count, next, count, x, y, z);
+        }
+
+        /// <summary>
+        /// The outer control points p0 and p3 of every segment j of piece [a, b] (<see cref="RopePieces.ControlPoints"/>,
+        /// relative to the origin (<paramref name="ox"/>, <paramref name="oy"/>, <paramref name="oz"/>)) into
+        /// <see cref="outer0X"/> … at j − a: the interior segments (both neighbours in the piece) on <see cref="Vector{T}"/>
+        /// lanes as long as no tangent of a block needs its limit (<see cref="OuterControlPointsOnLanes"/>), the end segments,
+        /// the tail and the rest from a limited block by <see cref="RopePieces.ControlPoints"/>.
+        /// </summary>
+        private void PrepareControlPoints(int a, int b, ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z, float ox, float oy, float oz)
+        {
+            int segments = b - a;
+            int next = 1;
+            if (segments > Vector<float>.Count + 2) next = OuterControlPointsOnLanes(a, b, x, y, z, ox, oy, oz);
+            for (int s = 0; s < segments; s++)
+            {
+                if (s == 1) s = next;
+                if (s >= segments) break;
+                RopePieces.ControlPoints(a + s, a, b, x, y, z, ox, oy, oz, out outer0X[s], out outer0Y[s], out outer0Z[s],
+                    out _, out _, out _, out _, out _, out _, out outer3X[s], out outer3Y[s], out outer3Z[s]);
+            }
+        }
+
+        /// <summary>
+        /// <see cref="PrepareControlPoints"/> of the interior segments a + 1, a + 2, … on <see cref="Vector{T}"/> lanes,
+        /// <see cref="Vector{T}"/>.Count segments a step while the block's last segment has both neighbours in the piece:
+        /// per lane RopePieces.ControlPoints' operations in its order (p0 the particle before, p3 the particle after, the
+        /// tangent test of RopePieces.Limit on each); a block where a lane's tangent needs its limit ends the run. Returns
+        /// the first segment (as j − a) not prepared.
+        /// </summary>
+        private int OuterControlPointsOnLanes(int a, int b, ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z, float ox, float oy, float oz)
+        {
+            // block p is segments j = a + 1 + 8p … a + 8 + 8p (with 8 lanes); the particles j − 1, j, j + 1, j + 2 from
+            // a, a + 1, a + 2, a + 3 on, as whole vectors of the interior segments' count
+            int interior = b - a - 2;
+            ReadOnlySpan<Vector<float>> x3 = MemoryMarshal.Cast<float, Vector<float>>(x.Slice(a + 3, interior));
+            ReadOnlySpan<Vector<float>> y3 = MemoryMarshal.Cast<float, Vector<float>>(y.Slice(a + 3, interior)).Slice(0, x3.Length);
+            ReadOnlySpan<Vector<float>> z3 = MemoryMarshal.Cast<float, Vector<float>>(z.Slice(a + 3, interior)).Slice(0, x3.Length);
+            ReadOnlySpan<Vector<float>> x2 = MemoryMarshal.Cast<float, Vector<float>>(x.Slice(a + 2, interior)).Slice(0, x3.Length);
+            ReadOnlySpan<Vector<float>> y2 = MemoryMarshal.Cast<float, Vector<float>>(y.Slice(a + 2, interior)).Slice(0, x3.Length);
+            ReadOnlySpan<Vector<float>> z2 = MemoryMarshal.Cast<float, Vector<float>>(z.Slice(a + 2, interior)).Slice(0, x3.Length);
+            ReadOnlySpan<Vector<float>> x1 = MemoryMarshal.Cast<float, Vector<float>>(x.Slice(a + 1, interior)).Slice(0, x3.Length);
+            ReadOnlySpan<Vector<float>> y1 = MemoryMarshal.Cast<float, Vector<float>>(y.Slice(a + 1, interior)).Slice(0, x3.Length);
+            ReadOnlySpan<Vector<float>> z1 = MemoryMarshal.Cast<float, Vector<float>>(z.Slice(a + 1, interior)).Slice(0, x3.Length);
+            ReadOnlySpan<Vector<float>> x0 = MemoryMarshal.Cast<float, Vector<float>>(x.Slice(a, interior)).Slice(0, x3.Length);
+            ReadOnlySpan<Vector<float>> y0 = MemoryMarshal.Cast<float, Vector<float>>(y.Slice(a, interior)).Slice(0, x3.Length);
+            ReadOnlySpan<Vector<float>> z0 = MemoryMarshal.Cast<float, Vector<float>>(z.Slice(a, interior)).Slice(0, x3.Length);
+            Span<Vector<float>> q0x = MemoryMarshal.Cast<float, Vector<float>>(new Span<float>(outer0X, 1, interior)).Slice(0, x3.Length);
+            Span<Vector<float>> q0y = MemoryMarshal.Cast<float, Vector<float>>(new Span<float>(outer0Y, 1, interior)).Slice(0, x3.Length);
+            Span<Vector<float>> q0z = MemoryMarshal.Cast<float, Vector<float>>(new Span<float>(outer0Z, 1, interior)).Slice(0, x3.Length);
+            Span<Vector<float>> q3x = MemoryMarshal.Cast<float, Vector<float>>(new Span<float>(outer3X, 1, interior)).Slice(0, x3.Length);
+            Span<Vector<float>> q3y = MemoryMarshal.Cast<float, Vector<float>>(new Span<float>(outer3Y, 1, interior)).Slice(0, x3.Length);
+            Span<Vector<float>> q3z = MemoryMarshal.Cast<float, Vector<float>>(new Span<float>(outer3Z, 1, interior)).Slice(0, x3.Length);
+            Vector<float> vx = new Vector<float>(ox), vy = new Vector<float>(oy), vz = new Vector<float>(oz);
+            var half = new Vector<float>(0.5f);
+            var limit = new Vector<float>(RopePieces.TangentLimit * RopePieces.TangentLimit);
+            for (int p = 0; p < q3z.Length; p++)
+            {
+                Vector<float> p1x = x1[p] - vx, p1y = y1[p] - vy, p1z = z1[p] - vz;
+                Vector<float> p2x = x2[p] - vx, p2y = y2[p] - vy, p2z = z2[p] - vz;
+                Vector<float> ex = p2x - p1x, ey = p2y - p1y, ez = p2z - p1z;
+                Vector<float> chord2 = ex * ex + ey * ey + ez * ez;
+                // p0 against p1 (its segment end) and p2 (the other end), as RopePieces.Limit
+                Vector<float> p0x = x0[p] - vx, p0y = y0[p] - vy, p0z = z0[p] - vz;
+                Vector<float> dx = p1x - p0x, dy = p1y - p0y, dz = p1z - p0z;
+                Vector<float> outer2 = dx * dx + dy * dy + dz * dz;
+                Vector<float> mx = half * (p2x - p0x), my = half * (p2y - p0y), mz = half * (p2z - p0z);
+                Vector<float> tangent2 = mx * mx + my * my + mz * mz;
+                Vector<float> limit2 = limit * Vector.ConditionalSelect(Vector.LessThan(outer2, chord2), outer2, chord2);
+                if (Vector.GreaterThanAny(tangent2, limit2)) return 1 + p * Vector<float>.Count;
+                // p3 against p2 and p1
+                Vector<float> p3x = x3[p] - vx, p3y = y3[p] - vy, p3z = z3[p] - vz;
+                dx = p2x - p3x; dy = p2y - p3y; dz = p2z - p3z;
+                outer2 = dx * dx + dy * dy + dz * dz;
+                mx = half * (p1x - p3x); my = half * (p1y - p3y); mz = half * (p1z - p3z);
+                tangent2 = mx * mx + my * my + mz * mz;
+                limit2 = limit * Vector.ConditionalSelect(Vector.LessThan(outer2, chord2), outer2, chord2);
+                if (Vector.GreaterThanAny(tangent2, limit2)) return 1 + p * Vector<float>.Count;
+                q0x[p] = p0x; q0y[p] = p0y; q0z[p] = p0z;
+                q3x[p] = p3x; q3y[p] = p3y; q3z[p] = p3z;
+            }
+            return 1 + q3z.Length * Vector<float>.Count;
+        }
+
+        /// <summary>
+        /// The uniform Catmull–Rom weights of each ring's fraction t, as RingLayout stores it (the Hermite cubic with the
+        /// limited tangents, RopePieces.ControlPoints), into <see cref="weight0"/> … <see cref="weight3"/> from index 0:
+        /// w0 = ½(−t + 2t² − t³), w1 = ½(2 − 5t² + 3t³), w2 = ½(t + 4t² − 3t³), w3 = ½(−t² + t³), with
+        /// <paramref name="lanes"/> on <see cref="Vector{T}"/> lanes (per lane the scalar's operations in its order), the
+        /// tail scalar.
+        /// </summary>
+        private void CatmullRomWeights(ReadOnlySpan<float> fractions, bool lanes)
+        {
+            int count = fractions.Length;
+            Span<float> w0 = new Span<float>(weight0, 0, count), w1 = new Span<float>(weight1, 0, count).Slice(0, w0.Length);
+            Span<float> w2 = new Span<float>(weight2, 0, count).Slice(0, w0.Length), w3 = new Span<float>(weight3, 0, count).Slice(0, w0.Length);
+            int done = 0;
+            if (lanes)
+            {
+                ReadOnlySpan<Vector<float>> t = MemoryMarshal.Cast<float, Vector<float>>(fractions);
+                Span<Vector<float>> v0 = MemoryMarshal.Cast<float, Vector<float>>(w0).Slice(0, t.Length);
+                Span<Vector<float>> v1 = MemoryMarshal.Cast<float, Vector<float>>(w1).Slice(0, t.Length);
+                Span<Vector<float>> v2 = MemoryMarshal.Cast<float, Vector<float>>(w2).Slice(0, t.Length);
+                Span<Vector<float>> v3 = MemoryMarshal.Cast<float, Vector<float>>(w3).Slice(0, t.Length);
+                var half = new Vector<float>(0.5f);
+                var two = new Vector<float>(2f);
+                var three = new Vector<float>(3f);
+                var four = new Vector<float>(4f);
+                var five = new Vector<float>(5f);
+                for (int p = 0; p < t.Length; p++)
+                {
+                    Vector<float> tp = t[p];
+                    Vector<float> t2 = tp * tp, t3 = t2 * tp;
+                    v0[p] = half * (-tp + two * t2 - t3);
+                    v1[p] = half * (two - five * t2 + three * t3);
+                    v2[p] = half * (tp + four * t2 - three * t3);
+                    v3[p] = half * (-t2 + t3);
+                }
+                done = t.Length * Vector<float>.Count;
+            }
+            for (int i = done; i < w0.Length; i++)
+            {
+                float t = fractions[i];
+                float t2 = t * t, t3 = t2 * t;
+                w0[i] = 0.5f * (-t + 2f * t2 - t3);
+                w1[i] = 0.5f * (2f - 5f * t2 + 3f * t3);
+                w2[i] = 0.5f * (t + 4f * t2 - 3f * t3);
+                w3[i] = 0.5f * (-t2 + t3);
+            }
+        }
+
+        /// <summary>
+        /// The settling of <see cref="ComputeCenters"/> for rings <paramref name="from"/> … <paramref name="to"/> − 1 of
+        /// the piece's <paramref name="count"/> rings from <paramref name="first"/> (the rings before final): each raw centre
+        /// that is not finite takes the previous ring's (ring 0: zero); a ring closer than <see cref="PushDistance"/>·r to
+        /// the previous one is pushed on (<see cref="PushDirection"/>, its spacing² NaN); else its spacing² is kept
+        /// (ring 0: +∞).
+        /// </summary>
+        private void SettleCenters(int a, int b, int first, int count, int from, int to,
+            ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z)
+        {
+            Span<Float3> centre = new Span<Float3>(centers, first, count);
+            Span<float> spacing = new Span<float>(spacing2, first, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> radius = new ReadOnlySpan<float>(ringRadii, first, count).Slice(0, centre.Length);
+            Float3 previous = from > 0 ? centre[from - 1] : Float3.Zero;
+            for (int i = from; i < to; i++)
+            {
+                Float3 raw = centre[i];
+                float cx = raw.X, cy = raw.Y, cz = raw.Z;
                 if (!(float.IsFinite(cx) && float.IsFinite(cy) && float.IsFinite(cz)))
                 {
                     Float3 fallback = i > 0 ? previous : Float3.Zero;
@@ -131,6 +330,41 @@ namespace HookeRope.Geometry
                 previous = new Float3(cx, cy, cz);
                 centre[i] = previous;
             }
+        }
+
+        /// <summary>
+        /// <see cref="SettleCenters"/> from ring 1 on <see cref="Vector{T}"/> lanes, <see cref="Vector{T}"/>.Count rings a
+        /// step from the per-axis raw centres (ring 0 finite), as long as every ring of a block is finite and not pushed:
+        /// per lane the scalar's spacing² and push test in its order; such a ring keeps its raw centre, so the ring before
+        /// a block is final. Returns the first ring it did not settle (a block with a ring that needs the scalar, or the
+        /// tail shorter than a vector).
+        /// </summary>
+        private int SettleCentersOnLanes(int first, int count)
+        {
+            // block p is rings 1 + 8p … 8 + 8p (with 8 lanes), the rings before them 8p … 7 + 8p
+            ReadOnlySpan<float> xs = new ReadOnlySpan<float>(rawX, 0, count), ys = new ReadOnlySpan<float>(rawY, 0, count), zs = new ReadOnlySpan<float>(rawZ, 0, count);
+            ReadOnlySpan<Vector<float>> x1 = MemoryMarshal.Cast<float, Vector<float>>(xs.Slice(1));
+            ReadOnlySpan<Vector<float>> y1 = MemoryMarshal.Cast<float, Vector<float>>(ys.Slice(1)).Slice(0, x1.Length);
+            ReadOnlySpan<Vector<float>> z1 = MemoryMarshal.Cast<float, Vector<float>>(zs.Slice(1)).Slice(0, x1.Length);
+            ReadOnlySpan<Vector<float>> x0 = MemoryMarshal.Cast<float, Vector<float>>(xs).Slice(0, x1.Length);
+            ReadOnlySpan<Vector<float>> y0 = MemoryMarshal.Cast<float, Vector<float>>(ys).Slice(0, x1.Length);
+            ReadOnlySpan<Vector<float>> z0 = MemoryMarshal.Cast<float, Vector<float>>(zs).Slice(0, x1.Length);
+            ReadOnlySpan<Vector<float>> r = MemoryMarshal.Cast<float, Vector<float>>(new ReadOnlySpan<float>(ringRadii, first + 1, count - 1)).Slice(0, x1.Length);
+            Span<Vector<float>> spacing = MemoryMarshal.Cast<float, Vector<float>>(new Span<float>(spacing2, first + 1, count - 1)).Slice(0, x1.Length);
+            var push = new Vector<float>(PushDistance);
+            var tiny = new Vector<float>(1e-7f);
+            for (int p = 0; p < spacing.Length; p++)
+            {
+                Vector<float> cx = x1[p], cy = y1[p], cz = z1[p];
+                // x − x is +0 for a finite x and NaN for ±∞ and NaN, so the sum is 0 only where all three are finite
+                if (!Vector.EqualsAll((cx - cx) + (cy - cy) + (cz - cz), Vector<float>.Zero)) return 1 + p * Vector<float>.Count;
+                Vector<float> dx = cx - x0[p], dy = cy - y0[p], dz = cz - z0[p];
+                Vector<float> minimum = push * r[p] + tiny;
+                Vector<float> gap2 = dx * dx + dy * dy + dz * dz;
+                if (Vector.LessThanAny(gap2, minimum * minimum)) return 1 + p * Vector<float>.Count;
+                spacing[p] = gap2;
+            }
+            return 1 + spacing.Length * Vector<float>.Count;
         }
 
         /// <summary>
@@ -262,9 +496,13 @@ namespace HookeRope.Geometry
         /// Radius slopes dr/ds over the distance between each ring's neighbours (the ring itself at a piece's end). The
         /// frames took those distances already (the length of the central difference they normalise), bit for bit the
         /// same, unless a fold tip moved a centre afterwards (<paramref name="distancesKept"/> false, from <see cref="ComputeFrames"/>).
+        /// With the vector paths on, the interior rings' slopes are taken on <see cref="Vector{T}"/> lanes
+        /// (<see cref="InteriorSlopesOnLanes"/>), the end rings and the tail on the scalar loop.
         /// </summary>
         private void ComputeSlopes(int first, int last, bool distancesKept)
         {
+            // read first: the switch is a static field, whose first read may call the runtime
+            bool lanes = VectorPath.Enabled;
             // spans of exactly the piece's rings, indexed by i = k − first
             int count = last - first + 1;
             ReadOnlySpan<Float3> c = new ReadOnlySpan<Float3>(centers, first, count);
@@ -272,18 +510,65 @@ namespace HookeRope.Geometry
             ReadOnlySpan<bool> tip = new ReadOnlySpan<bool>(foldTip, first, count).Slice(0, c.Length);
             Span<float> distance = new Span<float>(slopeDistance, first, count).Slice(0, c.Length);
             Span<float> slope = new Span<float>(slopes, first, count).Slice(0, c.Length);
-            for (int i = 0; i < c.Length; i++)
+            if (!distancesKept)
             {
-                int ahead = i < c.Length - 1 ? i + 1 : i;
-                int behind = i > 0 ? i - 1 : i;
-                if (!distancesKept)
+                for (int i = 0; i < c.Length; i++)
                 {
+                    int ahead = i < c.Length - 1 ? i + 1 : i;
+                    int behind = i > 0 ? i - 1 : i;
                     Float3 ca = c[ahead], cb = c[behind];
                     float dx = ca.X - cb.X, dy = ca.Y - cb.Y, dz = ca.Z - cb.Z;
                     distance[i] = MathF.Sqrt(dx * dx + dy * dy + dz * dz);
                 }
+            }
+            if (lanes && c.Length > Vector<float>.Count + 1)
+            {
+                // ring 0, the interior rings 1 … done − 1 on lanes (a fold tip's slope is 0: set afterwards), the rest
+                int done = InteriorSlopesOnLanes(r, distance, slope);
+                ScalarSlopes(0, 1, r, tip, distance, slope);
+                if (tip.Slice(1, done - 1).IndexOf(true) >= 0)
+                    for (int i = 1; i < done; i++)
+                        if (tip[i]) slope[i] = 0f;
+                ScalarSlopes(done, c.Length, r, tip, distance, slope);
+            }
+            else ScalarSlopes(0, c.Length, r, tip, distance, slope);
+        }
+
+        /// <summary>The slopes of rings <paramref name="from"/> … <paramref name="to"/> − 1 of a piece's spans (<see cref="ComputeSlopes"/>).</summary>
+        private static void ScalarSlopes(int from, int to, ReadOnlySpan<float> r, ReadOnlySpan<bool> tip, ReadOnlySpan<float> distance, Span<float> slope)
+        {
+            for (int i = from; i < to; i++)
+            {
+                int ahead = i < r.Length - 1 ? i + 1 : i;
+                int behind = i > 0 ? i - 1 : i;
                 slope[i] = tip[i] ? 0f : Slope(r[ahead], r[behind], distance[i]);
             }
+        }
+
+        /// <summary>
+        /// <see cref="Slope"/> of the interior rings 1, 2, … of a piece's spans (at least two rings more than a vector's
+        /// lanes), <see cref="Vector{T}"/>.Count rings a step while the block's ring ahead is in the piece: per lane the scalar's operations (the quotient where the
+        /// distance is above 1e-12, else +0; below −10 or NaN −10; above 10 10), fold tips not looked at. Returns the
+        /// first ring not written.
+        /// </summary>
+        private static int InteriorSlopesOnLanes(ReadOnlySpan<float> r, ReadOnlySpan<float> distance, Span<float> slope)
+        {
+            var small = new Vector<float>(1e-12f);
+            var low = new Vector<float>(-MaxSlope);
+            var high = new Vector<float>(MaxSlope);
+            // block p is rings 1 + 8p … 8 + 8p (with 8 lanes): the radii ahead from ring 2 on, behind from ring 0, the
+            // distances and slopes from ring 1, as whole vectors; the bound is the blocks whose ring ahead is in the piece
+            ReadOnlySpan<Vector<float>> ahead = MemoryMarshal.Cast<float, Vector<float>>(r.Slice(2));
+            ReadOnlySpan<Vector<float>> behind = MemoryMarshal.Cast<float, Vector<float>>(r).Slice(0, ahead.Length);
+            ReadOnlySpan<Vector<float>> d = MemoryMarshal.Cast<float, Vector<float>>(distance.Slice(1)).Slice(0, ahead.Length);
+            Span<Vector<float>> s = MemoryMarshal.Cast<float, Vector<float>>(slope.Slice(1)).Slice(0, ahead.Length);
+            for (int p = 0; p < s.Length; p++)
+            {
+                Vector<float> q = Vector.ConditionalSelect(Vector.GreaterThan(d[p], small), (ahead[p] - behind[p]) / d[p], Vector<float>.Zero);
+                q = Vector.ConditionalSelect(Vector.GreaterThanOrEqual(q, low), q, low);
+                s[p] = Vector.ConditionalSelect(Vector.GreaterThan(q, high), high, q);
+            }
+            return 1 + s.Length * Vector<float>.Count;
         }
 
         /// <summary>dr/ds between two rings <paramref name="distance"/> apart, clamped to ±10 (NaN counts as −10).</summary>

@@ -70,6 +70,63 @@ namespace HookeRope.Tests.Core.Geometry
             }
         }
 
+        /// <summary>
+        /// Issue 18 (s17): the ring centres' and slopes' lanes (the settling, the Catmull–Rom weights, the outer control
+        /// points, the interior slopes) draw the bits of the scalar loops, also where a block must fall back: a 40-segment
+        /// curve with 4 rings a segment and a radius that steps between segments, as it is (every block on lanes), with
+        /// particles 12 and 13 on one point (pushed rings inside a block) and with segment 15 20× shorter than its
+        /// neighbours (a tangent at its ends needs its limit), each built with the vector paths off and on.
+        /// </summary>
+        [TestCase(0)]
+        [TestCase(1)]
+        [TestCase(2)]
+        public void TheCentreAndSlopeLanesDrawTheBitsOfTheScalarLoops(int variant)
+        {
+            const int segments = 40;
+            var shape = new RopeShape(segments, 0.1f);
+            float x = 0f;
+            for (int i = 0; i <= segments; i++)
+            {
+                if (i > 0) x += variant == 1 && i == 13 ? 0f : variant == 2 && i == 16 ? 0.005f : 0.1f;
+                shape.X[i] = x;
+                shape.Y[i] = 0.03f * MathF.Sin(0.7f * i);
+                shape.Z[i] = 0.02f * MathF.Cos(0.45f * i);
+            }
+            if (variant == 1) { shape.Y[13] = shape.Y[12]; shape.Z[13] = shape.Z[12]; }
+            var radii = new float[segments];
+            for (int j = 0; j < segments; j++) radii[j] = j % 5 == 3 ? 0.045f : 0.01f;
+            var broken = new bool[segments];
+            var settings = new TubeMeshSettings { RadialSegments = 16, RingsPerSegment = 4, CapEnds = true };
+            var scalar = new TubeMeshBuilder(settings, segments);
+            var lanes = new TubeMeshBuilder(settings, segments);
+            var scalarVertices = new TubeVertex[scalar.GetVertexCount(broken)];
+            var lanesVertices = new TubeVertex[lanes.GetVertexCount(broken)];
+            var scalarIndices = new int[scalar.GetIndexCount(broken)];
+            var lanesIndices = new int[lanes.GetIndexCount(broken)];
+            bool enabled = VectorPath.Enabled;
+            TubeMeshUpdate full, fast;
+            try
+            {
+                VectorPath.Enabled = false;
+                full = scalar.Build(shape.X, shape.Y, shape.Z, shape.Rest, radii, broken, scalarVertices, scalarIndices);
+                VectorPath.Enabled = true;
+                fast = lanes.Build(shape.X, shape.Y, shape.Z, shape.Rest, radii, broken, lanesVertices, lanesIndices);
+            }
+            finally
+            {
+                VectorPath.Enabled = enabled;
+            }
+            Assert.That(fast.VertexCount, Is.EqualTo(full.VertexCount), "vertices");
+            Assert.That(MeshChecks.DifferingVertices(scalarVertices, lanesVertices, full.VertexCount), Is.EqualTo(0), "vertices with other bits");
+            for (int i = 0; i < full.IndexCount; i++) Assert.That(lanesIndices[i], Is.EqualTo(scalarIndices[i]), "index " + i);
+            Assert.That(BoundsBits(fast), Is.EqualTo(BoundsBits(full)), "bounds");
+
+            static string BoundsBits(TubeMeshUpdate u) => string.Join(" ", BitConverter.SingleToInt32Bits(u.BoundsMin.X),
+                BitConverter.SingleToInt32Bits(u.BoundsMin.Y), BitConverter.SingleToInt32Bits(u.BoundsMin.Z),
+                BitConverter.SingleToInt32Bits(u.BoundsMax.X), BitConverter.SingleToInt32Bits(u.BoundsMax.Y),
+                BitConverter.SingleToInt32Bits(u.BoundsMax.Z));
+        }
+
         /// <summary>The goal lanyard (64 segments) dropped from straight, then whipped by one pin: 150 frames.</summary>
         [TestCaseSource(nameof(Sides))]
         public void ADroppedAndWhippedLanyardDrawsTheSameBitsOnEveryPath(int sides)
