@@ -21,22 +21,26 @@ namespace HookeRope.Solver
             int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes;
             var p = new AssemblyParameters { InvH2 = invH2, Gamma = gammaAll, First = first, TensionOnly = tensionOnly, Contacts = c.ContactCount > 0 };
             // the views copied into locals, one by one: indexed through the reference, each access would add an address
-            // computation, and a copy of the whole struct takes a bulk move with write barriers
-            ReadOnlySpan<Vector<float>> wa = views.WA, wb = views.WB;
-            ReadOnlySpan<Vector<float>> dxA = views.DxA, dxB = views.DxB, dyA = views.DyA, dyB = views.DyB, dzA = views.DzA, dzB = views.DzB;
-            ReadOnlySpan<Vector<float>> dlxA = views.DlxA, dlxB = views.DlxB, dlyA = views.DlyA, dlyB = views.DlyB, dlzA = views.DlzA, dlzB = views.DlzB;
-            ReadOnlySpan<Vector<float>> pxA = views.PxA, pxB = views.PxB, pyA = views.PyA, pyB = views.PyB, pzA = views.PzA, pzB = views.PzB;
-            ReadOnlySpan<Vector<float>> lxA = views.LxA, lxB = views.LxB, lyA = views.LyA, lyB = views.LyB, lzA = views.LzA, lzB = views.LzB;
-            ReadOnlySpan<Vector<float>> rest = views.Rest, compliance = views.Compliance, lastTension = views.LastTension;
-            Span<Vector<double>> rx = views.ResidualXOut, ry = views.ResidualYOut, rz = views.ResidualZOut;
-            Span<Vector<double>> axial = views.AxialOut, transverse = views.TransverseOut, estimate = views.EstimateOut, effectiveRest = views.RestOut;
-            Span<Vector<float>> dirX = views.DirXOut, dirY = views.DirYOut, dirZ = views.DirZOut, length = views.LengthOut;
+            // computation, and a copy of the whole struct takes a bulk move with write barriers. Each is cut to the runs
+            // (floats) or their halves (doubles, pairs): views of one length share their bounds checks (the loop bound
+            // drops the floats' and one check per half serves every double output), where each view's own stored
+            // length took a check of its own per access
+            int pairs = 2 * runs;
+            ReadOnlySpan<Vector<float>> wa = views.WA.Slice(0, runs), wb = views.WB.Slice(0, runs);
+            ReadOnlySpan<Vector<float>> dxA = views.DxA.Slice(0, runs), dxB = views.DxB.Slice(0, runs), dyA = views.DyA.Slice(0, runs), dyB = views.DyB.Slice(0, runs), dzA = views.DzA.Slice(0, runs), dzB = views.DzB.Slice(0, runs);
+            ReadOnlySpan<Vector<float>> dlxA = views.DlxA.Slice(0, runs), dlxB = views.DlxB.Slice(0, runs), dlyA = views.DlyA.Slice(0, runs), dlyB = views.DlyB.Slice(0, runs), dlzA = views.DlzA.Slice(0, runs), dlzB = views.DlzB.Slice(0, runs);
+            ReadOnlySpan<Vector<float>> pxA = views.PxA.Slice(0, runs), pxB = views.PxB.Slice(0, runs), pyA = views.PyA.Slice(0, runs), pyB = views.PyB.Slice(0, runs), pzA = views.PzA.Slice(0, runs), pzB = views.PzB.Slice(0, runs);
+            ReadOnlySpan<Vector<float>> lxA = views.LxA.Slice(0, runs), lxB = views.LxB.Slice(0, runs), lyA = views.LyA.Slice(0, runs), lyB = views.LyB.Slice(0, runs), lzA = views.LzA.Slice(0, runs), lzB = views.LzB.Slice(0, runs);
+            ReadOnlySpan<Vector<float>> rest = views.Rest.Slice(0, runs), compliance = views.Compliance.Slice(0, runs), lastTension = views.LastTension.Slice(0, runs);
+            Span<Vector<double>> rx = views.ResidualXOut.Slice(0, pairs), ry = views.ResidualYOut.Slice(0, pairs), rz = views.ResidualZOut.Slice(0, pairs);
+            Span<Vector<double>> axial = views.AxialOut.Slice(0, pairs), transverse = views.TransverseOut.Slice(0, pairs), estimate = views.EstimateOut.Slice(0, pairs), effectiveRest = views.RestOut.Slice(0, pairs);
+            Span<Vector<float>> dirX = views.DirXOut.Slice(0, runs), dirY = views.DirYOut.Slice(0, runs), dirZ = views.DirZOut.Slice(0, runs), length = views.LengthOut.Slice(0, runs);
             Span<bool> assembled = views.AssembledOut;
             // the run's float inputs read once (one check each) for both halves, which read them from there; the halves'
             // results in the chain's fields too (as locals they would be zeroed on every call)
             ref RunInputs r = ref c.AssemblyRun;
             ref AssembledLanes low = ref c.AssemblyLow, high = ref c.AssemblyHigh;
-            for (int k = 0; k < runs; k++)
+            for (int k = 0; k < wa.Length; k++)
             {
                 r.WA = wa[k]; r.WB = wb[k];
                 r.DxA = dxA[k]; r.DxB = dxB[k]; r.DyA = dyA[k]; r.DyB = dyB[k]; r.DzA = dzA[k]; r.DzB = dzB[k];
