@@ -77,6 +77,22 @@ namespace HookeRope.Solver
             return AssembleLanes(c, in v, invH2, gammaAll, first, tensionOnly);
         }
 
+        /// <summary><see cref="MoveParticlesLanes"/> with views built for this call (no <see cref="StepViews"/> of the chain).</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static void MoveParticlesLanesOwnViews(ChainState c)
+        {
+            var v = new StepViews(c, true);
+            MoveParticlesLanes(c, in v);
+        }
+
+        /// <summary><see cref="ApplyLanes"/> with views built for this call (no <see cref="StepViews"/> of the chain).</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static int ApplyLanesOwnViews(ChainState c, bool tensionOnly, double invH2, bool lengthErrors, ref ConvergenceTests tests)
+        {
+            var v = new StepViews(c, true);
+            return ApplyLanes(c, in v, tensionOnly, invH2, lengthErrors, ref tests);
+        }
+
         /// <summary>
         /// The rows of one half of run k (<typeparamref name="THalf"/>: <see cref="LowHalf"/> or <see cref="HighHalf"/>): each
         /// lane does <see cref="AssembleRows"/>'s operations in its order, and both sides of each of its branches are computed
@@ -198,17 +214,28 @@ namespace HookeRope.Solver
         /// its own). For <see cref="AssembleLanes"/>: the inputs of <see cref="AssembleHalf{THalf}"/> as runs of
         /// <see cref="VectorPath.FloatLanes"/> (A: a segment's first particle, B: its second; the forces as runs of
         /// <see cref="VectorPath.DoubleLanes"/>) and its outputs (…Out, the doubles as runs of
-        /// <see cref="VectorPath.DoubleLanes"/>: one check per store, not a slice each).
+        /// <see cref="VectorPath.DoubleLanes"/>: one check per store, not a slice each); for <see cref="MoveParticlesLanes"/>
+        /// and <see cref="ApplyLanes"/> the steps, motions, λ, length errors and active flags besides. Each kernel cuts the
+        /// views it copies to its runs (floats) or their halves (doubles): views of one length share their bounds checks.
         /// </summary>
         internal readonly ref struct StepViews
         {
             public readonly ChainState Chain;
-            public readonly ReadOnlySpan<Vector<float>> WA, WB, DxA, DxB, DyA, DyB, DzA, DzB, DlxA, DlxB, DlyA, DlyB, DlzA, DlzB;
+            public readonly ReadOnlySpan<Vector<float>> WA, WB, DxA, DyA, DzA, DlxA, DlyA, DlzA;
+            public readonly Span<Vector<float>> DxB, DyB, DzB, DlxB, DlyB, DlzB;
             public readonly ReadOnlySpan<Vector<float>> PxA, PxB, PyA, PyB, PzA, PzB, LxA, LxB, LyA, LyB, LzA, LzB, Rest, Compliance, LastTension;
-            public readonly ReadOnlySpan<Vector<double>> Fx, Fy, Fz;
+            public readonly Span<Vector<double>> Fx, Fy, Fz;
             public readonly Span<Vector<double>> ResidualXOut, ResidualYOut, ResidualZOut, AxialOut, TransverseOut, EstimateOut, RestOut;
             public readonly Span<Vector<float>> DirXOut, DirYOut, DirZOut, LengthOut;
             public readonly Span<bool> AssembledOut;
+            /// <summary>
+            /// For <see cref="MoveParticlesLanes"/> and <see cref="ApplyLanes"/>: the steps δΛ at each segment (…A) and at
+            /// its second particle (…B, the spare entry s included), the motions at both ends, λ, the length errors and
+            /// the active flags (their forces, directions, lengths, rest lengths and estimates are the assembly's views).
+            /// </summary>
+            public readonly Span<Vector<double>> StepXA, StepYA, StepZA, StepXB, StepYB, StepZB;
+            public readonly Span<Vector<double>> MotionXA, MotionYA, MotionZA, MotionXB, MotionYB, MotionZB, Lambda, LengthError;
+            public readonly Span<bool> Active;
 
             /// <summary>
             /// The views of chain c (its arrays at c.SegmentCount) when <paramref name="build"/>, else none (built in place
@@ -235,13 +262,22 @@ namespace HookeRope.Solver
                 DirXOut = VectorPath.AsLanes(ChainState.Exactly(c.DirX, s)); DirYOut = VectorPath.AsLanes(ChainState.Exactly(c.DirY, s));
                 DirZOut = VectorPath.AsLanes(ChainState.Exactly(c.DirZ, s)); LengthOut = VectorPath.AsLanes(ChainState.Exactly(c.Length, s));
                 AssembledOut = ChainState.Exactly(c.Assembled, s);
+                StepXA = Doubles(c.StepX, s); StepYA = Doubles(c.StepY, s); StepZA = Doubles(c.StepZ, s);
+                StepXB = Later(c.StepX, s); StepYB = Later(c.StepY, s); StepZB = Later(c.StepZ, s);
+                MotionXA = Doubles(c.MotionX, s); MotionYA = Doubles(c.MotionY, s); MotionZA = Doubles(c.MotionZ, s);
+                MotionXB = Later(c.MotionX, s); MotionYB = Later(c.MotionY, s); MotionZB = Later(c.MotionZ, s);
+                Lambda = Doubles(c.Lambda, s); LengthError = Doubles(c.LengthError, s);
+                Active = ChainState.Exactly(c.Active, s);
             }
+
+            [MethodImpl(MethodImplOptions.AggressiveInlining)]
+            private static Span<Vector<double>> Later(double[] values, int s) => VectorPath.AsLanes(ChainState.Shifted(values, s));
 
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
             private static ReadOnlySpan<Vector<float>> A(float[] values, int s) => VectorPath.AsLanes(ChainState.Exactly(values, s));
 
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
-            private static ReadOnlySpan<Vector<float>> B(float[] values, int s) => VectorPath.AsLanes(ChainState.Shifted(values, s));
+            private static Span<Vector<float>> B(float[] values, int s) => VectorPath.AsLanes(ChainState.Shifted(values, s));
         }
 
         /// <summary>
@@ -249,9 +285,10 @@ namespace HookeRope.Solver
         /// w_i·(δΛ_i − δΛ_{i−1}) and the displacement's double split) on runs of <see cref="VectorPath.FloatLanes"/>
         /// particles from particle 1; the segments' second-order length errors from the recorded motions are left to
         /// <see cref="ApplyLanes"/> (lengthErrors), which has the runs' directions and rest lengths at hand. Each lane does
-        /// the scalar pass's operations in its order, so the bits are the same.
+        /// the scalar pass's operations in its order, so the bits are the same. <paramref name="views"/>: the chain's views,
+        /// built once per host step (<see cref="StepViews"/>, by <see cref="Apply"/>'s caller) or for this call.
         /// </summary>
-        private static void MoveParticlesLanes(ChainState c)
+        private static void MoveParticlesLanes(ChainState c, in StepViews views)
         {
             int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes;
             // particle 0, whose pull has no segment before it
@@ -260,12 +297,14 @@ namespace HookeRope.Solver
             // included): with −0 in the step arrays' spare entry the runs reach particle s, with no scalar tail when s is a
             // multiple of the lanes
             c.StepX[s] = -0.0; c.StepY[s] = -0.0; c.StepZ[s] = -0.0;
-            ReadOnlySpan<Vector<float>> w = MemoryMarshal.Cast<float, Vector<float>>(ChainState.Shifted(c.InverseMass, s));
-            // the views once per call, not per run and axis
-            var x = new MoveViews(c.StepX, c.DX, c.DLowX, c.MotionX, s);
-            var y = new MoveViews(c.StepY, c.DY, c.DLowY, c.MotionY, s);
-            var z = new MoveViews(c.StepZ, c.DZ, c.DLowZ, c.MotionZ, s);
-            for (int k = 0; k < runs; k++)
+            // the views once per host step (copied here, not per run and axis)
+            // (cut to the runs or their halves: views of one length share their bounds checks)
+            int pairs = 2 * runs;
+            ReadOnlySpan<Vector<float>> w = views.WB.Slice(0, runs);
+            var x = new MoveViews(views.StepXB.Slice(0, pairs), views.StepXA.Slice(0, pairs), views.MotionXB.Slice(0, pairs), views.DxB.Slice(0, runs), views.DlxB.Slice(0, runs));
+            var y = new MoveViews(views.StepYB.Slice(0, pairs), views.StepYA.Slice(0, pairs), views.MotionYB.Slice(0, pairs), views.DyB.Slice(0, runs), views.DlyB.Slice(0, runs));
+            var z = new MoveViews(views.StepZB.Slice(0, pairs), views.StepZA.Slice(0, pairs), views.MotionZB.Slice(0, pairs), views.DzB.Slice(0, runs), views.DlzB.Slice(0, runs));
+            for (int k = 0; k < w.Length; k++)
             {
                 ChainState.Widen(w[k], out Vector<double> wLow, out Vector<double> wHigh);
                 MoveLanes(in x, k, wLow, wHigh);
@@ -314,13 +353,9 @@ namespace HookeRope.Solver
             public readonly Span<Vector<float>> D, Low;
 
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
-            public MoveViews(double[] step, float[] d, float[] low, double[] motion, int s)
+            public MoveViews(ReadOnlySpan<Vector<double>> after, ReadOnlySpan<Vector<double>> before, Span<Vector<double>> motion, Span<Vector<float>> d, Span<Vector<float>> low)
             {
-                After = VectorPath.AsLanes(ChainState.Shifted(step, s));
-                Before = VectorPath.AsLanes(ChainState.Exactly(step, s));
-                Motion = VectorPath.AsLanes(ChainState.Shifted(motion, s));
-                D = VectorPath.AsLanes(ChainState.Shifted(d, s));
-                Low = VectorPath.AsLanes(ChainState.Shifted(low, s));
+                After = after; Before = before; Motion = motion; D = d; Low = low;
             }
         }
 
@@ -370,24 +405,25 @@ namespace HookeRope.Solver
         /// segment and the tail row by row: <see cref="LengthErrorRows"/>), so every error is written before the rows or
         /// <see cref="Mismatched"/> read it.
         /// </summary>
-        private static int ApplyLanes(ChainState c, bool tensionOnly, double invH2, bool lengthErrors, ref ConvergenceTests tests)
+        private static int ApplyLanes(ChainState c, in StepViews views, bool tensionOnly, double invH2, bool lengthErrors, ref ConvergenceTests tests)
         {
             int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes;
-            ReadOnlySpan<Vector<float>> dirX = VectorPath.AsLanes(ChainState.Exactly(c.DirX, s)), dirY = VectorPath.AsLanes(ChainState.Exactly(c.DirY, s)), dirZ = VectorPath.AsLanes(ChainState.Exactly(c.DirZ, s));
-            ReadOnlySpan<Vector<float>> rest = VectorPath.AsLanes(ChainState.Exactly(c.RestLength, s)), length = VectorPath.AsLanes(ChainState.Exactly(c.Length, s));
-            Span<Vector<double>> error = VectorPath.AsLanes(ChainState.Exactly(c.LengthError, s));
-            ReadOnlySpan<Vector<double>> estimate = VectorPath.AsLanes(ChainState.Exactly(c.EstimatedTension, s));
-            ReadOnlySpan<Vector<double>> ax = VectorPath.AsLanes(ChainState.Exactly(c.MotionX, s)), ay = VectorPath.AsLanes(ChainState.Exactly(c.MotionY, s)), az = VectorPath.AsLanes(ChainState.Exactly(c.MotionZ, s));
-            ReadOnlySpan<Vector<double>> bx = VectorPath.AsLanes(ChainState.Shifted(c.MotionX, s)), by = VectorPath.AsLanes(ChainState.Shifted(c.MotionY, s)), bz = VectorPath.AsLanes(ChainState.Shifted(c.MotionZ, s));
-            ReadOnlySpan<Vector<double>> sx = VectorPath.AsLanes(ChainState.Exactly(c.StepX, s)), sy = VectorPath.AsLanes(ChainState.Exactly(c.StepY, s)), sz = VectorPath.AsLanes(ChainState.Exactly(c.StepZ, s));
-            Span<Vector<double>> fx = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.ForceX, s));
-            Span<Vector<double>> fy = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.ForceY, s));
-            Span<Vector<double>> fz = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.ForceZ, s));
-            Span<Vector<double>> lambda = MemoryMarshal.Cast<double, Vector<double>>(ChainState.Exactly(c.Lambda, s));
-            ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
+            // the views once per host step (StepViews), copied into locals one by one and cut to the runs or their halves
+            // as AssembleLanes does (views of one length share their bounds checks)
+            int pairs = 2 * runs;
+            ReadOnlySpan<Vector<float>> dirX = views.DirXOut.Slice(0, runs), dirY = views.DirYOut.Slice(0, runs), dirZ = views.DirZOut.Slice(0, runs);
+            ReadOnlySpan<Vector<float>> rest = views.Rest.Slice(0, runs), length = views.LengthOut.Slice(0, runs);
+            Span<Vector<double>> error = views.LengthError.Slice(0, pairs);
+            ReadOnlySpan<Vector<double>> estimate = views.EstimateOut.Slice(0, pairs);
+            ReadOnlySpan<Vector<double>> ax = views.MotionXA.Slice(0, pairs), ay = views.MotionYA.Slice(0, pairs), az = views.MotionZA.Slice(0, pairs);
+            ReadOnlySpan<Vector<double>> bx = views.MotionXB.Slice(0, pairs), by = views.MotionYB.Slice(0, pairs), bz = views.MotionZB.Slice(0, pairs);
+            ReadOnlySpan<Vector<double>> sx = views.StepXA.Slice(0, pairs), sy = views.StepYA.Slice(0, pairs), sz = views.StepZA.Slice(0, pairs);
+            Span<Vector<double>> fx = views.Fx.Slice(0, pairs), fy = views.Fy.Slice(0, pairs), fz = views.Fz.Slice(0, pairs);
+            Span<Vector<double>> lambda = views.Lambda.Slice(0, pairs);
+            ReadOnlySpan<bool> active = views.Active;
             Vector<double> h2 = new Vector<double>(invH2), two = new Vector<double>(2.0), tolerance = new Vector<double>(NonlinearTolerance);
             Vector<double> floor = new Vector<double>(tests.Floor), micro = new Vector<double>(1e-6);
-            for (int k = 0; k < runs; k++)
+            for (int k = 0; k < dirX.Length; k++)
             {
                 if (!AllTrue(active, k * lanes))
                 {

@@ -96,7 +96,7 @@ namespace HookeRope.Solver
             // a contact released in this substep stays free in its active-set passes; if the solution drives it back into the
             // surface, another iteration follows, whose detection holds it where the collision pass put it
             bool reentered = contacts && ChainContacts.ReleasedInside(c);
-            double nonlinear = Apply(c, contacts, tensionOnly, invH2, out bool unconverged, out bool estimateTooLow);
+            double nonlinear = Apply(c, in views, contacts, tensionOnly, invH2, out bool unconverged, out bool estimateTooLow);
             violent = nonlinear > NonlinearTolerance;
             shortened = false;
             // an iteration with friction in it takes the same tests as any other: the energy its length errors leave, and
@@ -415,17 +415,23 @@ namespace HookeRope.Solver
         /// <paramref name="estimateTooLow"/>: the tension-estimate test of <see cref="Iterate"/> failed on some active segment
         /// (<see cref="EstimateTooLow"/>, on the forces of the full step; invH2 = 1/h², 1/s²).
         /// </summary>
-        private static double Apply(ChainState c, bool contacts, bool tensionOnly, double invH2, out bool unconverged, out bool estimateTooLow)
+        private static double Apply(ChainState c, in StepViews views, bool contacts, bool tensionOnly, double invH2, out bool unconverged, out bool estimateTooLow)
         {
             // the particle pass on lanes leaves the length errors to ApplyLanes, which computes them per run of segments
             bool lanes = !contacts && VectorPath.Enabled && c.BrokenCount == 0 && c.SegmentCount > VectorPath.FloatLanes;
             if (contacts) MoveParticles<SegmentForceSystem.WithContacts>(c);
-            else if (lanes) MoveParticlesLanes(c);
+            else if (lanes)
+            {
+                if (views.Chain == c) MoveParticlesLanes(c, in views);
+                else MoveParticlesLanesOwnViews(c);
+            }
             else MoveParticles<SegmentForceSystem.NoContacts>(c);
             int s = c.SegmentCount;
             var tests = new ConvergenceTests { Floor = RoundOffFloor * c.Size };
-            // the lanes take the runs of active segments whose tests all pass quietly; the rows the rest, in order
-            int from = VectorPath.Enabled ? ApplyLanes(c, tensionOnly, invH2, lanes, ref tests) : 0;
+            // the lanes take the runs of active segments whose tests all pass quietly; the rows the rest, in order (on the
+            // chain's views of the host step, StepViews, or views built for the call)
+            int from = !VectorPath.Enabled ? 0 : views.Chain == c ? ApplyLanes(c, in views, tensionOnly, invH2, lanes, ref tests)
+                : ApplyLanesOwnViews(c, tensionOnly, invH2, lanes, ref tests);
             if (from < s) ApplyRows(c, from, s, tensionOnly, invH2, ref tests);
             unconverged = tests.Unconverged;
             estimateTooLow = tests.EstimateTooLow;
