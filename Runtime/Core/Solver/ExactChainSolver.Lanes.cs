@@ -93,6 +93,14 @@ namespace HookeRope.Solver
             return ApplyLanes(c, in v, tensionOnly, invH2, lengthErrors, ref tests);
         }
 
+        /// <summary><see cref="UpdateTensionOnlyLanes"/> with views built for this call (no <see cref="StepViews"/> of the chain).</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static int UpdateTensionOnlyLanesOwnViews(ChainState c, ref bool changed, ref int first)
+        {
+            var v = new StepViews(c, true);
+            return UpdateTensionOnlyLanes(c, in v, ref changed, ref first);
+        }
+
         /// <summary>
         /// The rows of one half of run k (<typeparamref name="THalf"/>: <see cref="LowHalf"/> or <see cref="HighHalf"/>): each
         /// lane does <see cref="AssembleRows"/>'s operations in its order, and both sides of each of its branches are computed
@@ -236,6 +244,8 @@ namespace HookeRope.Solver
             public readonly Span<Vector<double>> StepXA, StepYA, StepZA, StepXB, StepYB, StepZB;
             public readonly Span<Vector<double>> MotionXA, MotionYA, MotionZA, MotionXB, MotionYB, MotionZB, Lambda, LengthError;
             public readonly Span<bool> Active;
+            /// <summary>For <see cref="SegmentForceSystem.PrepareBlocks"/> on lanes: the free blocks' six entries (ChainState.BlockXX … BlockZZ).</summary>
+            public readonly Span<Vector<double>> BlockXX, BlockXY, BlockXZ, BlockYY, BlockYZ, BlockZZ;
 
             /// <summary>
             /// The views of chain c (its arrays at c.SegmentCount) when <paramref name="build"/>, else none (built in place
@@ -268,6 +278,8 @@ namespace HookeRope.Solver
                 MotionXB = Later(c.MotionX, s); MotionYB = Later(c.MotionY, s); MotionZB = Later(c.MotionZ, s);
                 Lambda = Doubles(c.Lambda, s); LengthError = Doubles(c.LengthError, s);
                 Active = ChainState.Exactly(c.Active, s);
+                BlockXX = Doubles(c.BlockXX, s); BlockXY = Doubles(c.BlockXY, s); BlockXZ = Doubles(c.BlockXZ, s);
+                BlockYY = Doubles(c.BlockYY, s); BlockYZ = Doubles(c.BlockYZ, s); BlockZZ = Doubles(c.BlockZZ, s);
             }
 
             [MethodImpl(MethodImplOptions.AggressiveInlining)]
@@ -483,14 +495,15 @@ namespace HookeRope.Solver
         /// and is skipped; any other run goes to <see cref="UpdateTensionOnlyRows"/>, in order. Returns the first segment
         /// not done.
         /// </summary>
-        private static int UpdateTensionOnlyLanes(ChainState c, ref bool changed, ref int first)
+        private static int UpdateTensionOnlyLanes(ChainState c, in StepViews views, ref bool changed, ref int first)
         {
-            int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes;
-            ReadOnlySpan<Vector<float>> dirX = VectorPath.AsLanes(ChainState.Exactly(c.DirX, s)), dirY = VectorPath.AsLanes(ChainState.Exactly(c.DirY, s)), dirZ = VectorPath.AsLanes(ChainState.Exactly(c.DirZ, s));
-            ReadOnlySpan<Vector<double>> fx = VectorPath.AsLanes(ChainState.Exactly(c.ForceX, s)), fy = VectorPath.AsLanes(ChainState.Exactly(c.ForceY, s)), fz = VectorPath.AsLanes(ChainState.Exactly(c.ForceZ, s));
-            ReadOnlySpan<Vector<double>> dx = VectorPath.AsLanes(ChainState.Exactly(c.StepX, s)), dy = VectorPath.AsLanes(ChainState.Exactly(c.StepY, s)), dz = VectorPath.AsLanes(ChainState.Exactly(c.StepZ, s));
-            ReadOnlySpan<bool> active = ChainState.Exactly(c.Active, s);
-            for (int k = 0; k < runs; k++)
+            int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes, pairs = 2 * runs;
+            // the host step's views, cut to the runs or their halves (views of one length share their bounds checks)
+            ReadOnlySpan<Vector<float>> dirX = views.DirXOut.Slice(0, runs), dirY = views.DirYOut.Slice(0, runs), dirZ = views.DirZOut.Slice(0, runs);
+            ReadOnlySpan<Vector<double>> fx = views.Fx.Slice(0, pairs), fy = views.Fy.Slice(0, pairs), fz = views.Fz.Slice(0, pairs);
+            ReadOnlySpan<Vector<double>> dx = views.StepXA.Slice(0, pairs), dy = views.StepYA.Slice(0, pairs), dz = views.StepZA.Slice(0, pairs);
+            ReadOnlySpan<bool> active = views.Active;
+            for (int k = 0; k < dirX.Length; k++)
             {
                 if (AllTrue(active, k * lanes))
                 {

@@ -92,7 +92,7 @@ namespace HookeRope.Solver
                 ChainContacts.Prepare(c);
                 ChainContacts.DropContactsWithoutMobility(c);
             }
-            solves = SolveActiveSet(c, tensionOnly, contacts, first);
+            solves = SolveActiveSet(c, in views, tensionOnly, contacts, first);
             // a contact released in this substep stays free in its active-set passes; if the solution drives it back into the
             // surface, another iteration follows, whose detection holds it where the collision pass put it
             bool reentered = contacts && ChainContacts.ReleasedInside(c);
@@ -286,21 +286,21 @@ namespace HookeRope.Solver
         /// <see cref="MaxPasses"/> while its tension front runs down it: the chain below the front falls free, its segments
         /// at zero force either way, and each pass moves the released set (solver.md, "The exact solve against the segment count").
         /// </summary>
-        private static int SolveActiveSet(ChainState c, bool tensionOnly, bool contacts, bool first)
+        private static int SolveActiveSet(ChainState c, in StepViews views, bool tensionOnly, bool contacts, bool first)
         {
             bool frictionMoving = false;
             // the first row the forward sweep must redo: between passes without contacts only the tension-only flags change,
             // and the rows before the first changed one keep their pivots and reduced right-hand sides bit for bit
             int from = 0;
             // the free blocks depend only on this linearisation: on wide lanes built once for every pass
-            SegmentForceSystem.PrepareBlocks(c);
+            SegmentForceSystem.PrepareBlocks(c, in views);
             for (int pass = 1; ; pass++)
             {
                 SegmentForceSystem.Solve(c, from);
                 if ((!tensionOnly && !contacts) || pass >= MaxFrictionPasses || (pass >= MaxPasses && !frictionMoving)) return pass;
                 // from: the tension-only pass's first changed row, 0 once the contacts may have changed (without tensionOnly
                 // there are contacts, so every path past the return above sets it)
-                bool changed = tensionOnly && UpdateTensionOnlySet(c, out from);
+                bool changed = tensionOnly && UpdateTensionOnlySet(c, in views, out from);
                 if (contacts)
                 {
                     changed |= ChainContacts.Update(c, first, out frictionMoving);
@@ -311,13 +311,15 @@ namespace HookeRope.Solver
         }
 
         /// <summary>Releases and re-admits tension-only segments (see <see cref="SolveActiveSet"/>); <paramref name="firstChanged"/>: the first row whose flag changed (SegmentCount when none).</summary>
-        private static bool UpdateTensionOnlySet(ChainState c, out int firstChanged)
+        private static bool UpdateTensionOnlySet(ChainState c, in StepViews views, out int firstChanged)
         {
             int s = c.SegmentCount;
             bool changed = false;
             int first = s;
-            // the lanes skip the runs of active segments that all still pull; the rows take the rest, in order
-            int from = VectorPath.Enabled && c.BrokenCount == 0 ? UpdateTensionOnlyLanes(c, ref changed, ref first) : 0;
+            // the lanes skip the runs of active segments that all still pull (on the host step's views, or their own for
+            // another chain's); the rows take the rest, in order
+            int from = !VectorPath.Enabled || c.BrokenCount != 0 ? 0 : views.Chain == c ? UpdateTensionOnlyLanes(c, in views, ref changed, ref first)
+                : UpdateTensionOnlyLanesOwnViews(c, ref changed, ref first);
             if (from < s) UpdateTensionOnlyRows(c, from, s, ref changed, ref first);
             firstChanged = first;
             return changed;

@@ -57,12 +57,14 @@ namespace HookeRope.Solver
         /// the active-set passes of one linearisation, so <see cref="Forward{T, TBlocks}"/> reads them. Runs of
         /// <see cref="VectorPath.FloatLanes"/> segments go on lanes (each lane does <see cref="Block"/>'s operations in its
         /// order: the same bits), the tail row by row. A released or invalid row's block is built too and never read.
+        /// <paramref name="views"/>: the chain's lane views of the host step (<see cref="ExactChainSolver.StepViews"/>; another
+        /// chain's or none: the lanes build their own).
         /// </summary>
-        public static void PrepareBlocks(ChainState c)
+        public static void PrepareBlocks(ChainState c, in ExactChainSolver.StepViews views)
         {
             if (!StoresBlocks) return;
             int s = c.SegmentCount;
-            int from = PrepareBlockLanes(c);
+            int from = views.Chain == c ? PrepareBlockLanes(c, in views) : PrepareBlockLanesOwnViews(c);
             // no tail (64 segments fill the runs): none of the rows' spans made
             if (from >= s) return;
             ReadOnlySpan<float> wA = ChainState.Exactly(c.InverseMass, s), wB = ChainState.Shifted(c.InverseMass, s);
@@ -80,15 +82,17 @@ namespace HookeRope.Solver
         /// <see cref="PrepareBlocks"/> on runs of <see cref="VectorPath.FloatLanes"/> segments (two halves of doubles each);
         /// returns the first segment not built (the rows take the rest).
         /// </summary>
-        private static int PrepareBlockLanes(ChainState c)
+        private static int PrepareBlockLanes(ChainState c, in ExactChainSolver.StepViews views)
         {
-            int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes;
-            ReadOnlySpan<Vector<float>> wA = VectorPath.AsLanes(ChainState.Exactly(c.InverseMass, s)), wB = VectorPath.AsLanes(ChainState.Shifted(c.InverseMass, s));
-            ReadOnlySpan<Vector<float>> dirX = VectorPath.AsLanes(ChainState.Exactly(c.DirX, s)), dirY = VectorPath.AsLanes(ChainState.Exactly(c.DirY, s)), dirZ = VectorPath.AsLanes(ChainState.Exactly(c.DirZ, s));
-            ReadOnlySpan<Vector<double>> axial = VectorPath.AsLanes(ChainState.Exactly(c.AxialCompliance, s)), transverse = VectorPath.AsLanes(ChainState.Exactly(c.TransverseCompliance, s));
-            Span<Vector<double>> bxx = VectorPath.AsLanes(ChainState.Exactly(c.BlockXX, s)), bxy = VectorPath.AsLanes(ChainState.Exactly(c.BlockXY, s)), bxz = VectorPath.AsLanes(ChainState.Exactly(c.BlockXZ, s));
-            Span<Vector<double>> byy = VectorPath.AsLanes(ChainState.Exactly(c.BlockYY, s)), byz = VectorPath.AsLanes(ChainState.Exactly(c.BlockYZ, s)), bzz = VectorPath.AsLanes(ChainState.Exactly(c.BlockZZ, s));
-            for (int k = 0; k < runs; k++)
+            int s = c.SegmentCount, lanes = VectorPath.FloatLanes, runs = s / lanes, pairs = 2 * runs;
+            // the host step's views (ExactChainSolver.StepViews), cut to the runs or their halves: views of one length share
+            // their bounds checks
+            ReadOnlySpan<Vector<float>> wA = views.WA.Slice(0, runs), wB = views.WB.Slice(0, runs);
+            ReadOnlySpan<Vector<float>> dirX = views.DirXOut.Slice(0, runs), dirY = views.DirYOut.Slice(0, runs), dirZ = views.DirZOut.Slice(0, runs);
+            ReadOnlySpan<Vector<double>> axial = views.AxialOut.Slice(0, pairs), transverse = views.TransverseOut.Slice(0, pairs);
+            Span<Vector<double>> bxx = views.BlockXX.Slice(0, pairs), bxy = views.BlockXY.Slice(0, pairs), bxz = views.BlockXZ.Slice(0, pairs);
+            Span<Vector<double>> byy = views.BlockYY.Slice(0, pairs), byz = views.BlockYZ.Slice(0, pairs), bzz = views.BlockZZ.Slice(0, pairs);
+            for (int k = 0; k < wA.Length; k++)
             {
                 ChainState.Widen(dirX[k], out Vector<double> nxLow, out Vector<double> nxHigh);
                 ChainState.Widen(dirY[k], out Vector<double> nyLow, out Vector<double> nyHigh);
@@ -102,6 +106,14 @@ namespace HookeRope.Solver
                     out bxx[h + 1], out bxy[h + 1], out bxz[h + 1], out byy[h + 1], out byz[h + 1], out bzz[h + 1]);
             }
             return runs * lanes;
+        }
+
+        /// <summary><see cref="PrepareBlockLanes"/> with views built for this call (no <see cref="ExactChainSolver.StepViews"/> of the chain).</summary>
+        [MethodImpl(MethodImplOptions.NoInlining)]
+        private static int PrepareBlockLanesOwnViews(ChainState c)
+        {
+            var v = new ExactChainSolver.StepViews(c, true);
+            return PrepareBlockLanes(c, in v);
         }
 
         /// <summary><see cref="Block"/> on <see cref="VectorPath.DoubleLanes"/> lanes, operation for operation.</summary>
