@@ -718,13 +718,25 @@ namespace HookeRope.Geometry
             // one table entry and one pair of vertices per step, through refs (one range check each, as the 4-float loop)
             Span<VertexPair> wide = MemoryMarshal.Cast<VertexLanes, VertexPair>(vertices);
             if (wide.Length > pairs.Length) wide = wide.Slice(0, pairs.Length);
-            for (int p = 0; p < wide.Length; p++)
+            if (wide.Length == UnrolledPairs)
             {
-                ref readonly PairLanes side = ref pairs[p];
-                ref VertexPair pair = ref wide[p];
-                pair.First = ((bA * side.CosA + cA * side.SinA) + aA) + oA;
-                pair.Middle = ((bB * side.CosB + cB * side.SinB) + aB) + oB;
-                pair.Last = (bC * side.CosC + cC * side.SinC) + aC;
+                // 16 sides (the default): the eight pairs written in a row, constant indices into spans of constant length
+                // (no range check, no loop counter), each pair the loop's operations
+                Span<VertexPair> eight = wide.Slice(0, UnrolledPairs);
+                ReadOnlySpan<PairLanes> table = pairs.Slice(0, UnrolledPairs);
+                WritePair(ref eight[0], in table[0], bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
+                WritePair(ref eight[1], in table[1], bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
+                WritePair(ref eight[2], in table[2], bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
+                WritePair(ref eight[3], in table[3], bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
+                WritePair(ref eight[4], in table[4], bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
+                WritePair(ref eight[5], in table[5], bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
+                WritePair(ref eight[6], in table[6], bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
+                WritePair(ref eight[7], in table[7], bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
+            }
+            else
+            {
+                for (int p = 0; p < wide.Length; p++)
+                    WritePair(ref wide[p], in pairs[p], bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
             }
             int last = 2 * wide.Length;
             if (last >= vertices.Length) return;
@@ -745,6 +757,23 @@ namespace HookeRope.Geometry
                 q[11] = ((bB * side.CosB + cB * side.SinB) + aB) + oB;
                 vertices[last].Last = MemoryMarshal.Cast<Vector<float>, Vector4>(q)[22];
             }
+        }
+
+        /// <summary>The pair count <see cref="WritePairs"/> writes without a loop: 16 sides (the default) make 8 pairs and the seam.</summary>
+        private const int UnrolledPairs = 8;
+
+        /// <summary>
+        /// One pair of vertices of the wide kernel (<see cref="WritePairs"/>): each of its three 8-float vectors
+        /// ((B·cos + C·sin) + A) + O, the third with no O. Inlined, so the coefficient vectors stay in registers.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static void WritePair(ref VertexPair pair, in PairLanes side, Vector<float> bA, Vector<float> bB, Vector<float> bC,
+            Vector<float> cA, Vector<float> cB, Vector<float> cC, Vector<float> aA, Vector<float> aB, Vector<float> aC,
+            Vector<float> oA, Vector<float> oB)
+        {
+            pair.First = ((bA * side.CosA + cA * side.SinA) + aA) + oA;
+            pair.Middle = ((bB * side.CosB + cB * side.SinB) + aB) + oB;
+            pair.Last = (bC * side.CosC + cC * side.SinC) + aC;
         }
 
         /// <summary>
