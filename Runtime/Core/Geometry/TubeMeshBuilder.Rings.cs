@@ -631,6 +631,11 @@ namespace HookeRope.Geometry
             bool wide = Vector<float>.Count == 8 && VectorPath.Enabled;
             ReadOnlySpan<SideLanes> sides = sideLanes;
             int stride = first == last ? Math.Min(rings.Length, sides.Length) : sides.Length;
+            if (wide && sixteenSided && stride == 2 * UnrolledPairs + 1)
+            {
+                WriteSixteenSidedRings(first, last - first + 1, rings);
+                return;
+            }
             var o0 = new Vector4(frameOrigin.X, frameOrigin.Y, frameOrigin.Z, 0f);
             // the wide kernel's coefficient vectors, two 4-float lanes each, through the builder's scratch (no
             // allocation): the origin's (and −0's) once, the ring's per ring
@@ -652,25 +657,9 @@ namespace HookeRope.Geometry
             ReadOnlySpan<float> vOf = new ReadOnlySpan<float>(ringV, first, count).Slice(0, centre.Length);
             for (int k = 0, at = 0; k < centre.Length; k++, at += stride)
             {
-                Float3 c = centre[k], t = tangent[k], nrm = normal[k];
-                float nx = nrm.X, ny = nrm.Y, nz = nrm.Z;
-                // binormal = t × n
-                float bx = t.Y * nz - t.Z * ny, by = t.Z * nx - t.X * nz, bz = t.X * ny - t.Y * nx;
-                float r = radius[k];
-                float slope = slopeOf[k];
+                RingCoefficients(centre[k], tangent[k], normal[k], radius[k], slopeOf[k],
+                    out Vector4 a0, out Vector4 b0, out Vector4 c0, out Vector4 a1, out Vector4 b1, out Vector4 c1, out Vector4 c2, out float bz);
                 float v = vOf[k];
-                // the normal tilts for a varying radius: (e_r − slope·t)/sqrt(1 + slope²)
-                float inverse = 1f / MathF.Sqrt(1f + slope * slope);
-                float sx = t.X * slope, sy = t.Y * slope, sz = t.Z * slope;
-                // the radial offset first, then the centre, then the origin: (c + offset) + origin rounds monotonically in the
-                // offset, so the ring's bounds (c ± r·sqrt(1 − t²)·(1 + 1e-6), + origin) hold its vertices
-                var a0 = new Vector4(c.X, c.Y, c.Z, -(sx * inverse));
-                var b0 = new Vector4(nx * r, ny * r, nz * r, nx * inverse);
-                var c0 = new Vector4(bx * r, by * r, bz * r, bx * inverse);
-                var a1 = new Vector4(-(sy * inverse), -(sz * inverse), 0f, 0f);
-                var b1 = new Vector4(ny * inverse, nz * inverse, bx, by);
-                var c1 = new Vector4(by * inverse, bz * inverse, -nx, -ny);
-                var c2 = new Vector4(-nz, 0f, 0f, 0f);
                 Span<VertexLanes> vertices = MemoryMarshal.Cast<TubeVertex, VertexLanes>(rings.Slice(at, stride));
                 if (wide && vertices.Length >= 2)
                 {
@@ -718,26 +707,8 @@ namespace HookeRope.Geometry
             // one table entry and one pair of vertices per step, through refs (one range check each, as the 4-float loop)
             Span<VertexPair> wide = MemoryMarshal.Cast<VertexLanes, VertexPair>(vertices);
             if (wide.Length > pairs.Length) wide = wide.Slice(0, pairs.Length);
-            if (wide.Length == UnrolledPairs)
-            {
-                // 16 sides (the default): the eight pairs written in a row, constant indices into spans of constant length
-                // (no range check, no loop counter), each pair the loop's operations
-                Span<VertexPair> eight = wide.Slice(0, UnrolledPairs);
-                ReadOnlySpan<PairLanes> table = pairs.Slice(0, UnrolledPairs);
-                WritePair(ref eight[0], in table[0], bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
-                WritePair(ref eight[1], in table[1], bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
-                WritePair(ref eight[2], in table[2], bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
-                WritePair(ref eight[3], in table[3], bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
-                WritePair(ref eight[4], in table[4], bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
-                WritePair(ref eight[5], in table[5], bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
-                WritePair(ref eight[6], in table[6], bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
-                WritePair(ref eight[7], in table[7], bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
-            }
-            else
-            {
-                for (int p = 0; p < wide.Length; p++)
-                    WritePair(ref wide[p], in pairs[p], bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
-            }
+            for (int p = 0; p < wide.Length; p++)
+                WritePair(ref wide[p], in pairs[p], bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
             int last = 2 * wide.Length;
             if (last >= vertices.Length) return;
             if (last == pairSeam)
@@ -759,7 +730,102 @@ namespace HookeRope.Geometry
             }
         }
 
-        /// <summary>The pair count <see cref="WritePairs"/> writes without a loop: 16 sides (the default) make 8 pairs and the seam.</summary>
+        /// <summary>
+        /// The wide kernel (<see cref="WriteRing"/>) of 16 sides, the default, for the <paramref name="count"/> rings from
+        /// <paramref name="first"/>, 17 vertices each: the ring's coefficient vectors as <see cref="WriteRings"/> makes them
+        /// (<see cref="RingCoefficients"/>, through <see cref="ringCoefficients"/> sliced to its 12 vectors), then the eight
+        /// pairs in a row (<see cref="WritePair"/>, the table entries fields of <see cref="sixteenPairs"/>, the ring one
+        /// <see cref="SixteenSidedRing"/>: constant offsets, no range check, no loop counter) and the seam, a copy of vertex 0
+        /// with the seam's u (<see cref="MakePairLanes"/> checked that its cos and sin are side 0's bits).
+        /// </summary>
+        private void WriteSixteenSidedRings(int first, int count, Span<TubeVertex> rings)
+        {
+            var o0 = new Vector4(frameOrigin.X, frameOrigin.Y, frameOrigin.Z, 0f);
+            Span<Vector<float>> q = new Span<Vector<float>>(ringCoefficients, 0, 12);
+            Span<Vector4> half = MemoryMarshal.Cast<Vector<float>, Vector4>(q).Slice(0, 24);
+            var negativeZero = new Vector4(-0f);
+            half[21] = o0; half[20] = negativeZero; half[19] = negativeZero; half[18] = o0;
+            ReadOnlySpan<Float3> centre = new ReadOnlySpan<Float3>(centers, first, count);
+            ReadOnlySpan<Float3> tangent = new ReadOnlySpan<Float3>(tangents, first, count).Slice(0, centre.Length);
+            ReadOnlySpan<Float3> normal = new ReadOnlySpan<Float3>(normals, first, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> radius = new ReadOnlySpan<float>(ringRadii, first, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> slopeOf = new ReadOnlySpan<float>(slopes, first, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> vOf = new ReadOnlySpan<float>(ringV, first, count).Slice(0, centre.Length);
+            float u = seamU;
+            for (int k = 0, at = 0; k < centre.Length; k++, at += 2 * UnrolledPairs + 1)
+            {
+                RingCoefficients(centre[k], tangent[k], normal[k], radius[k], slopeOf[k],
+                    out Vector4 a0, out Vector4 b0, out Vector4 c0, out Vector4 a1, out Vector4 b1, out Vector4 c1, out Vector4 c2, out float bz);
+                float v = vOf[k];
+                var a2u = new Vector4(0f + 0f, 0f + 1f, -0f, v + 0f);
+                var b2u = new Vector4(bz, 0f, 1f, 0f);
+                half[0] = b0; half[1] = b1; half[2] = b2u; half[3] = b0; half[4] = b1; half[5] = b2u;
+                half[6] = c0; half[7] = c1; half[8] = c2; half[9] = c0; half[10] = c1; half[11] = c2;
+                half[12] = a0; half[13] = a1; half[14] = a2u; half[15] = a0; half[16] = a1; half[17] = a2u;
+                Vector<float> bA = q[0], bB = q[1], bC = q[2], cA = q[3], cB = q[4], cC = q[5];
+                Vector<float> aA = q[6], aB = q[7], aC = q[8], oA = q[9], oB = q[10];
+                Span<TubeVertex> vertices = rings.Slice(at, 2 * UnrolledPairs + 1);
+                ref SixteenSidedRing ring = ref MemoryMarshal.Cast<TubeVertex, SixteenSidedRing>(vertices)[0];
+                WritePair(ref ring.Pair0, in sixteenPairs.Pair0, bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
+                WritePair(ref ring.Pair1, in sixteenPairs.Pair1, bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
+                WritePair(ref ring.Pair2, in sixteenPairs.Pair2, bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
+                WritePair(ref ring.Pair3, in sixteenPairs.Pair3, bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
+                WritePair(ref ring.Pair4, in sixteenPairs.Pair4, bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
+                WritePair(ref ring.Pair5, in sixteenPairs.Pair5, bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
+                WritePair(ref ring.Pair6, in sixteenPairs.Pair6, bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
+                WritePair(ref ring.Pair7, in sixteenPairs.Pair7, bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
+                // the seam is side 0 again (cos 1, sin 0: the same operations on the same numbers give the same bits) but for its u
+                vertices[2 * UnrolledPairs] = vertices[0];
+                vertices[2 * UnrolledPairs].U = u;
+            }
+        }
+
+        /// <summary>
+        /// A ring's coefficient lanes (<see cref="WriteRing"/>) from its centre <paramref name="c"/>, tangent
+        /// <paramref name="t"/>, normal <paramref name="nrm"/>, radius <paramref name="r"/> and radius slope: A, B, C of the
+        /// vertex's first and middle 4-float lanes and C of its last, and the binormal's z (B of the last lane's first float).
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static void RingCoefficients(Float3 c, Float3 t, Float3 nrm, float r, float slope, out Vector4 a0, out Vector4 b0,
+            out Vector4 c0, out Vector4 a1, out Vector4 b1, out Vector4 c1, out Vector4 c2, out float bz)
+        {
+            float nx = nrm.X, ny = nrm.Y, nz = nrm.Z;
+            // binormal = t × n
+            float bx = t.Y * nz - t.Z * ny, by = t.Z * nx - t.X * nz;
+            bz = t.X * ny - t.Y * nx;
+            // the normal tilts for a varying radius: (e_r − slope·t)/sqrt(1 + slope²)
+            float inverse = 1f / MathF.Sqrt(1f + slope * slope);
+            float sx = t.X * slope, sy = t.Y * slope, sz = t.Z * slope;
+            // the radial offset first, then the centre, then the origin: (c + offset) + origin rounds monotonically in the
+            // offset, so the ring's bounds (c ± r·sqrt(1 − t²)·(1 + 1e-6), + origin) hold its vertices
+            a0 = new Vector4(c.X, c.Y, c.Z, -(sx * inverse));
+            b0 = new Vector4(nx * r, ny * r, nz * r, nx * inverse);
+            c0 = new Vector4(bx * r, by * r, bz * r, bx * inverse);
+            a1 = new Vector4(-(sy * inverse), -(sz * inverse), 0f, 0f);
+            b1 = new Vector4(ny * inverse, nz * inverse, bx, by);
+            c1 = new Vector4(by * inverse, bz * inverse, -nx, -ny);
+            c2 = new Vector4(-nz, 0f, 0f, 0f);
+        }
+
+        /// <summary>The 17 vertices of a 16-sided ring as the wide kernel writes them: eight pairs and the seam.</summary>
+        [StructLayout(LayoutKind.Sequential)]
+        private struct SixteenSidedRing
+        {
+            public VertexPair Pair0, Pair1, Pair2, Pair3, Pair4, Pair5, Pair6, Pair7;
+            public TubeVertex Seam;
+        }
+
+        /// <summary>The first eight entries of the pair table (<see cref="pairLanes"/>) of 16 sides, read at constant offsets.</summary>
+        private struct SixteenPairLanes
+        {
+            public PairLanes Pair0, Pair1, Pair2, Pair3, Pair4, Pair5, Pair6, Pair7;
+        }
+
+        // the 16-sided wide kernel's table (WriteSixteenSidedRings), set with pairLanes where it applies
+        private SixteenPairLanes sixteenPairs;
+        private bool sixteenSided;
+
+        /// <summary>The pairs <see cref="WriteSixteenSidedRings"/> writes without a loop: 16 sides (the default) make 8 pairs and the seam.</summary>
         private const int UnrolledPairs = 8;
 
         /// <summary>
@@ -803,6 +869,13 @@ namespace HookeRope.Geometry
                 && BitConverter.SingleToInt32Bits(sides[seam].Sin.X) == BitConverter.SingleToInt32Bits(sides[0].Sin.X);
             pairSeam = same && seam % 2 == 0 ? seam : -1;
             seamU = sides[seam].U.Z;
+            sixteenSided = pairSeam == 2 * UnrolledPairs && table.Length > UnrolledPairs;
+            if (sixteenSided)
+                sixteenPairs = new SixteenPairLanes
+                {
+                    Pair0 = table[0], Pair1 = table[1], Pair2 = table[2], Pair3 = table[3],
+                    Pair4 = table[4], Pair5 = table[5], Pair6 = table[6], Pair7 = table[7],
+                };
             return table;
         }
 
