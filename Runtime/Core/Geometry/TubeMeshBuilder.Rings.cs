@@ -734,7 +734,7 @@ namespace HookeRope.Geometry
         /// The wide kernel (<see cref="WriteRing"/>) of 16 sides, the default, for the <paramref name="count"/> rings from
         /// <paramref name="first"/>, 17 vertices each: the ring's coefficient vectors as <see cref="WriteRings"/> makes them
         /// (<see cref="RingCoefficients"/>, through <see cref="ringCoefficients"/> sliced to its 12 vectors), then the eight
-        /// pairs in a row (<see cref="WritePair"/>, the table entries fields of <see cref="sixteenPairs"/>, the ring one
+        /// pairs in a row (<see cref="WritePair"/>'s operations written out, the table entries fields of <see cref="sixteenPairs"/>, the ring one
         /// <see cref="SixteenSidedRing"/>: constant offsets, no range check, no loop counter) and the seam, a copy of vertex 0
         /// with the seam's u (<see cref="MakePairLanes"/> checked that its cos and sin are side 0's bits).
         /// </summary>
@@ -752,6 +752,7 @@ namespace HookeRope.Geometry
             ReadOnlySpan<float> slopeOf = new ReadOnlySpan<float>(slopes, first, count).Slice(0, centre.Length);
             ReadOnlySpan<float> vOf = new ReadOnlySpan<float>(ringV, first, count).Slice(0, centre.Length);
             float u = seamU;
+            ref readonly SixteenPairLanes table = ref sixteenPairs;
             for (int k = 0, at = 0; k < centre.Length; k++, at += 2 * UnrolledPairs + 1)
             {
                 RingCoefficients(centre[k], tangent[k], normal[k], radius[k], slopeOf[k],
@@ -766,14 +767,32 @@ namespace HookeRope.Geometry
                 Vector<float> aA = q[6], aB = q[7], aC = q[8], oA = q[9], oB = q[10];
                 Span<TubeVertex> vertices = rings.Slice(at, 2 * UnrolledPairs + 1);
                 ref SixteenSidedRing ring = ref MemoryMarshal.Cast<TubeVertex, SixteenSidedRing>(vertices)[0];
-                WritePair(ref ring.Pair0, in sixteenPairs.Pair0, bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
-                WritePair(ref ring.Pair1, in sixteenPairs.Pair1, bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
-                WritePair(ref ring.Pair2, in sixteenPairs.Pair2, bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
-                WritePair(ref ring.Pair3, in sixteenPairs.Pair3, bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
-                WritePair(ref ring.Pair4, in sixteenPairs.Pair4, bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
-                WritePair(ref ring.Pair5, in sixteenPairs.Pair5, bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
-                WritePair(ref ring.Pair6, in sixteenPairs.Pair6, bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
-                WritePair(ref ring.Pair7, in sixteenPairs.Pair7, bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
+                // each pair WritePair's three vectors, written out: refs to the fields through a helper would cost two address
+                // computations a pair, field accesses are constant offsets from the ring and the table
+                ring.Pair0.First = ((bA * table.Pair0.CosA + cA * table.Pair0.SinA) + aA) + oA;
+                ring.Pair0.Middle = ((bB * table.Pair0.CosB + cB * table.Pair0.SinB) + aB) + oB;
+                ring.Pair0.Last = (bC * table.Pair0.CosC + cC * table.Pair0.SinC) + aC;
+                ring.Pair1.First = ((bA * table.Pair1.CosA + cA * table.Pair1.SinA) + aA) + oA;
+                ring.Pair1.Middle = ((bB * table.Pair1.CosB + cB * table.Pair1.SinB) + aB) + oB;
+                ring.Pair1.Last = (bC * table.Pair1.CosC + cC * table.Pair1.SinC) + aC;
+                ring.Pair2.First = ((bA * table.Pair2.CosA + cA * table.Pair2.SinA) + aA) + oA;
+                ring.Pair2.Middle = ((bB * table.Pair2.CosB + cB * table.Pair2.SinB) + aB) + oB;
+                ring.Pair2.Last = (bC * table.Pair2.CosC + cC * table.Pair2.SinC) + aC;
+                ring.Pair3.First = ((bA * table.Pair3.CosA + cA * table.Pair3.SinA) + aA) + oA;
+                ring.Pair3.Middle = ((bB * table.Pair3.CosB + cB * table.Pair3.SinB) + aB) + oB;
+                ring.Pair3.Last = (bC * table.Pair3.CosC + cC * table.Pair3.SinC) + aC;
+                ring.Pair4.First = ((bA * table.Pair4.CosA + cA * table.Pair4.SinA) + aA) + oA;
+                ring.Pair4.Middle = ((bB * table.Pair4.CosB + cB * table.Pair4.SinB) + aB) + oB;
+                ring.Pair4.Last = (bC * table.Pair4.CosC + cC * table.Pair4.SinC) + aC;
+                ring.Pair5.First = ((bA * table.Pair5.CosA + cA * table.Pair5.SinA) + aA) + oA;
+                ring.Pair5.Middle = ((bB * table.Pair5.CosB + cB * table.Pair5.SinB) + aB) + oB;
+                ring.Pair5.Last = (bC * table.Pair5.CosC + cC * table.Pair5.SinC) + aC;
+                ring.Pair6.First = ((bA * table.Pair6.CosA + cA * table.Pair6.SinA) + aA) + oA;
+                ring.Pair6.Middle = ((bB * table.Pair6.CosB + cB * table.Pair6.SinB) + aB) + oB;
+                ring.Pair6.Last = (bC * table.Pair6.CosC + cC * table.Pair6.SinC) + aC;
+                ring.Pair7.First = ((bA * table.Pair7.CosA + cA * table.Pair7.SinA) + aA) + oA;
+                ring.Pair7.Middle = ((bB * table.Pair7.CosB + cB * table.Pair7.SinB) + aB) + oB;
+                ring.Pair7.Last = (bC * table.Pair7.CosC + cC * table.Pair7.SinC) + aC;
                 // the seam is side 0 again (cos 1, sin 0: the same operations on the same numbers give the same bits) but for its u
                 vertices[2 * UnrolledPairs] = vertices[0];
                 vertices[2 * UnrolledPairs].U = u;
