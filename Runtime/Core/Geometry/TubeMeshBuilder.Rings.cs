@@ -733,7 +733,7 @@ namespace HookeRope.Geometry
         /// <summary>
         /// The wide kernel (<see cref="WriteRing"/>) of 16 sides, the default, for the <paramref name="count"/> rings from
         /// <paramref name="first"/>, 17 vertices each: the ring's coefficient vectors as <see cref="WriteRings"/> makes them
-        /// (<see cref="RingCoefficients"/>, through <see cref="ringCoefficients"/> sliced to its 12 vectors), then the eight
+        /// (<see cref="RingCoefficients"/>, through <see cref="ringCoefficients"/>: 12 stores of 4 floats and 11 loads of 8 a ring), then the eight
         /// pairs in a row (<see cref="WritePair"/>'s operations written out, the table entries fields of <see cref="sixteenPairs"/>, the ring one
         /// <see cref="SixteenSidedRing"/>: constant offsets, no range check, no loop counter) and the seam, a copy of vertex 0
         /// with the seam's u (<see cref="MakePairLanes"/> checked that its cos and sin are side 0's bits).
@@ -741,10 +741,14 @@ namespace HookeRope.Geometry
         private void WriteSixteenSidedRings(int first, int count, Span<TubeVertex> rings)
         {
             var o0 = new Vector4(frameOrigin.X, frameOrigin.Y, frameOrigin.Z, 0f);
-            Span<Vector<float>> q = new Span<Vector<float>>(ringCoefficients, 0, 12);
-            Span<Vector4> half = MemoryMarshal.Cast<Vector<float>, Vector4>(q).Slice(0, 24);
+            // the coefficient vectors through the scratch as groups of four halves X0 X1 X2 X0 (B, C, A, then O), so the
+            // lane patterns X0 X1 and X2 X0 are whole vectors and X1 X2 a vector of the view shifted by one half; the
+            // views' lengths are constants, so their constant indices need no range check
+            Span<Vector<float>> q = new Span<Vector<float>>(ringCoefficients, 0, 8);
+            Span<Vector4> half = MemoryMarshal.Cast<Vector<float>, Vector4>(q).Slice(0, 16);
+            Span<Vector<float>> shifted = MemoryMarshal.Cast<Vector4, Vector<float>>(half.Slice(1, 14));
             var negativeZero = new Vector4(-0f);
-            half[21] = o0; half[20] = negativeZero; half[19] = negativeZero; half[18] = o0;
+            half[12] = o0; half[13] = negativeZero; half[14] = negativeZero; half[15] = o0;
             ReadOnlySpan<Float3> centre = new ReadOnlySpan<Float3>(centers, first, count);
             ReadOnlySpan<Float3> tangent = new ReadOnlySpan<Float3>(tangents, first, count).Slice(0, centre.Length);
             ReadOnlySpan<Float3> normal = new ReadOnlySpan<Float3>(normals, first, count).Slice(0, centre.Length);
@@ -760,11 +764,11 @@ namespace HookeRope.Geometry
                 float v = vOf[k];
                 var a2u = new Vector4(0f + 0f, 0f + 1f, -0f, v + 0f);
                 var b2u = new Vector4(bz, 0f, 1f, 0f);
-                half[0] = b0; half[1] = b1; half[2] = b2u; half[3] = b0; half[4] = b1; half[5] = b2u;
-                half[6] = c0; half[7] = c1; half[8] = c2; half[9] = c0; half[10] = c1; half[11] = c2;
-                half[12] = a0; half[13] = a1; half[14] = a2u; half[15] = a0; half[16] = a1; half[17] = a2u;
-                Vector<float> bA = q[0], bB = q[1], bC = q[2], cA = q[3], cB = q[4], cC = q[5];
-                Vector<float> aA = q[6], aB = q[7], aC = q[8], oA = q[9], oB = q[10];
+                half[0] = b0; half[1] = b1; half[2] = b2u; half[3] = b0;
+                half[4] = c0; half[5] = c1; half[6] = c2; half[7] = c0;
+                half[8] = a0; half[9] = a1; half[10] = a2u; half[11] = a0;
+                Vector<float> bA = q[0], bB = q[1], bC = shifted[0], cA = q[2], cB = q[3], cC = shifted[2];
+                Vector<float> aA = q[4], aB = q[5], aC = shifted[4], oA = q[6], oB = q[7];
                 Span<TubeVertex> vertices = rings.Slice(at, 2 * UnrolledPairs + 1);
                 ref SixteenSidedRing ring = ref MemoryMarshal.Cast<TubeVertex, SixteenSidedRing>(vertices)[0];
                 // each pair WritePair's three vectors, written out: refs to the fields through a helper would cost two address
