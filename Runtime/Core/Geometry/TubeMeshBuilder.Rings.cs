@@ -631,6 +631,11 @@ namespace HookeRope.Geometry
             bool wide = Vector<float>.Count == 8 && VectorPath.Enabled;
             ReadOnlySpan<SideLanes> sides = sideLanes;
             int stride = first == last ? Math.Min(rings.Length, sides.Length) : sides.Length;
+            if (wide && sixteenSided && stride == 2 * UnrolledPairs + 1)
+            {
+                WriteSixteenSidedRings(first, last - first + 1, rings);
+                return;
+            }
             var o0 = new Vector4(frameOrigin.X, frameOrigin.Y, frameOrigin.Z, 0f);
             // the wide kernel's coefficient vectors, two 4-float lanes each, through the builder's scratch (no
             // allocation): the origin's (and −0's) once, the ring's per ring
@@ -652,25 +657,9 @@ namespace HookeRope.Geometry
             ReadOnlySpan<float> vOf = new ReadOnlySpan<float>(ringV, first, count).Slice(0, centre.Length);
             for (int k = 0, at = 0; k < centre.Length; k++, at += stride)
             {
-                Float3 c = centre[k], t = tangent[k], nrm = normal[k];
-                float nx = nrm.X, ny = nrm.Y, nz = nrm.Z;
-                // binormal = t × n
-                float bx = t.Y * nz - t.Z * ny, by = t.Z * nx - t.X * nz, bz = t.X * ny - t.Y * nx;
-                float r = radius[k];
-                float slope = slopeOf[k];
+                RingCoefficients(centre[k], tangent[k], normal[k], radius[k], slopeOf[k],
+                    out Vector4 a0, out Vector4 b0, out Vector4 c0, out Vector4 a1, out Vector4 b1, out Vector4 c1, out Vector4 c2, out float bz);
                 float v = vOf[k];
-                // the normal tilts for a varying radius: (e_r − slope·t)/sqrt(1 + slope²)
-                float inverse = 1f / MathF.Sqrt(1f + slope * slope);
-                float sx = t.X * slope, sy = t.Y * slope, sz = t.Z * slope;
-                // the radial offset first, then the centre, then the origin: (c + offset) + origin rounds monotonically in the
-                // offset, so the ring's bounds (c ± r·sqrt(1 − t²)·(1 + 1e-6), + origin) hold its vertices
-                var a0 = new Vector4(c.X, c.Y, c.Z, -(sx * inverse));
-                var b0 = new Vector4(nx * r, ny * r, nz * r, nx * inverse);
-                var c0 = new Vector4(bx * r, by * r, bz * r, bx * inverse);
-                var a1 = new Vector4(-(sy * inverse), -(sz * inverse), 0f, 0f);
-                var b1 = new Vector4(ny * inverse, nz * inverse, bx, by);
-                var c1 = new Vector4(by * inverse, bz * inverse, -nx, -ny);
-                var c2 = new Vector4(-nz, 0f, 0f, 0f);
                 Span<VertexLanes> vertices = MemoryMarshal.Cast<TubeVertex, VertexLanes>(rings.Slice(at, stride));
                 if (wide && vertices.Length >= 2)
                 {
@@ -719,13 +708,7 @@ namespace HookeRope.Geometry
             Span<VertexPair> wide = MemoryMarshal.Cast<VertexLanes, VertexPair>(vertices);
             if (wide.Length > pairs.Length) wide = wide.Slice(0, pairs.Length);
             for (int p = 0; p < wide.Length; p++)
-            {
-                ref readonly PairLanes side = ref pairs[p];
-                ref VertexPair pair = ref wide[p];
-                pair.First = ((bA * side.CosA + cA * side.SinA) + aA) + oA;
-                pair.Middle = ((bB * side.CosB + cB * side.SinB) + aB) + oB;
-                pair.Last = (bC * side.CosC + cC * side.SinC) + aC;
-            }
+                WritePair(ref wide[p], in pairs[p], bA, bB, bC, cA, cB, cC, aA, aB, aC, oA, oB);
             int last = 2 * wide.Length;
             if (last >= vertices.Length) return;
             if (last == pairSeam)
@@ -745,6 +728,141 @@ namespace HookeRope.Geometry
                 q[11] = ((bB * side.CosB + cB * side.SinB) + aB) + oB;
                 vertices[last].Last = MemoryMarshal.Cast<Vector<float>, Vector4>(q)[22];
             }
+        }
+
+        /// <summary>
+        /// The wide kernel (<see cref="WriteRing"/>) of 16 sides, the default, for the <paramref name="count"/> rings from
+        /// <paramref name="first"/>, 17 vertices each: the ring's coefficient vectors as <see cref="WriteRings"/> makes them
+        /// (<see cref="RingCoefficients"/>, through <see cref="ringCoefficients"/>: 12 stores of 4 floats and 11 loads of 8 a ring), then the eight
+        /// pairs in a row (<see cref="WritePair"/>'s operations written out, the table entries fields of <see cref="sixteenPairs"/>, the ring one
+        /// <see cref="SixteenSidedRing"/>: constant offsets, no range check, no loop counter) and the seam, a copy of vertex 0
+        /// with the seam's u (<see cref="MakePairLanes"/> checked that its cos and sin are side 0's bits).
+        /// </summary>
+        private void WriteSixteenSidedRings(int first, int count, Span<TubeVertex> rings)
+        {
+            var o0 = new Vector4(frameOrigin.X, frameOrigin.Y, frameOrigin.Z, 0f);
+            // the coefficient vectors through the scratch as groups of four halves X0 X1 X2 X0 (B, C, A, then O), so the
+            // lane patterns X0 X1 and X2 X0 are whole vectors and X1 X2 a vector of the view shifted by one half; the
+            // views' lengths are constants, so their constant indices need no range check
+            Span<Vector<float>> q = new Span<Vector<float>>(ringCoefficients, 0, 8);
+            Span<Vector4> half = MemoryMarshal.Cast<Vector<float>, Vector4>(q).Slice(0, 16);
+            Span<Vector<float>> shifted = MemoryMarshal.Cast<Vector4, Vector<float>>(half.Slice(1, 14));
+            var negativeZero = new Vector4(-0f);
+            half[12] = o0; half[13] = negativeZero; half[14] = negativeZero; half[15] = o0;
+            ReadOnlySpan<Float3> centre = new ReadOnlySpan<Float3>(centers, first, count);
+            ReadOnlySpan<Float3> tangent = new ReadOnlySpan<Float3>(tangents, first, count).Slice(0, centre.Length);
+            ReadOnlySpan<Float3> normal = new ReadOnlySpan<Float3>(normals, first, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> radius = new ReadOnlySpan<float>(ringRadii, first, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> slopeOf = new ReadOnlySpan<float>(slopes, first, count).Slice(0, centre.Length);
+            ReadOnlySpan<float> vOf = new ReadOnlySpan<float>(ringV, first, count).Slice(0, centre.Length);
+            float u = seamU;
+            ref readonly SixteenPairLanes table = ref sixteenPairs;
+            for (int k = 0, at = 0; k < centre.Length; k++, at += 2 * UnrolledPairs + 1)
+            {
+                RingCoefficients(centre[k], tangent[k], normal[k], radius[k], slopeOf[k],
+                    out Vector4 a0, out Vector4 b0, out Vector4 c0, out Vector4 a1, out Vector4 b1, out Vector4 c1, out Vector4 c2, out float bz);
+                float v = vOf[k];
+                var a2u = new Vector4(0f + 0f, 0f + 1f, -0f, v + 0f);
+                var b2u = new Vector4(bz, 0f, 1f, 0f);
+                half[0] = b0; half[1] = b1; half[2] = b2u; half[3] = b0;
+                half[4] = c0; half[5] = c1; half[6] = c2; half[7] = c0;
+                half[8] = a0; half[9] = a1; half[10] = a2u; half[11] = a0;
+                Vector<float> bA = q[0], bB = q[1], bC = shifted[0], cA = q[2], cB = q[3], cC = shifted[2];
+                Vector<float> aA = q[4], aB = q[5], aC = shifted[4], oA = q[6], oB = q[7];
+                Span<TubeVertex> vertices = rings.Slice(at, 2 * UnrolledPairs + 1);
+                ref SixteenSidedRing ring = ref MemoryMarshal.Cast<TubeVertex, SixteenSidedRing>(vertices)[0];
+                // each pair WritePair's three vectors, written out: refs to the fields through a helper would cost two address
+                // computations a pair, field accesses are constant offsets from the ring and the table
+                ring.Pair0.First = ((bA * table.Pair0.CosA + cA * table.Pair0.SinA) + aA) + oA;
+                ring.Pair0.Middle = ((bB * table.Pair0.CosB + cB * table.Pair0.SinB) + aB) + oB;
+                ring.Pair0.Last = (bC * table.Pair0.CosC + cC * table.Pair0.SinC) + aC;
+                ring.Pair1.First = ((bA * table.Pair1.CosA + cA * table.Pair1.SinA) + aA) + oA;
+                ring.Pair1.Middle = ((bB * table.Pair1.CosB + cB * table.Pair1.SinB) + aB) + oB;
+                ring.Pair1.Last = (bC * table.Pair1.CosC + cC * table.Pair1.SinC) + aC;
+                ring.Pair2.First = ((bA * table.Pair2.CosA + cA * table.Pair2.SinA) + aA) + oA;
+                ring.Pair2.Middle = ((bB * table.Pair2.CosB + cB * table.Pair2.SinB) + aB) + oB;
+                ring.Pair2.Last = (bC * table.Pair2.CosC + cC * table.Pair2.SinC) + aC;
+                ring.Pair3.First = ((bA * table.Pair3.CosA + cA * table.Pair3.SinA) + aA) + oA;
+                ring.Pair3.Middle = ((bB * table.Pair3.CosB + cB * table.Pair3.SinB) + aB) + oB;
+                ring.Pair3.Last = (bC * table.Pair3.CosC + cC * table.Pair3.SinC) + aC;
+                ring.Pair4.First = ((bA * table.Pair4.CosA + cA * table.Pair4.SinA) + aA) + oA;
+                ring.Pair4.Middle = ((bB * table.Pair4.CosB + cB * table.Pair4.SinB) + aB) + oB;
+                ring.Pair4.Last = (bC * table.Pair4.CosC + cC * table.Pair4.SinC) + aC;
+                ring.Pair5.First = ((bA * table.Pair5.CosA + cA * table.Pair5.SinA) + aA) + oA;
+                ring.Pair5.Middle = ((bB * table.Pair5.CosB + cB * table.Pair5.SinB) + aB) + oB;
+                ring.Pair5.Last = (bC * table.Pair5.CosC + cC * table.Pair5.SinC) + aC;
+                ring.Pair6.First = ((bA * table.Pair6.CosA + cA * table.Pair6.SinA) + aA) + oA;
+                ring.Pair6.Middle = ((bB * table.Pair6.CosB + cB * table.Pair6.SinB) + aB) + oB;
+                ring.Pair6.Last = (bC * table.Pair6.CosC + cC * table.Pair6.SinC) + aC;
+                ring.Pair7.First = ((bA * table.Pair7.CosA + cA * table.Pair7.SinA) + aA) + oA;
+                ring.Pair7.Middle = ((bB * table.Pair7.CosB + cB * table.Pair7.SinB) + aB) + oB;
+                ring.Pair7.Last = (bC * table.Pair7.CosC + cC * table.Pair7.SinC) + aC;
+                // the seam is side 0 again (cos 1, sin 0: the same operations on the same numbers give the same bits) but for its u
+                vertices[2 * UnrolledPairs] = vertices[0];
+                vertices[2 * UnrolledPairs].U = u;
+            }
+        }
+
+        /// <summary>
+        /// A ring's coefficient lanes (<see cref="WriteRing"/>) from its centre <paramref name="c"/>, tangent
+        /// <paramref name="t"/>, normal <paramref name="nrm"/>, radius <paramref name="r"/> and radius slope: A, B, C of the
+        /// vertex's first and middle 4-float lanes and C of its last, and the binormal's z (B of the last lane's first float).
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static void RingCoefficients(Float3 c, Float3 t, Float3 nrm, float r, float slope, out Vector4 a0, out Vector4 b0,
+            out Vector4 c0, out Vector4 a1, out Vector4 b1, out Vector4 c1, out Vector4 c2, out float bz)
+        {
+            float nx = nrm.X, ny = nrm.Y, nz = nrm.Z;
+            // binormal = t × n
+            float bx = t.Y * nz - t.Z * ny, by = t.Z * nx - t.X * nz;
+            bz = t.X * ny - t.Y * nx;
+            // the normal tilts for a varying radius: (e_r − slope·t)/sqrt(1 + slope²)
+            float inverse = 1f / MathF.Sqrt(1f + slope * slope);
+            float sx = t.X * slope, sy = t.Y * slope, sz = t.Z * slope;
+            // the radial offset first, then the centre, then the origin: (c + offset) + origin rounds monotonically in the
+            // offset, so the ring's bounds (c ± r·sqrt(1 − t²)·(1 + 1e-6), + origin) hold its vertices
+            a0 = new Vector4(c.X, c.Y, c.Z, -(sx * inverse));
+            b0 = new Vector4(nx * r, ny * r, nz * r, nx * inverse);
+            c0 = new Vector4(bx * r, by * r, bz * r, bx * inverse);
+            a1 = new Vector4(-(sy * inverse), -(sz * inverse), 0f, 0f);
+            b1 = new Vector4(ny * inverse, nz * inverse, bx, by);
+            c1 = new Vector4(by * inverse, bz * inverse, -nx, -ny);
+            c2 = new Vector4(-nz, 0f, 0f, 0f);
+        }
+
+        /// <summary>The 17 vertices of a 16-sided ring as the wide kernel writes them: eight pairs and the seam.</summary>
+        [StructLayout(LayoutKind.Sequential)]
+        private struct SixteenSidedRing
+        {
+            public VertexPair Pair0, Pair1, Pair2, Pair3, Pair4, Pair5, Pair6, Pair7;
+            public TubeVertex Seam;
+        }
+
+        /// <summary>The first eight entries of the pair table (<see cref="pairLanes"/>) of 16 sides, read at constant offsets.</summary>
+        private struct SixteenPairLanes
+        {
+            public PairLanes Pair0, Pair1, Pair2, Pair3, Pair4, Pair5, Pair6, Pair7;
+        }
+
+        // the 16-sided wide kernel's table (WriteSixteenSidedRings), set with pairLanes where it applies
+        private SixteenPairLanes sixteenPairs;
+        private bool sixteenSided;
+
+        /// <summary>The pairs <see cref="WriteSixteenSidedRings"/> writes without a loop: 16 sides (the default) make 8 pairs and the seam.</summary>
+        private const int UnrolledPairs = 8;
+
+        /// <summary>
+        /// One pair of vertices of the wide kernel (<see cref="WritePairs"/>): each of its three 8-float vectors
+        /// ((B·cos + C·sin) + A) + O, the third with no O. Inlined, so the coefficient vectors stay in registers.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static void WritePair(ref VertexPair pair, in PairLanes side, Vector<float> bA, Vector<float> bB, Vector<float> bC,
+            Vector<float> cA, Vector<float> cB, Vector<float> cC, Vector<float> aA, Vector<float> aB, Vector<float> aC,
+            Vector<float> oA, Vector<float> oB)
+        {
+            pair.First = ((bA * side.CosA + cA * side.SinA) + aA) + oA;
+            pair.Middle = ((bB * side.CosB + cB * side.SinB) + aB) + oB;
+            pair.Last = (bC * side.CosC + cC * side.SinC) + aC;
         }
 
         /// <summary>
@@ -774,6 +892,13 @@ namespace HookeRope.Geometry
                 && BitConverter.SingleToInt32Bits(sides[seam].Sin.X) == BitConverter.SingleToInt32Bits(sides[0].Sin.X);
             pairSeam = same && seam % 2 == 0 ? seam : -1;
             seamU = sides[seam].U.Z;
+            sixteenSided = pairSeam == 2 * UnrolledPairs && table.Length > UnrolledPairs;
+            if (sixteenSided)
+                sixteenPairs = new SixteenPairLanes
+                {
+                    Pair0 = table[0], Pair1 = table[1], Pair2 = table[2], Pair3 = table[3],
+                    Pair4 = table[4], Pair5 = table[5], Pair6 = table[6], Pair7 = table[7],
+                };
             return table;
         }
 

@@ -1,5 +1,6 @@
 using System;
 using System.Numerics;
+using System.Runtime.InteropServices;
 using HookeRope.Fracture;
 using HookeRope.Mathematics;
 
@@ -516,6 +517,31 @@ namespace HookeRope.Geometry
 
         private static float Clamped(float r) => float.IsFinite(r) && r > 1e-6f ? r : 1e-6f;
 
+        /// <summary>
+        /// <see cref="Clamped"/> of each of <paramref name="given"/> into <paramref name="clamped"/> (of the same length):
+        /// with the vector paths on, whole <see cref="Vector{T}"/> blocks first (a lane keeps r where 1e-6 &lt; r &lt; +∞,
+        /// both false for NaN: exactly where r is finite and above 1e-6), the tail by the scalar.
+        /// </summary>
+        private static void ClampRadii(ReadOnlySpan<float> given, Span<float> clamped)
+        {
+            given = given.Slice(0, clamped.Length);
+            int done = 0;
+            if (VectorPath.Enabled)
+            {
+                ReadOnlySpan<Vector<float>> r = MemoryMarshal.Cast<float, Vector<float>>(given);
+                Span<Vector<float>> c = MemoryMarshal.Cast<float, Vector<float>>(clamped).Slice(0, r.Length);
+                var floor = new Vector<float>(1e-6f);
+                var infinity = new Vector<float>(float.PositiveInfinity);
+                for (int p = 0; p < c.Length; p++)
+                {
+                    Vector<float> q = r[p];
+                    c[p] = Vector.ConditionalSelect(Vector.GreaterThan(q, floor) & Vector.LessThan(q, infinity), q, floor);
+                }
+                done = c.Length * Vector<float>.Count;
+            }
+            for (int i = done; i < clamped.Length; i++) clamped[i] = Clamped(given[i]);
+        }
+
         private void ComputeRingV(ReadOnlySpan<float> restLengths, float vScale)
         {
             int n = layout.SegmentCount;
@@ -616,7 +642,7 @@ namespace HookeRope.Geometry
                 int count = last - first + 1;
                 Span<float> clamped = new Span<float>(ringRadii, first, count);
                 ReadOnlySpan<float> given = radii.Slice(first, count);
-                for (int i = 0; i < clamped.Length; i++) clamped[i] = Clamped(given[i]);
+                ClampRadii(given, clamped);
                 dirty.AsSpan(first, count).Fill(true);
                 ComputeCenters(a, b, first, last, x, y, z);
                 if (contactRope != null && contactRope.ColliderCount > 0) PushCentersOutOfColliders(first, last);

@@ -127,6 +127,55 @@ namespace HookeRope.Tests.Core.Geometry
                 BitConverter.SingleToInt32Bits(u.BoundsMax.Z));
         }
 
+        /// <summary>
+        /// Issue 18 (s18): the ring radii's clamp on lanes (TubeMeshBuilder.ClampRadii: finite and above 1e-6 m, else
+        /// 1e-6 m) draws the bits of the scalar clamp for the radii a lane can get wrong — NaN, ±∞, ±0, negative, 1e-6 itself,
+        /// its neighbours, subnormal, float.MaxValue — spread over the blocks and the tail of a 40-segment rope's rings, built
+        /// with the vector paths off and on.
+        /// </summary>
+        [Test]
+        public void TheRadiusClampOnLanesDrawsTheBitsOfTheScalarClamp()
+        {
+            const int segments = 40;
+            var shape = new RopeShape(segments, 0.1f);
+            for (int i = 0; i <= segments; i++)
+            {
+                shape.X[i] = 0.1f * i;
+                shape.Y[i] = 0.03f * MathF.Sin(0.7f * i);
+                shape.Z[i] = 0.02f * MathF.Cos(0.45f * i);
+            }
+            var broken = new bool[segments];
+            var settings = new TubeMeshSettings { RadialSegments = 16, RingsPerSegment = 4, CapEnds = true };
+            var scalar = new TubeMeshBuilder(settings, segments);
+            var lanes = new TubeMeshBuilder(settings, segments);
+            float[] odd = { float.NaN, float.PositiveInfinity, float.NegativeInfinity, 0f, -0f, -0.01f, 1e-6f,
+                BitConverter.Int32BitsToSingle(BitConverter.SingleToInt32Bits(1e-6f) + 1),
+                BitConverter.Int32BitsToSingle(BitConverter.SingleToInt32Bits(1e-6f) - 1), 1e-45f, float.MaxValue };
+            var radii = new float[scalar.Layout.RingCount];
+            for (int k = 0; k < radii.Length; k++) radii[k] = k % 3 == 1 ? odd[(k / 3) % odd.Length] : 0.01f + 0.0001f * k;
+            // the last rings (the scalar tail at every vector width) odd too
+            for (int k = 1; k <= 4; k++) radii[radii.Length - k] = odd[k];
+            var scalarVertices = new TubeVertex[scalar.GetVertexCount(broken)];
+            var lanesVertices = new TubeVertex[lanes.GetVertexCount(broken)];
+            var scalarIndices = new int[scalar.GetIndexCount(broken)];
+            var lanesIndices = new int[lanes.GetIndexCount(broken)];
+            bool enabled = VectorPath.Enabled;
+            TubeMeshUpdate full, fast;
+            try
+            {
+                VectorPath.Enabled = false;
+                full = scalar.BuildWithRingRadii(shape.X, shape.Y, shape.Z, shape.Rest, radii, broken, scalarVertices, scalarIndices);
+                VectorPath.Enabled = true;
+                fast = lanes.BuildWithRingRadii(shape.X, shape.Y, shape.Z, shape.Rest, radii, broken, lanesVertices, lanesIndices);
+            }
+            finally
+            {
+                VectorPath.Enabled = enabled;
+            }
+            Assert.That(fast.VertexCount, Is.EqualTo(full.VertexCount), "vertices");
+            Assert.That(MeshChecks.DifferingVertices(scalarVertices, lanesVertices, full.VertexCount), Is.EqualTo(0), "vertices with other bits");
+        }
+
         /// <summary>The goal lanyard (64 segments) dropped from straight, then whipped by one pin: 150 frames.</summary>
         [TestCaseSource(nameof(Sides))]
         public void ADroppedAndWhippedLanyardDrawsTheSameBitsOnEveryPath(int sides)
