@@ -10,7 +10,8 @@ namespace HookeRope.Tests.Solver
     /// (Rope.Lanes: BDF2 prediction, second-order velocities, position commit, violence test, tensions) give the scalar
     /// loops' bits. Each scene is stepped twice from the same start, with <see cref="VectorPath.Enabled"/> off and on, and
     /// every position, remainder, displacement, double velocity, history, multiplier and tension must match bit for bit
-    /// (Rope.StateBits), after every host step. The scenes cover BDF2 and backward Euler, the exact chain and the
+    /// (Rope.StateBits), after every host step, and so must each step's report (the residual, whose largest error the lane
+    /// pass forms, and the solve's counts). The scenes cover BDF2 and backward Euler, the exact chain and the
     /// Gauss–Seidel sweep, rigid, moving and compliant pins, a pin in the middle of a block, drag and wind, a collider,
     /// plastic segments, a broken segment, several iterations, and chains shorter than one block or with a tail.
     /// </summary>
@@ -133,31 +134,57 @@ namespace HookeRope.Tests.Solver
             return rope;
         }
 
-        /// <summary>State bits after each host step with the vector paths on (<paramref name="vectors"/>) or off.</summary>
-        static ulong[] Run(string name, bool vectors)
+        /// <summary>
+        /// State bits after each host step with the vector paths on (<paramref name="vectors"/>) or off, and the bits of
+        /// each step's report (the residual, which the lane path of ComputeResidual forms, and the solve's counts) in
+        /// <paramref name="reports"/>.
+        /// </summary>
+        static ulong[] Run(string name, bool vectors, out ulong[] reports)
         {
             VectorPath.Enabled = vectors;
             Rope rope = Build(name, out Action<Rope, int> drive);
             var bits = new ulong[HostSteps + 1];
+            reports = new ulong[HostSteps + 1];
             bits[0] = rope.StateBits();
             for (int k = 0; k < HostSteps; k++)
             {
                 drive?.Invoke(rope, k);
-                rope.Step(HostStep);
+                StepReport report = rope.Step(HostStep);
                 bits[k + 1] = rope.StateBits();
+                reports[k + 1] = ReportBits(report);
             }
             return bits;
+        }
+
+        /// <summary>The residual's bits in the high half, a fold of the report's counts in the low half.</summary>
+        static ulong ReportBits(StepReport report)
+        {
+            uint counts = (uint)report.Iterations;
+            counts = counts * 31u + (uint)report.Substeps;
+            counts = counts * 31u + (uint)report.SolveIterations;
+            counts = counts * 31u + (uint)report.LinearSolves;
+            counts = counts * 31u + (uint)report.ViolentSubsteps;
+            counts = counts * 31u + (uint)report.ShortenedSteps;
+            counts = counts * 31u + (uint)report.UnconvergedSubsteps;
+            return ((ulong)(uint)BitConverter.SingleToInt32Bits(report.Residual) << 32) | counts;
         }
 
         [TestCaseSource(nameof(Scenes))]
         public void VectorPathsGiveTheScalarBits(string scene)
         {
-            ulong[] scalar = Run(scene, false);
-            ulong[] lanes = Run(scene, true);
-            // the scene moves (the state changes every step), and every step's state is the same bits both ways
+            ulong[] scalar = Run(scene, false, out ulong[] scalarReports);
+            ulong[] lanes = Run(scene, true, out ulong[] laneReports);
+            // the scene moves (the state changes every step), and every step's state and report are the same bits both ways
             Assert.That(scalar[HostSteps], Is.Not.EqualTo(scalar[HostSteps - 1]));
+            int residuals = 0;
             for (int k = 0; k <= HostSteps; k++)
+            {
                 Assert.That(lanes[k], Is.EqualTo(scalar[k]), "host step " + k + " of " + scene);
+                Assert.That(laneReports[k], Is.EqualTo(scalarReports[k]), "report of host step " + k + " of " + scene);
+                if ((scalarReports[k] >> 32) != 0) residuals++;
+            }
+            // the residual compared is a reading, not zero throughout
+            Assert.That(residuals, Is.GreaterThan(0), "steps with a non-zero residual in " + scene);
         }
 
         [Test]
