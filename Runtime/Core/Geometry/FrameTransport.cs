@@ -48,16 +48,40 @@ namespace HookeRope.Geometry
             float c = fx * tx + fy * ty + fz * tz;
             if (c > -0.9999f)
             {
-                // k = f × t; n' = n·c + k × n + k·(k·n)/(1 + c)
-                float kx = fy * tz - fz * ty, ky = fz * tx - fx * tz, kz = fx * ty - fy * tx;
-                float s = (kx * nx + ky * ny + kz * nz) / (1f + c);
-                float mx = nx * c + (ky * nz - kz * ny) + kx * s;
-                float my = ny * c + (kz * nx - kx * nz) + ky * s;
-                float mz = nz * c + (kx * ny - ky * nx) + kz * s;
-                nx = mx; ny = my; nz = mz;
+                // k = f × t
+                Float3 m = Rotated(nx, ny, nz, c, fy * tz - fz * ty, fz * tx - fx * tz, fx * ty - fy * tx);
+                nx = m.X; ny = m.Y; nz = m.Z;
             }
             return Perpendicular(nx, ny, nz, tx, ty, tz);
         }
+
+        /// <summary>
+        /// Normal n = (<paramref name="nx"/>, <paramref name="ny"/>, <paramref name="nz"/>) turned by the rotation that takes
+        /// one unit tangent to the next, given by their cosine <paramref name="c"/> (&gt; −0.9999: the caller tests it) and
+        /// their cross product k = (<paramref name="kx"/>, <paramref name="ky"/>, <paramref name="kz"/>):
+        /// n·c + k × n + k·(k·n)/(1 + c). Returned by value, so a loop that carries n keeps it in registers.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static Float3 Rotated(float nx, float ny, float nz, float c, float kx, float ky, float kz)
+        {
+            float s = (kx * nx + ky * ny + kz * nz) / (1f + c);
+            return new Float3(nx * c + (ky * nz - kz * ny) + kx * s, ny * c + (kz * nx - kx * nz) + ky * s, nz * c + (kx * ny - ky * nx) + kz * s);
+        }
+
+        /// <summary>The part of (<paramref name="x"/>, <paramref name="y"/>, <paramref name="z"/>) across unit tangent t: p = n − t·(n·t), not yet unit.</summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static Float3 Across(float x, float y, float z, float tx, float ty, float tz)
+        {
+            float d = x * tx + y * ty + z * tz;
+            return new Float3(x - tx * d, y - ty * d, z - tz * d);
+        }
+
+        /// <summary>
+        /// Whether a part across the tangent of squared length <paramref name="lengthSquared"/> can be made unit: above 1e-8
+        /// and finite (a NaN fails both comparisons); else <see cref="AxisPerpendicular"/> replaces it.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static bool Usable(float lengthSquared) => lengthSquared > 1e-8f && lengthSquared < float.PositiveInfinity;
 
         /// <summary>
         /// Carries <paramref name="normal"/>[from − 1] (from ≥ 1) along <paramref name="tangent"/> (the same length) ring by ring:
@@ -81,20 +105,15 @@ namespace HookeRope.Geometry
                 float c = fx * tx + fy * ty + fz * tz;
                 if (c > -0.9999f)
                 {
-                    float kx = fy * tz - fz * ty, ky = fz * tx - fx * tz, kz = fx * ty - fy * tx;
-                    float s = (kx * nx + ky * ny + kz * nz) / (1f + c);
-                    float mx = nx * c + (ky * nz - kz * ny) + kx * s;
-                    float my = ny * c + (kz * nx - kx * nz) + ky * s;
-                    float mz = nz * c + (kx * ny - ky * nx) + kz * s;
-                    nx = mx; ny = my; nz = mz;
+                    Float3 m = Rotated(nx, ny, nz, c, fy * tz - fz * ty, fz * tx - fx * tz, fx * ty - fy * tx);
+                    nx = m.X; ny = m.Y; nz = m.Z;
                 }
-                float d = nx * tx + ny * ty + nz * tz;
-                float px = nx - tx * d, py = ny - ty * d, pz = nz - tz * d;
-                float lengthSquared = px * px + py * py + pz * pz;
-                // Perpendicular's test: above 1e-8 and finite (a NaN fails both comparisons)
-                if (!(lengthSquared > 1e-8f && lengthSquared < float.PositiveInfinity)) break;
+                // Perpendicular without its out-of-line fallback, which ends the run
+                Float3 p = Across(nx, ny, nz, tx, ty, tz);
+                float lengthSquared = p.LengthSquared;
+                if (!Usable(lengthSquared)) break;
                 float inverse = 1f / MathF.Sqrt(lengthSquared);
-                nx = px * inverse; ny = py * inverse; nz = pz * inverse;
+                nx = p.X * inverse; ny = p.Y * inverse; nz = p.Z * inverse;
                 normal[i] = new Float3(nx, ny, nz);
                 fx = tx; fy = ty; fz = tz;
             }
@@ -125,21 +144,15 @@ namespace HookeRope.Geometry
                 float c = cs[i];
                 if (c > -0.9999f)
                 {
-                    float kxi = ax[i], kyi = ay[i], kzi = az[i];
-                    float s = (kxi * nx + kyi * ny + kzi * nz) / (1f + c);
-                    float mx = nx * c + (kyi * nz - kzi * ny) + kxi * s;
-                    float my = ny * c + (kzi * nx - kxi * nz) + kyi * s;
-                    float mz = nz * c + (kxi * ny - kyi * nx) + kzi * s;
-                    nx = mx; ny = my; nz = mz;
+                    Float3 m = Rotated(nx, ny, nz, c, ax[i], ay[i], az[i]);
+                    nx = m.X; ny = m.Y; nz = m.Z;
                 }
                 Float3 ti = t[i];
-                float tx = ti.X, ty = ti.Y, tz = ti.Z;
-                float d = nx * tx + ny * ty + nz * tz;
-                float px = nx - tx * d, py = ny - ty * d, pz = nz - tz * d;
-                float lengthSquared = px * px + py * py + pz * pz;
-                if (!(lengthSquared > 1e-8f && lengthSquared < float.PositiveInfinity)) break;
+                Float3 p = Across(nx, ny, nz, ti.X, ti.Y, ti.Z);
+                float lengthSquared = p.LengthSquared;
+                if (!Usable(lengthSquared)) break;
                 float inverse = 1f / MathF.Sqrt(lengthSquared);
-                nx = px * inverse; ny = py * inverse; nz = pz * inverse;
+                nx = p.X * inverse; ny = p.Y * inverse; nz = p.Z * inverse;
                 written[i] = new Float3(nx, ny, nz);
             }
             return from + i;
@@ -157,13 +170,12 @@ namespace HookeRope.Geometry
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
         public static Float3 Perpendicular(float x, float y, float z, float tx, float ty, float tz)
         {
-            float d = x * tx + y * ty + z * tz;
-            float px = x - tx * d, py = y - ty * d, pz = z - tz * d;
-            float lengthSquared = px * px + py * py + pz * pz;
-            if (lengthSquared > 1e-8f && float.IsFinite(lengthSquared))
+            Float3 p = Across(x, y, z, tx, ty, tz);
+            float lengthSquared = p.LengthSquared;
+            if (Usable(lengthSquared))
             {
                 float inverse = 1f / System.MathF.Sqrt(lengthSquared);
-                return new Float3(px * inverse, py * inverse, pz * inverse);
+                return new Float3(p.X * inverse, p.Y * inverse, p.Z * inverse);
             }
             return AxisPerpendicular(tx, ty, tz);
         }

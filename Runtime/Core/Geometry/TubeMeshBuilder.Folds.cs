@@ -277,11 +277,8 @@ namespace HookeRope.Geometry
             const float slope2 = ConeSlope * ConeSlope;
             bool falls = false, anyThin = false;
             int count = last - first + 1;
-            if (VectorPath.Enabled && !ForceFullLimits && count >= Vector<float>.Count && LimitRadiiOnLanes(first, count, radii, out falls))
-            {
-                // nothing thinned and no forward cone limit: the lanes wrote the forward loop's values
-            }
-            else
+            // where the lanes take the piece (nothing thinned, no forward cone limit) they wrote the forward loop's values
+            if (!(VectorPath.Enabled && !ForceFullLimits && count >= Vector<float>.Count && LimitRadiiOnLanes(first, count, radii, out falls)))
             {
                 // the forward loop over spans of exactly the piece's rings, indexed by i = k − first
                 falls = false;
@@ -375,7 +372,7 @@ namespace HookeRope.Geometry
                 for (int j = 0; j < runs; j++)
                 {
                     Vector<float> g = givenRuns[j], cap2 = capRuns[j];
-                    Vector<float> r = Vector.ConditionalSelect(Vector.GreaterThan(g, least) & Vector.LessThan(g, infinity), g, least);
+                    Vector<float> r = ClampedLanes(g, least, infinity);
                     Vector<float> root = Vector.SquareRoot(cap2), floor = foldRadius * r;
                     Vector<float> capped = Vector.ConditionalSelect(Vector.GreaterThanOrEqual(root, floor), root, floor);
                     Vector<float> d = Vector.ConditionalSelect(Vector.GreaterThan(r * r, cap2), capped, r);

@@ -1,6 +1,5 @@
 using System;
 using System.Numerics;
-using System.Runtime.InteropServices;
 using HookeRope.Fracture;
 using HookeRope.Mathematics;
 
@@ -518,9 +517,17 @@ namespace HookeRope.Geometry
         private static float Clamped(float r) => float.IsFinite(r) && r > 1e-6f ? r : 1e-6f;
 
         /// <summary>
+        /// <see cref="Clamped"/> per lane: r where <paramref name="floor"/> (1e-6) &lt; r &lt; <paramref name="infinity"/> (+∞),
+        /// both false for NaN, so exactly where r is finite and above 1e-6; else 1e-6. The caller broadcasts the two constants
+        /// once, outside its loop.
+        /// </summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        private static Vector<float> ClampedLanes(Vector<float> r, Vector<float> floor, Vector<float> infinity) =>
+            Vector.ConditionalSelect(Vector.GreaterThan(r, floor) & Vector.LessThan(r, infinity), r, floor);
+
+        /// <summary>
         /// <see cref="Clamped"/> of each of <paramref name="given"/> into <paramref name="clamped"/> (of the same length):
-        /// with the vector paths on, whole <see cref="Vector{T}"/> blocks first (a lane keeps r where 1e-6 &lt; r &lt; +∞,
-        /// both false for NaN: exactly where r is finite and above 1e-6), the tail by the scalar.
+        /// with the vector paths on, whole <see cref="Vector{T}"/> blocks first (<see cref="ClampedLanes"/>), the tail by the scalar.
         /// </summary>
         private static void ClampRadii(ReadOnlySpan<float> given, Span<float> clamped)
         {
@@ -528,15 +535,11 @@ namespace HookeRope.Geometry
             int done = 0;
             if (VectorPath.Enabled)
             {
-                ReadOnlySpan<Vector<float>> r = MemoryMarshal.Cast<float, Vector<float>>(given);
-                Span<Vector<float>> c = MemoryMarshal.Cast<float, Vector<float>>(clamped).Slice(0, r.Length);
+                ReadOnlySpan<Vector<float>> r = VectorPath.AsLanes(given);
+                Span<Vector<float>> c = VectorPath.AsLanes(clamped).Slice(0, r.Length);
                 var floor = new Vector<float>(1e-6f);
                 var infinity = new Vector<float>(float.PositiveInfinity);
-                for (int p = 0; p < c.Length; p++)
-                {
-                    Vector<float> q = r[p];
-                    c[p] = Vector.ConditionalSelect(Vector.GreaterThan(q, floor) & Vector.LessThan(q, infinity), q, floor);
-                }
+                for (int p = 0; p < c.Length; p++) c[p] = ClampedLanes(r[p], floor, infinity);
                 done = c.Length * Vector<float>.Count;
             }
             for (int i = done; i < clamped.Length; i++) clamped[i] = Clamped(given[i]);

@@ -41,10 +41,22 @@ namespace HookeRope.Solver
         public readonly float[] InverseMass;
         public readonly float[] LoadMass;
         public readonly bool[] Kinematic;
-        // the kinematic particles' indices in ascending order (the first KinematicCount entries; Rope.RefreshKinematic), so
-        // the lane passes fix their kinematic particles up without scanning the flags
-        public readonly int[] KinematicParticles;
-        public int KinematicCount;
+        // the kinematic particles' indices in ascending order (KinematicIndices, kept by ListKinematic), so the lane passes
+        // fix their kinematic particles up without scanning the flags
+        private readonly int[] kinematicParticles;
+        private int kinematicCount;
+
+        /// <summary>The indices of the particles flagged <see cref="Kinematic"/>, ascending, as of the last <see cref="ListKinematic"/>.</summary>
+        public ReadOnlySpan<int> KinematicIndices => new ReadOnlySpan<int>(kinematicParticles, 0, kinematicCount);
+
+        /// <summary>Lists the particles flagged <see cref="Kinematic"/> (in <see cref="KinematicIndices"/>): after every change of the flags.</summary>
+        public void ListKinematic()
+        {
+            int count = 0;
+            for (int i = 0; i < ParticleCount; i++)
+                if (Kinematic[i]) kinematicParticles[count++] = i;
+            kinematicCount = count;
+        }
         public readonly float[] Radius;
 
         // segments
@@ -146,7 +158,7 @@ namespace HookeRope.Solver
             DLowX = new float[n]; DLowY = new float[n]; DLowZ = new float[n];
             VelX = new double[n]; VelY = new double[n]; VelZ = new double[n];
             Mass = new float[n]; InverseMass = new float[n]; LoadMass = new float[n];
-            Kinematic = new bool[n]; Radius = new float[n]; KinematicParticles = new int[n];
+            Kinematic = new bool[n]; Radius = new float[n]; kinematicParticles = new int[n];
             RestLength = new float[s]; Compliance = new float[s]; Lambda = new double[s];
             Tension = new float[s]; PeakTension = new float[s]; MeanTension = new float[s]; Length = new float[s]; Broken = new bool[s];
             DirX = new float[s]; DirY = new float[s]; DirZ = new float[s];

@@ -14,7 +14,7 @@ namespace HookeRope.Solver
         /// A run with a segment the rows treat apart — a vanishing or non-finite span, no mobility and no compliance, or a
         /// force far off its segment while the chain has contacts — goes to <see cref="AssembleRows"/> whole, before anything
         /// of it is stored. Returns the first segment not assembled (the rows take the rest). <paramref name="views"/>: the
-        /// chain's views, built once per host step (<see cref="StepViews"/>) or for this call (<see cref="AssembleLanesOwnViews"/>).
+        /// chain's views, built once per host step (<see cref="StepViews"/>).
         /// </summary>
         private static int AssembleLanes(ChainState c, in StepViews views, double invH2, double gammaAll, bool first, bool tensionOnly)
         {
@@ -67,38 +67,6 @@ namespace HookeRope.Solver
                 assembled.Slice(j, lanes).Fill(true);
             }
             return runs * lanes;
-        }
-
-        /// <summary><see cref="AssembleLanes"/> with views built for this call (no <see cref="StepViews"/> of the chain).</summary>
-        [MethodImpl(MethodImplOptions.NoInlining)]
-        private static int AssembleLanesOwnViews(ChainState c, double invH2, double gammaAll, bool first, bool tensionOnly)
-        {
-            var v = new StepViews(c, true);
-            return AssembleLanes(c, in v, invH2, gammaAll, first, tensionOnly);
-        }
-
-        /// <summary><see cref="MoveParticlesLanes"/> with views built for this call (no <see cref="StepViews"/> of the chain).</summary>
-        [MethodImpl(MethodImplOptions.NoInlining)]
-        private static void MoveParticlesLanesOwnViews(ChainState c)
-        {
-            var v = new StepViews(c, true);
-            MoveParticlesLanes(c, in v);
-        }
-
-        /// <summary><see cref="ApplyLanes"/> with views built for this call (no <see cref="StepViews"/> of the chain).</summary>
-        [MethodImpl(MethodImplOptions.NoInlining)]
-        private static int ApplyLanesOwnViews(ChainState c, bool tensionOnly, double invH2, bool lengthErrors, ref ConvergenceTests tests)
-        {
-            var v = new StepViews(c, true);
-            return ApplyLanes(c, in v, tensionOnly, invH2, lengthErrors, ref tests);
-        }
-
-        /// <summary><see cref="UpdateTensionOnlyLanes"/> with views built for this call (no <see cref="StepViews"/> of the chain).</summary>
-        [MethodImpl(MethodImplOptions.NoInlining)]
-        private static int UpdateTensionOnlyLanesOwnViews(ChainState c, ref bool changed, ref int first)
-        {
-            var v = new StepViews(c, true);
-            return UpdateTensionOnlyLanes(c, in v, ref changed, ref first);
         }
 
         /// <summary>

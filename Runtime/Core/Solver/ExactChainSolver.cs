@@ -78,11 +78,12 @@ namespace HookeRope.Solver
         /// <see cref="NonlinearTolerance"/> (its step went through <see cref="ChainLineSearch"/>), or a released segment ended
         /// stretched by more than that; <paramref name="shortened"/>: the line search took a step below 1;
         /// <paramref name="solves"/>: the linear solves of the iteration's active-set passes (<see cref="SolveActiveSet"/>).
-        /// <paramref name="views"/>: the chain's views for the assembly on lanes, built once per host step (<see cref="StepViews"/>;
-        /// <c>default</c> or another chain's: the kernels build their own).
+        /// <paramref name="views"/>: this chain's lane views of the host step (<see cref="StepViews"/>, built with the vector
+        /// paths on; the lane kernels read them and run only then).
         /// </summary>
         public static bool Iterate(ChainState c, in StepViews views, double h, double beta, bool tensionOnly, bool first, out bool violent, out bool shortened, out int solves)
         {
+            System.Diagnostics.Debug.Assert(!VectorPath.Enabled || views.Chain == c, "the lane kernels read this chain's StepViews");
             double invH2 = 1.0 / (h * h);
             if (first) ClearForces(c);
             Assemble(c, in views, invH2, beta / h, first, tensionOnly);
@@ -151,8 +152,7 @@ namespace HookeRope.Solver
             // back to the rows below for a run with an unusual segment); the rows take the rest
             int from = 0;
             if (VectorPath.Enabled && c.Plasticity == null && c.BrokenCount == 0)
-                from = views.Chain == c ? AssembleLanes(c, in views, invH2, gammaAll, first, tensionOnly)
-                    : AssembleLanesOwnViews(c, invH2, gammaAll, first, tensionOnly);
+                from = AssembleLanes(c, in views, invH2, gammaAll, first, tensionOnly);
             if (from < c.SegmentCount) AssembleRows(c, from, c.SegmentCount, invH2, gammaAll, first, tensionOnly);
         }
 
@@ -316,10 +316,9 @@ namespace HookeRope.Solver
             int s = c.SegmentCount;
             bool changed = false;
             int first = s;
-            // the lanes skip the runs of active segments that all still pull (on the host step's views, or their own for
-            // another chain's); the rows take the rest, in order
-            int from = !VectorPath.Enabled || c.BrokenCount != 0 ? 0 : views.Chain == c ? UpdateTensionOnlyLanes(c, in views, ref changed, ref first)
-                : UpdateTensionOnlyLanesOwnViews(c, ref changed, ref first);
+            // the lanes skip the runs of active segments that all still pull (on the host step's views); the rows take the
+            // rest, in order
+            int from = !VectorPath.Enabled || c.BrokenCount != 0 ? 0 : UpdateTensionOnlyLanes(c, in views, ref changed, ref first);
             if (from < s) UpdateTensionOnlyRows(c, from, s, ref changed, ref first);
             firstChanged = first;
             return changed;
@@ -422,18 +421,13 @@ namespace HookeRope.Solver
             // the particle pass on lanes leaves the length errors to ApplyLanes, which computes them per run of segments
             bool lanes = !contacts && VectorPath.Enabled && c.BrokenCount == 0 && c.SegmentCount > VectorPath.FloatLanes;
             if (contacts) MoveParticles<SegmentForceSystem.WithContacts>(c);
-            else if (lanes)
-            {
-                if (views.Chain == c) MoveParticlesLanes(c, in views);
-                else MoveParticlesLanesOwnViews(c);
-            }
+            else if (lanes) MoveParticlesLanes(c, in views);
             else MoveParticles<SegmentForceSystem.NoContacts>(c);
             int s = c.SegmentCount;
             var tests = new ConvergenceTests { Floor = RoundOffFloor * c.Size };
             // the lanes take the runs of active segments whose tests all pass quietly; the rows the rest, in order (on the
             // chain's views of the host step, StepViews, or views built for the call)
-            int from = !VectorPath.Enabled ? 0 : views.Chain == c ? ApplyLanes(c, in views, tensionOnly, invH2, lanes, ref tests)
-                : ApplyLanesOwnViews(c, tensionOnly, invH2, lanes, ref tests);
+            int from = !VectorPath.Enabled ? 0 : ApplyLanes(c, in views, tensionOnly, invH2, lanes, ref tests);
             if (from < s) ApplyRows(c, from, s, tensionOnly, invH2, ref tests);
             unconverged = tests.Unconverged;
             estimateTooLow = tests.EstimateTooLow;

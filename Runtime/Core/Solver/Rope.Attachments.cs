@@ -326,10 +326,7 @@ namespace HookeRope.Solver
             for (int i = 0; i < chain.ParticleCount; i++) chain.Kinematic[i] = false;
             for (int p = 0; p < pinCount; p++)
                 if (!pinBroken[p] && pinCompliance[p] == 0f) chain.Kinematic[pinParticle[p]] = true;
-            int count = 0;
-            for (int i = 0; i < chain.ParticleCount; i++)
-                if (chain.Kinematic[i]) chain.KinematicParticles[count++] = i;
-            chain.KinematicCount = count;
+            chain.ListKinematic();
             float mu = settings.LinearDensity;
             for (int i = 0; i < chain.ParticleCount; i++) UpdateMass(i, mu);
         }

@@ -258,7 +258,7 @@ namespace HookeRope.Solver
             int from = 0, width = Vector<float>.Count;
             if (VectorPath.Enabled)
             {
-                ReadOnlySpan<int> fixedParticles = ChainState.Exactly(chain.KinematicParticles, chain.KinematicCount);
+                ReadOnlySpan<int> fixedParticles = chain.KinematicIndices;
                 ReadOnlySpan<Vector<float>> vdx = VectorPath.AsLanes(dx), vdy = VectorPath.AsLanes(dy), vdz = VectorPath.AsLanes(dz);
                 ReadOnlySpan<Vector<float>> vlx = VectorPath.AsLanes(lx), vly = VectorPath.AsLanes(ly), vlz = VectorPath.AsLanes(lz);
                 ReadOnlySpan<Vector<float>> vqx = VectorPath.AsLanes(qx), vqy = VectorPath.AsLanes(qy), vqz = VectorPath.AsLanes(qz);
@@ -452,7 +452,7 @@ namespace HookeRope.Solver
         {
             // the particles of the unbroken rigid pins are exactly the kinematic ones (RefreshKinematic): their list, each
             // once (a particle two pins hold took the same mark twice)
-            ReadOnlySpan<int> pinned = ChainState.Exactly(chain.KinematicParticles, chain.KinematicCount);
+            ReadOnlySpan<int> pinned = chain.KinematicIndices;
             for (int q = 0; q < pinned.Length; q++)
             {
                 int i = pinned[q];

@@ -46,7 +46,7 @@ namespace HookeRope.Solver
             lanes = PredictLanes<TSize>(n, chain.Z, chain.PrevZ, chain.VelZ, chain.PrevVelZ, chain.DZ, chain.DLowZ, chain.BaseVelZ, chain.PredictedDZ, invH, e, e * g.Z, c * g.Z, lanes);
             int full = n / width * width;
             // the kinematic particles the lanes took (from the list, not a scan of the flags)
-            ReadOnlySpan<int> fixedParticles = ChainState.Exactly(chain.KinematicParticles, chain.KinematicCount);
+            ReadOnlySpan<int> fixedParticles = chain.KinematicIndices;
             for (int q = 0; q < fixedParticles.Length; q++)
                 if (fixedParticles[q] < full) PredictKinematic(fixedParticles[q], markSolveStart);
             float size = n - full == 1 ? PredictSecondOrderParticle<TSize>(TimeIntegrator.Bdf2, h, g, markSolveStart, full)
@@ -148,7 +148,7 @@ namespace HookeRope.Solver
             }
             int full = dx.Length * width;
             // the kinematic particles the lanes took (from the list, not a scan of the flags)
-            ReadOnlySpan<int> fixedParticles = ChainState.Exactly(chain.KinematicParticles, chain.KinematicCount);
+            ReadOnlySpan<int> fixedParticles = chain.KinematicIndices;
             for (int q = 0; q < fixedParticles.Length; q++)
                 if (fixedParticles[q] < full) KinematicVelocity<TMark>(fixedParticles[q], invH, k);
             if (n - full == 1) SecondOrderVelocityParticle<TMark>(scheme, h, full);

@@ -42,7 +42,8 @@ namespace HookeRope.Solver
             bool secondOrder = integrator != TimeIntegrator.BackwardEuler;
             bool drag = settings.HasDrag, viscousDrag = drag && settings.ViscousDrag > 0f;
             if (drag) PrepareDrag();
-            // the exact solve's assembly views of the chain (lanes), once for every iteration of the step's substeps
+            // the exact solve's lane views of the chain (assembly, particle moves, convergence, tension-only set, blocks), once
+            // for every iteration of the step's substeps
             var views = new ExactChainSolver.StepViews(chain, exact && VectorPath.Enabled);
             for (int k = 0; k < substeps; k++)
             {
@@ -540,7 +541,7 @@ namespace HookeRope.Solver
         {
             double worst = 0.0;
             bool tensionOnly = settings.Tension == TensionModel.TensionOnly;
-            // spans of exactly the loop bound (indexed without bounds checks); ChainState.CurrentRest written out
+            // spans of exactly the loop bound (indexed without bounds checks)
             int s = chain.SegmentCount;
             ReadOnlySpan<bool> broken = ChainState.Exactly(chain.Broken, s);
             ReadOnlySpan<float> restLength = ChainState.Exactly(chain.RestLength, s), length = ChainState.Exactly(chain.Length, s);
@@ -553,7 +554,7 @@ namespace HookeRope.Solver
             {
                 if (broken[j]) continue;
                 double rest = restLength[j];
-                double c = length[j] - (plasticity != null ? plasticity.Rest(j) : restLength[j]);
+                double c = length[j] - chain.CurrentRest(j);
                 double tension = tensions[j];
                 if (tensionOnly && tension <= 0.0 && c <= 0.0) continue; // slack: no constraint to meet
                 double error = Math.Abs(c - compliance[j] * tension) / rest;

@@ -57,15 +57,15 @@ namespace HookeRope.Solver
         /// the active-set passes of one linearisation, so <see cref="Forward{T, TBlocks}"/> reads them. Runs of
         /// <see cref="VectorPath.FloatLanes"/> segments go on lanes (each lane does <see cref="Block"/>'s operations in its
         /// order: the same bits), the tail row by row. A released or invalid row's block is built too and never read.
-        /// <paramref name="views"/>: the chain's lane views of the host step (<see cref="ExactChainSolver.StepViews"/>; another
-        /// chain's or none: the lanes build their own).
+        /// <paramref name="views"/>: the chain's lane views of the host step (<see cref="ExactChainSolver.StepViews"/>; blocks are
+        /// stored only with the vector paths on, when they are built).
         /// </summary>
         public static void PrepareBlocks(ChainState c, in ExactChainSolver.StepViews views)
         {
             if (!StoresBlocks) return;
             int s = c.SegmentCount;
-            int from = views.Chain == c ? PrepareBlockLanes(c, in views) : PrepareBlockLanesOwnViews(c);
-            // no tail (64 segments fill the runs): none of the rows' spans made
+            int from = PrepareBlockLanes(c, in views);
+            // no tail (the segment count a multiple of VectorPath.FloatLanes): none of the rows' spans made
             if (from >= s) return;
             ReadOnlySpan<float> wA = ChainState.Exactly(c.InverseMass, s), wB = ChainState.Shifted(c.InverseMass, s);
             ReadOnlySpan<float> dirX = ChainState.Exactly(c.DirX, s), dirY = ChainState.Exactly(c.DirY, s), dirZ = ChainState.Exactly(c.DirZ, s);
@@ -106,14 +106,6 @@ namespace HookeRope.Solver
                     out bxx[h + 1], out bxy[h + 1], out bxz[h + 1], out byy[h + 1], out byz[h + 1], out bzz[h + 1]);
             }
             return runs * lanes;
-        }
-
-        /// <summary><see cref="PrepareBlockLanes"/> with views built for this call (no <see cref="ExactChainSolver.StepViews"/> of the chain).</summary>
-        [MethodImpl(MethodImplOptions.NoInlining)]
-        private static int PrepareBlockLanesOwnViews(ChainState c)
-        {
-            var v = new ExactChainSolver.StepViews(c, true);
-            return PrepareBlockLanes(c, in v);
         }
 
         /// <summary><see cref="Block"/> on <see cref="VectorPath.DoubleLanes"/> lanes, operation for operation.</summary>

@@ -97,28 +97,12 @@ namespace HookeRope.Tests.Core.Geometry
             for (int j = 0; j < segments; j++) radii[j] = j % 5 == 3 ? 0.045f : 0.01f;
             var broken = new bool[segments];
             var settings = new TubeMeshSettings { RadialSegments = 16, RingsPerSegment = 4, CapEnds = true };
-            var scalar = new TubeMeshBuilder(settings, segments);
-            var lanes = new TubeMeshBuilder(settings, segments);
-            var scalarVertices = new TubeVertex[scalar.GetVertexCount(broken)];
-            var lanesVertices = new TubeVertex[lanes.GetVertexCount(broken)];
-            var scalarIndices = new int[scalar.GetIndexCount(broken)];
-            var lanesIndices = new int[lanes.GetIndexCount(broken)];
-            bool enabled = VectorPath.Enabled;
-            TubeMeshUpdate full, fast;
-            try
-            {
-                VectorPath.Enabled = false;
-                full = scalar.Build(shape.X, shape.Y, shape.Z, shape.Rest, radii, broken, scalarVertices, scalarIndices);
-                VectorPath.Enabled = true;
-                fast = lanes.Build(shape.X, shape.Y, shape.Z, shape.Rest, radii, broken, lanesVertices, lanesIndices);
-            }
-            finally
-            {
-                VectorPath.Enabled = enabled;
-            }
+            var both = new BuiltBothWays(new TubeMeshBuilder(settings, segments), new TubeMeshBuilder(settings, segments), broken,
+                (builder, vertices, indices) => builder.Build(shape.X, shape.Y, shape.Z, shape.Rest, radii, broken, vertices, indices));
+            TubeMeshUpdate full = both.Scalar, fast = both.Lanes;
             Assert.That(fast.VertexCount, Is.EqualTo(full.VertexCount), "vertices");
-            Assert.That(MeshChecks.DifferingVertices(scalarVertices, lanesVertices, full.VertexCount), Is.EqualTo(0), "vertices with other bits");
-            for (int i = 0; i < full.IndexCount; i++) Assert.That(lanesIndices[i], Is.EqualTo(scalarIndices[i]), "index " + i);
+            Assert.That(MeshChecks.DifferingVertices(both.ScalarVertices, both.LanesVertices, full.VertexCount), Is.EqualTo(0), "vertices with other bits");
+            for (int i = 0; i < full.IndexCount; i++) Assert.That(both.LanesIndices[i], Is.EqualTo(both.ScalarIndices[i]), "index " + i);
             Assert.That(BoundsBits(fast), Is.EqualTo(BoundsBits(full)), "bounds");
 
             static string BoundsBits(TubeMeshUpdate u) => string.Join(" ", BitConverter.SingleToInt32Bits(u.BoundsMin.X),
@@ -155,25 +139,42 @@ namespace HookeRope.Tests.Core.Geometry
             for (int k = 0; k < radii.Length; k++) radii[k] = k % 3 == 1 ? odd[(k / 3) % odd.Length] : 0.01f + 0.0001f * k;
             // the last rings (the scalar tail at every vector width) odd too
             for (int k = 1; k <= 4; k++) radii[radii.Length - k] = odd[k];
-            var scalarVertices = new TubeVertex[scalar.GetVertexCount(broken)];
-            var lanesVertices = new TubeVertex[lanes.GetVertexCount(broken)];
-            var scalarIndices = new int[scalar.GetIndexCount(broken)];
-            var lanesIndices = new int[lanes.GetIndexCount(broken)];
-            bool enabled = VectorPath.Enabled;
-            TubeMeshUpdate full, fast;
-            try
+            var both = new BuiltBothWays(scalar, lanes, broken,
+                (builder, vertices, indices) => builder.BuildWithRingRadii(shape.X, shape.Y, shape.Z, shape.Rest, radii, broken, vertices, indices));
+            Assert.That(both.Lanes.VertexCount, Is.EqualTo(both.Scalar.VertexCount), "vertices");
+            Assert.That(MeshChecks.DifferingVertices(both.ScalarVertices, both.LanesVertices, both.Scalar.VertexCount), Is.EqualTo(0), "vertices with other bits");
+        }
+
+        /// <summary>
+        /// One mesh built by two builders into buffers of their own: <see cref="Scalar"/> with the vector paths off, then
+        /// <see cref="Lanes"/> with them on (the switch restored afterwards), for tests that compare the two bit for bit.
+        /// </summary>
+        private sealed class BuiltBothWays
+        {
+            public readonly TubeMeshUpdate Scalar, Lanes;
+            public readonly TubeVertex[] ScalarVertices, LanesVertices;
+            public readonly int[] ScalarIndices, LanesIndices;
+
+            public BuiltBothWays(TubeMeshBuilder scalar, TubeMeshBuilder lanes, bool[] broken,
+                Func<TubeMeshBuilder, TubeVertex[], int[], TubeMeshUpdate> build)
             {
-                VectorPath.Enabled = false;
-                full = scalar.BuildWithRingRadii(shape.X, shape.Y, shape.Z, shape.Rest, radii, broken, scalarVertices, scalarIndices);
-                VectorPath.Enabled = true;
-                fast = lanes.BuildWithRingRadii(shape.X, shape.Y, shape.Z, shape.Rest, radii, broken, lanesVertices, lanesIndices);
+                ScalarVertices = new TubeVertex[scalar.GetVertexCount(broken)];
+                LanesVertices = new TubeVertex[lanes.GetVertexCount(broken)];
+                ScalarIndices = new int[scalar.GetIndexCount(broken)];
+                LanesIndices = new int[lanes.GetIndexCount(broken)];
+                bool enabled = VectorPath.Enabled;
+                try
+                {
+                    VectorPath.Enabled = false;
+                    Scalar = build(scalar, ScalarVertices, ScalarIndices);
+                    VectorPath.Enabled = true;
+                    Lanes = build(lanes, LanesVertices, LanesIndices);
+                }
+                finally
+                {
+                    VectorPath.Enabled = enabled;
+                }
             }
-            finally
-            {
-                VectorPath.Enabled = enabled;
-            }
-            Assert.That(fast.VertexCount, Is.EqualTo(full.VertexCount), "vertices");
-            Assert.That(MeshChecks.DifferingVertices(scalarVertices, lanesVertices, full.VertexCount), Is.EqualTo(0), "vertices with other bits");
         }
 
         /// <summary>The goal lanyard (64 segments) dropped from straight, then whipped by one pin: 150 frames.</summary>
