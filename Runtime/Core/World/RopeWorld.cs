@@ -28,7 +28,7 @@ namespace HookeRope.World
         private const int PhaseStep = 1, PhaseMesh = 2;
 
         private readonly WorkerPool pool;
-        private readonly ManualResetEventSlim passDone = new ManualResetEventSlim(false);
+        private readonly WakeSignal passDone = new WakeSignal();
         private int[] bounds = new int[5];
         private readonly Exception[] failure;
         private readonly int[] failureIndex;
@@ -285,7 +285,6 @@ namespace HookeRope.World
             CheckIdle();
             if (pool.IsDisposed) return;
             pool.Dispose();
-            passDone.Dispose();
         }
 
         private void RunPass(int passPhase, float hostDeltaTime)

@@ -5,7 +5,7 @@ namespace HookeRope.World
 {
     /// <summary>
     /// A fixed set of long-lived worker threads that join passes of work: <see cref="Wake"/> sets one
-    /// <see cref="ManualResetEventSlim"/> per pool thread, and each woken thread runs the work once with its worker
+    /// <see cref="WakeSignal"/> per pool thread, and each woken thread runs the work once with its worker
     /// index (1 … <see cref="WorkerCount"/> − 1); the caller runs worker 0 itself. The pool does not wait for its
     /// threads: the work decides what a late thread still finds to do (<see cref="RopeWorld"/> tags its chunks with the
     /// pass, so a thread woken after a pass ended finds nothing, or joins the next pass) and signals the pass's end
@@ -17,7 +17,7 @@ namespace HookeRope.World
     {
         private readonly Action<int> work;
         private readonly Thread[] threads;
-        private readonly ManualResetEventSlim[] start;
+        private readonly WakeSignal[] start;
         private readonly Exception[] escaped;
         private volatile bool stopping;
         private bool disposed;
@@ -33,10 +33,10 @@ namespace HookeRope.World
             WorkerCount = workerCount;
             escaped = new Exception[workerCount];
             threads = new Thread[workerCount - 1];
-            start = new ManualResetEventSlim[workerCount - 1];
+            start = new WakeSignal[workerCount - 1];
             for (int i = 0; i < threads.Length; i++)
             {
-                start[i] = new ManualResetEventSlim(false);
+                start[i] = new WakeSignal();
                 threads[i] = new Thread(Loop) { IsBackground = true, Name = name + " " + (i + 1) };
             }
             for (int i = 0; i < threads.Length; i++) threads[i].Start(i + 1);
@@ -82,7 +82,7 @@ namespace HookeRope.World
             }
         }
 
-        /// <summary>Stops and joins every pool thread (each finishes its current run first) and releases the events. Idempotent.</summary>
+        /// <summary>Stops and joins every pool thread (each finishes its current run first) Idempotent.</summary>
         public void Dispose()
         {
             if (disposed) return;
@@ -90,7 +90,6 @@ namespace HookeRope.World
             stopping = true;
             for (int i = 0; i < start.Length; i++) start[i].Set();
             for (int i = 0; i < threads.Length; i++) threads[i].Join();
-            for (int i = 0; i < start.Length; i++) start[i].Dispose();
         }
 
         private void RunWorker(int worker)
@@ -108,7 +107,7 @@ namespace HookeRope.World
         private void Loop(object state)
         {
             int worker = (int)state;
-            ManualResetEventSlim go = start[worker - 1];
+            WakeSignal go = start[worker - 1];
             while (true)
             {
                 go.Wait();
