@@ -89,6 +89,43 @@ namespace HookeRope.Solver
             return false;
         }
 
+        /// <summary>
+        /// Before an impact substep runs again as backward Euler (<see cref="NewImpact"/>): takes back what the failed BDF2
+        /// solve handed on to the solve after it, so that the re-run starts as the substep did: the friction states the
+        /// failed solve's last friction decision gave its contacts (<see cref="ChainContacts.DecideFriction"/>; no contact
+        /// sticks or slides as a BDF2 substep starts, since friction in contact makes the substep backward Euler,
+        /// <see cref="ChainState.HeldWithFriction"/>, and the re-run's detection would take them over), the contacts' normal
+        /// scale (<paramref name="normalScale"/>, N·s², the value at the substep's start) and the plastic segments' branches
+        /// (<see cref="SegmentPlasticity.RestoreBranches"/>). Before, the re-run's contacts started sticking with the damping ζ
+        /// of the failed solve's violent normal impulses.
+        /// </summary>
+        private void ForgetFailedSolve(double normalScale)
+        {
+            for (int k = 0; k < chain.ContactCount; k++)
+            {
+                int i = chain.ContactList[k];
+                chain.ContactSticking[i] = false;
+                chain.ContactSliding[i] = false;
+            }
+            chain.ContactNormalScale = normalScale;
+            chain.HeldWithFriction = false;
+            chain.Plasticity?.RestoreBranches();
+        }
+
+        /// <summary>When an impact substep runs again as backward Euler (tests only: the re-run must not depend on the failed solve).</summary>
+        internal enum ImpactRerun
+        {
+            /// <summary>The rule: when its BDF2 solve ends violent and unconverged.</summary>
+            WhenUnconverged,
+            /// <summary>After every BDF2 solve of an impact substep, converged or not.</summary>
+            Always,
+            /// <summary>At every impact substep, without its BDF2 solve (the re-run alone: what <see cref="Always"/> must give to the bit).</summary>
+            WithoutFirstSolve,
+        }
+
+        /// <summary>Tests only: when an impact substep runs again (<see cref="ImpactRerun"/>; the rule by default).</summary>
+        internal ImpactRerun ImpactRerunProbe { get; set; }
+
         /// <summary>The scheme substep h (s) runs: the chosen one, or backward Euler while the history does not fit it.</summary>
         private TimeIntegrator SubstepScheme(TimeIntegrator chosen, double h)
         {

@@ -59,13 +59,18 @@ namespace HookeRope.Solver
                 if (hasColliders) colliders.PrepareSubstep(t, hostDeltaTime);
                 PredictAndCollide(t, secondOrder, scheme, h, hd, hEff, g, drag);
                 bool impact = scheme == TimeIntegrator.Bdf2 && hasColliders && NewImpact();
+                // what the solve hands on to the solve after it, as the substep starts (a re-run below starts from it again)
+                double normalScale = chain.ContactNormalScale;
+                if (impact) chain.Plasticity?.KeepBranches();
                 int unconvergedBefore = reportUnconverged;
-                bool violentSolve = SolveWithViscousDrag(in views, h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder, viscousDrag);
-                if (impact && violentSolve && reportUnconverged > unconvergedBefore)
+                bool violentSolve = impact && ImpactRerunProbe == ImpactRerun.WithoutFirstSolve
+                    || SolveWithViscousDrag(in views, h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder, viscousDrag);
+                if (impact && (violentSolve && reportUnconverged > unconvergedBefore || ImpactRerunProbe != ImpactRerun.WhenUnconverged))
                 {
                     // an impact left the BDF2 solve violent and unconverged: the substep runs again as backward Euler from
                     // its start (x_n and v_n are not written before the velocities; see NewImpact); the report counts both solves
                     scheme = TimeIntegrator.BackwardEuler;
+                    ForgetFailedSolve(normalScale);
                     hEff = BeginSubstep(scheme, hd);
                     PredictAndCollide(t, secondOrder, scheme, h, hd, hEff, g, drag);
                     violentSolve = SolveWithViscousDrag(in views, h, hd, hEff, t, beta, tensionOnly, exact, iterations, compliantPins > 0, secondOrder, viscousDrag);

@@ -40,6 +40,7 @@ namespace HookeRope.Solver
         private readonly double[] plasticRest;
         private readonly double[] reference;
         private readonly bool[] yielding;
+        private readonly bool[] keptYielding;
         private double axialStiffness;
         private bool plastic;
         private double yieldForce;
@@ -57,7 +58,14 @@ namespace HookeRope.Solver
             plasticRest = new double[segmentCount];
             reference = new double[segmentCount];
             yielding = new bool[segmentCount];
+            keptYielding = new bool[segmentCount];
         }
+
+        /// <summary>Keeps every segment's branch (yielding or elastic) for <see cref="RestoreBranches"/>: the start of a substep that may run again.</summary>
+        public void KeepBranches() => Array.Copy(yielding, keptYielding, yielding.Length);
+
+        /// <summary>Puts back the branches of the last <see cref="KeepBranches"/> (the solve changes them as it iterates, <see cref="UpdateBranches"/>).</summary>
+        public void RestoreBranches() => Array.Copy(keptYielding, yielding, yielding.Length);
 
         /// <summary>Plastic work ∫T dL_p (J) since the state was created: energy the rope turned into permanent set (and the absorber tore).</summary>
         public double PlasticWork;
