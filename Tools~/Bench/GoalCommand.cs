@@ -47,6 +47,10 @@ namespace HookeRope.Bench
             Console.WriteLine("idle = per frame, summed over the workers, the time a worker was not on its share (wake-up + waiting for the others); wake = the pool thread's start lag");
             Console.WriteLine();
             GoalBench.WarmUp(quick ? 1.0 : 3.0);
+            double fill = MachineProbe.FillMilliseconds(), chase = MachineProbe.ChaseNanoseconds();
+            Console.WriteLine(string.Format(c, "machine: one core writes a goal frame's {0:F1} MB of tube vertices in {1:F2} ms at best ({2:F1} GB/s; the mesh's floor on one core), " +
+                "a dependent load in {3} MiB takes {4:F0} ns", MachineProbe.GoalVertexBytes / 1e6, fill, MachineProbe.GoalVertexBytes / (fill * 1e6), MachineProbe.ChaseBytes >> 20, chase));
+            Console.WriteLine();
             const string format = "{0,-20} {1,5} {2,8} {3,8} {4,5} {5,7} {6,4} {7,9} {8,8} {9,8} {10,8} {11,8} {12,8} {13,7} {14,7} {15,8} {16,10} {17,10} {18,6}  {19}";
             string header = string.Format(c, format, "row", "ropes", "segments", "substeps", "sides", "workers", "reps", "ms/frame", "min ms", "best ms",
                 "cpu ms", "step ms", "mesh ms", "idle ms", "wake ms", "ns/unit", "instr/unit", "verts/rope", "load", "against baseline");
@@ -60,6 +64,8 @@ namespace HookeRope.Bench
                 bool goal = id.StartsWith("goal", StringComparison.Ordinal);
                 var row = GoalBench.Measure(id, ropes, segments, workers, goal ? (quick ? 1.0 : 4.0) : (quick ? 0.3 : 2.0), goal || !quick ? 3 : 1);
                 counts?.ApplyTo(row);
+                row.FillProbeMs = fill;
+                row.ChaseProbeNs = chase;
                 string verdict = Baseline.Compare(row, stored);
                 if (verdict.StartsWith("REGRESSION", StringComparison.Ordinal)) regressions++;
                 rows.Add(row);
@@ -80,6 +86,7 @@ namespace HookeRope.Bench
                 Console.WriteLine(string.Format(c, "instructions ({0}, 1 worker, counted at {1}): {2:F0} per frame = step {3:F0} per segment-substep + mesh {4:F1} per vertex; {5:F0} per segment-substep in all",
                     one.InstructionSource, counts.Commit, one.InstructionsPerFrame, one.StepInstructionsPerUnit, one.MeshInstructionsPerVertex, one.InstructionsPerUnit));
             Console.WriteLine("wall-clock rows are medians on whatever load the machine has (see 'load'); compare instruction counts for ratios.");
+            Console.WriteLine(MachineAgainstBaseline(stored, fill, chase));
             if (match == null) KernelFigures.Print(root, Path.Combine(Path.GetDirectoryName(Path.GetFullPath(countsPath)), "kernel-count.txt"), quick, one);
             if (save)
             {
@@ -88,6 +95,19 @@ namespace HookeRope.Bench
             }
             if (regressions > 0) Console.WriteLine(regressions + " row(s) regressed by more than 10 %.");
             return regressions > 0 ? 1 : 0;
+        }
+
+        /// <summary>The machine probes now against the baseline's (from its first row that has them): a slower machine, not slower code, when a wall-clock or CPU "regression" comes with them.</summary>
+        private static string MachineAgainstBaseline(Dictionary<string, GoalRow> stored, double fill, double chase)
+        {
+            foreach (var row in stored.Values)
+            {
+                if (!(row.FillProbeMs > 0 && row.ChaseProbeNs > 0)) continue;
+                return string.Format(CultureInfo.InvariantCulture,
+                    "machine against the baseline's: vertex fill {0:F2} ms against {1:F2} ms ({2:F2}x), dependent load {3:F0} ns against {4:F0} ns ({5:F2}x); " +
+                    "CPU-time verdicts above are of the code only where these are near 1x", fill, row.FillProbeMs, fill / row.FillProbeMs, chase, row.ChaseProbeNs, chase / row.ChaseProbeNs);
+            }
+            return "machine against the baseline's: the baseline has no machine probe (saved before it existed; --save records one), so a CPU-time verdict above may be the machine's";
         }
 
         /// <summary>The counts in <paramref name="path"/> when they were made of the code in <paramref name="root"/> as it is now, else null (saying why).</summary>

@@ -58,6 +58,10 @@ namespace HookeRope.Bench
         /// window is where the lanyards' budget has settled, <see cref="GoalScene.WarmUpFrames"/>), or 0 when not recorded.
         /// </summary>
         public double VerticesPerRope { get; set; }
+        /// <summary>The machine's floor under the mesh while measured: one core's best time to write one goal frame's vertex bytes (<see cref="MachineProbe.FillMilliseconds"/>), ms; 0 when not recorded.</summary>
+        public double FillProbeMs { get; set; }
+        /// <summary>The machine's dependent-load latency in 4 MiB while measured (<see cref="MachineProbe.ChaseNanoseconds"/>), ns; 0 when not recorded.</summary>
+        public double ChaseProbeNs { get; set; }
         /// <summary>1-minute load average while measured.</summary>
         public double LoadAverage { get; set; }
 
