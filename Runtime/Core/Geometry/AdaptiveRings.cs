@@ -319,28 +319,19 @@ namespace HookeRope.Geometry
             }
             int left = total;
             int sum = 0;
-            if (!withZone)
+            // spans of exactly the piece's segments (index i = j − a); a neck station's segment is held at its stations' count,
+            // every other one gets its rounded need
+            ReadOnlySpan<float> needs = new ReadOnlySpan<float>(need, a, b - a);
+            Span<int> dealt = new Span<int>(counts, a, needs.Length).Slice(0, needs.Length);
+            Span<bool> held = new Span<bool>(forced, a, needs.Length).Slice(0, needs.Length);
+            for (int i = 0; i < needs.Length; i++)
             {
-                // no neck stations: every segment free, its count its rounded need (spans of exactly the piece's segments)
-                ReadOnlySpan<float> needs = new ReadOnlySpan<float>(need, a, b - a);
-                Span<int> dealt = new Span<int>(counts, a, needs.Length).Slice(0, needs.Length);
-                new Span<bool>(forced, a, needs.Length).Clear();
-                for (int i = 0; i < needs.Length; i++)
-                {
-                    int count = Rounded(needs[i]);
-                    dealt[i] = count;
-                    sum += count;
-                }
-                if (sum > left) Shrink(a, b, left);
-                Spread(a, b, left);
-                return;
-            }
-            for (int j = a; j < b; j++)
-            {
-                forced[j] = withZone && zone.RingsIn(j) > 1;
-                if (forced[j]) { counts[j] = zone.RingsIn(j); left -= counts[j]; continue; }
-                counts[j] = Rounded(need[j]);
-                sum += counts[j];
+                int stations = withZone ? zone.RingsIn(a + i) : 0;
+                held[i] = stations > 1;
+                if (held[i]) { dealt[i] = stations; left -= stations; continue; }
+                int count = Rounded(needs[i]);
+                dealt[i] = count;
+                sum += count;
             }
             if (sum > left) Shrink(a, b, left);
             Spread(a, b, left);
