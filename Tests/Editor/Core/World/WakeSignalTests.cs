@@ -24,9 +24,10 @@ namespace HookeRope.Tests.Core.World
             });
             waiter.Start();
             blocking.Wait();
-            // long past the waiter's spin (microseconds): it is blocked on the signal's lock by now
-            Thread.Sleep(50);
-            Assert.That(waiter.ThreadState & ThreadState.WaitSleepJoin, Is.EqualTo(ThreadState.WaitSleepJoin), "the waiter is blocked");
+            // the waiter's spin takes microseconds; on a loaded machine it may be scheduled late, so wait (up to 5 s) until it
+            // is blocked on the signal's lock (nothing else in its wait sleeps or blocks)
+            bool blocked = SpinWait.SpinUntil(() => (waiter.ThreadState & ThreadState.WaitSleepJoin) != 0, 5000);
+            Assert.That(blocked, Is.True, "the waiter is blocked");
             signal.Set();
             Assert.That(waiter.Join(5000), Is.True, "the waiter woke");
             return (bytes, returned);
