@@ -551,7 +551,7 @@ namespace HookeRope.Geometry
         /// distance is above 1e-12, else +0; below −10 or NaN −10; above 10 10), fold tips not looked at. Returns the
         /// first ring not written.
         /// </summary>
-        private static int InteriorSlopesOnLanes(ReadOnlySpan<float> r, ReadOnlySpan<float> distance, Span<float> slope)
+        internal static int InteriorSlopesOnLanes(ReadOnlySpan<float> r, ReadOnlySpan<float> distance, Span<float> slope)
         {
             var small = new Vector<float>(1e-12f);
             var low = new Vector<float>(-MaxSlope);
@@ -573,7 +573,7 @@ namespace HookeRope.Geometry
 
         /// <summary>dr/ds between two rings <paramref name="distance"/> apart, clamped to ±10 (NaN counts as −10).</summary>
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
-        private static float Slope(float ahead, float behind, float distance)
+        internal static float Slope(float ahead, float behind, float distance)
         {
             float slope = distance > 1e-12f ? (ahead - behind) / distance : 0f;
             if (!(slope >= -MaxSlope)) slope = -MaxSlope;

@@ -769,9 +769,9 @@ namespace HookeRope.Geometry
                 int slot = spareFirst + q;
                 int behind = q > 0 ? slot - 1 : joint, ahead = q < count - 1 ? slot + 1 : slot;
                 float distance = (centers[ahead] - centers[behind]).Length;
-                float slope = distance > 1e-12f ? (ringRadii[ahead] - ringRadii[behind]) / distance : 0f;
-                if (upper) slope = -slope;
-                slopes[slot] = slope < -MaxSlope ? -MaxSlope : (slope > MaxSlope ? MaxSlope : slope);
+                // the ring formula, clamped and then turned for the upper half (the clamp is symmetric)
+                float slope = Slope(ringRadii[ahead], ringRadii[behind], distance);
+                slopes[slot] = upper ? -slope : slope;
             }
             return count;
         }
