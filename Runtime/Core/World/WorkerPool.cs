@@ -82,7 +82,7 @@ namespace HookeRope.World
             }
         }
 
-        /// <summary>Stops and joins every pool thread (each finishes its current run first) Idempotent.</summary>
+        /// <summary>Stops and joins every pool thread (each finishes its current run first). Idempotent.</summary>
         public void Dispose()
         {
             if (disposed) return;
