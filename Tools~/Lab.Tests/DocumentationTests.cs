@@ -2,11 +2,15 @@ using System.Collections.Generic;
 using System.IO;
 using System.Text.RegularExpressions;
 using HookeRope.Lab.Scenarios;
+using HookeRope.Lab.Stability;
 using NUnit.Framework;
 
 namespace HookeRope.Lab.Tests
 {
-    /// <summary>Documentation~/lab.md documents every field the scenario parser accepts and every built-in scenario.</summary>
+    /// <summary>
+    /// Documentation~/lab.md documents every field the scenario parser accepts and every built-in scenario; the committed
+    /// full grid report (Documentation~/stability-grid.md) explains its limits as the grid does now.
+    /// </summary>
     [TestFixture]
     public sealed class DocumentationTests
     {
@@ -35,6 +39,18 @@ namespace HookeRope.Lab.Tests
             foreach (var field in fields)
                 if (!doc.Contains("`" + field + "`")) missing.Add(field);
             Assert.That(missing, Is.Empty, "fields accepted by ScenarioParser but not documented in lab.md");
+        }
+
+        [Test]
+        public void TheCommittedGridReportExplainsEachLimitAsTheGridDoesNow()
+        {
+            // `stability --full` writes the report; the full grid passes every case (GridCommand exits 1 otherwise), so
+            // each limit's line counts 0 cases. A changed explanation in GridLimits needs the report written again.
+            string report = File.ReadAllText(Path.Combine(PackageRoot(), "Documentation~", "stability-grid.md"));
+            foreach (string limit in GridLimits.All)
+                Assert.That(report, Does.Contain(GridLimits.ReportLine(limit, 0) + "\n"),
+                    GridLimits.Name(limit) + ": Documentation~/stability-grid.md is older than GridLimits (run `stability --full` and copy its stability-grid.md)");
+            Assert.That(report, Does.Contain("## Failures (every failing case; the limit column names the documented limit it falls under)\n\nNone.\n"));
         }
 
         [Test]

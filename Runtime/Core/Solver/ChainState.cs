@@ -109,7 +109,7 @@ namespace HookeRope.Solver
         public float[] ContactNX, ContactNY, ContactNZ; // outward unit surface normal at the particle
         public float[] ContactGap;                      // m, distance − radius (≥ 0) when the contact was detected
         public float[] ContactLoad;                     // m, normal correction the contact took this substep (friction limit)
-        public bool[] ContactResting;                   // ContactLoad > 0 at the end of the substep before: pushed out then too (Rope.ClampIntoSurface; BDF2 runs with colliders)
+        public bool[] ContactResting;                   // ContactLoad > 0 at the end of the substep before: pushed out then too (Rope.RemoveVelocityIntoSurface; BDF2 runs with colliders)
         public bool[] ContactNear;                      // the particle was in the contact set at the end of the substep before (Rope.NewImpact; BDF2 runs with colliders)
         public int[] ContactCollider;                   // collider index, −1 = no contact
         public bool[] ContactActive;                    // contact used by the current chain solve (tangent-plane mass)

@@ -460,7 +460,7 @@ namespace HookeRope.Solver
         /// Every substep of a second-order run with colliders records which particles the passes pushed (the next one's
         /// <see cref="ChainState.ContactResting"/>).
         /// </summary>
-        private void ClampIntoSurface(double invH, bool bdf2)
+        private void RemoveVelocityIntoSurface(double invH, bool bdf2)
         {
             bool[] resting = chain.ContactResting;
             float[] load = chain.ContactLoad;
@@ -504,7 +504,7 @@ namespace HookeRope.Solver
         /// x = x_prev + d (h s); violent: the next substep restarts with backward Euler. A non-finite result falls back to the last good position at rest.
         /// <para>With colliders (<paramref name="contacts"/>), a BDF2 substep then takes from each particle the collision passes
         /// moved (push-out) the part of its velocity that points into its contact's surface, relative to the surface
-        /// (<see cref="ClampIntoSurface"/>).</para>
+        /// (<see cref="RemoveVelocityIntoSurface"/>).</para>
         /// </summary>
         private void UpdateVelocitiesSecondOrder(TimeIntegrator scheme, double h, bool violent, bool contacts)
         {
@@ -518,7 +518,7 @@ namespace HookeRope.Solver
             // a violent substep (see ViolentStrain) restarts the history: the next substep is backward Euler
             historyValid = !violent;
             historyStep = h;
-            if (contacts) ClampIntoSurface(1.0 / h, scheme == TimeIntegrator.Bdf2);
+            if (contacts) RemoveVelocityIntoSurface(1.0 / h, scheme == TimeIntegrator.Bdf2);
         }
     }
 }

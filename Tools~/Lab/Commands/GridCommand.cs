@@ -17,9 +17,6 @@ namespace HookeRope.Lab.Commands
     /// </summary>
     public static class GridCommand
     {
-        /// <summary>A limit's name: the text before its colon.</summary>
-        private static string Short(string limit) => limit.Substring(0, limit.IndexOf(':'));
-
         /// <summary>"n (p %)": a count and its share of the substeps.</summary>
         private static string Share(long n, long substeps) =>
             string.Format(CultureInfo.InvariantCulture, "{0} ({1:G2} %)", n, 100.0 * n / System.Math.Max(substeps, 1));
@@ -99,12 +96,11 @@ namespace HookeRope.Lab.Commands
                 }
             console.Write(summary);
             md.Append("\n## Documented domain limits\n\n");
-            foreach (string limit in new[] { GridLimits.Friction, GridLimits.Rod, GridLimits.Push })
+            foreach (string limit in GridLimits.All)
             {
                 int n = 0;
                 foreach (var o in outcomes) if (o.Limit == limit) n++;
-                md.Append("- **").Append(Short(limit)).Append("** (").Append(n.ToString(CultureInfo.InvariantCulture)).Append(" cases): ")
-                    .Append(limit.Substring(limit.IndexOf(':') + 2)).Append(".\n");
+                md.Append(GridLimits.ReportLine(limit, n)).Append('\n');
             }
             md.Append("\n## Failures (every failing case; the limit column names the documented limit it falls under)\n\n");
             if (failedAll + limitedAll == 0) md.Append("None.\n");
@@ -118,7 +114,7 @@ namespace HookeRope.Lab.Commands
                 foreach (var o in outcomes)
                 {
                     if (!o.Failed) continue;
-                    string limit = o.Limit == null ? "none: undocumented failure" : Short(o.Limit);
+                    string limit = o.Limit == null ? "none: undocumented failure" : GridLimits.Name(o.Limit);
                     failures.AddRow(Markup.Escape(o.Case.ToString()), Markup.Escape(o.Reason), Markup.Escape(limit));
                     md.Append("| ").Append(o.Case).Append(" | ").Append(o.Reason).Append(" | ").Append(limit).Append(" |\n");
                 }

@@ -52,7 +52,21 @@ namespace HookeRope.Lab.Stability
             "motion), passes since a BDF2 substep whose impact left the solve violent and unconverged runs again as backward " +
             "Euler (Rope.NewImpact); solving again after the push was tried and failed more cases (the 2-segment ropes resting on the sphere that did not come quite to rest, 8.1e-7 – 9.0e-7 J, read " +
             "BDF2's steady velocity h·g_n/2 into the surface at a pushed particle that stood still, and now come to rest: " +
-            "Rope.ClampIntoSurface)";
+            "Rope.RemoveVelocityIntoSurface)";
+
+        /// <summary>Every documented limit, in the order the grid report lists them.</summary>
+        public static readonly string[] All = { Friction, Rod, Push };
+
+        /// <summary>A limit's name, the text before its colon (e.g. "push after the solve").</summary>
+        public static string Name(string limit) => limit.Substring(0, limit.IndexOf(':'));
+
+        /// <summary>
+        /// The report's line of <paramref name="limit"/> with <paramref name="cases"/> cases under it:
+        /// "- **name** (n cases): explanation." (stability-grid.md, "Documented domain limits").
+        /// </summary>
+        public static string ReportLine(string limit, int cases) =>
+            "- **" + Name(limit) + "** (" + cases.ToString(System.Globalization.CultureInfo.InvariantCulture) + " cases): " +
+            limit.Substring(limit.IndexOf(':') + 2) + ".";
 
         /// <summary>
         /// The limit a failing case falls under, or null (an undocumented failure, or a case that passed). Non-finite

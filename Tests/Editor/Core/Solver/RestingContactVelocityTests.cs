@@ -10,7 +10,7 @@ namespace HookeRope.Tests.Solver
     /// enters BDF2's velocity as a backward-Euler kick c/h, and with BDF2's history v = (4v_n − v_{n−1})/3 + … the velocity of a
     /// particle held still on a surface converged to h·g_n/2 into it (g_n: its acceleration onto the surface) while its position
     /// stood still: a velocity with no motion, which never decays. The velocity pass now takes the part into the surface from a
-    /// particle the passes pushed out in two substeps running, with its history (Rope.ClampIntoSurface).
+    /// particle the passes pushed out in two substeps running, with its history (Rope.RemoveVelocityIntoSurface).
     /// </summary>
     public sealed class RestingContactVelocityTests
     {
