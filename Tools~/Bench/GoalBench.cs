@@ -19,7 +19,7 @@ namespace HookeRope.Bench
         /// Measures one configuration: at least <paramref name="minRepeats"/> repeats of the window, more while the
         /// repeats so far took less than <paramref name="seconds"/> (at most 50).
         /// </summary>
-        public static GoalRow Measure(string id, int ropes, int segments, int workers, double seconds, int minRepeats)
+        public static GoalRow Measure(string id, int ropes, int segments, int workers, double seconds, int minRepeats, float ringTolerance = 1f)
         {
             var row = new GoalRow
             {
@@ -35,7 +35,7 @@ namespace HookeRope.Bench
             int repeats = 0;
             while (repeats < minRepeats || (total.Elapsed.TotalSeconds < seconds && repeats < 50))
             {
-                using (var world = GoalScene.Build(ropes, segments, workers, warmUpFrames: GoalScene.WarmUpFrames))
+                using (var world = GoalScene.Build(ropes, segments, workers, warmUpFrames: GoalScene.WarmUpFrames, ringTolerance: ringTolerance))
                 {
                     process.Refresh();
                     TimeSpan cpuBefore = process.TotalProcessorTime;
@@ -106,14 +106,22 @@ namespace HookeRope.Bench
             return world.Count > 0 ? sum / world.Count : 0.0;
         }
 
-        /// <summary>The rows of the table: goal at 1 and 2 workers, then rope counts 1 … 500 and segment counts 16 … 1 024 at 2 workers.</summary>
-        public static List<(string Id, int Ropes, int Segments, int Workers)> Plan(bool quick)
+        /// <summary>
+        /// The rows of the table: goal at 1 and 2 workers and at 2 workers with the meshes' ring tolerance 2, then rope counts
+        /// 1 … 500 and segment counts 16 … 1 024 at 2 workers (each with its meshes' RingTolerance).
+        /// </summary>
+        public static List<(string Id, int Ropes, int Segments, int Workers, float RingTolerance)> Plan(bool quick)
         {
-            var plan = new List<(string, int, int, int)> { ("goal 100x64 w1", 100, 64, 1), ("goal 100x64 w2", 100, 64, 2) };
+            var plan = new List<(string, int, int, int, float)>
+            {
+                ("goal 100x64 w1", 100, 64, 1, 1f), ("goal 100x64 w2", 100, 64, 2, 1f),
+                // the goal scene with TubeMeshSettings.RingTolerance 2 (not the goal: its meshes' along-rope tolerance is doubled)
+                ("goal 100x64 w2 tol2", 100, 64, 2, 2f),
+            };
             int[] ropeCounts = quick ? new[] { 1, 10, 100, 500 } : new[] { 1, 2, 5, 10, 20, 50, 100, 200, 500 };
-            foreach (int r in ropeCounts) plan.Add(($"ropes {r}x64 w2", r, 64, 2));
+            foreach (int r in ropeCounts) plan.Add(($"ropes {r}x64 w2", r, 64, 2, 1f));
             int[] segmentCounts = quick ? new[] { 16, 256 } : new[] { 16, 32, 64, 128, 256, 1024 };
-            foreach (int s in segmentCounts) plan.Add(($"segments 10x{s} w2", 10, s, 2));
+            foreach (int s in segmentCounts) plan.Add(($"segments 10x{s} w2", 10, s, 2, 1f));
             return plan;
         }
 

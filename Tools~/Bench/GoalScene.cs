@@ -21,9 +21,11 @@ namespace HookeRope.Bench
         /// <summary>
         /// A world of <paramref name="ropes"/> lanyards × <paramref name="segments"/> on <paramref name="workers"/> workers,
         /// warmed up by <paramref name="warmUpFrames"/> frames (<see cref="WarmUpFrames"/> for a measurement of the window);
-        /// <paramref name="adaptiveRings"/> false draws 4 rings per segment (the mesh before issue 18).
+        /// <paramref name="adaptiveRings"/> false draws 4 rings per segment (the mesh before issue 18);
+        /// <paramref name="ringTolerance"/> is the meshes' <see cref="HookeRope.Geometry.TubeMeshSettings.RingTolerance"/>
+        /// (1, the default, in the goal).
         /// </summary>
-        public static RopeWorld Build(int ropes, int segments, int workers, bool adaptiveRings = true, int warmUpFrames = BuildFrames)
+        public static RopeWorld Build(int ropes, int segments, int workers, bool adaptiveRings = true, int warmUpFrames = BuildFrames, float ringTolerance = 1f)
         {
             var world = new RopeWorld(workers);
             for (int r = 0; r < ropes; r++)
@@ -34,6 +36,7 @@ namespace HookeRope.Bench
                 var simulation = new RopeSimulation(settings, start, end, new RadiusSettings());
                 simulation.MeshSettings.RadialSegments = MeshSides;
                 simulation.MeshSettings.AdaptiveRings = adaptiveRings;
+                simulation.MeshSettings.RingTolerance = ringTolerance;
                 simulation.Rope.AddPin(0, start);
                 simulation.Rope.AddPin(segments, end);
                 world.EnableMesh(world.Add(simulation));

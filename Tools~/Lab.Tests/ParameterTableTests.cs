@@ -54,6 +54,7 @@ namespace HookeRope.Lab.Tests
             [RopeParameters.NeckGrowthStrain.Name] = Rope(RopeParameters.NeckGrowthStrain.Json, s => s.Rope.NeckGrowthStrain),
             [RopeParameters.BreakRadiusFraction.Name] = Rope(RopeParameters.BreakRadiusFraction.Json, s => s.Rope.BreakRadiusFraction),
             [RopeParameters.RadialSegments.Name] = Rope(RopeParameters.RadialSegments.Json, s => s.Rope.RadialSegments),
+            [RopeParameters.RingTolerance.Name] = Rope(RopeParameters.RingTolerance.Json, s => s.Rope.RingTolerance),
             [RopeParameters.BurrSeed.Name] = Rope(RopeParameters.BurrSeed.Json, s => s.Rope.Seed),
             [RopeParameters.YieldStrain.Name] = Rope(RopeParameters.YieldStrain.Json, s => s.Rope.YieldStrain),
             [RopeParameters.HardeningModulus.Name] = Rope(RopeParameters.HardeningModulus.Json, s => s.Rope.HardeningModulus),

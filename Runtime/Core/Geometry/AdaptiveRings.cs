@@ -71,18 +71,23 @@ namespace HookeRope.Geometry
         /// <summary>
         /// Placement as above with a ring budget of <paramref name="meanRingsPerSegment"/> rings per segment on average
         /// (1 … <see cref="MaxRingsPerSegment"/>; the package uses <see cref="MaxMeanRingsPerSegment"/>, the tests compare
-        /// with <see cref="MaxRingsPerSegment"/>, which never caps: the placement as it was before the budget).
+        /// with <see cref="MaxRingsPerSegment"/>, which never caps: the placement as it was before the budget) and the
+        /// tolerance <paramref name="toleranceScale"/> times <see cref="RingNeed.Tolerance"/>
+        /// (<see cref="TubeMeshSettings.RingTolerance"/>, range <see cref="RopeParameters.RingTolerance"/>; at 1 the bits of
+        /// the unscaled tolerance).
         /// </summary>
-        internal AdaptiveRings(int segmentCount, int radialSegments, RingLayout neckStations, int meanRingsPerSegment)
+        internal AdaptiveRings(int segmentCount, int radialSegments, RingLayout neckStations, int meanRingsPerSegment,
+            float toleranceScale = RopeParameters.RingTolerance.Default)
         {
             Require.InRange(meanRingsPerSegment, 1, MaxRingsPerSegment, nameof(meanRingsPerSegment));
+            RopeParameters.Check(toleranceScale, RopeParameters.RingTolerance.Row);
             if (segmentCount < 1)
                 throw new ArgumentOutOfRangeException(nameof(segmentCount), segmentCount, "segmentCount must be in [1, +inf).");
             if (neckStations != null && neckStations.SegmentCount != segmentCount)
                 throw new ArgumentException("neckStations must have SegmentCount = " + segmentCount + " segments.", nameof(neckStations));
             n = segmentCount;
             zone = neckStations;
-            tolerance = RingNeed.Tolerance(radialSegments);
+            tolerance = RingNeed.Tolerance(radialSegments) * toleranceScale;
             capBefore = new int[n + 1];
             for (int j = 0; j < n; j++)
                 capBefore[j + 1] = capBefore[j] + meanRingsPerSegment + (zone != null && zone.RingsIn(j) > 1 ? zone.RingsIn(j) : 0);
@@ -138,7 +143,7 @@ namespace HookeRope.Geometry
             }
         }
 
-        /// <summary>Tolerance of the drawn surface as a fraction of the drawn radius (<see cref="RingNeed.Tolerance"/>).</summary>
+        /// <summary>Tolerance of the drawn surface as a fraction of the drawn radius (<see cref="RingNeed.Tolerance"/> times the ring tolerance).</summary>
         public float ToleranceFraction => tolerance;
 
         /// <summary>Incremented whenever a budget that the counts report changes (a topology change at the next build).</summary>

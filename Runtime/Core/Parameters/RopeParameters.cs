@@ -1039,6 +1039,29 @@ namespace HookeRope
             public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Mesh, ParameterKind.Int, Min, Max, Default, Tooltip, Json, true);
         }
 
+        /// <summary>How far the adaptive rings let the drawn surface leave the smooth tube along the rope.</summary>
+        public static class RingTolerance
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(RingTolerance);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Ring tolerance";
+            /// <summary>Unit (a multiple of the polygon's depth R·(1 − cos π/N), dimensionless).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name.</summary>
+            public const string Json = "ringTolerance";
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "How far the drawn surface may leave the smooth tube along the rope, as a multiple of the polygon's own depth around it, R·(1 − cos π/N) (dimensionless, 1–16). 1 = as round along as around; 2 draws about 30 % fewer rings on a bent rope, for scenes with many ropes.";
+            /// <summary>Lower bound.</summary>
+            public const float Min = 1f;
+            /// <summary>Upper bound.</summary>
+            public const float Max = 16f;
+            /// <summary>Default.</summary>
+            public const float Default = 1f;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Mesh, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
+        }
+
         /// <summary>Rings per rope segment along the smooth curve (core only).</summary>
         public static class RingsPerSegment
         {
@@ -1210,7 +1233,7 @@ namespace HookeRope
             ViscousDrag.Row, DragCoefficient.Row, SkinFriction.Row, AirDensity.Row, Wind.Row,
             PoissonThinning.Row, Necking.Row, NeckMode.Row, NeckRadiusFraction.Row, DefectPosition.Row, NeckZoneDiameters.Row, NeckGrowthStrain.Row, SlackKeepsRestRadius.Row,
             Fracture.Row, BreakStrain.Row, BreakRadiusFraction.Row,
-            RadialSegments.Row, RingsPerSegment.Row, AdaptiveRings.Row, VPerMetre.Row, CapEnds.Row, BurrSeed.Row, BurrTexture.Row, Color.Row,
+            RadialSegments.Row, RingTolerance.Row, RingsPerSegment.Row, AdaptiveRings.Row, VPerMetre.Row, CapEnds.Row, BurrSeed.Row, BurrTexture.Row, Color.Row,
         };
 
         /// <summary>The row named <paramref name="name"/> (ordinal), or null.</summary>

@@ -178,6 +178,34 @@ namespace HookeRope.Tests.Components
             foreach (int used in inUse) Assert.That(used, Is.LessThanOrEqualTo(capacity));
         }
 
+        [Test]
+        public void RingToleranceReachesTheCoreMeshAndDrawsFewerVertices()
+        {
+            // two identical swung ropes, one drawn at Ring Tolerance 4: the same physics, fewer rings where it bends
+            var (exact, exactRenderer, exactGrip) = Build();
+            var (loose, looseRenderer, looseGrip) = Build();
+            foreach (var rope in new[] { exact, loose }) { rope.Radius = 0.002f; rope.Rebuild(); }
+            looseRenderer.RingTolerance = 4f;
+            int exactMost = 0, looseMost = 0;
+            for (int frame = 0; frame < 60; frame++)
+            {
+                var p = new Vector3(0.3f + 0.25f * System.MathF.Sin(0.2f * frame), 2f, 0.1f * System.MathF.Sin(0.3f * frame));
+                exactGrip.position = p;
+                looseGrip.position = p;
+                exact.Simulate(0.01f);
+                loose.Simulate(0.01f);
+                Assert.That(exactRenderer.Render(1f), Is.True);
+                Assert.That(looseRenderer.Render(1f), Is.True);
+                exactMost = System.Math.Max(exactMost, exactRenderer.Mesh.GetSubMesh(0).vertexCount);
+                looseMost = System.Math.Max(looseMost, looseRenderer.Mesh.GetSubMesh(0).vertexCount);
+            }
+            TestContext.WriteLine("most vertices in use over 60 frames: " + exactMost + " at Ring Tolerance 1, " + looseMost + " at 4");
+            Assert.That(loose.Simulation.MeshSettings.RingTolerance, Is.EqualTo(4f), "the renderer's value is the core mesh's");
+            Assert.That(exact.Simulation.MeshSettings.RingTolerance, Is.EqualTo(1f));
+            Assert.That(looseMost, Is.LessThan(exactMost));
+            AssertMeshFollowsRope(loose, looseRenderer.Mesh);
+        }
+
         [TestCase(false)]
         [TestCase(true)]
         public void UploadedVerticesAreTheCoreMesh(bool broken)

@@ -125,6 +125,8 @@ namespace HookeRope.Lab.Scenarios
         public double BreakRadiusFraction = RopeParameters.BreakRadiusFraction.Default;
         /// <summary>Vertices around the tube mesh.</summary>
         public int RadialSegments = RopeParameters.RadialSegments.Default;
+        /// <summary>How far the adaptive rings let the surface leave the smooth tube along the rope, × the polygon's depth R·(1 − cos π/N).</summary>
+        public double RingTolerance = RopeParameters.RingTolerance.Default;
         /// <summary>Seed of the random parts (burr strands of broken ends).</summary>
         public int Seed = RopeParameters.BurrSeed.Default;
         /// <summary>Material law (issue 15): "elastic" or "elastic-plastic".</summary>

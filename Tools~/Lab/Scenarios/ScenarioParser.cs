@@ -146,6 +146,7 @@ namespace HookeRope.Lab.Scenarios
             r.NeckGrowthStrain = f.Parameter(RopeParameters.NeckGrowthStrain.Row, r.NeckGrowthStrain);
             r.SlackKeepsRestRadius = f.Parameter(RopeParameters.SlackKeepsRestRadius.Row, r.SlackKeepsRestRadius);
             r.RadialSegments = f.Parameter(RopeParameters.RadialSegments.Row, r.RadialSegments);
+            r.RingTolerance = f.Parameter(RopeParameters.RingTolerance.Row, r.RingTolerance);
             r.Seed = f.Parameter(RopeParameters.BurrSeed.Row, r.Seed);
             ReadMaterialLaw(f, r);
             f.RejectUnknown();

@@ -75,7 +75,7 @@ namespace HookeRope.Lab.Simulation
             setup.StartPin = Attach(rope, s.Start, 0, positions[0], out setup.StartLoad);
             setup.EndPin = Attach(rope, s.End, rope.ParticleCount - 1, positions[positions.Length - 1], out setup.EndLoad);
             foreach (var c in s.Colliders) rope.AddCollider(Shape(c));
-            var mesh = new TubeMeshSettings { RadialSegments = s.Rope.RadialSegments };
+            var mesh = new TubeMeshSettings { RadialSegments = s.Rope.RadialSegments, RingTolerance = (float)s.Rope.RingTolerance };
             mesh.Burr.Seed = (uint)s.Rope.Seed;
             setup.Simulation = new RopeSimulation(rope, withRadius ? RadiusSettings(s) : null, mesh);
             return setup;

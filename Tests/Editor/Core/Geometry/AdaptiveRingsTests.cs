@@ -18,7 +18,7 @@ namespace HookeRope.Tests.Core.Geometry
     {
         private const float R = 0.01f;
 
-        private static TubeMeshUpdate BuildAdaptive(TubeMeshBuilder builder, RopeShape shape, float radius, bool[] broken, out TubeVertex[] vertices, out int[] indices)
+        internal static TubeMeshUpdate BuildAdaptive(TubeMeshBuilder builder, RopeShape shape, float radius, bool[] broken, out TubeVertex[] vertices, out int[] indices)
         {
             builder.PrimeRings(shape.X, shape.Y, shape.Z, broken, false, radius);
             vertices = new TubeVertex[builder.GetVertexCount(broken)];
@@ -78,7 +78,7 @@ namespace HookeRope.Tests.Core.Geometry
             }
         }
 
-        private static RopeShape Shape(string name)
+        internal static RopeShape Shape(string name)
         {
             switch (name)
             {

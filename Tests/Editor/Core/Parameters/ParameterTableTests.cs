@@ -230,7 +230,7 @@ namespace HookeRope.Tests.Core.Parameters
                     checkedRows++;
                 }
             }
-            Assert.That(checkedRows, Is.EqualTo(28), "RopeSettings: L, n, R, E, ρ, β, substeps, iterations, yield, hardening, necking and ultimate strains, absorber force and deployment, c, C_d, C_f, ρ_air; RadiusSettings: ν, r_min, defect, zone, growth, break strain, break radius; TubeMeshSettings: radial, rings, v per metre");
+            Assert.That(checkedRows, Is.EqualTo(29), "RopeSettings: L, n, R, E, ρ, β, substeps, iterations, yield, hardening, necking and ultimate strains, absorber force and deployment, c, C_d, C_f, ρ_air; RadiusSettings: ν, r_min, defect, zone, growth, break strain, break radius; TubeMeshSettings: radial, ring tolerance, rings, v per metre");
         }
 
         [Test]
@@ -246,7 +246,7 @@ namespace HookeRope.Tests.Core.Parameters
                 Assert.That(actual, IsDerived(row) ? Is.EqualTo(row.Default).Within(1e-3).Percent : Is.EqualTo(row.Default), settings.GetType().Name + "." + row.Name);
                 checkedRows++;
             }
-            Assert.That(checkedRows, Is.EqualTo(42), "RopeSettings 25 rows (gravity and wind are vectors; 8 of the material law and 4 of the drag, issue 15; the Gauss–Seidel kernel, issue 18), RadiusSettings 12, TubeMeshSettings 5");
+            Assert.That(checkedRows, Is.EqualTo(43), "RopeSettings 25 rows (gravity and wind are vectors; 8 of the material law and 4 of the drag, issue 15; the Gauss–Seidel kernel, issue 18), RadiusSettings 12, TubeMeshSettings 6 (the ring tolerance, issue 18)");
         }
 
         static bool IsDerived(ParameterInfo row) => row == RopeParameters.AxialStiffness.Row || row == RopeParameters.LinearDensity.Row;
