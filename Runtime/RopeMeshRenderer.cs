@@ -104,7 +104,8 @@ namespace HookeRope
         /// How far the drawn surface may leave the smooth tube along the rope, as a multiple of the polygon's own depth
         /// around it (<see cref="HookeRope.Geometry.TubeMeshSettings.RingTolerance"/>, range
         /// <see cref="RopeParameters.RingTolerance"/>, default 1): 2 draws about 30 % fewer rings on a bent rope. A new
-        /// value rebuilds the tube topology at the next frame.
+        /// value applies at the next frame without new buffers or garbage (a script may set it each frame, e.g. from the
+        /// rope's distance to the camera); rings it no longer needs go after the ring budget's calm spell.
         /// </summary>
         public float RingTolerance
         {

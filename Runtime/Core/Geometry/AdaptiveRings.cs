@@ -42,7 +42,9 @@ namespace HookeRope.Geometry
 
         private readonly int n;
         private readonly RingLayout zone;
-        private readonly float tolerance;
+        private readonly float polygonTolerance;
+        private float toleranceScale;
+        private float tolerance;
         private readonly int[] capBefore;
         private readonly float[] need;
         private readonly int[] counts;
@@ -87,7 +89,9 @@ namespace HookeRope.Geometry
                 throw new ArgumentException("neckStations must have SegmentCount = " + segmentCount + " segments.", nameof(neckStations));
             n = segmentCount;
             zone = neckStations;
-            tolerance = RingNeed.Tolerance(radialSegments) * toleranceScale;
+            polygonTolerance = RingNeed.Tolerance(radialSegments);
+            this.toleranceScale = toleranceScale;
+            tolerance = polygonTolerance * toleranceScale;
             capBefore = new int[n + 1];
             for (int j = 0; j < n; j++)
                 capBefore[j + 1] = capBefore[j] + meanRingsPerSegment + (zone != null && zone.RingsIn(j) > 1 ? zone.RingsIn(j) : 0);
@@ -143,8 +147,27 @@ namespace HookeRope.Geometry
             }
         }
 
-        /// <summary>Tolerance of the drawn surface as a fraction of the drawn radius (<see cref="RingNeed.Tolerance"/> times the ring tolerance).</summary>
+        /// <summary>Tolerance of the drawn surface as a fraction of the drawn radius (<see cref="RingNeed.Tolerance"/> times <see cref="ToleranceScale"/>).</summary>
         public float ToleranceFraction => tolerance;
+
+        /// <summary>
+        /// The tolerance as a multiple of <see cref="RingNeed.Tolerance"/> (<see cref="TubeMeshSettings.RingTolerance"/>,
+        /// range <see cref="RopeParameters.RingTolerance"/>). A new value applies at the next <see cref="Plan"/>, which then
+        /// measures the needs again whatever else changed; the budgets follow as for any change of need (up at once, down
+        /// after a calm spell), within the storage made for <see cref="MostRings"/>, so a new value allocates nothing.
+        /// </summary>
+        public float ToleranceScale
+        {
+            get => toleranceScale;
+            set
+            {
+                RopeParameters.Check(value, RopeParameters.RingTolerance.Row);
+                if (value.Equals(toleranceScale)) return;
+                toleranceScale = value;
+                tolerance = polygonTolerance * value;
+                hasLast = false;
+            }
+        }
 
         /// <summary>Incremented whenever a budget that the counts report changes (a topology change at the next build).</summary>
         public int BudgetVersion { get; private set; }

@@ -27,7 +27,6 @@ namespace HookeRope.Geometry
         private int filledVertices = -1, filledIndices = -1;
         private int rings;
         private bool adaptive;
-        private float ringTolerance = float.NaN;
         private bool caps;
         private bool burr;
         private bool zoneLayout;
@@ -155,7 +154,6 @@ namespace HookeRope.Geometry
             if (builder != null
                 && builder.RadialSegments == s.RadialSegments
                 && adaptive == s.AdaptiveRings
-                && ringTolerance.Equals(s.RingTolerance)
                 && rings == s.RingsPerSegment
                 && caps == s.CapEnds
                 && burr == s.Burr.Enabled
@@ -167,7 +165,6 @@ namespace HookeRope.Geometry
                 return builder;
             rings = s.RingsPerSegment;
             adaptive = s.AdaptiveRings;
-            ringTolerance = s.RingTolerance;
             caps = s.CapEnds;
             burr = s.Burr.Enabled;
             zoneLayout = zoneNeck;

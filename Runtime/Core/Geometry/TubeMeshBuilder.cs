@@ -142,7 +142,7 @@ namespace HookeRope.Geometry
 
         /// <summary>
         /// An adaptive builder: rings placed by need (<see cref="AdaptiveRings"/>, tolerance from the side count and
-        /// <see cref="TubeMeshSettings.RingTolerance"/>) for a
+        /// <see cref="TubeMeshSettings.RingTolerance"/>, read at every plan) for a
         /// rope of <paramref name="segmentCount"/> segments and rest radius <paramref name="restRadius"/> (m; 0 = unknown,
         /// sets the burr fibres); <paramref name="neckStations"/> (null = none) holds a Zone neck's stations
         /// (<see cref="RingLayout.Adapted"/> with one ring per segment), drawn while the neck is active. Call
@@ -263,6 +263,7 @@ namespace HookeRope.Geometry
         {
             if (adaptive == null) return;
             CheckPositions(x, y, z, brokenSegments);
+            adaptive.ToleranceScale = settings.RingTolerance;
             adaptive.Prime(x, y, z, brokenSegments, neckActive, radius);
             adaptive.Plan(x, y, z, brokenSegments, neckActive, radius, true, layout);
             EnsureRingStorage(layout.RingCount);
@@ -280,6 +281,8 @@ namespace HookeRope.Geometry
         {
             if (adaptive == null) return false;
             CheckPositions(x, y, z, brokenSegments);
+            // read at every plan (TubeMeshSettings.RingTolerance: a new value needs no new builder)
+            adaptive.ToleranceScale = settings.RingTolerance;
             bool takeNext = true;
             if (adaptive.BudgetPending(brokenSegments))
             {

@@ -5,9 +5,9 @@ namespace HookeRope.Geometry
 {
     /// <summary>
     /// Validated settings of the procedural tube mesh. Ranges come from <see cref="RopeParameters"/>: setters throw
-    /// <see cref="ArgumentOutOfRangeException"/> naming the property, its range and unit. RadialSegments, RingTolerance,
-    /// RingsPerSegment, AdaptiveRings, CapEnds and Burr.Enabled fix the topology and are read when a <see cref="TubeMeshBuilder"/> is
-    /// created; VPerMetre and the other burr values are read at every build.
+    /// <see cref="ArgumentOutOfRangeException"/> naming the property, its range and unit. RadialSegments, RingsPerSegment,
+    /// AdaptiveRings, CapEnds and Burr.Enabled fix the topology and are read when a <see cref="TubeMeshBuilder"/> is
+    /// created; RingTolerance, VPerMetre and the other burr values are read at every build.
     /// </summary>
     public sealed class TubeMeshSettings
     {
@@ -24,7 +24,10 @@ namespace HookeRope.Geometry
         /// rope, as a multiple of the polygon's own depth around it, R·(1 − cos π/<see cref="RadialSegments"/>); range
         /// [1, 16], default 1 (as round along as around). The ring count of a bent segment goes as 1/sqrt(RingTolerance): 2
         /// draws about 30 % fewer rings, 4 half as many (never fewer than one per segment), for scenes with many ropes whose
-        /// mesh costs more than their physics. Not used when AdaptiveRings is off, nor for a Zone neck's stations.
+        /// mesh costs more than their physics. Read at every build: a new value (e.g. set each frame from the rope's distance
+        /// to the camera) allocates nothing and needs no new buffers; the ring budget takes more rings at once and gives
+        /// them back after a calm spell, as for any change of need. Not used when AdaptiveRings is off, nor for a Zone
+        /// neck's stations.
         /// </summary>
         public float RingTolerance { get => ringTolerance; set => ringTolerance = RopeParameters.Check(value, RopeParameters.RingTolerance.Row); }
 

@@ -10,7 +10,7 @@ namespace HookeRope.Tests.Core.Geometry
     /// <see cref="TubeMeshSettings.RingTolerance"/> (issue 18): the adaptive rings' tolerance times the setting. The drawn
     /// surface stays within the polygon's own depth plus the scaled tolerance of the smooth tube, measured both ways; the
     /// ring count of a bent segment falls as 1/sqrt(scale) (rounded up, at least one); the goal lanyard draws fewer
-    /// vertices; a new value on a simulation rebuilds its mesh's topology.
+    /// vertices; a new value on a running simulation takes effect without a new builder or any allocation.
     /// </summary>
     public sealed class RingToleranceTests
     {
@@ -50,7 +50,7 @@ namespace HookeRope.Tests.Core.Geometry
         }
 
         [Test]
-        public void TheGoalLanyardDrawsFewerVerticesAndANewValueRebuildsTheTopology()
+        public void TheGoalLanyardDrawsFewerVerticesAndANewValueAllocatesNothing()
         {
             // the goal scene's lanyard (defaults, 16 sides) in the bench's window, at tolerance 1 and 2
             var settings = new RopeSettings { SegmentCount = 64 };
@@ -70,12 +70,32 @@ namespace HookeRope.Tests.Core.Geometry
             }
             TestContext.WriteLine($"goal lanyard, frames 45-74: most vertices {exactMost} at tolerance 1, {looseMost} at 2");
             Assert.That(looseMost, Is.LessThan(exactMost));
-            // the setting fixes the topology: a new value on a running simulation rebuilds the builder at the next fill
-            int version = exact.MeshTopologyVersion;
+            // read at every build: the same builder and buffers (made for the ring budget's cap) take a new value each frame
+            var builder = exact.Mesh.Builder;
+            var vertices = new TubeVertex[exact.GetVertexCapacity()];
+            var indices = new int[exact.GetIndexCapacity()];
+            float[] scales = { 4f, 1f, 2f, 4f };
+            int calls = 0, fewest = int.MaxValue;
+            long bytes = SteadyStateAllocation.Bytes(() =>
+            {
+                exact.MeshSettings.RingTolerance = scales[calls++ % scales.Length];
+                exact.Step(1f / 90f);
+                fewest = Math.Min(fewest, exact.FillMesh(vertices, indices).VertexCount);
+            }, 40);
+            TestContext.WriteLine($"tolerance changed every frame for 360 frames: {bytes} B allocated, fewest vertices {fewest}");
+            Assert.That(bytes, Is.EqualTo(0), "a new tolerance each frame allocates nothing");
+            Assert.That(exact.Mesh.Builder, Is.SameAs(builder), "no new builder");
+            Assert.That(exact.GetVertexCapacity(), Is.EqualTo(vertices.Length), "the buffers keep their capacity");
+            // held at 4, the budget gives the rings back after its calm spell
             exact.MeshSettings.RingTolerance = 4f;
-            int rebuilt = Fill(exact);
-            Assert.That(exact.MeshTopologyVersion, Is.GreaterThan(version));
-            Assert.That(rebuilt, Is.LessThan(exactMost));
+            int held = int.MaxValue;
+            for (int i = 0; i < 120; i++)
+            {
+                exact.Step(1f / 90f);
+                held = exact.FillMesh(vertices, indices).VertexCount;
+            }
+            TestContext.WriteLine($"held at 4 for 120 more frames: {held} vertices");
+            Assert.That(held, Is.LessThan(exactMost));
             Assert.That(() => exact.MeshSettings.RingTolerance = 0.5f, Throws.TypeOf<ArgumentOutOfRangeException>()
                 .With.Message.Contain("RingTolerance").And.Message.Contain("[1, 16]"));
             Assert.That(() => exact.MeshSettings.RingTolerance = float.NaN, Throws.TypeOf<ArgumentOutOfRangeException>());
