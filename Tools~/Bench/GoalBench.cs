@@ -24,7 +24,7 @@ namespace HookeRope.Bench
             var row = new GoalRow
             {
                 Id = id, Ropes = ropes, Segments = segments, Substeps = GoalScene.Substeps, MeshSides = GoalScene.MeshSides,
-                Workers = workers, Window = GoalScene.Window,
+                Workers = workers, Window = GoalScene.Window, RingTolerance = ringTolerance,
             };
             var samples = new List<double>();
             var watch = new Stopwatch();

@@ -63,8 +63,7 @@ namespace HookeRope.Bench
                 if (match != null && !id.Contains(match, StringComparison.Ordinal)) continue;
                 bool goal = id.StartsWith("goal", StringComparison.Ordinal);
                 var row = GoalBench.Measure(id, ropes, segments, workers, goal ? (quick ? 1.0 : 4.0) : (quick ? 0.3 : 2.0), goal || !quick ? 3 : 1, ringTolerance);
-                // the count is of the goal scene's meshes (ring tolerance 1)
-                if (ringTolerance == 1f) counts?.ApplyTo(row);
+                counts?.ApplyTo(row);
                 row.FillProbeMs = fill;
                 row.ChaseProbeNs = chase;
                 string verdict = Baseline.Compare(row, stored);

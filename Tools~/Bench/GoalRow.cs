@@ -15,6 +15,8 @@ namespace HookeRope.Bench
         public int MeshSides { get; set; }
         /// <summary>Worker threads (caller included).</summary>
         public int Workers { get; set; }
+        /// <summary>The meshes' TubeMeshSettings.RingTolerance (1 in the goal; a baseline saved before it existed reads 1).</summary>
+        public float RingTolerance { get; set; } = 1f;
         /// <summary>Frames of the scene every repeat measured, e.g. "45-74" (<see cref="GoalScene.Window"/>): rows compare only within one window.</summary>
         public string Window { get; set; }
         /// <summary>Freshly built worlds whose window was measured (each repeat times the same frames).</summary>

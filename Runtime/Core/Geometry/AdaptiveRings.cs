@@ -43,8 +43,7 @@ namespace HookeRope.Geometry
         private readonly int n;
         private readonly RingLayout zone;
         private readonly float polygonTolerance;
-        private float toleranceScale;
-        private float tolerance;
+        private float toleranceScale = RopeParameters.RingTolerance.Default;
         private readonly int[] capBefore;
         private readonly float[] need;
         private readonly int[] counts;
@@ -73,16 +72,12 @@ namespace HookeRope.Geometry
         /// <summary>
         /// Placement as above with a ring budget of <paramref name="meanRingsPerSegment"/> rings per segment on average
         /// (1 … <see cref="MaxRingsPerSegment"/>; the package uses <see cref="MaxMeanRingsPerSegment"/>, the tests compare
-        /// with <see cref="MaxRingsPerSegment"/>, which never caps: the placement as it was before the budget) and the
-        /// tolerance <paramref name="toleranceScale"/> times <see cref="RingNeed.Tolerance"/>
-        /// (<see cref="TubeMeshSettings.RingTolerance"/>, range <see cref="RopeParameters.RingTolerance"/>; at 1 the bits of
-        /// the unscaled tolerance).
+        /// with <see cref="MaxRingsPerSegment"/>, which never caps: the placement as it was before the budget), at
+        /// <see cref="ToleranceScale"/> 1 until it is set.
         /// </summary>
-        internal AdaptiveRings(int segmentCount, int radialSegments, RingLayout neckStations, int meanRingsPerSegment,
-            float toleranceScale = RopeParameters.RingTolerance.Default)
+        internal AdaptiveRings(int segmentCount, int radialSegments, RingLayout neckStations, int meanRingsPerSegment)
         {
             Require.InRange(meanRingsPerSegment, 1, MaxRingsPerSegment, nameof(meanRingsPerSegment));
-            RopeParameters.Check(toleranceScale, RopeParameters.RingTolerance.Row);
             if (segmentCount < 1)
                 throw new ArgumentOutOfRangeException(nameof(segmentCount), segmentCount, "segmentCount must be in [1, +inf).");
             if (neckStations != null && neckStations.SegmentCount != segmentCount)
@@ -90,8 +85,6 @@ namespace HookeRope.Geometry
             n = segmentCount;
             zone = neckStations;
             polygonTolerance = RingNeed.Tolerance(radialSegments);
-            this.toleranceScale = toleranceScale;
-            tolerance = polygonTolerance * toleranceScale;
             capBefore = new int[n + 1];
             for (int j = 0; j < n; j++)
                 capBefore[j + 1] = capBefore[j] + meanRingsPerSegment + (zone != null && zone.RingsIn(j) > 1 ? zone.RingsIn(j) : 0);
@@ -148,7 +141,7 @@ namespace HookeRope.Geometry
         }
 
         /// <summary>Tolerance of the drawn surface as a fraction of the drawn radius (<see cref="RingNeed.Tolerance"/> times <see cref="ToleranceScale"/>).</summary>
-        public float ToleranceFraction => tolerance;
+        public float ToleranceFraction => polygonTolerance * toleranceScale;
 
         /// <summary>
         /// The tolerance as a multiple of <see cref="RingNeed.Tolerance"/> (<see cref="TubeMeshSettings.RingTolerance"/>,
@@ -164,7 +157,6 @@ namespace HookeRope.Geometry
                 RopeParameters.Check(value, RopeParameters.RingTolerance.Row);
                 if (value.Equals(toleranceScale)) return;
                 toleranceScale = value;
-                tolerance = polygonTolerance * value;
                 hasLast = false;
             }
         }
@@ -454,7 +446,7 @@ namespace HookeRope.Geometry
             float r = float.IsFinite(radius) && radius > 1e-6f ? radius : 1e-6f;
             int segment = 0;
             while (NextPiece(brokenSegments, ref segment, out int a, out int b))
-                RingNeed.OfPiece(a, b, x, y, z, ox, oy, oz, r, tolerance * r, MaxRingsPerSegment, need);
+                RingNeed.OfPiece(a, b, x, y, z, ox, oy, oz, r, ToleranceFraction * r, MaxRingsPerSegment, need);
         }
 
         /// <summary>Re-derives the budgets when the broken flags changed: each new piece keeps the rings its segments had.</summary>

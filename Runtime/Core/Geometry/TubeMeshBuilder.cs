@@ -142,7 +142,7 @@ namespace HookeRope.Geometry
 
         /// <summary>
         /// An adaptive builder: rings placed by need (<see cref="AdaptiveRings"/>, tolerance from the side count and
-        /// <see cref="TubeMeshSettings.RingTolerance"/>, read at every plan) for a
+        /// <see cref="TubeMeshSettings.RingTolerance"/>, set at every prime and plan) for a
         /// rope of <paramref name="segmentCount"/> segments and rest radius <paramref name="restRadius"/> (m; 0 = unknown,
         /// sets the burr fibres); <paramref name="neckStations"/> (null = none) holds a Zone neck's stations
         /// (<see cref="RingLayout.Adapted"/> with one ring per segment), drawn while the neck is active. Call
@@ -154,7 +154,7 @@ namespace HookeRope.Geometry
             int meanRingsPerSegment = AdaptiveRings.MaxMeanRingsPerSegment)
         {
             if (settings == null) throw new ArgumentNullException(nameof(settings));
-            var rings = new AdaptiveRings(segmentCount, settings.RadialSegments, neckStations, meanRingsPerSegment, settings.RingTolerance);
+            var rings = new AdaptiveRings(segmentCount, settings.RadialSegments, neckStations, meanRingsPerSegment);
             return new TubeMeshBuilder(settings, RingLayout.Rewritable(segmentCount, rings.MostRings), rings, restRadius);
         }
 
