@@ -69,6 +69,12 @@ namespace HookeRope
         [SerializeField, Range(RopeParameters.RingTolerance.Min, RopeParameters.RingTolerance.Max), Tooltip(RopeParameters.RingTolerance.Tooltip)]
         float m_RingTolerance = RopeParameters.RingTolerance.Default;
 
+        [SerializeField, Tooltip("The viewer whose distance sets the rope's detail beyond Detail Distance, e.g. the XR camera's Transform. None: full detail at any distance.")]
+        Transform m_ViewPoint;
+
+        [SerializeField, Min(RopeParameters.DetailDistance.Min), Tooltip(RopeParameters.DetailDistance.Tooltip)]
+        float m_DetailDistance = RopeParameters.DetailDistance.Default;
+
         [SerializeField, Tooltip(RopeParameters.BurrTexture.Tooltip)]
         bool m_BurrTexture = RopeParameters.BurrTexture.Default;
 
@@ -113,6 +119,32 @@ namespace HookeRope
             set => m_RingTolerance = RopeParameters.Check(value, RopeParameters.RingTolerance.Row);
         }
 
+        /// <summary>
+        /// The viewer (e.g. the XR camera's Transform) whose distance to the rope scales its ring tolerance beyond
+        /// <see cref="DetailDistance"/> (<see cref="ViewDetail"/>); null: the rope draws at <see cref="RingTolerance"/> at
+        /// any distance.
+        /// </summary>
+        public Transform ViewPoint
+        {
+            get => m_ViewPoint;
+            set => m_ViewPoint = value;
+        }
+
+        /// <summary>
+        /// Distance from <see cref="ViewPoint"/> (m, range <see cref="RopeParameters.DetailDistance"/>, default 0 = off) up
+        /// to which the rope draws at <see cref="RingTolerance"/>; beyond it the tolerance grows in proportion to the
+        /// distance (to the box around the rope's particles), up to 16, so the along-rope detail seen from the viewer stays
+        /// what it is at this distance (<see cref="ViewDetail.RingTolerance"/>). Read every frame, allocation-free.
+        /// </summary>
+        public float DetailDistance
+        {
+            get => m_DetailDistance;
+            set => m_DetailDistance = RopeParameters.Check(value, RopeParameters.DetailDistance.Row);
+        }
+
+        /// <summary>The ring tolerance the last drawn frame used: <see cref="RingTolerance"/>, scaled by the view distance where <see cref="DetailDistance"/> is on.</summary>
+        public float DrawnRingTolerance { get; private set; } = RopeParameters.RingTolerance.Default;
+
         /// <summary>The generated mesh, or null before the first <see cref="Render"/>.</summary>
         public Mesh Mesh => _mesh;
 
@@ -121,6 +153,8 @@ namespace HookeRope
             string message = RopeParameters.Clamp(ref m_RadialSegments, RopeParameters.RadialSegments.Row);
             if (message != null) Debug.LogWarning("RopeMeshRenderer '" + name + "': " + message, this);
             message = RopeParameters.Clamp(ref m_RingTolerance, RopeParameters.RingTolerance.Row);
+            if (message != null) Debug.LogWarning("RopeMeshRenderer '" + name + "': " + message, this);
+            message = RopeParameters.Clamp(ref m_DetailDistance, RopeParameters.DetailDistance.Row);
             if (message != null) Debug.LogWarning("RopeMeshRenderer '" + name + "': " + message, this);
         }
 
@@ -248,9 +282,27 @@ namespace HookeRope
             EnsureMesh();
 
             if (simulation.MeshSettings.RadialSegments != m_RadialSegments) simulation.MeshSettings.RadialSegments = m_RadialSegments;
-            if (!simulation.MeshSettings.RingTolerance.Equals(m_RingTolerance)) simulation.MeshSettings.RingTolerance = m_RingTolerance;
             InterpolateIntoLocalSpace(simulation.Rope, alpha, origin, alignEnds);
-            return _guard.AcceptMeshPositions(_x, _y, _z, simulation.Rope.ParticleCount);
+            if (!_guard.AcceptMeshPositions(_x, _y, _z, simulation.Rope.ParticleCount)) return false;
+            float tolerance = ViewRingTolerance(simulation.Rope.ParticleCount);
+            if (!simulation.MeshSettings.RingTolerance.Equals(tolerance)) simulation.MeshSettings.RingTolerance = tolerance;
+            DrawnRingTolerance = tolerance;
+            return true;
+        }
+
+        /// <summary>
+        /// <see cref="RingTolerance"/>, scaled by the distance from <see cref="ViewPoint"/> to the box around the
+        /// <paramref name="count"/> interpolated positions where <see cref="DetailDistance"/> is on: measured in this
+        /// GameObject's local space and turned into metres by its smallest scale (never coarser than the distance asks for).
+        /// </summary>
+        float ViewRingTolerance(int count)
+        {
+            if (m_ViewPoint == null || !(m_DetailDistance > 0f)) return m_RingTolerance;
+            Vector3 viewer = transform.InverseTransformPoint(m_ViewPoint.position);
+            Vector3 scale = transform.lossyScale;
+            float smallest = Math.Min(Math.Abs(scale.x), Math.Min(Math.Abs(scale.y), Math.Abs(scale.z)));
+            float distance = ViewDetail.DistanceToBox(_x, _y, _z, count, viewer.ToFloat3()) * smallest;
+            return ViewDetail.RingTolerance(m_RingTolerance, m_DetailDistance, distance);
         }
 
         /// <summary>

@@ -19,12 +19,12 @@ namespace HookeRope.Bench
         /// Measures one configuration: at least <paramref name="minRepeats"/> repeats of the window, more while the
         /// repeats so far took less than <paramref name="seconds"/> (at most 50).
         /// </summary>
-        public static GoalRow Measure(string id, int ropes, int segments, int workers, double seconds, int minRepeats, float ringTolerance = 1f)
+        public static GoalRow Measure(string id, int ropes, int segments, int workers, double seconds, int minRepeats, float ringTolerance = 1f, float detailDistance = 0f)
         {
             var row = new GoalRow
             {
                 Id = id, Ropes = ropes, Segments = segments, Substeps = GoalScene.Substeps, MeshSides = GoalScene.MeshSides,
-                Workers = workers, Window = GoalScene.Window, RingTolerance = ringTolerance,
+                Workers = workers, Window = GoalScene.Window, RingTolerance = ringTolerance, DetailDistance = detailDistance,
             };
             var samples = new List<double>();
             var watch = new Stopwatch();
@@ -35,7 +35,7 @@ namespace HookeRope.Bench
             int repeats = 0;
             while (repeats < minRepeats || (total.Elapsed.TotalSeconds < seconds && repeats < 50))
             {
-                using (var world = GoalScene.Build(ropes, segments, workers, warmUpFrames: GoalScene.WarmUpFrames, ringTolerance: ringTolerance))
+                using (var world = GoalScene.Build(ropes, segments, workers, warmUpFrames: GoalScene.WarmUpFrames, ringTolerance: ringTolerance, detailDistance: detailDistance))
                 {
                     process.Refresh();
                     TimeSpan cpuBefore = process.TotalProcessorTime;
@@ -43,6 +43,8 @@ namespace HookeRope.Bench
                     for (int f = 0; f < GoalScene.WindowFrames; f++)
                     {
                         watch.Restart();
+                        // the main thread's share of a view-distance detail, timed with the frame
+                        if (detailDistance > 0f) GoalScene.ApplyViewDetail(world, ringTolerance, detailDistance);
                         world.StepAndFillMeshes(GoalScene.Frame);
                         watch.Stop();
                         samples.Add(watch.Elapsed.TotalMilliseconds);
@@ -108,20 +110,24 @@ namespace HookeRope.Bench
 
         /// <summary>
         /// The rows of the table: goal at 1 and 2 workers and at 2 workers with the meshes' ring tolerance 2, then rope counts
-        /// 1 … 500 and segment counts 16 … 1 024 at 2 workers (each with its meshes' RingTolerance).
+        /// 1 … 500 and segment counts 16 … 1 024 at 2 workers (each with its meshes' RingTolerance and the view-distance
+        /// detail distance, 0 = off).
         /// </summary>
-        public static List<(string Id, int Ropes, int Segments, int Workers, float RingTolerance)> Plan(bool quick)
+        public static List<(string Id, int Ropes, int Segments, int Workers, float RingTolerance, float DetailDistance)> Plan(bool quick)
         {
-            var plan = new List<(string, int, int, int, float)>
+            var plan = new List<(string, int, int, int, float, float)>
             {
-                ("goal 100x64 w1", 100, 64, 1, 1f), ("goal 100x64 w2", 100, 64, 2, 1f),
+                ("goal 100x64 w1", 100, 64, 1, 1f, 0f), ("goal 100x64 w2", 100, 64, 2, 1f, 0f),
                 // the goal scene with TubeMeshSettings.RingTolerance 2 (not the goal: its meshes' along-rope tolerance is doubled)
-                ("goal 100x64 w2 tol2", 100, 64, 2, 2f),
+                ("goal 100x64 w2 tol2", 100, 64, 2, 2f, 0f),
+                // the goal scene seen from GoalScene.Viewer with a detail distance of 2 m (not the goal: the far ropes draw
+                // coarser along, by ViewDetail, the same angle of error as a rope at 2 m)
+                ("goal 100x64 w2 view2m", 100, 64, 2, 1f, 2f),
             };
             int[] ropeCounts = quick ? new[] { 1, 10, 100, 500 } : new[] { 1, 2, 5, 10, 20, 50, 100, 200, 500 };
-            foreach (int r in ropeCounts) plan.Add(($"ropes {r}x64 w2", r, 64, 2, 1f));
+            foreach (int r in ropeCounts) plan.Add(($"ropes {r}x64 w2", r, 64, 2, 1f, 0f));
             int[] segmentCounts = quick ? new[] { 16, 256 } : new[] { 16, 32, 64, 128, 256, 1024 };
-            foreach (int s in segmentCounts) plan.Add(($"segments 10x{s} w2", 10, s, 2, 1f));
+            foreach (int s in segmentCounts) plan.Add(($"segments 10x{s} w2", 10, s, 2, 1f, 0f));
             return plan;
         }
 

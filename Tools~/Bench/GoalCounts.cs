@@ -79,8 +79,8 @@ namespace HookeRope.Bench
         /// <summary>Writes the counts onto <paramref name="row"/> when it is the counted configuration (any worker count).</summary>
         public void ApplyTo(GoalRow row)
         {
-            // the probe counts the goal scene, whose meshes draw at ring tolerance 1
-            if (row.Ropes != Ropes || row.Segments != Segments || row.Window != Window || row.RingTolerance != 1f) return;
+            // the probe counts the goal scene, whose meshes draw at ring tolerance 1 whatever their distance
+            if (row.Ropes != Ropes || row.Segments != Segments || row.Window != Window || row.RingTolerance != 1f || row.DetailDistance != 0f) return;
             row.InstructionsPerUnit = this["instructions_per_unit"];
             row.InstructionsPerFrame = this["instructions_per_frame"];
             row.StepInstructionsPerUnit = this["step_instructions_per_unit"];

@@ -17,6 +17,11 @@ namespace HookeRope.Bench
         public int Workers { get; set; }
         /// <summary>The meshes' TubeMeshSettings.RingTolerance (1 in the goal; a baseline saved before it existed reads 1).</summary>
         public float RingTolerance { get; set; } = 1f;
+        /// <summary>
+        /// The view-distance detail of <see cref="GoalScene.ApplyViewDetail"/>, m: 0 in the goal (every rope at
+        /// <see cref="RingTolerance"/>); else each rope's tolerance follows its distance to <see cref="GoalScene.Viewer"/> every frame.
+        /// </summary>
+        public float DetailDistance { get; set; }
         /// <summary>Frames of the scene every repeat measured, e.g. "45-74" (<see cref="GoalScene.Window"/>): rows compare only within one window.</summary>
         public string Window { get; set; }
         /// <summary>Freshly built worlds whose window was measured (each repeat times the same frames).</summary>

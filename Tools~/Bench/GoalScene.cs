@@ -1,3 +1,4 @@
+using HookeRope.Geometry;
 using HookeRope.Mathematics;
 using HookeRope.Radius;
 using HookeRope.Solver;
@@ -23,9 +24,11 @@ namespace HookeRope.Bench
         /// warmed up by <paramref name="warmUpFrames"/> frames (<see cref="WarmUpFrames"/> for a measurement of the window);
         /// <paramref name="adaptiveRings"/> false draws 4 rings per segment (the mesh before issue 18);
         /// <paramref name="ringTolerance"/> is the meshes' <see cref="HookeRope.Geometry.TubeMeshSettings.RingTolerance"/>
-        /// (1, the default, in the goal).
+        /// (1, the default, in the goal); a <paramref name="detailDistance"/> above 0 scales it by each rope's distance to
+        /// <see cref="Viewer"/> before every warm-up frame (<see cref="ApplyViewDetail"/>; 0, off, in the goal).
         /// </summary>
-        public static RopeWorld Build(int ropes, int segments, int workers, bool adaptiveRings = true, int warmUpFrames = BuildFrames, float ringTolerance = 1f)
+        public static RopeWorld Build(int ropes, int segments, int workers, bool adaptiveRings = true, int warmUpFrames = BuildFrames, float ringTolerance = 1f,
+            float detailDistance = 0f)
         {
             var world = new RopeWorld(workers);
             for (int r = 0; r < ropes; r++)
@@ -41,7 +44,11 @@ namespace HookeRope.Bench
                 simulation.Rope.AddPin(segments, end);
                 world.EnableMesh(world.Add(simulation));
             }
-            for (int i = 0; i < warmUpFrames; i++) world.StepAndFillMeshes(Frame);
+            for (int i = 0; i < warmUpFrames; i++)
+            {
+                if (detailDistance > 0f) ApplyViewDetail(world, ringTolerance, detailDistance);
+                world.StepAndFillMeshes(Frame);
+            }
             return world;
         }
 
@@ -66,6 +73,29 @@ namespace HookeRope.Bench
 
         /// <summary>The window as text, e.g. "45-74" (a baseline row compares only with a row of the same window).</summary>
         public static string Window => (WarmUpFrames + 1) + "-" + (WarmUpFrames + WindowFrames);
+
+        /// <summary>
+        /// Where the view-distance rows stand (m): a viewer at eye height 1 m in front of the first lanyard (the lanyards
+        /// hang in a row along +x, 0.5 m apart: the first about 1 m away, the last about 50 m).
+        /// </summary>
+        public static readonly Float3 Viewer = new Float3(0.9f, 1.6f, -1f);
+
+        /// <summary>
+        /// Sets each rope's ring tolerance from its distance to <see cref="Viewer"/> (<see cref="ViewDetail"/>: the box
+        /// around its particles, <paramref name="ringTolerance"/> up to <paramref name="detailDistance"/>, growing beyond
+        /// it), as RopeMeshRenderer does each frame with a View Point.
+        /// </summary>
+        public static void ApplyViewDetail(RopeWorld world, float ringTolerance, float detailDistance)
+        {
+            for (int i = 0; i < world.Count; i++)
+            {
+                var simulation = world.GetRope(i);
+                var rope = simulation.Rope;
+                var viewer = Viewer - rope.Origin;
+                float distance = ViewDetail.DistanceToBox(rope.PositionX, rope.PositionY, rope.PositionZ, rope.ParticleCount, viewer);
+                simulation.MeshSettings.RingTolerance = ViewDetail.RingTolerance(ringTolerance, detailDistance, distance);
+            }
+        }
 
         /// <summary>Substeps of the default settings.</summary>
         public static int Substeps => new RopeSettings().Substeps;

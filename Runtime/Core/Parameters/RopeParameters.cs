@@ -1062,6 +1062,29 @@ namespace HookeRope
             public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Mesh, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
         }
 
+        /// <summary>View distance beyond which the ring tolerance grows with the distance (ViewDetail).</summary>
+        public static class DetailDistance
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(DetailDistance);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Detail distance";
+            /// <summary>Unit.</summary>
+            public const string Unit = "m";
+            /// <summary>Lab JSON name (none: the lab has no viewer).</summary>
+            public const string Json = null;
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Distance from the View Point (m) up to which the rope draws at its Ring Tolerance; beyond it the tolerance grows with the distance (twice as far: twice the tolerance, up to 16), so the detail seen from the viewer stays the same. 0 = off.";
+            /// <summary>Lower bound (0: off).</summary>
+            public const float Min = 0f;
+            /// <summary>Upper bound.</summary>
+            public const float Max = 1e4f;
+            /// <summary>Default (off).</summary>
+            public const float Default = 0f;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Mesh, ParameterKind.Float, Min, Max, Default, Tooltip, Json, true);
+        }
+
         /// <summary>Rings per rope segment along the smooth curve (core only).</summary>
         public static class RingsPerSegment
         {
@@ -1233,7 +1256,7 @@ namespace HookeRope
             ViscousDrag.Row, DragCoefficient.Row, SkinFriction.Row, AirDensity.Row, Wind.Row,
             PoissonThinning.Row, Necking.Row, NeckMode.Row, NeckRadiusFraction.Row, DefectPosition.Row, NeckZoneDiameters.Row, NeckGrowthStrain.Row, SlackKeepsRestRadius.Row,
             Fracture.Row, BreakStrain.Row, BreakRadiusFraction.Row,
-            RadialSegments.Row, RingTolerance.Row, RingsPerSegment.Row, AdaptiveRings.Row, VPerMetre.Row, CapEnds.Row, BurrSeed.Row, BurrTexture.Row, Color.Row,
+            RadialSegments.Row, RingTolerance.Row, DetailDistance.Row, RingsPerSegment.Row, AdaptiveRings.Row, VPerMetre.Row, CapEnds.Row, BurrSeed.Row, BurrTexture.Row, Color.Row,
         };
 
         /// <summary>The row named <paramref name="name"/> (ordinal), or null.</summary>

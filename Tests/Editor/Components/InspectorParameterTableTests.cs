@@ -222,7 +222,7 @@ namespace HookeRope.Tests.Components
                     Assert.That(Convert.ToDouble(range.ConstructorArguments[1].Value), Is.EqualTo((double)(float)row.Max), where + " maximum");
                 checkedFields++;
             }
-            Assert.That(checkedFields, Is.EqualTo(30), "numeric serialized fields of ElasticRope (28: 6 of the material law and 5 of the drag, issue 15) and RopeMeshRenderer (2: radial segments, ring tolerance)");
+            Assert.That(checkedFields, Is.EqualTo(31), "numeric serialized fields of ElasticRope (28: 6 of the material law and 5 of the drag, issue 15) and RopeMeshRenderer (3: radial segments, ring tolerance, detail distance)");
         }
 
         static IEnumerable<string> InspectorRowNames() => InspectorRows.Select(r => r.Name);

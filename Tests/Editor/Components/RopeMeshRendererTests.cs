@@ -178,6 +178,28 @@ namespace HookeRope.Tests.Components
             foreach (int used in inUse) Assert.That(used, Is.LessThanOrEqualTo(capacity));
         }
 
+        /// <summary>
+        /// Swings two ropes' grips alike for 60 frames of 0.01 s, drawing both after every step; returns the most vertices
+        /// each drew.
+        /// </summary>
+        static (int A, int B) SwingBoth((ElasticRope Rope, RopeMeshRenderer Renderer, Transform Grip) a, (ElasticRope Rope, RopeMeshRenderer Renderer, Transform Grip) b)
+        {
+            int mostA = 0, mostB = 0;
+            for (int frame = 0; frame < 60; frame++)
+            {
+                var p = new Vector3(0.3f + 0.25f * System.MathF.Sin(0.2f * frame), 2f, 0.1f * System.MathF.Sin(0.3f * frame));
+                a.Grip.position = p;
+                b.Grip.position = p;
+                a.Rope.Simulate(0.01f);
+                b.Rope.Simulate(0.01f);
+                Assert.That(a.Renderer.Render(1f), Is.True);
+                Assert.That(b.Renderer.Render(1f), Is.True);
+                mostA = System.Math.Max(mostA, a.Renderer.Mesh.GetSubMesh(0).vertexCount);
+                mostB = System.Math.Max(mostB, b.Renderer.Mesh.GetSubMesh(0).vertexCount);
+            }
+            return (mostA, mostB);
+        }
+
         [Test]
         public void RingToleranceReachesTheCoreMeshAndDrawsFewerVertices()
         {
@@ -186,24 +208,96 @@ namespace HookeRope.Tests.Components
             var (loose, looseRenderer, looseGrip) = Build();
             foreach (var rope in new[] { exact, loose }) { rope.Radius = 0.002f; rope.Rebuild(); }
             looseRenderer.RingTolerance = 4f;
-            int exactMost = 0, looseMost = 0;
-            for (int frame = 0; frame < 60; frame++)
-            {
-                var p = new Vector3(0.3f + 0.25f * System.MathF.Sin(0.2f * frame), 2f, 0.1f * System.MathF.Sin(0.3f * frame));
-                exactGrip.position = p;
-                looseGrip.position = p;
-                exact.Simulate(0.01f);
-                loose.Simulate(0.01f);
-                Assert.That(exactRenderer.Render(1f), Is.True);
-                Assert.That(looseRenderer.Render(1f), Is.True);
-                exactMost = System.Math.Max(exactMost, exactRenderer.Mesh.GetSubMesh(0).vertexCount);
-                looseMost = System.Math.Max(looseMost, looseRenderer.Mesh.GetSubMesh(0).vertexCount);
-            }
+            var (exactMost, looseMost) = SwingBoth((exact, exactRenderer, exactGrip), (loose, looseRenderer, looseGrip));
             TestContext.WriteLine("most vertices in use over 60 frames: " + exactMost + " at Ring Tolerance 1, " + looseMost + " at 4");
             Assert.That(loose.Simulation.MeshSettings.RingTolerance, Is.EqualTo(4f), "the renderer's value is the core mesh's");
             Assert.That(exact.Simulation.MeshSettings.RingTolerance, Is.EqualTo(1f));
             Assert.That(looseMost, Is.LessThan(exactMost));
             AssertMeshFollowsRope(loose, looseRenderer.Mesh);
+        }
+
+        /// <summary>World distance (m) from <paramref name="viewer"/> to the box around the rope's particles.</summary>
+        static float DistanceToParticleBox(ElasticRope rope, Vector3 viewer)
+        {
+            Vector3 min = rope.GetParticlePosition(0), max = min;
+            for (int i = 1; i < rope.ParticleCount; i++)
+            {
+                min = Vector3.Min(min, rope.GetParticlePosition(i));
+                max = Vector3.Max(max, rope.GetParticlePosition(i));
+            }
+            return (viewer - Vector3.Max(min, Vector3.Min(max, viewer))).magnitude;
+        }
+
+        [Test]
+        public void ADistantViewPointScalesTheRingToleranceAndDrawsFewerVertices()
+        {
+            // two identical swung ropes, one seen from 1 m, one from 40 m, detail distance 2 m; the far one's tolerance is
+            // capped at 16 (40 / 2 = 20), the near one's stays 1
+            var (near, nearRenderer, nearGrip) = Build();
+            var (far, farRenderer, farGrip) = Build();
+            foreach (var rope in new[] { near, far }) { rope.Radius = 0.002f; rope.Rebuild(); }
+            nearRenderer.ViewPoint = _scene.Point("Near viewer", new Vector3(0.15f, 2.5f, 1f));
+            farRenderer.ViewPoint = _scene.Point("Far viewer", new Vector3(0.15f, 2.5f, 40f));
+            nearRenderer.DetailDistance = 2f;
+            farRenderer.DetailDistance = 2f;
+            var (nearMost, farMost) = SwingBoth((near, nearRenderer, nearGrip), (far, farRenderer, farGrip));
+            TestContext.WriteLine("most vertices in use over 60 frames: " + nearMost + " seen from 1 m, " + farMost + " from 40 m");
+            Assert.That(nearRenderer.DrawnRingTolerance, Is.EqualTo(1f), "inside the detail distance");
+            Assert.That(farRenderer.DrawnRingTolerance, Is.EqualTo(16f), "40 m / 2 m, capped");
+            Assert.That(far.Simulation.MeshSettings.RingTolerance, Is.EqualTo(16f), "the drawn value is the core mesh's");
+            Assert.That(farRenderer.RingTolerance, Is.EqualTo(1f), "the setting itself is left alone");
+            Assert.That(farMost, Is.LessThan(nearMost));
+            AssertMeshFollowsRope(far, farRenderer.Mesh);
+
+            // between the two: d / D of the distance to the particles' box, also under a uniform scale of the rope's
+            // GameObject (the distance is measured in its local space and turned back into metres)
+            var viewer = farRenderer.ViewPoint;
+            viewer.position = new Vector3(0.15f, 2.5f, 9f);
+            Assert.That(farRenderer.Render(1f), Is.True);
+            float expected = ViewDetail.RingTolerance(1f, 2f, DistanceToParticleBox(far, viewer.position));
+            TestContext.WriteLine("seen from 9 m: tolerance " + farRenderer.DrawnRingTolerance + ", expected " + expected);
+            Assert.That(expected, Is.GreaterThan(4f).And.LessThan(4.6f));
+            Assert.That(farRenderer.DrawnRingTolerance, Is.EqualTo(expected).Within(1e-4f));
+            far.transform.localScale = new Vector3(2f, 2f, 2f);
+            Assert.That(farRenderer.Render(1f), Is.True);
+            Assert.That(farRenderer.DrawnRingTolerance, Is.EqualTo(expected).Within(1e-4f), "the same distance in metres at scale 2");
+
+            // off again: no view point, or a detail distance of 0
+            farRenderer.DetailDistance = 0f;
+            Assert.That(farRenderer.Render(1f), Is.True);
+            Assert.That(farRenderer.DrawnRingTolerance, Is.EqualTo(1f));
+            farRenderer.DetailDistance = 2f;
+            farRenderer.ViewPoint = null;
+            Assert.That(farRenderer.Render(1f), Is.True);
+            Assert.That(farRenderer.DrawnRingTolerance, Is.EqualTo(1f));
+            Assert.That(() => farRenderer.DetailDistance = -1f, Throws.TypeOf<System.ArgumentOutOfRangeException>().With.Message.Contain("DetailDistance"));
+            Assert.That(farRenderer.DetailDistance, Is.EqualTo(2f), "a rejected value leaves the setting");
+        }
+
+        [Test]
+        public void AViewPointThatMovesEveryFrameAllocatesNothing()
+        {
+            var (rope, renderer, grip) = Build();
+            var viewer = _scene.Point("Viewer", new Vector3(0f, 2f, 3f));
+            renderer.ViewPoint = viewer;
+            renderer.DetailDistance = 1f;
+            for (int step = 0; step < 20; step++) rope.Simulate(0.01f);
+            for (int frame = 0; frame < 3; frame++) renderer.Render(1f);
+            float nearest = float.PositiveInfinity, farthest = 0f;
+            Assert.That(() =>
+            {
+                for (int frame = 0; frame < 120; frame++)
+                {
+                    // the viewer walks from 3 m to 15 m and back
+                    viewer.position = new Vector3(0f, 2f, 9f - 6f * System.MathF.Cos(0.05f * frame));
+                    renderer.Render(1f);
+                    nearest = System.Math.Min(nearest, renderer.DrawnRingTolerance);
+                    farthest = System.Math.Max(farthest, renderer.DrawnRingTolerance);
+                }
+            }, Is.Not.AllocatingGCMemory(), "120 frames with the viewer moving");
+            TestContext.WriteLine("ring tolerance over the walk: " + nearest + " … " + farthest);
+            Assert.That(nearest, Is.LessThan(3.5f));
+            Assert.That(farthest, Is.GreaterThan(13f));
         }
 
         [TestCase(false)]

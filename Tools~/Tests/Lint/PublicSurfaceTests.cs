@@ -28,6 +28,8 @@ namespace HookeRope.Tests.Lint
             // Mesh data; the burr texture every renderer of the strands needs (the lab's figures, a glTF export, a non-Unity host)
             "HookeRope.Geometry.TubeMeshSettings", "HookeRope.Geometry.MeshFrame", "HookeRope.Fracture.BurrSettings", "HookeRope.Geometry.TubeVertex", "HookeRope.Geometry.TubeMeshUpdate",
             "HookeRope.Fracture.BurrTextureGenerator",
+            // the ring tolerance by view distance (issue 18): the component's rule, for any host that draws many ropes
+            "HookeRope.Geometry.ViewDetail",
             // Mathematics
             "HookeRope.Mathematics.Float3", "HookeRope.Mathematics.Quat",
             // Many ropes stepped on worker threads (issue 18 item 4) and the mesh buffers it fills

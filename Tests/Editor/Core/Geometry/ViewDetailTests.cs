@@ -1,0 +1,121 @@
+using System;
+using HookeRope.Geometry;
+using HookeRope.Mathematics;
+using NUnit.Framework;
+
+namespace HookeRope.Tests.Core.Geometry
+{
+    /// <summary>
+    /// <see cref="ViewDetail"/> (issue 18): beyond the detail distance D the ring tolerance grows as d / D up to 16, so the
+    /// along-rope error seen from the viewer, an angle, is never more than at D; the distance is to the box around the
+    /// particles, never more than to the nearest one; bad input is named with its range.
+    /// </summary>
+    public sealed class ViewDetailTests
+    {
+        private const float R = 0.01f;
+
+        [TestCase(1f, 0f, 50f, 1f, TestName = "off at a detail distance of 0")]
+        [TestCase(1f, 2f, 1.5f, 1f, TestName = "inside the detail distance: the ring tolerance")]
+        [TestCase(1f, 2f, 2f, 1f, TestName = "at the detail distance: the ring tolerance")]
+        [TestCase(1f, 2f, 6f, 3f, TestName = "three times as far: three times the tolerance")]
+        [TestCase(2f, 2f, 6f, 6f, TestName = "the ring tolerance is scaled, not replaced")]
+        [TestCase(1f, 2f, 100f, 16f, TestName = "capped at the ring tolerance's upper bound")]
+        [TestCase(1f, 2f, float.PositiveInfinity, 16f, TestName = "an infinite distance: the cap")]
+        [TestCase(1f, 2f, float.NaN, 1f, TestName = "a distance that is not a number: full detail")]
+        public void TheToleranceGrowsWithTheDistanceBeyondTheDetailDistance(float tolerance, float detail, float distance, float expected)
+        {
+            Assert.That(ViewDetail.RingTolerance(tolerance, detail, distance), Is.EqualTo(expected).Within(1e-6f));
+        }
+
+        [Test]
+        public void BadInputIsNamedWithItsRange()
+        {
+            Assert.That(() => ViewDetail.RingTolerance(0.5f, 2f, 3f), Throws.TypeOf<ArgumentOutOfRangeException>()
+                .With.Message.Contain("RingTolerance").And.Message.Contain("[1, 16]"));
+            Assert.That(() => ViewDetail.RingTolerance(1f, -1f, 3f), Throws.TypeOf<ArgumentOutOfRangeException>()
+                .With.Message.Contain("DetailDistance"));
+            Assert.That(() => ViewDetail.RingTolerance(1f, float.NaN, 3f), Throws.TypeOf<ArgumentOutOfRangeException>()
+                .With.Message.Contain("DetailDistance"));
+            var x = new float[2];
+            Assert.That(() => ViewDetail.DistanceToBox(x, x, x, 3, default), Throws.TypeOf<ArgumentOutOfRangeException>()
+                .With.Message.Contain("count"));
+        }
+
+        [Test]
+        public void TheDistanceIsToTheBoxAroundThePositions()
+        {
+            // a box from (0, 0, 0) to (2, 1, 1)
+            float[] x = { 0f, 2f, 1f }, y = { 0f, 1f, 0.5f }, z = { 1f, 0f, 0.2f };
+            Assert.That(ViewDetail.DistanceToBox(x, y, z, 3, new Float3(1f, 0.5f, 0.5f)), Is.EqualTo(0f), "inside");
+            Assert.That(ViewDetail.DistanceToBox(x, y, z, 3, new Float3(4f, 0.5f, 0.5f)), Is.EqualTo(2f).Within(1e-6f), "off one face");
+            Assert.That(ViewDetail.DistanceToBox(x, y, z, 3, new Float3(3f, 3f, 3f)), Is.EqualTo(3f).Within(1e-6f), "off a corner: sqrt(1 + 4 + 4)");
+            Assert.That(ViewDetail.DistanceToBox(x, y, z, 2, new Float3(-1f, 0f, 0f)), Is.EqualTo(1f).Within(1e-6f), "the first count positions only");
+            Assert.That(ViewDetail.DistanceToBox(x, y, z, 0, default), Is.EqualTo(float.PositiveInfinity), "no positions");
+            z[2] = float.NaN;
+            Assert.That(ViewDetail.DistanceToBox(x, y, z, 3, default), Is.NaN, "a position that is not finite");
+            Assert.That(ViewDetail.RingTolerance(1f, 2f, ViewDetail.DistanceToBox(x, y, z, 3, default)), Is.EqualTo(1f), "which draws at full detail");
+        }
+
+        [Test]
+        public void TheDistanceIsNeverMoreThanToTheNearestPosition()
+        {
+            var random = new Random(18);
+            var x = new float[65];
+            var y = new float[65];
+            var z = new float[65];
+            for (int trial = 0; trial < 200; trial++)
+            {
+                for (int i = 0; i < x.Length; i++)
+                {
+                    x[i] = (float)(random.NextDouble() * 4 - 2);
+                    y[i] = (float)(random.NextDouble() * 4 - 2);
+                    z[i] = (float)(random.NextDouble() * 4 - 2);
+                }
+                var point = new Float3((float)(random.NextDouble() * 40 - 20), (float)(random.NextDouble() * 40 - 20), (float)(random.NextDouble() * 40 - 20));
+                double nearest = double.PositiveInfinity;
+                for (int i = 0; i < x.Length; i++)
+                {
+                    double dx = x[i] - point.X, dy = y[i] - point.Y, dz = z[i] - point.Z;
+                    nearest = Math.Min(nearest, Math.Sqrt(dx * dx + dy * dy + dz * dz));
+                }
+                Assert.That(ViewDetail.DistanceToBox(x, y, z, x.Length, point), Is.LessThanOrEqualTo(nearest * (1 + 1e-6)));
+            }
+        }
+
+        /// <summary>
+        /// On four bent shapes at 16 sides, seen from D … 64 D: the measured surface error over the view distance (the angle
+        /// it spans) is at most the full-detail bound over D, and the ring count falls with the distance, to at most a
+        /// quarter of the bent segments' rings (plus one per segment) once the tolerance reaches 16.
+        /// </summary>
+        [TestCase("lanyard")]
+        [TestCase("helix")]
+        [TestCase("u-turn")]
+        [TestCase("wave")]
+        public void TheErrorSeenFromTheViewerIsNeverMoreThanAtTheDetailDistance(string name)
+        {
+            const int radial = 16;
+            const float detail = 2f;
+            RopeShape shape = AdaptiveRingsTests.Shape(name);
+            int n = shape.Segments;
+            double polygon = R * (1.0 - Math.Cos(Math.PI / radial));
+            double nearBound = polygon + RingNeed.Tolerance(radial) * R;
+            int rings = int.MaxValue, full = 0;
+            foreach (float distance in new[] { 2f, 4f, 8f, 16f, 32f, 128f })
+            {
+                float tolerance = ViewDetail.RingTolerance(1f, detail, distance);
+                var builder = TubeMeshBuilder.Adaptive(new TubeMeshSettings { RadialSegments = radial, RingTolerance = tolerance }, n, R, null, AdaptiveRings.MaxRingsPerSegment);
+                AdaptiveRingsTests.BuildAdaptive(builder, shape, R, new bool[n], out var vertices, out _);
+                double deviation = TubeDeviation.Largest(shape, R, builder.Layout, radial, vertices, out _, out _);
+                int count = builder.Layout.RingCount;
+                if (distance == detail) full = count;
+                TestContext.WriteLine($"{name} at {distance} m: tolerance {tolerance}, {count} rings, deviation {deviation / R:F4} R, " +
+                                      $"seen {deviation / distance * 1e6:F1} µrad (at D: at most {nearBound / detail * 1e6:F1})");
+                Assert.That(deviation / distance, Is.LessThanOrEqualTo(nearBound / detail * 1.0001 + 1e-9), "the angle seen is at most the one at D");
+                Assert.That(count, Is.LessThanOrEqualTo(rings), "no more rings farther away");
+                rings = count;
+            }
+            Assert.That(rings, Is.LessThanOrEqualTo(full / 4.0 + n + 1), "at the cap a quarter of the rings, one per segment at least");
+            if (full > 2 * (n + 1)) Assert.That(rings, Is.LessThan(full));
+        }
+    }
+}
