@@ -69,7 +69,7 @@ namespace HookeRope
         [SerializeField, Range(RopeParameters.RingTolerance.Min, RopeParameters.RingTolerance.Max), Tooltip(RopeParameters.RingTolerance.Tooltip)]
         float m_RingTolerance = RopeParameters.RingTolerance.Default;
 
-        [SerializeField, Tooltip("The viewer whose distance sets the rope's detail beyond Detail Distance, e.g. the XR camera's Transform. None: full detail at any distance.")]
+        [SerializeField, Tooltip("The viewer whose distance sets the rope's detail beyond Detail Distance, e.g. the XR camera's Transform. None: the main camera (the enabled Camera tagged MainCamera), or full detail without one.")]
         Transform m_ViewPoint;
 
         [SerializeField, Min(RopeParameters.DetailDistance.Min), Tooltip(RopeParameters.DetailDistance.Tooltip)]
@@ -121,8 +121,9 @@ namespace HookeRope
 
         /// <summary>
         /// The viewer (e.g. the XR camera's Transform) whose distance to the rope scales its ring tolerance beyond
-        /// <see cref="DetailDistance"/> (<see cref="ViewDetail"/>); null: the rope draws at <see cref="RingTolerance"/> at
-        /// any distance.
+        /// <see cref="DetailDistance"/> (<see cref="ViewDetail"/>); null: Camera.main's (the first enabled Camera tagged
+        /// "MainCamera", as an XR rig's camera is), or, without one, <see cref="RingTolerance"/> at any distance. A prefab
+        /// cannot name a scene object, so a rope prefab with a Detail Distance relies on the main camera.
         /// </summary>
         public Transform ViewPoint
         {
@@ -291,14 +292,21 @@ namespace HookeRope
         }
 
         /// <summary>
-        /// <see cref="RingTolerance"/>, scaled by the distance from <see cref="ViewPoint"/> to the box around the
+        /// <see cref="RingTolerance"/>, scaled by the distance from <see cref="ViewPoint"/> (or the main camera) to the box around the
         /// <paramref name="count"/> interpolated positions where <see cref="DetailDistance"/> is on: measured in this
         /// GameObject's local space and turned into metres by its smallest scale (never coarser than the distance asks for).
         /// </summary>
         float ViewRingTolerance(int count)
         {
-            if (m_ViewPoint == null || !(m_DetailDistance > 0f)) return m_RingTolerance;
-            Vector3 viewer = transform.InverseTransformPoint(m_ViewPoint.position);
+            if (!(m_DetailDistance > 0f)) return m_RingTolerance;
+            Transform viewPoint = m_ViewPoint;
+            if (viewPoint == null)
+            {
+                Camera main = Camera.main;
+                if (main == null) return m_RingTolerance;
+                viewPoint = main.transform;
+            }
+            Vector3 viewer = transform.InverseTransformPoint(viewPoint.position);
             Vector3 scale = transform.lossyScale;
             float smallest = Math.Min(Math.Abs(scale.x), Math.Min(Math.Abs(scale.y), Math.Abs(scale.z)));
             float distance = ViewDetail.DistanceToBox(_x, _y, _z, count, viewer.ToFloat3()) * smallest;

@@ -269,17 +269,35 @@ namespace HookeRope.Tests.Components
             farRenderer.DetailDistance = 2f;
             farRenderer.ViewPoint = null;
             Assert.That(farRenderer.Render(1f), Is.True);
-            Assert.That(farRenderer.DrawnRingTolerance, Is.EqualTo(1f));
+            Assert.That(farRenderer.DrawnRingTolerance, Is.EqualTo(1f), "no view point and no main camera");
+
+            // no view point: the main camera's distance (the first enabled Camera tagged MainCamera)
+            var cameraObject = _scene.Track(new GameObject("XR camera", typeof(Camera)));
+            cameraObject.transform.position = new Vector3(0.15f, 2.5f, 9f);
+            Assert.That(farRenderer.Render(1f), Is.True);
+            Assert.That(farRenderer.DrawnRingTolerance, Is.EqualTo(1f), "an untagged camera is not the main camera");
+            cameraObject.tag = "MainCamera";
+            Assert.That(farRenderer.Render(1f), Is.True);
+            Assert.That(farRenderer.DrawnRingTolerance, Is.EqualTo(expected).Within(1e-4f), "the main camera at 9 m");
+            cameraObject.GetComponent<Camera>().enabled = false;
+            Assert.That(farRenderer.Render(1f), Is.True);
+            Assert.That(farRenderer.DrawnRingTolerance, Is.EqualTo(1f), "a disabled camera is not the main camera");
             Assert.That(() => farRenderer.DetailDistance = -1f, Throws.TypeOf<System.ArgumentOutOfRangeException>().With.Message.Contain("DetailDistance"));
             Assert.That(farRenderer.DetailDistance, Is.EqualTo(2f), "a rejected value leaves the setting");
         }
 
-        [Test]
-        public void AViewPointThatMovesEveryFrameAllocatesNothing()
+        [TestCase(false, TestName = "AViewPointThatMovesEveryFrameAllocatesNothing(the view point)")]
+        [TestCase(true, TestName = "AViewPointThatMovesEveryFrameAllocatesNothing(the main camera)")]
+        public void AViewPointThatMovesEveryFrameAllocatesNothing(bool mainCamera)
         {
             var (rope, renderer, grip) = Build();
             var viewer = _scene.Point("Viewer", new Vector3(0f, 2f, 3f));
-            renderer.ViewPoint = viewer;
+            if (mainCamera)
+            {
+                viewer.gameObject.AddComponent<Camera>();
+                viewer.gameObject.tag = "MainCamera";
+            }
+            else renderer.ViewPoint = viewer;
             renderer.DetailDistance = 1f;
             for (int step = 0; step < 20; step++) rope.Simulate(0.01f);
             for (int frame = 0; frame < 3; frame++) renderer.Render(1f);

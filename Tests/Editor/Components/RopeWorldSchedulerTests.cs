@@ -53,7 +53,14 @@ namespace HookeRope.Tests.Components
             rope.RestLength = 1f + 0.4f * index;
             rope.SegmentCount = 10 + 6 * index;
             rope.StartAttachment.Point = anchor;
-            go.GetComponent<RopeMeshRenderer>().RadialSegments = 6 + 2 * index;
+            var renderer = go.GetComponent<RopeMeshRenderer>();
+            renderer.RadialSegments = 6 + 2 * index;
+            if (_viewDetail)
+            {
+                // seen from 3 … 9 m with a detail distance of 1 m: ring tolerances 3 … 9
+                renderer.ViewPoint = _scene.Point("Viewer " + index, new Vector3(-3f, 5f, 0f));
+                renderer.DetailDistance = 1f;
+            }
             switch (index % 4)
             {
                 case 1:
@@ -107,9 +114,14 @@ namespace HookeRope.Tests.Components
             return bits;
         }
 
-        [Test]
-        public void RopesSteppedAndDrawnByTheWorldGiveTheBitsOfEachRopeAlone()
+        /// <summary>Rope gives each renderer a view point 3 … 9 m away and a detail distance of 1 m.</summary>
+        bool _viewDetail;
+
+        [TestCase(false)]
+        [TestCase(true)]
+        public void RopesSteppedAndDrawnByTheWorldGiveTheBitsOfEachRopeAlone(bool viewDetail)
         {
+            _viewDetail = viewDetail;
             const int ropeCount = 4, steps = 40;
             var inWorld = new List<List<int>>();
             var ropes = Ropes(ropeCount);
@@ -121,6 +133,12 @@ namespace HookeRope.Tests.Components
                 WorldDraw();
             }
             foreach (var rope in ropes) inWorld.Add(Bits(rope));
+            var drawn = new float[ropeCount];
+            for (int i = 0; i < ropeCount; i++) drawn[i] = ropes[i].GetComponent<RopeMeshRenderer>().DrawnRingTolerance;
+            TestContext.WriteLine("ring tolerances drawn in the world: " + string.Join(", ", drawn));
+            for (int i = 0; i < ropeCount; i++)
+                if (viewDetail) Assert.That(drawn[i], Is.GreaterThan(2.5f), "rope " + i + " drew at its view distance's tolerance");
+                else Assert.That(drawn[i], Is.EqualTo(1f), "rope " + i);
             RopeWorldScheduler.Shutdown();
             _scene.End();
             _scene.Begin();

@@ -17,21 +17,10 @@ namespace HookeRope.StandIn.Facts
     [TestFixture]
     public sealed class CharacterControllerFactsTests
     {
-        bool _wasPlaying;
+        FreshWorld _world;
 
-        [SetUp]
-        public void SetUp()
-        {
-            _wasPlaying = World.IsPlaying;
-            World.Reset();
-        }
-
-        [TearDown]
-        public void TearDown()
-        {
-            World.Reset();
-            World.IsPlaying = _wasPlaying;
-        }
+        [SetUp] public void SetUp() => _world = new FreshWorld();
+        [TearDown] public void TearDown() => _world.Dispose();
 
         static CharacterController Controller(Vector3 position)
         {

@@ -22,21 +22,15 @@ namespace HookeRope.StandIn.Facts
     public sealed class SerializationFactsTests
     {
         const string PrefabAssetPath = "Packages/com.hookerope.elastic-rope/Runtime/Prefabs/ElasticRope.prefab";
-        bool _wasPlaying;
+        FreshWorld _world;
         string _temp;
 
-        [SetUp]
-        public void SetUp()
-        {
-            _wasPlaying = World.IsPlaying;
-            World.Reset();
-        }
+        [SetUp] public void SetUp() => _world = new FreshWorld();
 
         [TearDown]
         public void TearDown()
         {
-            World.Reset();
-            World.IsPlaying = _wasPlaying;
+            _world.Dispose();
             if (_temp != null && Directory.Exists(_temp)) Directory.Delete(_temp, true);
             _temp = null;
         }

@@ -241,7 +241,10 @@ namespace HookeRope.StandIn
             if (layer < 0 || layer > 31) throw YamlError.At(m_File, doc.Body.Find("m_Layer").Line, "m_Layer of '" + go.name + "' must be 0…31");
             go.layer = layer;
             string tag = (string)Value(doc, "m_TagString", typeof(string)) ?? "Untagged";
-            if (tag != "Untagged") throw StandInError.Unsupported("GameObject tags (" + m_File + ": '" + go.name + "' has m_TagString " + tag + ")");
+            // Unity's built-in tags (GameObject.BuiltInTags); a project tag would need the TagManager, which is not modelled
+            if (System.Array.IndexOf(GameObject.BuiltInTags, tag) < 0)
+                throw StandInError.Unsupported("GameObject tags beyond the built-in ones (" + m_File + ": '" + go.name + "' has m_TagString " + tag + ")");
+            go.tag = tag;
             ApplyHideFlags(doc, go);
         }
 
