@@ -134,8 +134,10 @@ namespace HookeRope
         /// <summary>
         /// Distance from <see cref="ViewPoint"/> (m, range <see cref="RopeParameters.DetailDistance"/>, default 0 = off) up
         /// to which the rope draws at <see cref="RingTolerance"/>; beyond it the tolerance grows in proportion to the
-        /// distance (to the box around the rope's particles), up to 16, so the along-rope detail seen from the viewer stays
-        /// what it is at this distance (<see cref="ViewDetail.RingTolerance"/>). Read every frame, allocation-free.
+        /// distance (to the box around the rope's particles), up to 16, and from 4.4 times this distance an unbroken rope
+        /// draws half its sides (<see cref="DrawnRadialSegments"/>), so the detail seen from the viewer stays what it is at
+        /// this distance (<see cref="ViewDetail"/>). Read every frame; allocation-free once the rope has drawn at both side
+        /// counts (the first switch makes the other count's builder and keeps it).
         /// </summary>
         public float DetailDistance
         {
@@ -145,6 +147,12 @@ namespace HookeRope
 
         /// <summary>The ring tolerance the last drawn frame used: <see cref="RingTolerance"/>, scaled by the view distance where <see cref="DetailDistance"/> is on.</summary>
         public float DrawnRingTolerance { get; private set; } = RopeParameters.RingTolerance.Default;
+
+        /// <summary>
+        /// The side count the last drawn frame used: <see cref="RadialSegments"/>, or half of it (rounded up, at least 3) on
+        /// an unbroken rope from 4.4 detail distances away until it comes within 4 again (<see cref="ViewDetail.RadialSegments"/>).
+        /// </summary>
+        public int DrawnRadialSegments { get; private set; }
 
         /// <summary>The generated mesh, or null before the first <see cref="Render"/>.</summary>
         public Mesh Mesh => _mesh;
@@ -282,35 +290,41 @@ namespace HookeRope
             if (!_guard.AcceptDrawingFrame(transform)) return false;
             EnsureMesh();
 
-            if (simulation.MeshSettings.RadialSegments != m_RadialSegments) simulation.MeshSettings.RadialSegments = m_RadialSegments;
             InterpolateIntoLocalSpace(simulation.Rope, alpha, origin, alignEnds);
             if (!_guard.AcceptMeshPositions(_x, _y, _z, simulation.Rope.ParticleCount)) return false;
-            float tolerance = ViewRingTolerance(simulation.Rope.ParticleCount);
+            ChooseDetail(simulation.Rope, out int sides, out float tolerance);
+            if (simulation.MeshSettings.RadialSegments != sides) simulation.MeshSettings.RadialSegments = sides;
             if (!simulation.MeshSettings.RingTolerance.Equals(tolerance)) simulation.MeshSettings.RingTolerance = tolerance;
+            DrawnRadialSegments = sides;
             DrawnRingTolerance = tolerance;
             return true;
         }
 
         /// <summary>
-        /// <see cref="RingTolerance"/>, scaled by the distance from <see cref="ViewPoint"/> (or the main camera) to the box around the
-        /// <paramref name="count"/> interpolated positions where <see cref="DetailDistance"/> is on: measured in this
-        /// GameObject's local space and turned into metres by its smallest scale (never coarser than the distance asks for).
+        /// The side count and ring tolerance of this frame: <see cref="RadialSegments"/> and <see cref="RingTolerance"/>,
+        /// or where <see cref="DetailDistance"/> is on, those the distance from <see cref="ViewPoint"/> (or the main camera)
+        /// to the box around the interpolated positions asks for (<see cref="ViewDetail"/>; fewer sides only on an unbroken
+        /// rope, whose burrs keep their strands). The distance is measured in this GameObject's local space and turned into
+        /// metres by its smallest scale (never coarser than the distance asks for).
         /// </summary>
-        float ViewRingTolerance(int count)
+        void ChooseDetail(Rope rope, out int sides, out float tolerance)
         {
-            if (!(m_DetailDistance > 0f)) return m_RingTolerance;
+            sides = m_RadialSegments;
+            tolerance = m_RingTolerance;
+            if (!(m_DetailDistance > 0f)) return;
             Transform viewPoint = m_ViewPoint;
             if (viewPoint == null)
             {
                 Camera main = Camera.main;
-                if (main == null) return m_RingTolerance;
+                if (main == null) return;
                 viewPoint = main.transform;
             }
             Vector3 viewer = transform.InverseTransformPoint(viewPoint.position);
             Vector3 scale = transform.lossyScale;
             float smallest = Math.Min(Math.Abs(scale.x), Math.Min(Math.Abs(scale.y), Math.Abs(scale.z)));
-            float distance = ViewDetail.DistanceToBox(_x, _y, _z, count, viewer.ToFloat3()) * smallest;
-            return ViewDetail.RingTolerance(m_RingTolerance, m_DetailDistance, distance);
+            float distance = ViewDetail.DistanceToBox(_x, _y, _z, rope.ParticleCount, viewer.ToFloat3()) * smallest;
+            if (rope.BrokenSegmentCount == 0) sides = ViewDetail.RadialSegments(m_RadialSegments, m_DetailDistance, distance, DrawnRadialSegments);
+            tolerance = ViewDetail.RingTolerance(m_RingTolerance, m_DetailDistance, distance, m_RadialSegments, sides);
         }
 
         /// <summary>
@@ -321,16 +335,24 @@ namespace HookeRope
         /// </summary>
         void Upload(RopeSimulation simulation, TubeMeshUpdate update, TubeVertex[] vertices, int[] indices)
         {
-            if (update.TopologyChanged || !ReferenceEquals(_uploaded, simulation) || _uploadedTopology != simulation.MeshTopologyVersion ||
+            bool sameSimulation = ReferenceEquals(_uploaded, simulation);
+            if (update.TopologyChanged || !sameSimulation || _uploadedTopology != simulation.MeshTopologyVersion ||
                 _vertexCount != update.VertexCount || _indexCount != update.IndexCount)
             {
                 _uploaded = simulation;
                 _uploadedTopology = simulation.MeshTopologyVersion;
                 _vertexCount = update.VertexCount;
                 _indexCount = update.IndexCount;
-                // the buffers hold the most the tube can need: a new ring budget steps within them (no reallocation)
+                // the buffers hold the most the tube can need: a new ring budget steps within them (no reallocation);
+                // for the same simulation they only grow, so a far rope switching between its two side counts
+                // (DetailDistance) keeps the larger buffers
                 int vertexCapacity = Math.Max(simulation.GetVertexCapacity(), update.VertexCount);
                 int indexCapacity = Math.Max(simulation.GetIndexCapacity(), update.IndexCount);
+                if (sameSimulation)
+                {
+                    vertexCapacity = Math.Max(vertexCapacity, _vertexCapacity);
+                    indexCapacity = Math.Max(indexCapacity, _indexCapacity);
+                }
                 if (vertexCapacity != _vertexCapacity)
                 {
                     _vertexCapacity = vertexCapacity;

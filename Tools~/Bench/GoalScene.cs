@@ -81,9 +81,10 @@ namespace HookeRope.Bench
         public static readonly Float3 Viewer = new Float3(0.9f, 1.6f, -1f);
 
         /// <summary>
-        /// Sets each rope's ring tolerance from its distance to <see cref="Viewer"/> (<see cref="ViewDetail"/>: the box
-        /// around its particles, <paramref name="ringTolerance"/> up to <paramref name="detailDistance"/>, growing beyond
-        /// it), as RopeMeshRenderer does each frame with a View Point.
+        /// Sets each rope's side count and ring tolerance from its distance to <see cref="Viewer"/> (<see cref="ViewDetail"/>:
+        /// the box around its particles; <see cref="MeshSides"/> and <paramref name="ringTolerance"/> up to
+        /// <paramref name="detailDistance"/>, the tolerance growing beyond it, half the sides from 4.4 times as far), as
+        /// RopeMeshRenderer does each frame with a View Point.
         /// </summary>
         public static void ApplyViewDetail(RopeWorld world, float ringTolerance, float detailDistance)
         {
@@ -93,7 +94,9 @@ namespace HookeRope.Bench
                 var rope = simulation.Rope;
                 var viewer = Viewer - rope.Origin;
                 float distance = ViewDetail.DistanceToBox(rope.PositionX, rope.PositionY, rope.PositionZ, rope.ParticleCount, viewer);
-                simulation.MeshSettings.RingTolerance = ViewDetail.RingTolerance(ringTolerance, detailDistance, distance);
+                int sides = ViewDetail.RadialSegments(MeshSides, detailDistance, distance, simulation.MeshSettings.RadialSegments);
+                simulation.MeshSettings.RadialSegments = sides;
+                simulation.MeshSettings.RingTolerance = ViewDetail.RingTolerance(ringTolerance, detailDistance, distance, MeshSides, sides);
             }
         }
 

@@ -17,6 +17,9 @@ namespace HookeRope.Geometry
     {
         private readonly RopeSimulation simulation;
         private TubeMeshBuilder builder;
+        // the builder of the other side count, kept while only the side count changed (ViewDetail.RadialSegments switches
+        // a far rope between two), so switching back allocates nothing
+        private TubeMeshBuilder spare;
         private DanglingEnds dangling;
         private float[] ringRadii = Array.Empty<float>();
         private int ringCount;
@@ -60,7 +63,11 @@ namespace HookeRope.Geometry
         internal TubeMeshBuilder Builder => Ensure();
 
         /// <summary>Drops the builder (the model or rest geometry changed): the next call rebuilds it.</summary>
-        internal void Invalidate() => builder = null;
+        internal void Invalidate()
+        {
+            builder = null;
+            spare = null;
+        }
 
         /// <summary>Counts a topology change that the builder cannot see (a break).</summary>
         internal void TopologyChanged() => TopologyVersion++;
@@ -151,8 +158,7 @@ namespace HookeRope.Geometry
             bool zoneNeck = r != null && r.Necking && r.NeckMode == NeckMode.Zone && model != null;
             float defectPosition = r == null ? 0f : r.DefectPosition;
             float zoneDiameters = r == null ? 0f : r.NeckZoneDiameters;
-            if (builder != null
-                && builder.RadialSegments == s.RadialSegments
+            bool sameButSides = builder != null
                 && adaptive == s.AdaptiveRings
                 && rings == s.RingsPerSegment
                 && caps == s.CapEnds
@@ -161,8 +167,20 @@ namespace HookeRope.Geometry
                 && defect == defectPosition
                 && zone == zoneDiameters
                 && restRadius == simulation.RestRadius
-                && fibreDensity == s.Burr.FibreDensity)
+                && fibreDensity == s.Burr.FibreDensity;
+            if (sameButSides && builder.RadialSegments == s.RadialSegments) return builder;
+            Rope rope = simulation.Rope;
+            if (sameButSides && spare != null && spare.RadialSegments == s.RadialSegments)
+            {
+                // back to the other side count: its builder again, every vertex written anew (the buffers hold the other's)
+                (builder, spare) = (spare, builder);
+                builder.ForgetLastBuild();
+                builder.PrimeRings(rope.PositionX, rope.PositionY, rope.PositionZ, rope.BrokenSegments, NeckActive(), simulation.RestRadius);
+                if (ringRadii.Length < builder.MostRings) ringRadii = new float[builder.MostRings];
+                ResetFillState();
                 return builder;
+            }
+            spare = sameButSides ? builder : null;
             rings = s.RingsPerSegment;
             adaptive = s.AdaptiveRings;
             caps = s.CapEnds;
@@ -172,7 +190,6 @@ namespace HookeRope.Geometry
             zone = zoneDiameters;
             restRadius = simulation.RestRadius;
             fibreDensity = s.Burr.FibreDensity;
-            Rope rope = simulation.Rope;
             if (s.AdaptiveRings)
             {
                 RingLayout stations = zoneNeck
@@ -188,15 +205,22 @@ namespace HookeRope.Geometry
                     : new RingLayout(rope.SegmentCount, s.RingsPerSegment);
                 builder = new TubeMeshBuilder(s, layout, restRadius);
             }
-            dangling = new DanglingEnds(rope.SegmentCount);
+            // the spare shares the dangling ends and the ring radii (sized for the larger)
+            if (spare == null) dangling = new DanglingEnds(rope.SegmentCount);
             builder.SetDanglingEnds(dangling);
-            ringRadii = new float[builder.MostRings];
+            if (spare == null || ringRadii.Length < builder.MostRings) ringRadii = new float[builder.MostRings];
+            ResetFillState();
+            return builder;
+        }
+
+        /// <summary>A new builder in place: the ring radii and the fill counts are recomputed, the topology counted as changed.</summary>
+        private void ResetFillState()
+        {
             ringCount = 0;
             radiiLayoutVersion = -1;
             filledVertices = -1;
             filledIndices = -1;
             TopologyVersion++;
-            return builder;
         }
     }
 }

@@ -188,6 +188,16 @@ namespace HookeRope.Geometry
         /// <summary>Vertices around the tube (fixed at construction).</summary>
         public int RadialSegments => radial;
 
+        /// <summary>
+        /// Forgets the last build, so the next one writes every vertex and index: for a builder taken up again after another
+        /// builder wrote into the caller's buffers (a side count switched back, <see cref="RopeMesh"/>).
+        /// </summary>
+        internal void ForgetLastBuild()
+        {
+            haveLast = false;
+            topologyValid = false;
+        }
+
         /// <summary>Burr fibres at each broken end (fixed at construction; see <see cref="BurrSettings.FibreCount"/>).</summary>
         public int FibreCount => fibreCount;
 

@@ -7,24 +7,74 @@ namespace HookeRope.Geometry
     /// Distance-based detail of the tube mesh: beyond a detail distance D the adaptive rings' along-rope tolerance
     /// (<see cref="TubeMeshSettings.RingTolerance"/>) grows in proportion to the view distance d, so the tolerance seen
     /// from the viewer — a length over the distance, an angle — stays what it is at D. A rope at 2 D draws its bent
-    /// segments with 1/sqrt(2) of their rings, at 16 D and beyond (the tolerance's upper bound) with a quarter; the
-    /// polygon around the tube (its sides) is not changed. Pure functions in the caller's units (m).
+    /// segments with 1/sqrt(2) of their rings, at 16 D and beyond (the tolerance's upper bound) with a quarter. From
+    /// <see cref="FewerSidesDistance"/>·D on it may also draw half its sides (<see cref="RadialSegments"/>): the halved
+    /// polygon is at most 4 times as deep, seen from at least 4 times as far. Pure functions in the caller's units (m).
     /// </summary>
     public static class ViewDetail
     {
+        /// <summary>Distance, in detail distances, from which a rope draws <see cref="FewerSides"/> (4.4 D).</summary>
+        public const float FewerSidesDistance = 4.4f;
+
+        /// <summary>
+        /// Distance, in detail distances, below which a rope drawn with fewer sides takes its full count again (4 D: the
+        /// halved polygon's depth, at most 4 times the full one's, then spans no larger an angle than the full one at D).
+        /// </summary>
+        public const float AllSidesDistance = 4f;
+
+        /// <summary>Half of <paramref name="radialSegments"/>, rounded up, at least <see cref="RopeParameters.RadialSegments"/>.Min (3).</summary>
+        public static int FewerSides(int radialSegments)
+        {
+            RopeParameters.Check(radialSegments, RopeParameters.RadialSegments.Row);
+            return Math.Max(RopeParameters.RadialSegments.Min, (radialSegments + 1) / 2);
+        }
+
+        /// <summary>
+        /// The side count for a rope seen from <paramref name="viewDistance"/> (m): <paramref name="radialSegments"/>, or
+        /// <see cref="FewerSides"/> of it from <see cref="FewerSidesDistance"/>·D on, kept down to <see cref="AllSidesDistance"/>·D
+        /// when <paramref name="drawnBefore"/> (the count the rope drew last) is already the smaller (a band against
+        /// flicker). <paramref name="detailDistance"/> 0 (off) or a distance that is not a number: radialSegments.
+        /// </summary>
+        public static int RadialSegments(int radialSegments, float detailDistance, float viewDistance, int drawnBefore)
+        {
+            int fewer = FewerSides(radialSegments);
+            RopeParameters.Check(detailDistance, RopeParameters.DetailDistance.Row);
+            if (!(detailDistance > 0f) || fewer == radialSegments) return radialSegments;
+            float from = drawnBefore == fewer ? AllSidesDistance : FewerSidesDistance;
+            return viewDistance >= (double)from * detailDistance ? fewer : radialSegments;
+        }
+
+        /// <summary>
+        /// <see cref="RingTolerance(float, float, float)"/> for a rope drawn with <paramref name="drawnRadialSegments"/>
+        /// sides instead of its <paramref name="radialSegments"/> (<see cref="RadialSegments"/>): the tolerance is a multiple
+        /// of the drawn polygon's depth, so the scale is divided by how much deeper that polygon is, and the along-rope error
+        /// seen from the viewer stays what the full polygon's tolerance gives at D (never below 1).
+        /// </summary>
+        public static float RingTolerance(float ringTolerance, float detailDistance, float viewDistance, int radialSegments, int drawnRadialSegments)
+        {
+            RopeParameters.Check(radialSegments, RopeParameters.RadialSegments.Row);
+            RopeParameters.Check(drawnRadialSegments, RopeParameters.RadialSegments.Row);
+            double deeper = (double)RingNeed.Tolerance(drawnRadialSegments) / RingNeed.Tolerance(radialSegments);
+            return Scaled(ringTolerance, detailDistance, viewDistance, deeper);
+        }
         /// <summary>
         /// The ring tolerance for a rope seen from <paramref name="viewDistance"/> (m): <paramref name="ringTolerance"/>
         /// (range <see cref="RopeParameters.RingTolerance"/>) up to <paramref name="detailDistance"/> (m, range
         /// <see cref="RopeParameters.DetailDistance"/>; 0 turns the scaling off), beyond it ringTolerance · d / D, at most
         /// <see cref="RopeParameters.RingTolerance"/>.Max. A distance that is not a number gives ringTolerance.
         /// </summary>
-        public static float RingTolerance(float ringTolerance, float detailDistance, float viewDistance)
+        public static float RingTolerance(float ringTolerance, float detailDistance, float viewDistance) =>
+            Scaled(ringTolerance, detailDistance, viewDistance, 1.0);
+
+        /// <summary>ringTolerance · d / (D · <paramref name="deeper"/>) beyond D, within [1, 16]; ringTolerance up to D (see the overloads).</summary>
+        private static float Scaled(float ringTolerance, float detailDistance, float viewDistance, double deeper)
         {
             RopeParameters.Check(ringTolerance, RopeParameters.RingTolerance.Row);
             RopeParameters.Check(detailDistance, RopeParameters.DetailDistance.Row);
             // NaN compares false: full detail
             if (!(detailDistance > 0f) || !(viewDistance > detailDistance)) return ringTolerance;
-            double scaled = (double)ringTolerance * viewDistance / detailDistance;
+            double scaled = (double)ringTolerance * viewDistance / (detailDistance * deeper);
+            if (scaled <= RopeParameters.RingTolerance.Min) return RopeParameters.RingTolerance.Min;
             return scaled >= RopeParameters.RingTolerance.Max ? RopeParameters.RingTolerance.Max : (float)scaled;
         }
 

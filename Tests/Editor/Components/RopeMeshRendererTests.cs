@@ -231,41 +231,58 @@ namespace HookeRope.Tests.Components
         [Test]
         public void ADistantViewPointScalesTheRingToleranceAndDrawsFewerVertices()
         {
-            // two identical swung ropes, one seen from 1 m, one from 40 m, detail distance 2 m; the far one's tolerance is
-            // capped at 16 (40 / 2 = 20), the near one's stays 1
+            // two identical swung ropes of 12 sides, one seen from 1 m, one from 40 m, detail distance 2 m: the far one
+            // (20 D) draws 6 sides at the tolerance of ViewDetail for 12 -> 6, the near one all 12 at 1
             var (near, nearRenderer, nearGrip) = Build();
             var (far, farRenderer, farGrip) = Build();
             foreach (var rope in new[] { near, far }) { rope.Radius = 0.002f; rope.Rebuild(); }
+            var farViewer = _scene.Point("Far viewer", new Vector3(0.15f, 2.5f, 40f));
             nearRenderer.ViewPoint = _scene.Point("Near viewer", new Vector3(0.15f, 2.5f, 1f));
-            farRenderer.ViewPoint = _scene.Point("Far viewer", new Vector3(0.15f, 2.5f, 40f));
+            farRenderer.ViewPoint = farViewer;
             nearRenderer.DetailDistance = 2f;
             farRenderer.DetailDistance = 2f;
             var (nearMost, farMost) = SwingBoth((near, nearRenderer, nearGrip), (far, farRenderer, farGrip));
             TestContext.WriteLine("most vertices in use over 60 frames: " + nearMost + " seen from 1 m, " + farMost + " from 40 m");
             Assert.That(nearRenderer.DrawnRingTolerance, Is.EqualTo(1f), "inside the detail distance");
-            Assert.That(farRenderer.DrawnRingTolerance, Is.EqualTo(16f), "40 m / 2 m, capped");
-            Assert.That(far.Simulation.MeshSettings.RingTolerance, Is.EqualTo(16f), "the drawn value is the core mesh's");
-            Assert.That(farRenderer.RingTolerance, Is.EqualTo(1f), "the setting itself is left alone");
-            Assert.That(farMost, Is.LessThan(nearMost));
+            Assert.That(nearRenderer.DrawnRadialSegments, Is.EqualTo(12));
+            Assert.That(farRenderer.DrawnRadialSegments, Is.EqualTo(6), "half the sides from 4.4 D on");
+            float at40 = ViewDetail.RingTolerance(1f, 2f, DistanceToParticleBox(far, farViewer.position), 12, 6);
+            Assert.That(at40, Is.GreaterThan(4f).And.LessThan(6f), "20 D over the 6-gon's 3.9 times the depth");
+            Assert.That(farRenderer.DrawnRingTolerance, Is.EqualTo(at40).Within(1e-4f));
+            Assert.That(far.Simulation.MeshSettings.RingTolerance, Is.EqualTo(farRenderer.DrawnRingTolerance), "the drawn values are the core mesh's");
+            Assert.That(far.Simulation.MeshSettings.RadialSegments, Is.EqualTo(6));
+            Assert.That(farRenderer.RingTolerance, Is.EqualTo(1f), "the settings themselves are left alone");
+            Assert.That(farRenderer.RadialSegments, Is.EqualTo(12));
+            Assert.That(farMost, Is.LessThan(nearMost / 2));
             AssertMeshFollowsRope(far, farRenderer.Mesh);
 
-            // between the two: d / D of the distance to the particles' box, also under a uniform scale of the rope's
-            // GameObject (the distance is measured in its local space and turned back into metres)
-            var viewer = farRenderer.ViewPoint;
-            viewer.position = new Vector3(0.15f, 2.5f, 9f);
+            // at 9 m (4.5 D): still 6 sides, the tolerance d / D of the distance to the particles' box over the 6-gon's
+            // depth, also under a uniform scale of the rope's GameObject (measured in its local space, turned into metres)
+            farViewer.position = new Vector3(0.15f, 2.5f, 9f);
             Assert.That(farRenderer.Render(1f), Is.True);
-            float expected = ViewDetail.RingTolerance(1f, 2f, DistanceToParticleBox(far, viewer.position));
-            TestContext.WriteLine("seen from 9 m: tolerance " + farRenderer.DrawnRingTolerance + ", expected " + expected);
-            Assert.That(expected, Is.GreaterThan(4f).And.LessThan(4.6f));
-            Assert.That(farRenderer.DrawnRingTolerance, Is.EqualTo(expected).Within(1e-4f));
+            float at9 = ViewDetail.RingTolerance(1f, 2f, DistanceToParticleBox(far, farViewer.position), 12, 6);
+            TestContext.WriteLine("seen from 9 m: " + farRenderer.DrawnRadialSegments + " sides, tolerance " + farRenderer.DrawnRingTolerance + ", expected " + at9);
+            Assert.That(farRenderer.DrawnRadialSegments, Is.EqualTo(6));
+            Assert.That(farRenderer.DrawnRingTolerance, Is.EqualTo(at9).Within(1e-4f));
             far.transform.localScale = new Vector3(2f, 2f, 2f);
             Assert.That(farRenderer.Render(1f), Is.True);
-            Assert.That(farRenderer.DrawnRingTolerance, Is.EqualTo(expected).Within(1e-4f), "the same distance in metres at scale 2");
+            Assert.That(farRenderer.DrawnRingTolerance, Is.EqualTo(at9).Within(1e-4f), "the same distance in metres at scale 2");
+            far.transform.localScale = Vector3.one;
+
+            // at 7 m (within 4 D): all 12 sides again, the plain d / D, the mesh again the rope's
+            farViewer.position = new Vector3(0.15f, 2.5f, 7f);
+            Assert.That(farRenderer.Render(1f), Is.True);
+            Assert.That(farRenderer.DrawnRadialSegments, Is.EqualTo(12));
+            Assert.That(farRenderer.DrawnRingTolerance, Is.EqualTo(ViewDetail.RingTolerance(1f, 2f, DistanceToParticleBox(far, farViewer.position))).Within(1e-4f));
+            Assert.That(farRenderer.Mesh.GetSubMesh(0).vertexCount % 13, Is.EqualTo(0), "13 vertices a ring (12 sides and the seam)");
+            AssertMeshFollowsRope(far, farRenderer.Mesh);
 
             // off again: no view point, or a detail distance of 0
+            farViewer.position = new Vector3(0.15f, 2.5f, 40f);
             farRenderer.DetailDistance = 0f;
             Assert.That(farRenderer.Render(1f), Is.True);
             Assert.That(farRenderer.DrawnRingTolerance, Is.EqualTo(1f));
+            Assert.That(farRenderer.DrawnRadialSegments, Is.EqualTo(12));
             farRenderer.DetailDistance = 2f;
             farRenderer.ViewPoint = null;
             Assert.That(farRenderer.Render(1f), Is.True);
@@ -278,12 +295,29 @@ namespace HookeRope.Tests.Components
             Assert.That(farRenderer.DrawnRingTolerance, Is.EqualTo(1f), "an untagged camera is not the main camera");
             cameraObject.tag = "MainCamera";
             Assert.That(farRenderer.Render(1f), Is.True);
-            Assert.That(farRenderer.DrawnRingTolerance, Is.EqualTo(expected).Within(1e-4f), "the main camera at 9 m");
+            Assert.That(farRenderer.DrawnRadialSegments, Is.EqualTo(6), "the main camera at 9 m (4.5 D)");
+            Assert.That(farRenderer.DrawnRingTolerance, Is.EqualTo(at9).Within(1e-4f));
             cameraObject.GetComponent<Camera>().enabled = false;
             Assert.That(farRenderer.Render(1f), Is.True);
             Assert.That(farRenderer.DrawnRingTolerance, Is.EqualTo(1f), "a disabled camera is not the main camera");
             Assert.That(() => farRenderer.DetailDistance = -1f, Throws.TypeOf<System.ArgumentOutOfRangeException>().With.Message.Contain("DetailDistance"));
             Assert.That(farRenderer.DetailDistance, Is.EqualTo(2f), "a rejected value leaves the setting");
+        }
+
+        [Test]
+        public void ABrokenRopeFarAwayKeepsItsSides()
+        {
+            var (rope, renderer, grip) = Build();
+            renderer.ViewPoint = _scene.Point("Viewer", new Vector3(0.15f, 2.5f, 40f));
+            renderer.DetailDistance = 2f;
+            rope.Simulate(0.01f);
+            Assert.That(renderer.Render(1f), Is.True);
+            Assert.That(renderer.DrawnRadialSegments, Is.EqualTo(6), "intact: half its sides at 20 D");
+            BreakIt(rope, grip);
+            Assert.That(renderer.Render(1f), Is.True);
+            Assert.That(renderer.DrawnRadialSegments, Is.EqualTo(12), "broken: the burrs keep their strands");
+            Assert.That(renderer.DrawnRingTolerance, Is.EqualTo(ViewDetail.RingTolerance(1f, 2f, DistanceToParticleBox(rope, renderer.ViewPoint.position))).Within(1e-4f));
+            AssertMeshFollowsRope(rope, renderer.Mesh);
         }
 
         [TestCase(false, TestName = "AViewPointThatMovesEveryFrameAllocatesNothing(the view point)")]
@@ -300,22 +334,30 @@ namespace HookeRope.Tests.Components
             else renderer.ViewPoint = viewer;
             renderer.DetailDistance = 1f;
             for (int step = 0; step < 20; step++) rope.Simulate(0.01f);
-            for (int frame = 0; frame < 3; frame++) renderer.Render(1f);
             float nearest = float.PositiveInfinity, farthest = 0f;
-            Assert.That(() =>
+            int fewest = int.MaxValue, most = 0;
+            void Walk()
             {
                 for (int frame = 0; frame < 120; frame++)
                 {
-                    // the viewer walks from 3 m to 15 m and back
+                    // the viewer walks from 3 m to 15 m and back: 12 sides, 6 from 4.4 m, 12 again within 4 m
                     viewer.position = new Vector3(0f, 2f, 9f - 6f * System.MathF.Cos(0.05f * frame));
                     renderer.Render(1f);
                     nearest = System.Math.Min(nearest, renderer.DrawnRingTolerance);
                     farthest = System.Math.Max(farthest, renderer.DrawnRingTolerance);
+                    fewest = System.Math.Min(fewest, renderer.DrawnRadialSegments);
+                    most = System.Math.Max(most, renderer.DrawnRadialSegments);
                 }
-            }, Is.Not.AllocatingGCMemory(), "120 frames with the viewer moving");
-            TestContext.WriteLine("ring tolerance over the walk: " + nearest + " … " + farthest);
+            }
+            // the first walk makes the 6-sided builder and the buffers' sizes; the second only switches between them
+            Walk();
+            Assert.That(Walk, Is.Not.AllocatingGCMemory(), "120 frames with the viewer moving, the side count switching");
+            TestContext.WriteLine("over the walk: " + fewest + " … " + most + " sides, ring tolerance " + nearest + " … " + farthest);
+            Assert.That(fewest, Is.EqualTo(6));
+            Assert.That(most, Is.EqualTo(12));
             Assert.That(nearest, Is.LessThan(3.5f));
-            Assert.That(farthest, Is.GreaterThan(13f));
+            Assert.That(farthest, Is.GreaterThan(3.5f));
+            AssertMeshFollowsRope(rope, renderer.Mesh);
         }
 
         [TestCase(false)]

@@ -133,12 +133,18 @@ namespace HookeRope.Tests.Components
                 WorldDraw();
             }
             foreach (var rope in ropes) inWorld.Add(Bits(rope));
-            var drawn = new float[ropeCount];
-            for (int i = 0; i < ropeCount; i++) drawn[i] = ropes[i].GetComponent<RopeMeshRenderer>().DrawnRingTolerance;
-            TestContext.WriteLine("ring tolerances drawn in the world: " + string.Join(", ", drawn));
+            var drawn = new string[ropeCount];
+            int fewerSides = 0;
             for (int i = 0; i < ropeCount; i++)
-                if (viewDetail) Assert.That(drawn[i], Is.GreaterThan(2.5f), "rope " + i + " drew at its view distance's tolerance");
-                else Assert.That(drawn[i], Is.EqualTo(1f), "rope " + i);
+            {
+                var renderer = ropes[i].GetComponent<RopeMeshRenderer>();
+                drawn[i] = renderer.DrawnRadialSegments + " of " + renderer.RadialSegments + " sides at " + renderer.DrawnRingTolerance;
+                if (renderer.DrawnRadialSegments < renderer.RadialSegments) fewerSides++;
+                if (viewDetail) Assert.That(renderer.DrawnRingTolerance, Is.GreaterThan(1f), "rope " + i + " drew at its view distance's tolerance");
+                else Assert.That(renderer.DrawnRingTolerance, Is.EqualTo(1f), "rope " + i);
+            }
+            TestContext.WriteLine("drawn in the world: " + string.Join("; ", drawn));
+            Assert.That(fewerSides, viewDetail ? Is.EqualTo(3) : Is.EqualTo(0), "the ropes 4.4 m and farther draw half their sides");
             RopeWorldScheduler.Shutdown();
             _scene.End();
             _scene.Begin();

@@ -27,6 +27,32 @@ namespace HookeRope.Tests.Core.Geometry
             Assert.That(ViewDetail.RingTolerance(tolerance, detail, distance), Is.EqualTo(expected).Within(1e-6f));
         }
 
+        [TestCase(16, 0f, 100f, 16, 16, TestName = "sides: off at a detail distance of 0")]
+        [TestCase(16, 2f, 8.7f, 16, 16, TestName = "sides: all of them short of 4.4 D")]
+        [TestCase(16, 2f, 8.8f, 16, 8, TestName = "sides: half from 4.4 D on")]
+        [TestCase(16, 2f, 8.2f, 8, 8, TestName = "sides: half kept down to 4 D")]
+        [TestCase(16, 2f, 7.9f, 8, 16, TestName = "sides: all again within 4 D")]
+        [TestCase(12, 2f, 100f, 12, 6, TestName = "sides: 12 -> 6")]
+        [TestCase(5, 2f, 100f, 5, 3, TestName = "sides: half rounded up, 5 -> 3")]
+        [TestCase(4, 2f, 100f, 4, 3, TestName = "sides: never fewer than 3")]
+        [TestCase(3, 2f, 100f, 3, 3, TestName = "sides: 3 stays 3")]
+        [TestCase(16, 2f, float.NaN, 8, 16, TestName = "sides: a distance that is not a number, all of them")]
+        public void FarRopesDrawHalfTheirSides(int sides, float detail, float distance, int before, int expected)
+        {
+            Assert.That(ViewDetail.RadialSegments(sides, detail, distance, before), Is.EqualTo(expected));
+        }
+
+        [Test]
+        public void WithHalfTheSidesTheToleranceIsScaledByTheDeeperPolygon()
+        {
+            // at 8 D with 8 of 16 sides: the 8-gon is (1 − cos π/8) / (1 − cos π/16) = 3.96 times as deep
+            double deeper = (1 - Math.Cos(Math.PI / 8)) / (1 - Math.Cos(Math.PI / 16));
+            Assert.That(ViewDetail.RingTolerance(1f, 2f, 16f, 16, 8), Is.EqualTo(8 / deeper).Within(1e-5));
+            Assert.That(ViewDetail.RingTolerance(1f, 2f, 16f, 16, 16), Is.EqualTo(ViewDetail.RingTolerance(1f, 2f, 16f)), "the same sides: the plain rule");
+            Assert.That(ViewDetail.RingTolerance(1f, 2f, 3f, 16, 8), Is.EqualTo(1f), "never below 1");
+            Assert.That(() => ViewDetail.RingTolerance(1f, 2f, 16f, 16, 2), Throws.TypeOf<ArgumentOutOfRangeException>().With.Message.Contain("RadialSegments"));
+        }
+
         [Test]
         public void BadInputIsNamedWithItsRange()
         {
@@ -83,9 +109,9 @@ namespace HookeRope.Tests.Core.Geometry
         }
 
         /// <summary>
-        /// On four bent shapes at 16 sides, seen from D … 64 D: the measured surface error over the view distance (the angle
-        /// it spans) is at most the full-detail bound over D, and the ring count falls with the distance, to at most a
-        /// quarter of the bent segments' rings (plus one per segment) once the tolerance reaches 16.
+        /// On four bent shapes at 16 sides, seen from D … 64 D with the side count and tolerance <see cref="ViewDetail"/>
+        /// gives (8 sides from 4.4 D): the measured surface error over the view distance (the angle it spans) is at most the
+        /// full-detail bound over D, and the vertex count falls with the distance.
         /// </summary>
         [TestCase("lanyard")]
         [TestCase("helix")]
@@ -99,23 +125,24 @@ namespace HookeRope.Tests.Core.Geometry
             int n = shape.Segments;
             double polygon = R * (1.0 - Math.Cos(Math.PI / radial));
             double nearBound = polygon + RingNeed.Tolerance(radial) * R;
-            int rings = int.MaxValue, full = 0;
+            int drawn = int.MaxValue, full = 0, sides = radial;
             foreach (float distance in new[] { 2f, 4f, 8f, 16f, 32f, 128f })
             {
-                float tolerance = ViewDetail.RingTolerance(1f, detail, distance);
-                var builder = TubeMeshBuilder.Adaptive(new TubeMeshSettings { RadialSegments = radial, RingTolerance = tolerance }, n, R, null, AdaptiveRings.MaxRingsPerSegment);
-                AdaptiveRingsTests.BuildAdaptive(builder, shape, R, new bool[n], out var vertices, out _);
-                double deviation = TubeDeviation.Largest(shape, R, builder.Layout, radial, vertices, out _, out _);
-                int count = builder.Layout.RingCount;
+                sides = ViewDetail.RadialSegments(radial, detail, distance, sides);
+                float tolerance = ViewDetail.RingTolerance(1f, detail, distance, radial, sides);
+                var builder = TubeMeshBuilder.Adaptive(new TubeMeshSettings { RadialSegments = sides, RingTolerance = tolerance }, n, R, null, AdaptiveRings.MaxRingsPerSegment);
+                var update = AdaptiveRingsTests.BuildAdaptive(builder, shape, R, new bool[n], out var vertices, out _);
+                double deviation = TubeDeviation.Largest(shape, R, builder.Layout, sides, vertices, out _, out _);
+                int count = update.VertexCount;
                 if (distance == detail) full = count;
-                TestContext.WriteLine($"{name} at {distance} m: tolerance {tolerance}, {count} rings, deviation {deviation / R:F4} R, " +
-                                      $"seen {deviation / distance * 1e6:F1} µrad (at D: at most {nearBound / detail * 1e6:F1})");
+                TestContext.WriteLine($"{name} at {distance} m: {sides} sides, tolerance {tolerance:F3}, {builder.Layout.RingCount} rings, {count} vertices, " +
+                                      $"deviation {deviation / R:F4} R, seen {deviation / distance * 1e6:F1} µrad (at D: at most {nearBound / detail * 1e6:F1})");
                 Assert.That(deviation / distance, Is.LessThanOrEqualTo(nearBound / detail * 1.0001 + 1e-9), "the angle seen is at most the one at D");
-                Assert.That(count, Is.LessThanOrEqualTo(rings), "no more rings farther away");
-                rings = count;
+                Assert.That(count, Is.LessThanOrEqualTo(drawn), "no more vertices farther away");
+                drawn = count;
             }
-            Assert.That(rings, Is.LessThanOrEqualTo(full / 4.0 + n + 1), "at the cap a quarter of the rings, one per segment at least");
-            if (full > 2 * (n + 1)) Assert.That(rings, Is.LessThan(full));
+            Assert.That(sides, Is.EqualTo(8), "half the sides far away");
+            Assert.That(drawn, Is.LessThan(full * 0.6), "far away fewer than 60 % of the vertices at D");
         }
     }
 }
