@@ -95,6 +95,7 @@ namespace HookeRope
         Texture2D _generatedTexture;
         bool _reportedMissingShader;
         RopeInputGuard _guard;
+        float _viewDistance = float.NaN;
 
         /// <summary>Vertices around the tube, range <see cref="RopeParameters.RadialSegments"/>. A new value rebuilds the tube topology at the next frame.</summary>
         public int RadialSegments
@@ -145,12 +146,13 @@ namespace HookeRope
             set => m_DetailDistance = RopeParameters.Check(value, RopeParameters.DetailDistance.Row);
         }
 
-        /// <summary>The ring tolerance the last drawn frame used: <see cref="RingTolerance"/>, scaled by the view distance where <see cref="DetailDistance"/> is on.</summary>
+        /// <summary>The ring tolerance the last drawn frame used: <see cref="RingTolerance"/>, scaled by the view distance where <see cref="DetailDistance"/> is on (1 before the first frame).</summary>
         public float DrawnRingTolerance { get; private set; } = RopeParameters.RingTolerance.Default;
 
         /// <summary>
         /// The side count the last drawn frame used: <see cref="RadialSegments"/>, or half of it (rounded up, at least 3) on
-        /// an unbroken rope from 4.4 detail distances away until it comes within 4 again (<see cref="ViewDetail.RadialSegments"/>).
+        /// an unbroken rope from 4.4 detail distances away until it comes within 4 again (<see cref="ViewDetail.RadialSegments"/>);
+        /// 0 before the first frame.
         /// </summary>
         public int DrawnRadialSegments { get; private set; }
 
@@ -230,7 +232,8 @@ namespace HookeRope
         /// Returns false when nothing was drawn (no rope, or in Play before the build) or when the mesh kept its last
         /// frame because this object's scale cannot be inverted or a position was not finite (one warning per cause,
         /// Documentation~/index.md, "Bad input"). Allocation-free after the first frame, whatever ring budget the adaptive
-        /// rings choose; a break (or a new segment count or side count) sizes the buffers again, once.
+        /// rings choose; a break, a new segment count or a new side count sizes the buffers again, once (for one
+        /// simulation they only grow, so a far rope switching between its two side counts keeps the larger).
         /// </summary>
         public bool Render(float alpha)
         {
@@ -304,27 +307,34 @@ namespace HookeRope
         /// The side count and ring tolerance of this frame: <see cref="RadialSegments"/> and <see cref="RingTolerance"/>,
         /// or where <see cref="DetailDistance"/> is on, those the distance from <see cref="ViewPoint"/> (or the main camera)
         /// to the box around the interpolated positions asks for (<see cref="ViewDetail"/>; fewer sides only on an unbroken
-        /// rope, whose burrs keep their strands). The distance is measured in this GameObject's local space and turned into
-        /// metres by its smallest scale (never coarser than the distance asks for).
+        /// rope, whose burrs keep their strands). The distance is taken in world space (<see cref="ViewDistance"/>).
         /// </summary>
         void ChooseDetail(Rope rope, out int sides, out float tolerance)
         {
             sides = m_RadialSegments;
             tolerance = m_RingTolerance;
-            if (!(m_DetailDistance > 0f)) return;
+            // off, or no viewer: NaN, which both rules read as full detail
+            if (float.IsNaN(_viewDistance)) return;
+            if (rope.BrokenSegmentCount == 0) sides = ViewDetail.RadialSegments(m_RadialSegments, m_DetailDistance, _viewDistance, DrawnRadialSegments);
+            tolerance = ViewDetail.RingTolerance(m_RingTolerance, m_DetailDistance, _viewDistance, m_RadialSegments, sides);
+        }
+
+        /// <summary>
+        /// Distance (m) from <see cref="ViewPoint"/> (or the main camera) to the box around the first
+        /// <paramref name="particles"/> positions, which are world offsets from <paramref name="origin"/>; NaN when
+        /// <see cref="DetailDistance"/> is off or there is no viewer.
+        /// </summary>
+        float ViewDistance(Vector3 origin, int particles)
+        {
+            if (!(m_DetailDistance > 0f)) return float.NaN;
             Transform viewPoint = m_ViewPoint;
             if (viewPoint == null)
             {
                 Camera main = Camera.main;
-                if (main == null) return;
+                if (main == null) return float.NaN;
                 viewPoint = main.transform;
             }
-            Vector3 viewer = transform.InverseTransformPoint(viewPoint.position);
-            Vector3 scale = transform.lossyScale;
-            float smallest = Math.Min(Math.Abs(scale.x), Math.Min(Math.Abs(scale.y), Math.Abs(scale.z)));
-            float distance = ViewDetail.DistanceToBox(_x, _y, _z, rope.ParticleCount, viewer.ToFloat3()) * smallest;
-            if (rope.BrokenSegmentCount == 0) sides = ViewDetail.RadialSegments(m_RadialSegments, m_DetailDistance, distance, DrawnRadialSegments);
-            tolerance = ViewDetail.RingTolerance(m_RingTolerance, m_DetailDistance, distance, m_RadialSegments, sides);
+            return ViewDetail.DistanceToBox(_x, _y, _z, particles, (viewPoint.position - origin).ToFloat3());
         }
 
         /// <summary>
@@ -400,6 +410,9 @@ namespace HookeRope
             startHeld &= startOffset.IsFinite;   // an attachment at a non-finite pose (reported by the rope) is not followed
             endHeld &= endOffset.IsFinite;
             if (startHeld || endHeld) EndAlignment.Apply(_x, _y, _z, rope.BrokenSegments, startHeld, startOffset, endHeld, endOffset);
+            // the view distance in world space (m), while the positions are still world offsets from origin: exact under
+            // any scale, skew included, of this GameObject's hierarchy
+            _viewDistance = ViewDistance(origin, particles);
             var frame = transform;
             for (int i = 0; i < particles; i++)
             {

@@ -7,9 +7,11 @@ namespace HookeRope.Geometry
     /// Distance-based detail of the tube mesh: beyond a detail distance D the adaptive rings' along-rope tolerance
     /// (<see cref="TubeMeshSettings.RingTolerance"/>) grows in proportion to the view distance d, so the tolerance seen
     /// from the viewer — a length over the distance, an angle — stays what it is at D. A rope at 2 D draws its bent
-    /// segments with 1/sqrt(2) of their rings, at 16 D and beyond (the tolerance's upper bound) with a quarter. From
+    /// segments with 1/sqrt(2) of their rings, and at 16 D/t (the tolerance's upper bound of 16) with a quarter. From
     /// <see cref="FewerSidesDistance"/>·D on it may also draw half its sides (<see cref="RadialSegments"/>): the halved
-    /// polygon is at most 4 times as deep, seen from at least 4 times as far. Pure functions in the caller's units (m).
+    /// polygon is at most 4 times as deep, seen from at least 4 times as far, and the tolerance — a multiple of the drawn
+    /// polygon's depth — is divided by that ratio, so it reaches 16 only about 4 times farther. Pure functions in the
+    /// caller's units (m).
     /// </summary>
     public static class ViewDetail
     {

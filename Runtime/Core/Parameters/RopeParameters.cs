@@ -1074,7 +1074,7 @@ namespace HookeRope
             /// <summary>Lab JSON name (none: the lab has no viewer).</summary>
             public const string Json = null;
             /// <summary>Inspector tooltip.</summary>
-            public const string Tooltip = "Distance from the View Point (m) up to which the rope draws at its Ring Tolerance; beyond it the tolerance grows with the distance (twice as far: twice the tolerance, up to 16), and from 4.4 times as far an unbroken rope draws half its sides, so the detail seen from the viewer stays the same. 0 = off.";
+            public const string Tooltip = "Distance from the View Point (m) up to which the rope draws at its Ring Tolerance; beyond it the along-rope error allowed grows with the distance (twice as far: twice the error), and from 4.4 times as far an unbroken rope draws half its sides, so the detail seen from the viewer stays the same. 0 = off.";
             /// <summary>Lower bound (0: off).</summary>
             public const float Min = 0f;
             /// <summary>Upper bound.</summary>

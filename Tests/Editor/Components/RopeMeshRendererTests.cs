@@ -305,6 +305,46 @@ namespace HookeRope.Tests.Components
         }
 
         [Test]
+        public void TheSideCountKeepsItsBandAndTheDistanceIsTakenInWorldSpace()
+        {
+            // D = 1 m; the viewer straight out along z from the particles' box, at 20, 4.2, 3.9 and 4.2 m
+            var (rope, renderer, grip) = Build();
+            var viewer = _scene.Point("Viewer", Vector3.zero);
+            renderer.ViewPoint = viewer;
+            renderer.DetailDistance = 1f;
+            rope.Simulate(0.01f);
+            void DrawFrom(float distance)
+            {
+                // the box's nearest face along +z, then the viewer that far beyond it
+                float front = float.NegativeInfinity;
+                for (int i = 0; i < rope.ParticleCount; i++) front = System.Math.Max(front, rope.GetParticlePosition(i).z);
+                viewer.position = new Vector3(0.15f, 2.5f, front + distance);
+                Assert.That(renderer.Render(1f), Is.True);
+            }
+            DrawFrom(20f);
+            Assert.That(renderer.DrawnRadialSegments, Is.EqualTo(6), "20 D: half the sides");
+            DrawFrom(4.2f);
+            Assert.That(renderer.DrawnRadialSegments, Is.EqualTo(6), "4.2 D, coming nearer: still half (the band down to 4 D)");
+            DrawFrom(3.9f);
+            Assert.That(renderer.DrawnRadialSegments, Is.EqualTo(12), "within 4 D: all of them");
+            DrawFrom(4.2f);
+            Assert.That(renderer.DrawnRadialSegments, Is.EqualTo(12), "4.2 D, going away: still all (the band up to 4.4 D)");
+
+            // under a parent scaled (1, 0.1, 1), the rope's GameObject turned 45° about z (a skewed frame, whose lossyScale
+            // is no bound on its stretch): the tolerance still follows the world distance
+            var parent = _scene.Point("Squashed parent", Vector3.zero);
+            parent.localScale = new Vector3(1f, 0.1f, 1f);
+            rope.transform.SetParent(parent, true);
+            rope.transform.rotation = Quaternion.Euler(0f, 0f, 45f);
+            viewer.position = new Vector3(6f, 2.5f, 0f);
+            Assert.That(renderer.Render(1f), Is.True);
+            float expected = ViewDetail.RingTolerance(1f, 1f, DistanceToParticleBox(rope, viewer.position), 12, renderer.DrawnRadialSegments);
+            TestContext.WriteLine("skewed frame: " + renderer.DrawnRadialSegments + " sides, tolerance " + renderer.DrawnRingTolerance + ", expected " + expected);
+            Assert.That(renderer.DrawnRingTolerance, Is.EqualTo(expected).Within(1e-3f));
+            AssertMeshFollowsRope(rope, renderer.Mesh);
+        }
+
+        [Test]
         public void ABrokenRopeFarAwayKeepsItsSides()
         {
             var (rope, renderer, grip) = Build();

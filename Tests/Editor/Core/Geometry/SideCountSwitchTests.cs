@@ -58,6 +58,31 @@ namespace HookeRope.Tests.Core.Geometry
         }
 
         [Test]
+        public void ABuilderTakenUpAgainOnASwingingRopePlansItsRingsFromTheRopeAsItIsNow()
+        {
+            // 16 sides for 30 frames of the swing, 8 for the next 60, then 16 again: the 16-sided builder's budget must
+            // start from the rope's present need (primed like a new builder), not from where it left off 60 frames ago
+            var simulation = Lanyard();
+            var vertices = new TubeVertex[Math.Max(simulation.GetVertexCapacity(), 4 * 64 * 17)];
+            var indices = new int[Math.Max(simulation.GetIndexCapacity(), 4 * 64 * 16 * 6)];
+            for (int frame = 0; frame < 90; frame++)
+            {
+                simulation.MeshSettings.RadialSegments = frame < 30 ? 16 : 8;
+                simulation.Step(1f / 90f);
+                simulation.FillMesh(vertices, indices);
+            }
+            var rope = simulation.Rope;
+            var fresh = TubeMeshBuilder.Adaptive(new TubeMeshSettings { RadialSegments = 16 }, rope.SegmentCount, simulation.RestRadius, null);
+            fresh.PrimeRings(rope.PositionX, rope.PositionY, rope.PositionZ, rope.BrokenSegments, false, simulation.RestRadius);
+            fresh.PlanRings(rope.PositionX, rope.PositionY, rope.PositionZ, rope.BrokenSegments, false, simulation.RestRadius, vertices.Length, indices.Length);
+            simulation.MeshSettings.RadialSegments = 16;
+            var update = simulation.FillMesh(vertices, indices);
+            TestContext.WriteLine($"back to 16 sides after 60 frames at 8: {simulation.Mesh.Builder.Layout.RingCount} rings, a new builder {fresh.Layout.RingCount}");
+            Assert.That(simulation.Mesh.Builder.Layout.RingCount, Is.EqualTo(fresh.Layout.RingCount), "the rings a new builder would draw now");
+            Assert.That(update.VertexCount, Is.EqualTo(fresh.GetVertexCount(rope.BrokenSegments)));
+        }
+
+        [Test]
         public void SwitchingBackAndForthAllocatesNothing()
         {
             var simulation = Lanyard();

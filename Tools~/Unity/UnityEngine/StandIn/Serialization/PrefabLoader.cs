@@ -243,7 +243,8 @@ namespace HookeRope.StandIn
             string tag = (string)Value(doc, "m_TagString", typeof(string)) ?? "Untagged";
             // Unity's built-in tags (GameObject.BuiltInTags); a project tag would need the TagManager, which is not modelled
             if (System.Array.IndexOf(GameObject.BuiltInTags, tag) < 0)
-                throw StandInError.Unsupported("GameObject tags beyond the built-in ones (" + m_File + ": '" + go.name + "' has m_TagString " + tag + ")");
+                throw YamlError.At(m_File, doc.Body.Find("m_TagString").Line,
+                    "m_TagString of '" + go.name + "' is " + tag + ": only Unity's built-in tags are modelled (the project's TagManager is not)");
             go.tag = tag;
             ApplyHideFlags(doc, go);
         }
