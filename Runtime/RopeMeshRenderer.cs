@@ -121,8 +121,8 @@ namespace HookeRope
         }
 
         /// <summary>
-        /// The viewer (e.g. the XR camera's Transform) whose distance to the rope scales its ring tolerance beyond
-        /// <see cref="DetailDistance"/> (<see cref="ViewDetail"/>); null: Camera.main's (the first enabled Camera tagged
+        /// The viewer (e.g. the XR camera's Transform) whose distance to the rope sets its ring tolerance and side count
+        /// beyond <see cref="DetailDistance"/> (<see cref="ViewDetail"/>); null: Camera.main's (the first enabled Camera tagged
         /// "MainCamera", as an XR rig's camera is), or, without one, <see cref="RingTolerance"/> at any distance. A prefab
         /// cannot name a scene object, so a rope prefab with a Detail Distance relies on the main camera.
         /// </summary>
@@ -295,28 +295,15 @@ namespace HookeRope
 
             InterpolateIntoLocalSpace(simulation.Rope, alpha, origin, alignEnds);
             if (!_guard.AcceptMeshPositions(_x, _y, _z, simulation.Rope.ParticleCount)) return false;
-            ChooseDetail(simulation.Rope, out int sides, out float tolerance);
+            // this frame's side count and ring tolerance: the settings', or those the view distance asks for (ViewDetail;
+            // NaN when off or without a viewer, which it reads as full detail); a broken rope keeps its sides
+            ViewDetail.Choose(m_RadialSegments, m_RingTolerance, m_DetailDistance, _viewDistance, DrawnRadialSegments,
+                simulation.Rope.BrokenSegmentCount > 0, out int sides, out float tolerance);
             if (simulation.MeshSettings.RadialSegments != sides) simulation.MeshSettings.RadialSegments = sides;
             if (!simulation.MeshSettings.RingTolerance.Equals(tolerance)) simulation.MeshSettings.RingTolerance = tolerance;
             DrawnRadialSegments = sides;
             DrawnRingTolerance = tolerance;
             return true;
-        }
-
-        /// <summary>
-        /// The side count and ring tolerance of this frame: <see cref="RadialSegments"/> and <see cref="RingTolerance"/>,
-        /// or where <see cref="DetailDistance"/> is on, those the distance from <see cref="ViewPoint"/> (or the main camera)
-        /// to the box around the interpolated positions asks for (<see cref="ViewDetail"/>; fewer sides only on an unbroken
-        /// rope, whose burrs keep their strands). The distance is taken in world space (<see cref="ViewDistance"/>).
-        /// </summary>
-        void ChooseDetail(Rope rope, out int sides, out float tolerance)
-        {
-            sides = m_RadialSegments;
-            tolerance = m_RingTolerance;
-            // off, or no viewer: NaN, which both rules read as full detail
-            if (float.IsNaN(_viewDistance)) return;
-            if (rope.BrokenSegmentCount == 0) sides = ViewDetail.RadialSegments(m_RadialSegments, m_DetailDistance, _viewDistance, DrawnRadialSegments);
-            tolerance = ViewDetail.RingTolerance(m_RingTolerance, m_DetailDistance, _viewDistance, m_RadialSegments, sides);
         }
 
         /// <summary>

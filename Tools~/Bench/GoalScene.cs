@@ -94,9 +94,10 @@ namespace HookeRope.Bench
                 var rope = simulation.Rope;
                 var viewer = Viewer - rope.Origin;
                 float distance = ViewDetail.DistanceToBox(rope.PositionX, rope.PositionY, rope.PositionZ, rope.ParticleCount, viewer);
-                int sides = ViewDetail.RadialSegments(MeshSides, detailDistance, distance, simulation.MeshSettings.RadialSegments);
+                ViewDetail.Choose(MeshSides, ringTolerance, detailDistance, distance, simulation.MeshSettings.RadialSegments, false,
+                    out int sides, out float tolerance);
                 simulation.MeshSettings.RadialSegments = sides;
-                simulation.MeshSettings.RingTolerance = ViewDetail.RingTolerance(ringTolerance, detailDistance, distance, MeshSides, sides);
+                simulation.MeshSettings.RingTolerance = tolerance;
             }
         }
 

@@ -47,6 +47,20 @@ namespace HookeRope.Geometry
         }
 
         /// <summary>
+        /// The side count and ring tolerance for a rope of <paramref name="radialSegments"/> sides at
+        /// <paramref name="ringTolerance"/> seen from <paramref name="viewDistance"/> (m): <see cref="RadialSegments"/>
+        /// (all of them where <paramref name="keepSides"/>, e.g. a broken rope, whose burrs' strands are counted from its
+        /// sides) and the tolerance for that count. <paramref name="drawnBefore"/>: the side count the rope drew last.
+        /// Detail distance 0 (off) or a distance that is not a number: radialSegments and ringTolerance.
+        /// </summary>
+        public static void Choose(int radialSegments, float ringTolerance, float detailDistance, float viewDistance, int drawnBefore, bool keepSides,
+            out int sides, out float tolerance)
+        {
+            sides = keepSides ? radialSegments : RadialSegments(radialSegments, detailDistance, viewDistance, drawnBefore);
+            tolerance = RingTolerance(ringTolerance, detailDistance, viewDistance, radialSegments, sides);
+        }
+
+        /// <summary>
         /// <see cref="RingTolerance(float, float, float)"/> for a rope drawn with <paramref name="drawnRadialSegments"/>
         /// sides instead of its <paramref name="radialSegments"/> (<see cref="RadialSegments"/>): the tolerance is a multiple
         /// of the drawn polygon's depth, so the scale is divided by how much deeper that polygon is, and the along-rope error
@@ -59,6 +73,7 @@ namespace HookeRope.Geometry
             double deeper = (double)RingNeed.Tolerance(drawnRadialSegments) / RingNeed.Tolerance(radialSegments);
             return Scaled(ringTolerance, detailDistance, viewDistance, deeper);
         }
+
         /// <summary>
         /// The ring tolerance for a rope seen from <paramref name="viewDistance"/> (m): <paramref name="ringTolerance"/>
         /// (range <see cref="RopeParameters.RingTolerance"/>) up to <paramref name="detailDistance"/> (m, range

@@ -54,6 +54,23 @@ namespace HookeRope.Tests.Core.Geometry
         }
 
         [Test]
+        public void ChooseGivesTheSidesAndTheirToleranceOrKeepsTheSides()
+        {
+            ViewDetail.Choose(16, 1f, 2f, 100f, 16, false, out int sides, out float tolerance);
+            Assert.That(sides, Is.EqualTo(8));
+            Assert.That(tolerance, Is.EqualTo(ViewDetail.RingTolerance(1f, 2f, 100f, 16, 8)));
+            ViewDetail.Choose(16, 1f, 2f, 100f, 16, true, out sides, out tolerance);
+            Assert.That(sides, Is.EqualTo(16), "kept (a broken rope)");
+            Assert.That(tolerance, Is.EqualTo(ViewDetail.RingTolerance(1f, 2f, 100f)));
+            ViewDetail.Choose(16, 2f, 0f, 100f, 8, false, out sides, out tolerance);
+            Assert.That(sides, Is.EqualTo(16), "off");
+            Assert.That(tolerance, Is.EqualTo(2f));
+            ViewDetail.Choose(16, 2f, 2f, float.NaN, 8, false, out sides, out tolerance);
+            Assert.That(sides, Is.EqualTo(16), "no viewer (NaN)");
+            Assert.That(tolerance, Is.EqualTo(2f));
+        }
+
+        [Test]
         public void BadInputIsNamedWithItsRange()
         {
             Assert.That(() => ViewDetail.RingTolerance(0.5f, 2f, 3f), Throws.TypeOf<ArgumentOutOfRangeException>()
