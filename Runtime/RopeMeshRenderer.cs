@@ -55,6 +55,14 @@ namespace HookeRope
             new VertexAttributeDescriptor(VertexAttribute.TexCoord0, VertexAttributeFormat.Float32, 2),
         };
 
+        /// <summary>Position, normal and uv, all float32: the layout of <see cref="LeanTubeVertex"/> (<see cref="Tangents"/> off).</summary>
+        static readonly VertexAttributeDescriptor[] s_LeanLayout =
+        {
+            new VertexAttributeDescriptor(VertexAttribute.Position, VertexAttributeFormat.Float32, 3),
+            new VertexAttributeDescriptor(VertexAttribute.Normal, VertexAttributeFormat.Float32, 3),
+            new VertexAttributeDescriptor(VertexAttribute.TexCoord0, VertexAttributeFormat.Float32, 2),
+        };
+
         /// <summary>
         /// Upload flags: no index validation and no bounds recalculation (the bounds come from the tube builder and
         /// are set before the vertex upload). Renderers are still notified (no DontNotifyMeshUsers): that flag
@@ -78,6 +86,9 @@ namespace HookeRope
         [SerializeField, Tooltip(RopeParameters.BurrTexture.Tooltip)]
         bool m_BurrTexture = RopeParameters.BurrTexture.Default;
 
+        [SerializeField, Tooltip(RopeParameters.Tangents.Tooltip)]
+        bool m_Tangents = RopeParameters.Tangents.Default;
+
         [SerializeField, Tooltip(RopeParameters.Color.Tooltip)]
         Color m_Color = new Color(RopeParameters.Color.DefaultR, RopeParameters.Color.DefaultG, RopeParameters.Color.DefaultB, RopeParameters.Color.DefaultA);
 
@@ -87,9 +98,11 @@ namespace HookeRope
         Mesh _mesh;
         float[] _x = Array.Empty<float>(), _y = Array.Empty<float>(), _z = Array.Empty<float>();
         TubeVertex[] _vertices = Array.Empty<TubeVertex>();
+        LeanTubeVertex[] _leanVertices = Array.Empty<LeanTubeVertex>();
         int[] _indices = Array.Empty<int>();
         RopeSimulation _uploaded;
         int _uploadedTopology = -1, _vertexCount, _indexCount, _vertexCapacity = -1, _indexCapacity = -1;
+        bool _uploadedTangents;
         Material _generatedMaterial;
         Material _generatedBurrMaterial;
         Texture2D _generatedTexture;
@@ -144,6 +157,18 @@ namespace HookeRope
         {
             get => m_DetailDistance;
             set => m_DetailDistance = RopeParameters.Check(value, RopeParameters.DetailDistance.Row);
+        }
+
+        /// <summary>
+        /// Whether the mesh has vertex tangents (default true): 48-byte vertices (position, normal, tangent, uv). Only
+        /// normal-mapped materials read tangents; without (false) the vertices are 32 bytes (position, normal, uv;
+        /// <see cref="LeanTubeVertex"/>), a third less to write and upload every frame, with the same positions, normals
+        /// and uv bit for bit. A new value re-lays the vertex buffer at the next frame (once; no garbage after it).
+        /// </summary>
+        public bool Tangents
+        {
+            get => m_Tangents;
+            set => m_Tangents = value;
         }
 
         /// <summary>The ring tolerance the last drawn frame used: <see cref="RingTolerance"/>, scaled by the view distance where <see cref="DetailDistance"/> is on (1 before the first frame).</summary>
@@ -240,10 +265,19 @@ namespace HookeRope
             if (!Prepare(alpha, out var simulation, out var origin)) return false;
             // made once for the ring budget's most (constant until a break): the adaptive budgets step within it
             int vertexCapacity = simulation.GetVertexCapacity(), indexCapacity = simulation.GetIndexCapacity();
-            if (_vertices.Length < vertexCapacity) _vertices = new TubeVertex[vertexCapacity];
             if (_indices.Length < indexCapacity) _indices = new int[indexCapacity];
-            var update = simulation.FillMesh(_x, _y, _z, _vertices, _indices, RadiusScale(), LocalFrameInRope(origin));
-            Upload(simulation, update, _vertices, _indices);
+            if (m_Tangents)
+            {
+                if (_vertices.Length < vertexCapacity) _vertices = new TubeVertex[vertexCapacity];
+                var update = simulation.FillMesh(_x, _y, _z, _vertices, _indices, RadiusScale(), LocalFrameInRope(origin));
+                Upload(simulation, update, _vertices, _indices, true);
+            }
+            else
+            {
+                if (_leanVertices.Length < vertexCapacity) _leanVertices = new LeanTubeVertex[vertexCapacity];
+                var update = simulation.FillMesh(_x, _y, _z, _leanVertices, _indices, RadiusScale(), LocalFrameInRope(origin));
+                Upload(simulation, update, _leanVertices, _indices, false);
+            }
             return true;
         }
 
@@ -258,12 +292,17 @@ namespace HookeRope
         {
             bool ready = Prepare(alpha, out _, out var origin);
             if (ready) slot.UseCallerPositions(_x, _y, _z, RadiusScale(), LocalFrameInRope(origin));
+            slot.Tangents = m_Tangents;
             slot.Enabled = ready;
             return ready;
         }
 
         /// <summary>Uploads what the world filled into <paramref name="slot"/> after <see cref="PrepareWorldFill"/>.</summary>
-        internal void UploadWorldFill(RopeMeshSlot slot) => Upload(_rope.Simulation, slot.Update, slot.Vertices, slot.Indices);
+        internal void UploadWorldFill(RopeMeshSlot slot)
+        {
+            if (slot.Tangents) Upload(_rope.Simulation, slot.Update, slot.Vertices, slot.Indices, true);
+            else Upload(_rope.Simulation, slot.Update, slot.LeanVertices, slot.Indices, false);
+        }
 
         /// <summary>
         /// Everything <see cref="Render"/> does before the fill: picks the simulation (the rope's, or the edit-mode
@@ -325,16 +364,17 @@ namespace HookeRope
         }
 
         /// <summary>
-        /// Uploads a filled tube (<paramref name="update"/> over <paramref name="vertices"/> and
-        /// <paramref name="indices"/>, from this renderer's buffers or its world mesh slot): the buffer sizes only when the
-        /// capacity changed, the indices and sub-meshes only when the topology or the source changed, then the bounds,
-        /// then the vertices in use.
+        /// Uploads a filled tube (<paramref name="update"/> over <paramref name="vertices"/>, with or without
+        /// <paramref name="tangents"/>, and <paramref name="indices"/>, from this renderer's buffers or its world mesh
+        /// slot): the buffer sizes only when the capacity or the vertex layout changed, the indices and sub-meshes only
+        /// when the topology or the source changed, then the bounds, then the vertices in use.
         /// </summary>
-        void Upload(RopeSimulation simulation, TubeMeshUpdate update, TubeVertex[] vertices, int[] indices)
+        void Upload<TVertex>(RopeSimulation simulation, TubeMeshUpdate update, TVertex[] vertices, int[] indices, bool tangents) where TVertex : struct
         {
             bool sameSimulation = ReferenceEquals(_uploaded, simulation);
+            if (tangents != _uploadedTangents) _vertexCapacity = -1;   // another vertex layout: the buffer is laid out again
             if (update.TopologyChanged || !sameSimulation || _uploadedTopology != simulation.MeshTopologyVersion ||
-                _vertexCount != update.VertexCount || _indexCount != update.IndexCount)
+                _vertexCount != update.VertexCount || _indexCount != update.IndexCount || _vertexCapacity < 0)
             {
                 _uploaded = simulation;
                 _uploadedTopology = simulation.MeshTopologyVersion;
@@ -353,7 +393,8 @@ namespace HookeRope
                 if (vertexCapacity != _vertexCapacity)
                 {
                     _vertexCapacity = vertexCapacity;
-                    _mesh.SetVertexBufferParams(vertexCapacity, s_Layout);
+                    _uploadedTangents = tangents;
+                    _mesh.SetVertexBufferParams(vertexCapacity, tangents ? s_Layout : s_LeanLayout);
                 }
                 if (indexCapacity != _indexCapacity)
                 {

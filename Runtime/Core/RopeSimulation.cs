@@ -190,6 +190,27 @@ namespace HookeRope
         public TubeMeshUpdate FillMesh(TubeVertex[] vertices, int[] indices) =>
             mesh.Fill(Rope.PositionX, Rope.PositionY, Rope.PositionZ, vertices, indices, 1f, MeshFrame.Shifted(Rope.Origin));
 
+        /// <summary>
+        /// <see cref="FillMesh(ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{float}, TubeVertex[], int[], float)"/>
+        /// into vertices without tangents (<see cref="LeanTubeVertex"/>, 32 bytes instead of 48: for materials without a
+        /// normal map). Every written field has the bits of the same field of a <see cref="TubeVertex"/> fill.
+        /// </summary>
+        public TubeMeshUpdate FillMesh(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
+            LeanTubeVertex[] vertices, int[] indices, float radiusScale = 1f) =>
+            mesh.Fill(x, y, z, vertices, indices, CheckedRadiusScale(radiusScale), null);
+
+        /// <summary>
+        /// <see cref="FillMesh(ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{float}, TubeVertex[], int[], float, MeshFrame)"/>
+        /// into vertices without tangents (<see cref="LeanTubeVertex"/>).
+        /// </summary>
+        public TubeMeshUpdate FillMesh(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
+            LeanTubeVertex[] vertices, int[] indices, float radiusScale, MeshFrame frame) =>
+            mesh.Fill(x, y, z, vertices, indices, CheckedRadiusScale(radiusScale), frame);
+
+        /// <summary><see cref="FillMesh(TubeVertex[], int[])"/> into vertices without tangents (<see cref="LeanTubeVertex"/>).</summary>
+        public TubeMeshUpdate FillMesh(LeanTubeVertex[] vertices, int[] indices) =>
+            mesh.Fill(Rope.PositionX, Rope.PositionY, Rope.PositionZ, vertices, indices, 1f, MeshFrame.Shifted(Rope.Origin));
+
         private static float CheckedRadiusScale(float radiusScale)
         {
             if (!float.IsFinite(radiusScale) || !(radiusScale > 0f))

@@ -16,16 +16,17 @@ namespace HookeRope.Bench
     internal static class GoalBench
     {
         /// <summary>
-        /// Measures one configuration: at least <paramref name="minRepeats"/> repeats of the window, more while the
-        /// repeats so far took less than <paramref name="seconds"/> (at most 50).
+        /// Measures the configuration of <paramref name="row"/> (its id, ropes, segments, workers, ring tolerance, detail
+        /// distance and tangents; <see cref="Plan"/>) and writes the figures into it: at least <paramref name="minRepeats"/>
+        /// repeats of the window, more while the repeats so far took less than <paramref name="seconds"/> (at most 50).
         /// </summary>
-        public static GoalRow Measure(string id, int ropes, int segments, int workers, double seconds, int minRepeats, float ringTolerance = 1f, float detailDistance = 0f)
+        public static GoalRow Measure(GoalRow row, double seconds, int minRepeats)
         {
-            var row = new GoalRow
-            {
-                Id = id, Ropes = ropes, Segments = segments, Substeps = GoalScene.Substeps, MeshSides = GoalScene.MeshSides,
-                Workers = workers, Window = GoalScene.Window, RingTolerance = ringTolerance, DetailDistance = detailDistance,
-            };
+            int ropes = row.Ropes, segments = row.Segments, workers = row.Workers;
+            float ringTolerance = row.RingTolerance, detailDistance = row.DetailDistance;
+            row.Substeps = GoalScene.Substeps;
+            row.MeshSides = GoalScene.MeshSides;
+            row.Window = GoalScene.Window;
             var samples = new List<double>();
             var watch = new Stopwatch();
             var window = new Stopwatch();
@@ -35,7 +36,8 @@ namespace HookeRope.Bench
             int repeats = 0;
             while (repeats < minRepeats || (total.Elapsed.TotalSeconds < seconds && repeats < 50))
             {
-                using (var world = GoalScene.Build(ropes, segments, workers, warmUpFrames: GoalScene.WarmUpFrames, ringTolerance: ringTolerance, detailDistance: detailDistance))
+                using (var world = GoalScene.Build(ropes, segments, workers, warmUpFrames: GoalScene.WarmUpFrames, ringTolerance: ringTolerance,
+                           detailDistance: detailDistance, tangents: row.Tangents))
                 {
                     process.Refresh();
                     TimeSpan cpuBefore = process.TotalProcessorTime;
@@ -109,27 +111,31 @@ namespace HookeRope.Bench
         }
 
         /// <summary>
-        /// The rows of the table: goal at 1 and 2 workers and at 2 workers with the meshes' ring tolerance 2, then rope counts
-        /// 1 … 500 and segment counts 16 … 1 024 at 2 workers (each with its meshes' RingTolerance and the view-distance
-        /// detail distance, 0 = off).
+        /// The rows of the table, unmeasured: goal at 1 and 2 workers, and at 2 workers with the meshes' ring tolerance 2, with
+        /// the view-distance detail and without tangents, then rope counts 1 … 500 and segment counts 16 … 1 024 at 2 workers.
         /// </summary>
-        public static List<(string Id, int Ropes, int Segments, int Workers, float RingTolerance, float DetailDistance)> Plan(bool quick)
+        public static List<GoalRow> Plan(bool quick)
         {
-            var plan = new List<(string, int, int, int, float, float)>
+            var plan = new List<GoalRow>
             {
-                ("goal 100x64 w1", 100, 64, 1, 1f, 0f), ("goal 100x64 w2", 100, 64, 2, 1f, 0f),
+                Row("goal 100x64 w1", 100, 64, 1), Row("goal 100x64 w2", 100, 64, 2),
                 // the goal scene with TubeMeshSettings.RingTolerance 2 (not the goal: its meshes' along-rope tolerance is doubled)
-                ("goal 100x64 w2 tol2", 100, 64, 2, 2f, 0f),
+                Row("goal 100x64 w2 tol2", 100, 64, 2, ringTolerance: 2f),
                 // the goal scene seen from GoalScene.Viewer with a detail distance of 2 m (not the goal: the far ropes draw
                 // coarser along, by ViewDetail, the same angle of error as a rope at 2 m)
-                ("goal 100x64 w2 view2m", 100, 64, 2, 1f, 2f),
+                Row("goal 100x64 w2 view2m", 100, 64, 2, detailDistance: 2f),
+                // the goal scene's meshes without tangents (the same surface, 32-byte vertices: for materials without a normal map)
+                Row("goal 100x64 w2 lean", 100, 64, 2, tangents: false),
             };
             int[] ropeCounts = quick ? new[] { 1, 10, 100, 500 } : new[] { 1, 2, 5, 10, 20, 50, 100, 200, 500 };
-            foreach (int r in ropeCounts) plan.Add(($"ropes {r}x64 w2", r, 64, 2, 1f, 0f));
+            foreach (int r in ropeCounts) plan.Add(Row($"ropes {r}x64 w2", r, 64, 2));
             int[] segmentCounts = quick ? new[] { 16, 256 } : new[] { 16, 32, 64, 128, 256, 1024 };
-            foreach (int s in segmentCounts) plan.Add(($"segments 10x{s} w2", 10, s, 2, 1f, 0f));
+            foreach (int s in segmentCounts) plan.Add(Row($"segments 10x{s} w2", 10, s, 2));
             return plan;
         }
+
+        private static GoalRow Row(string id, int ropes, int segments, int workers, float ringTolerance = 1f, float detailDistance = 0f, bool tangents = true) =>
+            new GoalRow { Id = id, Ropes = ropes, Segments = segments, Workers = workers, RingTolerance = ringTolerance, DetailDistance = detailDistance, Tangents = tangents };
 
         /// <summary>1-minute load average from /proc/loadavg, or −1 where it is not available.</summary>
         public static double LoadAverage()

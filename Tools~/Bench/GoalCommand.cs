@@ -58,11 +58,11 @@ namespace HookeRope.Bench
             Console.WriteLine(new string('-', header.Length + 10));
             var rows = new List<GoalRow>();
             int regressions = 0;
-            foreach (var (id, ropes, segments, workers, ringTolerance, detailDistance) in GoalBench.Plan(quick))
+            foreach (GoalRow planned in GoalBench.Plan(quick))
             {
-                if (match != null && !id.Contains(match, StringComparison.Ordinal)) continue;
-                bool goal = id.StartsWith("goal", StringComparison.Ordinal);
-                var row = GoalBench.Measure(id, ropes, segments, workers, goal ? (quick ? 1.0 : 4.0) : (quick ? 0.3 : 2.0), goal || !quick ? 3 : 1, ringTolerance, detailDistance);
+                if (match != null && !planned.Id.Contains(match, StringComparison.Ordinal)) continue;
+                bool goal = planned.Id.StartsWith("goal", StringComparison.Ordinal);
+                var row = GoalBench.Measure(planned, goal ? (quick ? 1.0 : 4.0) : (quick ? 0.3 : 2.0), goal || !quick ? 3 : 1);
                 counts?.ApplyTo(row);
                 row.FillProbeMs = fill;
                 row.ChaseProbeNs = chase;

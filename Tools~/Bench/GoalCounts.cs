@@ -80,7 +80,7 @@ namespace HookeRope.Bench
         public void ApplyTo(GoalRow row)
         {
             // the probe counts the goal scene, whose meshes draw at ring tolerance 1 whatever their distance
-            if (row.Ropes != Ropes || row.Segments != Segments || row.Window != Window || row.RingTolerance != 1f || row.DetailDistance != 0f) return;
+            if (row.Ropes != Ropes || row.Segments != Segments || row.Window != Window || row.RingTolerance != 1f || row.DetailDistance != 0f || !row.Tangents) return;
             row.InstructionsPerUnit = this["instructions_per_unit"];
             row.InstructionsPerFrame = this["instructions_per_frame"];
             row.StepInstructionsPerUnit = this["step_instructions_per_unit"];

@@ -22,6 +22,8 @@ namespace HookeRope.Bench
         /// <see cref="RingTolerance"/>); else each rope's tolerance follows its distance to <see cref="GoalScene.Viewer"/> every frame.
         /// </summary>
         public float DetailDistance { get; set; }
+        /// <summary>Whether the meshes are filled with tangents (48-byte vertices, the goal; false: 32-byte <see cref="HookeRope.Geometry.LeanTubeVertex"/>; a baseline saved before it existed reads true).</summary>
+        public bool Tangents { get; set; } = true;
         /// <summary>Frames of the scene every repeat measured, e.g. "45-74" (<see cref="GoalScene.Window"/>): rows compare only within one window.</summary>
         public string Window { get; set; }
         /// <summary>Freshly built worlds whose window was measured (each repeat times the same frames).</summary>

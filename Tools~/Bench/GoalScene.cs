@@ -25,10 +25,12 @@ namespace HookeRope.Bench
         /// <paramref name="adaptiveRings"/> false draws 4 rings per segment (the mesh before issue 18);
         /// <paramref name="ringTolerance"/> is the meshes' <see cref="HookeRope.Geometry.TubeMeshSettings.RingTolerance"/>
         /// (1, the default, in the goal); a <paramref name="detailDistance"/> above 0 scales it by each rope's distance to
-        /// <see cref="Viewer"/> before every warm-up frame (<see cref="ApplyViewDetail"/>; 0, off, in the goal).
+        /// <see cref="Viewer"/> before every warm-up frame (<see cref="ApplyViewDetail"/>; 0, off, in the goal);
+        /// <paramref name="tangents"/> false fills the meshes without tangents (<see cref="RopeMeshSlot.Tangents"/>: 32-byte
+        /// vertices; on, 48 bytes, in the goal).
         /// </summary>
         public static RopeWorld Build(int ropes, int segments, int workers, bool adaptiveRings = true, int warmUpFrames = BuildFrames, float ringTolerance = 1f,
-            float detailDistance = 0f)
+            float detailDistance = 0f, bool tangents = true)
         {
             var world = new RopeWorld(workers);
             for (int r = 0; r < ropes; r++)
@@ -42,7 +44,7 @@ namespace HookeRope.Bench
                 simulation.MeshSettings.RingTolerance = ringTolerance;
                 simulation.Rope.AddPin(0, start);
                 simulation.Rope.AddPin(segments, end);
-                world.EnableMesh(world.Add(simulation));
+                world.EnableMesh(world.Add(simulation)).Tangents = tangents;
             }
             for (int i = 0; i < warmUpFrames; i++)
             {

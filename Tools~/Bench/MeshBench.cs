@@ -10,14 +10,15 @@ using HookeRope.Solver;
 namespace HookeRope.Bench
 {
     /// <summary>
-    /// <c>mesh [--quick] [--instructions]</c>: the cost of the tube mesh alone (issue 18 item 2), per vertex and per
+    /// <c>mesh [--quick] [--instructions] [--world]</c>: the cost of the tube mesh alone (issue 18 item 2), per vertex and per
     /// rope, on the goal scene's lanyard (64 segments, default settings and radius model, pinned 1.8 m apart and
     /// sagging) and on a 200-segment helix with one break (the shape of the older radius-and-mesh.md table), at 8, 16 and
     /// 32 sides. Modes: <c>moving</c> (the rope is stepped between fills, as in the goal scene: positions and radii
     /// change; only the fill is timed), <c>full</c> (two recorded poses and two radius scales alternate: every fill
     /// recomputes everything, radius work included), <c>positions</c> (the poses alternate, radii unchanged: Unity's
     /// interpolated frames between physics steps), <c>radii</c> (the same pose, the radius scales alternate) and
-    /// <c>unchanged</c> (the same pose and radii again). <c>meshframes …</c> is the workload callgrind counts
+    /// <c>unchanged</c> (the same pose and radii again); then the goal world's fills, with and without tangents (<c>--world</c>:
+    /// only these). <c>meshframes …</c> is the workload callgrind counts
     /// (<see cref="MeshInstructions"/>). Timings are printed, never asserted.
     /// </summary>
     internal static class MeshBench
@@ -161,12 +162,33 @@ namespace HookeRope.Bench
         public static int Execute(string[] args)
         {
             bool quick = Array.IndexOf(args, "--quick") >= 0, instructions = Array.IndexOf(args, "--instructions") >= 0;
+            bool worldOnly = Array.IndexOf(args, "--world") >= 0;
             var c = CultureInfo.InvariantCulture;
             Console.WriteLine($"HookeRope bench · mesh  {Environment.ProcessorCount} logical processors, load average {GoalBench.LoadAverage().ToString("F2", c)}, " +
                               $"{System.Runtime.InteropServices.RuntimeInformation.FrameworkDescription}");
             Console.WriteLine("one fill = RopeSimulation.FillMesh of one rope; moving = stepped before each fill (fill timed alone), full = poses and radius scales alternate,");
             Console.WriteLine("positions = poses alternate (same radii), radii = radius scales alternate (same pose), unchanged = same pose and radii");
             Console.WriteLine();
+            if (!worldOnly) PrintRopeTable(quick, instructions);
+            Console.WriteLine("goal scene (100 lanyards x 64 segments, 16 sides): RopeWorld.FillMeshes alone per 1/90 s frame (the step before it not timed)");
+            string goalHeader = string.Format(c, "{0,-48} {1,7} {2,11} {3,10} {4,10} {5,10}", "phase", "workers", "verts/rope", "ms/frame", "min ms", "ns/vertex");
+            Console.WriteLine(goalHeader);
+            Console.WriteLine(new string('-', goalHeader.Length));
+            foreach (var (adaptive, tangents) in new[] { (true, true), (true, false), (false, true) })
+                foreach (int settle in new[] { 0, 1800 })
+                    foreach (int workers in new[] { 1, 2 })
+                    {
+                        var (ms, min, vertices) = GoalMesh(workers, settle, adaptive, quick ? 0.5 : 1.5, tangents);
+                        string phase = (adaptive ? "adaptive" : "4 rings/segment") + (tangents ? "" : ", no tangents") + (settle == 0 ? ", frames 20+ (swinging)" : ", after 20 s (settled)");
+                        Console.WriteLine(string.Format(c, "{0,-48} {1,7} {2,11:F0} {3,10:F3} {4,10:F3} {5,10:F2}", phase, workers, vertices, ms, min, ms * 1e6 / (100 * vertices)));
+                    }
+            return 0;
+        }
+
+        /// <summary>The table of single-rope fills (every scene, layout, side count and mode).</summary>
+        private static void PrintRopeTable(bool quick, bool instructions)
+        {
+            var c = CultureInfo.InvariantCulture;
             string header = string.Format(c, "{0,-8} {1,-9} {2,5} {3,-10} {4,9} {5,11} {6,11} {7,10} {8,13}", "scene", "layout", "sides", "mode", "vertices", "best µs", "median µs", "ns/vertex", "instr/vertex");
             Console.WriteLine(header);
             Console.WriteLine(new string('-', header.Length));
@@ -198,25 +220,12 @@ namespace HookeRope.Bench
             Console.WriteLine();
             Console.WriteLine("ns/vertex = best µs per fill / vertices written (fastest round: the least disturbed on a shared machine); compare instr/vertex for ratios.");
             Console.WriteLine();
-            Console.WriteLine("goal scene (100 lanyards x 64 segments, 16 sides): RopeWorld.FillMeshes alone per 1/90 s frame (the step before it not timed)");
-            string goalHeader = string.Format(c, "{0,-34} {1,7} {2,11} {3,10} {4,10} {5,10}", "phase", "workers", "verts/rope", "ms/frame", "min ms", "ns/vertex");
-            Console.WriteLine(goalHeader);
-            Console.WriteLine(new string('-', goalHeader.Length));
-            foreach (bool adaptive in new[] { true, false })
-                foreach (int settle in new[] { 0, 1800 })
-                    foreach (int workers in new[] { 1, 2 })
-                    {
-                        var (ms, min, vertices) = GoalMesh(workers, settle, adaptive, quick ? 0.5 : 1.5);
-                        string phase = (adaptive ? "adaptive" : "4 rings/segment") + (settle == 0 ? ", frames 20+ (swinging)" : ", after 20 s (settled)");
-                        Console.WriteLine(string.Format(c, "{0,-34} {1,7} {2,11:F0} {3,10:F3} {4,10:F3} {5,10:F2}", phase, workers, vertices, ms, min, ms * 1e6 / (100 * vertices)));
-                    }
-            return 0;
         }
 
-        /// <summary>Median and fastest ms of RopeWorld.FillMeshes per frame on the goal scene, and the mean vertices per rope.</summary>
-        public static (double Ms, double Min, double Vertices) GoalMesh(int workers, int settleFrames, bool adaptive, double seconds)
+        /// <summary>Median and fastest ms of RopeWorld.FillMeshes per frame on the goal scene (with or without <paramref name="tangents"/>), and the mean vertices per rope.</summary>
+        public static (double Ms, double Min, double Vertices) GoalMesh(int workers, int settleFrames, bool adaptive, double seconds, bool tangents = true)
         {
-            using (var world = GoalScene.Build(100, 64, workers, adaptive))
+            using (var world = GoalScene.Build(100, 64, workers, adaptive, tangents: tangents))
             {
                 for (int i = 0; i < settleFrames; i++) world.StepAndFillMeshes(GoalScene.Frame);
                 var samples = new List<double>();

@@ -14,15 +14,18 @@ namespace HookeRope.Kernels
     /// bench's window. <c>goal-step:N</c> is the same world stepped without mesh fills in those K frames (the meshes of
     /// the warm-up are filled as in the bench, and the fills never change the physics), so the difference of the two
     /// counts is the mesh's. goal-count.sh counts K = 0 against K = <see cref="GoalScene.WindowFrames"/> under callgrind.
+    /// <c>goal-lean:N</c> is <c>goal-world:N</c> with its meshes filled without tangents (<see cref="RopeMeshSlot.Tangents"/>
+    /// off: 32-byte vertices, the same positions, normals and uv).
     /// </summary>
     internal static class GoalWorldScene
     {
         /// <summary>Segments per lanyard (the goal's).</summary>
         public const int Segments = 64;
 
-        /// <summary>True for <c>goal-world:N</c> and <c>goal-step:N</c>.</summary>
+        /// <summary>True for <c>goal-world:N</c>, <c>goal-lean:N</c> and <c>goal-step:N</c>.</summary>
         public static bool Is(string name) =>
-            name.StartsWith("goal-world:", StringComparison.Ordinal) || name.StartsWith("goal-step:", StringComparison.Ordinal);
+            name.StartsWith("goal-world:", StringComparison.Ordinal) || name.StartsWith("goal-lean:", StringComparison.Ordinal)
+            || name.StartsWith("goal-step:", StringComparison.Ordinal);
 
         /// <summary>
         /// Builds the scene, steps <paramref name="frames"/> frames of the window and prints the state hash of every rope
@@ -30,12 +33,13 @@ namespace HookeRope.Kernels
         /// </summary>
         public static int Run(string name, int frames)
         {
-            bool mesh = name.StartsWith("goal-world:", StringComparison.Ordinal);
+            bool lean = name.StartsWith("goal-lean:", StringComparison.Ordinal);
+            bool mesh = lean || name.StartsWith("goal-world:", StringComparison.Ordinal);
             int ropes = int.Parse(name.Substring(name.IndexOf(':') + 1), CultureInfo.InvariantCulture);
             if (ropes < 1) throw new ArgumentOutOfRangeException(nameof(name), ropes, "the rope count N of " + name + " must be at least 1.");
             long vertices = 0;
             ulong hash = 14695981039346656037UL;
-            using (var world = GoalScene.Build(ropes, Segments, 1, warmUpFrames: GoalScene.WarmUpFrames))
+            using (var world = GoalScene.Build(ropes, Segments, 1, warmUpFrames: GoalScene.WarmUpFrames, tangents: !lean))
             {
                 for (int f = 0; f < frames; f++)
                 {

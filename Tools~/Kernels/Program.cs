@@ -11,7 +11,7 @@ namespace HookeRope.Kernels
     /// <list type="bullet">
     /// <item><c>run SCENE STEPS</c>: builds a scene of <see cref="KernelScene"/>, steps it STEPS host steps of 1/90 s and
     /// prints a hash of the state; run under callgrind twice (count.sh) for instructions per simulated second.
-    /// <c>run goal-world:N K</c> / <c>run goal-step:N K</c>: K frames of the goal bench's window in a world of N
+    /// <c>run goal-world:N K</c> / <c>run goal-step:N K</c> (<c>goal-lean:N</c>: meshes without tangents): K frames of the goal bench's window in a world of N
     /// lanyards with / without mesh fills (<see cref="GoalWorldScene"/>; goal-count.sh counts them).</item>
     /// <item><c>hash [STEPS]</c>: the state hash of every scene after STEPS (default 900) steps, for bit-identity checks.</item>
     /// <item><c>mesh-hash [ROPES] [FRAMES]</c>: the hash of every tube vertex and index the goal world (default 10 ropes) fills
@@ -57,7 +57,7 @@ namespace HookeRope.Kernels
                 return GoalWorldScene.MeshHash(args.Length > 1 ? int.Parse(args[1], CultureInfo.InvariantCulture) : 10,
                     args.Length > 2 ? int.Parse(args[2], CultureInfo.InvariantCulture) : HookeRope.Bench.GoalScene.WindowFrames);
             if (args.Length >= 1 && args[0] == "time") return KernelTimer.Execute(args.Length > 1 && args[1] == "--quick");
-            Console.Error.WriteLine("usage: run SCENE STEPS | hash [STEPS] | mesh-hash [ROPES] [FRAMES] | time [--quick]   (scenes: " + string.Join(", ", KernelScene.Names) + ", goal-world:N, goal-step:N)");
+            Console.Error.WriteLine("usage: run SCENE STEPS | hash [STEPS] | mesh-hash [ROPES] [FRAMES] | time [--quick]   (scenes: " + string.Join(", ", KernelScene.Names) + ", goal-world:N, goal-lean:N, goal-step:N)");
             return 2;
         }
 

@@ -69,7 +69,10 @@ namespace HookeRope.Geometry
         private readonly float[] lastX, lastY, lastZ, lastRest;
         private float[] lastRadii = Array.Empty<float>();
         private int[] lastIndices;
-        private TubeVertex[] lastVertices;
+        private object lastVertices;
+        // the caller's vertex buffer of the build under way: one of the two, the other null
+        private TubeVertex[] fullOut;
+        private LeanTubeVertex[] leanOut;
         private int lastLayoutVersion = -1;
         private int ringVLayoutVersion = -1;
         private float lastVScale = float.NaN;
@@ -121,6 +124,7 @@ namespace HookeRope.Geometry
                 sideLanes[i] = new SideLanes(new Vector4(cos[i]), new Vector4(sin[i]), new Vector4(0f, 1f, (float)i / radial, 0f));
             // the wide kernel's pair table, where Vector<float> has its 8 lanes (made here: a mesh update never allocates)
             if (Vector<float>.Count == 8) pairLanes = MakePairLanes();
+            MakeLeanTables();
             capRim = new TubeVertex[radial + 1];
             int n = layout.SegmentCount;
             restArc = new double[n + 1];
@@ -310,7 +314,17 @@ namespace HookeRope.Geometry
         /// </summary>
         public TubeMeshUpdate Build(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
             ReadOnlySpan<float> restLengths, ReadOnlySpan<float> segmentRadii, ReadOnlySpan<bool> brokenSegments,
-            TubeVertex[] vertices, int[] indices)
+            TubeVertex[] vertices, int[] indices) =>
+            BuildWithRingRadii(x, y, z, restLengths, RingRadiiOfSegments(segmentRadii, brokenSegments), brokenSegments, vertices, indices);
+
+        /// <summary><see cref="Build(ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{bool}, TubeVertex[], int[])"/> into vertices without tangents.</summary>
+        public TubeMeshUpdate Build(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
+            ReadOnlySpan<float> restLengths, ReadOnlySpan<float> segmentRadii, ReadOnlySpan<bool> brokenSegments,
+            LeanTubeVertex[] vertices, int[] indices) =>
+            BuildWithRingRadii(x, y, z, restLengths, RingRadiiOfSegments(segmentRadii, brokenSegments), brokenSegments, vertices, indices);
+
+        /// <summary>Per-segment radii (m) smoothed to the particles and interpolated to the rings of <see cref="Layout"/>.</summary>
+        private ReadOnlySpan<float> RingRadiiOfSegments(ReadOnlySpan<float> segmentRadii, ReadOnlySpan<bool> brokenSegments)
         {
             int n = layout.SegmentCount;
             if (segmentRadii.Length != n)
@@ -336,7 +350,7 @@ namespace HookeRope.Geometry
                 int j = segments[k];
                 segmentRingRadii[k] = particleRadii[j] + (particleRadii[j + 1] - particleRadii[j]) * fractions[k];
             }
-            return BuildWithRingRadii(x, y, z, restLengths, new ReadOnlySpan<float>(segmentRingRadii, 0, rings), brokenSegments, vertices, indices);
+            return new ReadOnlySpan<float>(segmentRingRadii, 0, rings);
         }
 
         /// <summary>
@@ -349,6 +363,29 @@ namespace HookeRope.Geometry
             ReadOnlySpan<float> restLengths, ReadOnlySpan<float> radii, ReadOnlySpan<bool> brokenSegments,
             TubeVertex[] vertices, int[] indices)
         {
+            if (vertices == null) throw new ArgumentNullException(nameof(vertices));
+            return BuildInto(x, y, z, restLengths, radii, brokenSegments, vertices, null, vertices.Length, indices);
+        }
+
+        /// <summary>
+        /// <see cref="BuildWithRingRadii(ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{bool}, TubeVertex[], int[])"/>
+        /// into vertices without tangents (<see cref="LeanTubeVertex"/>: each field the bits of the same field of a
+        /// <see cref="TubeVertex"/> build). A build into the other kind of buffer than the last one is a full build.
+        /// </summary>
+        public TubeMeshUpdate BuildWithRingRadii(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
+            ReadOnlySpan<float> restLengths, ReadOnlySpan<float> radii, ReadOnlySpan<bool> brokenSegments,
+            LeanTubeVertex[] vertices, int[] indices)
+        {
+            if (vertices == null) throw new ArgumentNullException(nameof(vertices));
+            return BuildInto(x, y, z, restLengths, radii, brokenSegments, null, vertices, vertices.Length, indices);
+        }
+
+        /// <summary>The build into <paramref name="fullVertices"/> or <paramref name="leanVertices"/> (the other null), of <paramref name="vertexLength"/> vertices.</summary>
+        private TubeMeshUpdate BuildInto(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
+            ReadOnlySpan<float> restLengths, ReadOnlySpan<float> radii, ReadOnlySpan<bool> brokenSegments,
+            TubeVertex[] fullVertices, LeanTubeVertex[] leanVertices, int vertexLength, int[] indices)
+        {
+            object vertices = (object)fullVertices ?? leanVertices;
             int n = layout.SegmentCount;
             CheckPositions(x, y, z, brokenSegments);
             if (restLengths.Length != n)
@@ -356,10 +393,9 @@ namespace HookeRope.Geometry
             int rings = layout.RingCount;
             if (radii.Length != rings)
                 throw new ArgumentException("radii must hold RingCount = " + rings + " values.", nameof(radii));
-            if (vertices == null) throw new ArgumentNullException(nameof(vertices));
             if (indices == null) throw new ArgumentNullException(nameof(indices));
             Count(brokenSegments, Counted.Layout, out int vertexCount, out int tubeIndexCount, out int burrIndexCount);
-            if (vertices.Length < vertexCount)
+            if (vertexLength < vertexCount)
                 throw new ArgumentException("vertices must hold at least GetVertexCount = " + vertexCount + " vertices.", nameof(vertices));
             if (indices.Length < tubeIndexCount + burrIndexCount)
                 throw new ArgumentException("indices must hold at least GetIndexCount = " + (tubeIndexCount + burrIndexCount) + " indices.", nameof(indices));
@@ -412,11 +448,15 @@ namespace HookeRope.Geometry
             int tubeCursor = 0;
             int burrCursor = tubeIndexCount;
             int segment = 0;
+            fullOut = fullVertices;
+            leanOut = leanVertices;
             while (NextPiece(brokenSegments, n, ref segment, out int a, out int b))
             {
-                BuildPiece(a, b, x, y, z, radii, vertices, indices, topologyChanged, radiiOnly, rewriteStrands,
+                BuildPiece(a, b, x, y, z, radii, indices, topologyChanged, radiiOnly, rewriteStrands,
                     ref vertexBase, ref tubeCursor, ref burrCursor, ref bounds);
             }
+            fullOut = null;
+            leanOut = null;
             bounds.Add(strandBounds);
 
             if (topologyChanged) { lastIndices = indices; topologyValid = true; }
@@ -644,7 +684,7 @@ namespace HookeRope.Geometry
         }
 
         private void BuildPiece(int a, int b, ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
-            ReadOnlySpan<float> radii, TubeVertex[] vertices, int[] indices, bool writeIndices, bool radiiOnly, bool rewriteStrands,
+            ReadOnlySpan<float> radii, int[] indices, bool writeIndices, bool radiiOnly, bool rewriteStrands,
             ref int vertexBase, ref int tubeCursor, ref int burrCursor, ref Bounds bounds)
         {
             int n = layout.SegmentCount;
@@ -678,11 +718,11 @@ namespace HookeRope.Geometry
             int startRings = startBroken && dangling != null ? PlaceDanglingHalf(a - 1, true, first) : 0;
             int startTip = startRings > 0 ? spareFirst + startRings - 1 : first;
             bool startDirty = startRings > 0 || dirty[first];
-            if (startBroken || capEnds) WriteCap(startTip, false, vertices, indices, writeIndices, startDirty, ref vertexBase, ref tubeCursor, ref bounds);
-            if (startBroken && burrEnabled) WriteStrands(startTip, false, 2 * (a - 1) + 1, vertices, indices, writeIndices, rewriteStrands, ref vertexBase, ref burrCursor);
+            if (startBroken || capEnds) WriteCap(startTip, false, indices, writeIndices, startDirty, ref vertexBase, ref tubeCursor, ref bounds);
+            if (startBroken && burrEnabled) WriteStrands(startTip, false, 2 * (a - 1) + 1, indices, writeIndices, rewriteStrands, ref vertexBase, ref burrCursor);
             for (int q = startRings - 1; q >= 0; q--)
             {
-                WriteRing(spareFirst + q, vertices.AsSpan(vertexBase, stride));
+                WriteRingAt(spareFirst + q, vertexBase);
                 AddRingBounds(spareFirst + q, ref bounds);
                 WriteStrip(vertexBase, vertexBase + stride, indices, writeIndices, ref tubeCursor);
                 vertexBase += stride;
@@ -695,7 +735,7 @@ namespace HookeRope.Geometry
             {
                 // the loop below with its tests decided: each ring written (in one call for the piece) and bounded, the
                 // strips' indices kept
-                WriteRings(first, last, vertices.AsSpan(vertexBase, (last - first + 1) * stride));
+                WriteRingsAt(first, last, vertexBase);
                 AddRingsBounds(first, last, ref bounds);
                 tubeCursor += (last - first) * radial * 6;
             }
@@ -704,8 +744,8 @@ namespace HookeRope.Geometry
                 for (int k = first; k <= last; k++)
                 {
                     int ringBase = vertexBase + (k - first) * stride;
-                    if (dirty[k] && stripNormals[k]) WriteRingOnStrips(k, first, last, beforeFirst, afterLast, vertices.AsSpan(ringBase, stride));
-                    else if (dirty[k]) WriteRing(k, vertices.AsSpan(ringBase, stride));
+                    if (dirty[k] && stripNormals[k]) WriteRingOnStripsAt(k, first, last, beforeFirst, afterLast, ringBase);
+                    else if (dirty[k]) WriteRingAt(k, ringBase);
                     AddRingBounds(k, ref bounds);
                     if (k < last) WriteStrip(ringBase, ringBase + stride, indices, writeIndices, ref tubeCursor);
                 }
@@ -717,14 +757,14 @@ namespace HookeRope.Geometry
             for (int q = 0; q < endRings; q++)
             {
                 WriteStrip(vertexBase - stride, vertexBase, indices, writeIndices, ref tubeCursor);
-                WriteRing(spareFirst + q, vertices.AsSpan(vertexBase, stride));
+                WriteRingAt(spareFirst + q, vertexBase);
                 AddRingBounds(spareFirst + q, ref bounds);
                 vertexBase += stride;
             }
             int endTip = endRings > 0 ? spareFirst + endRings - 1 : last;
             bool endDirty = endRings > 0 || dirty[last];
-            if (endBroken || capEnds) WriteCap(endTip, true, vertices, indices, writeIndices, endDirty, ref vertexBase, ref tubeCursor, ref bounds);
-            if (endBroken && burrEnabled) WriteStrands(endTip, true, 2 * b, vertices, indices, writeIndices, rewriteStrands, ref vertexBase, ref burrCursor);
+            if (endBroken || capEnds) WriteCap(endTip, true, indices, writeIndices, endDirty, ref vertexBase, ref tubeCursor, ref bounds);
+            if (endBroken && burrEnabled) WriteStrands(endTip, true, 2 * b, indices, writeIndices, rewriteStrands, ref vertexBase, ref burrCursor);
         }
 
         /// <summary>Two triangles per radial step between the rings whose first vertices are baseA and baseB (B further along v).</summary>
@@ -816,23 +856,20 @@ namespace HookeRope.Geometry
             }
         }
 
-        private void WriteCap(int k, bool atEnd, TubeVertex[] vertices, int[] indices, bool writeIndices, bool rewrite,
+        private void WriteCap(int k, bool atEnd, int[] indices, bool writeIndices, bool rewrite,
             ref int vertexBase, ref int tubeCursor, ref Bounds bounds)
         {
             Float3 c = centers[k], t = tangents[k], nrm = normals[k];
             Float3 outward = atEnd ? t : -t;
             if (rewrite)
             {
-                SetVertex(vertices, vertexBase, c, outward, nrm, 0.5f, 0.5f);
+                SetVertex(vertexBase, c, outward, nrm, 0.5f, 0.5f);
                 // the rim is the ring's own vertices (the same kernel, so the cap and the tube share exact positions)
-                WriteRing(k, capRim);
+                WriteRings(k, k, capRim);
                 for (int i = 0; i < radial; i++)
                 {
-                    ref TubeVertex vertex = ref vertices[vertexBase + 1 + i];
-                    vertex.PX = capRim[i].PX; vertex.PY = capRim[i].PY; vertex.PZ = capRim[i].PZ;
-                    vertex.NX = outward.X; vertex.NY = outward.Y; vertex.NZ = outward.Z;
-                    vertex.TX = nrm.X; vertex.TY = nrm.Y; vertex.TZ = nrm.Z; vertex.TW = 1f;
-                    vertex.U = 0.5f + 0.5f * cos[i]; vertex.V = 0.5f + 0.5f * sin[i];
+                    ref readonly TubeVertex rim = ref capRim[i];
+                    SetVertexWritten(vertexBase + 1 + i, rim.PX, rim.PY, rim.PZ, outward, nrm, 0.5f + 0.5f * cos[i], 0.5f + 0.5f * sin[i]);
                 }
             }
             // the rim lies on ring k, whose bounds the piece adds (AddRingBounds)
@@ -855,7 +892,7 @@ namespace HookeRope.Geometry
             vertexBase += radial + 1;
         }
 
-        private void WriteStrands(int k, bool atEnd, int endKey, TubeVertex[] vertices, int[] indices, bool writeIndices, bool rewrite,
+        private void WriteStrands(int k, bool atEnd, int endKey, int[] indices, bool writeIndices, bool rewrite,
             ref int vertexBase, ref int burrCursor)
         {
             if (rewrite)
@@ -884,9 +921,9 @@ namespace HookeRope.Geometry
                     Float3 direction = outward * MathF.Cos(fibre.Tilt) + side * MathF.Sin(fibre.Tilt);
                     Float3 tip = centre + direction * (fibre.Length * 2f * r);
                     int v = vertexBase + f * 9;
-                    WriteStrandFace(vertices, v, b0, b1, tip, outward, ref strandBounds);
-                    WriteStrandFace(vertices, v + 3, b1, b2, tip, outward, ref strandBounds);
-                    WriteStrandFace(vertices, v + 6, b2, b0, tip, outward, ref strandBounds);
+                    WriteStrandFace(v, b0, b1, tip, outward, ref strandBounds);
+                    WriteStrandFace(v + 3, b1, b2, tip, outward, ref strandBounds);
+                    WriteStrandFace(v + 6, b2, b0, tip, outward, ref strandBounds);
                 }
             }
             if (writeIndices)
@@ -902,22 +939,35 @@ namespace HookeRope.Geometry
 
         private static Float3 Corner(Float3 nrm, Float3 bin, float angle) => nrm * MathF.Cos(angle) + bin * MathF.Sin(angle);
 
-        private void WriteStrandFace(TubeVertex[] vertices, int v, Float3 p0, Float3 p1, Float3 tip, Float3 fallback, ref Bounds bounds)
+        private void WriteStrandFace(int v, Float3 p0, Float3 p1, Float3 tip, Float3 fallback, ref Bounds bounds)
         {
             Float3 edge = p1 - p0;
             Float3 normal = Float3.Cross(edge, tip - p0).NormalizedOr(fallback);
             Float3 tangent = edge.NormalizedOr(FrameTransport.Perpendicular(fallback, normal));
-            SetVertex(vertices, v, p0, normal, tangent, 0f, 1f);
-            SetVertex(vertices, v + 1, p1, normal, tangent, 1f, 1f);
-            SetVertex(vertices, v + 2, tip, normal, tangent, 0.5f, 0f);
+            SetVertex(v, p0, normal, tangent, 0f, 1f);
+            SetVertex(v + 1, p1, normal, tangent, 1f, 1f);
+            SetVertex(v + 2, tip, normal, tangent, 0.5f, 0f);
             bounds.Add(p0);
             bounds.Add(tip);
         }
 
-        private void SetVertex(TubeVertex[] vertices, int index, Float3 p, Float3 normal, Float3 tangent, float u, float v)
+        /// <summary>Writes vertex <paramref name="index"/> at <paramref name="p"/> (relative to the first particle: the frame origin is added).</summary>
+        private void SetVertex(int index, Float3 p, Float3 normal, Float3 tangent, float u, float v) =>
+            SetVertexWritten(index, p.X + frameOrigin.X, p.Y + frameOrigin.Y, p.Z + frameOrigin.Z, normal, tangent, u, v);
+
+        /// <summary>Writes vertex <paramref name="index"/> of the build's buffer at (<paramref name="px"/>, <paramref name="py"/>, <paramref name="pz"/>), as written (the tangent only where the buffer has one).</summary>
+        private void SetVertexWritten(int index, float px, float py, float pz, Float3 normal, Float3 tangent, float u, float v)
         {
-            ref TubeVertex vertex = ref vertices[index];
-            vertex.PX = p.X + frameOrigin.X; vertex.PY = p.Y + frameOrigin.Y; vertex.PZ = p.Z + frameOrigin.Z;
+            if (leanOut != null)
+            {
+                ref LeanTubeVertex lean = ref leanOut[index];
+                lean.PX = px; lean.PY = py; lean.PZ = pz;
+                lean.NX = normal.X; lean.NY = normal.Y; lean.NZ = normal.Z;
+                lean.U = u; lean.V = v;
+                return;
+            }
+            ref TubeVertex vertex = ref fullOut[index];
+            vertex.PX = px; vertex.PY = py; vertex.PZ = pz;
             vertex.NX = normal.X; vertex.NY = normal.Y; vertex.NZ = normal.Z;
             vertex.TX = tangent.X; vertex.TY = tangent.Y; vertex.TZ = tangent.Z; vertex.TW = 1f;
             vertex.U = u; vertex.V = v;

@@ -1213,6 +1213,25 @@ namespace HookeRope
             public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Mesh, ParameterKind.Bool, 0, 1, 1, Tooltip, Json, true);
         }
 
+        /// <summary>Write vertex tangents (renderer): 48-byte vertices with, 32-byte <see cref="HookeRope.Geometry.LeanTubeVertex"/> without.</summary>
+        public static class Tangents
+        {
+            /// <summary>Property name.</summary>
+            public const string Name = nameof(Tangents);
+            /// <summary>Label used in messages.</summary>
+            public const string Label = "Tangents";
+            /// <summary>Unit (none).</summary>
+            public const string Unit = "";
+            /// <summary>Lab JSON name (none).</summary>
+            public const string Json = null;
+            /// <summary>Inspector tooltip.</summary>
+            public const string Tooltip = "Write vertex tangents (48 bytes a vertex). Only normal-mapped materials read them: off, the mesh has position, normal and uv (32 bytes), a third less to write and upload every frame, the same surface.";
+            /// <summary>Default.</summary>
+            public const bool Default = true;
+            /// <summary>The table row.</summary>
+            public static readonly ParameterInfo Row = new ParameterInfo(Name, Label, Unit, ParameterGroup.Mesh, ParameterKind.Bool, 0, 1, 1, Tooltip, Json, true);
+        }
+
         /// <summary>Colour of the generated tube material (renderer), RGBA in [0, 1].</summary>
         public static class Color
         {
@@ -1256,7 +1275,7 @@ namespace HookeRope
             ViscousDrag.Row, DragCoefficient.Row, SkinFriction.Row, AirDensity.Row, Wind.Row,
             PoissonThinning.Row, Necking.Row, NeckMode.Row, NeckRadiusFraction.Row, DefectPosition.Row, NeckZoneDiameters.Row, NeckGrowthStrain.Row, SlackKeepsRestRadius.Row,
             Fracture.Row, BreakStrain.Row, BreakRadiusFraction.Row,
-            RadialSegments.Row, RingTolerance.Row, DetailDistance.Row, RingsPerSegment.Row, AdaptiveRings.Row, VPerMetre.Row, CapEnds.Row, BurrSeed.Row, BurrTexture.Row, Color.Row,
+            RadialSegments.Row, RingTolerance.Row, DetailDistance.Row, RingsPerSegment.Row, AdaptiveRings.Row, VPerMetre.Row, CapEnds.Row, BurrSeed.Row, BurrTexture.Row, Tangents.Row, Color.Row,
         };
 
         /// <summary>The row named <paramref name="name"/> (ordinal), or null.</summary>

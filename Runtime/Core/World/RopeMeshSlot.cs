@@ -27,6 +27,18 @@ namespace HookeRope.World
         /// <summary>Vertices of the last fill (the first <see cref="TubeMeshUpdate.VertexCount"/> of <see cref="Update"/> are valid).</summary>
         public TubeVertex[] Vertices { get; private set; } = Array.Empty<TubeVertex>();
 
+        /// <summary>
+        /// Vertices of the last fill when <see cref="Tangents"/> is off (then <see cref="Vertices"/> stays as it was; the
+        /// first <see cref="TubeMeshUpdate.VertexCount"/> of <see cref="Update"/> are valid).
+        /// </summary>
+        public LeanTubeVertex[] LeanVertices { get; private set; } = Array.Empty<LeanTubeVertex>();
+
+        /// <summary>
+        /// Whether the fills write tangents (default true): into <see cref="Vertices"/> (48 bytes each) when on, else into
+        /// <see cref="LeanVertices"/> (32 bytes: for materials without a normal map). Set it between passes.
+        /// </summary>
+        public bool Tangents { get; set; } = true;
+
         /// <summary>Indices of the last fill (rewritten only when <see cref="TubeMeshUpdate.TopologyChanged"/>; the first <see cref="TubeMeshUpdate.IndexCount"/> are valid).</summary>
         public int[] Indices { get; private set; } = Array.Empty<int>();
 
@@ -91,11 +103,21 @@ namespace HookeRope.World
         {
             // made once for the ring budget's most (constant until a break): the adaptive budgets step within it
             int vertexCapacity = simulation.GetVertexCapacity(), indexCapacity = simulation.GetIndexCapacity();
-            if (Vertices.Length < vertexCapacity) Vertices = new TubeVertex[vertexCapacity];
             if (Indices.Length < indexCapacity) Indices = new int[indexCapacity];
-            Update = callerX == null ? simulation.FillMesh(Vertices, Indices)
-                : hasFrame ? simulation.FillMesh(callerX, callerY, callerZ, Vertices, Indices, radiusScale, frame)
-                : simulation.FillMesh(callerX, callerY, callerZ, Vertices, Indices, radiusScale);
+            if (Tangents)
+            {
+                if (Vertices.Length < vertexCapacity) Vertices = new TubeVertex[vertexCapacity];
+                Update = callerX == null ? simulation.FillMesh(Vertices, Indices)
+                    : hasFrame ? simulation.FillMesh(callerX, callerY, callerZ, Vertices, Indices, radiusScale, frame)
+                    : simulation.FillMesh(callerX, callerY, callerZ, Vertices, Indices, radiusScale);
+            }
+            else
+            {
+                if (LeanVertices.Length < vertexCapacity) LeanVertices = new LeanTubeVertex[vertexCapacity];
+                Update = callerX == null ? simulation.FillMesh(LeanVertices, Indices)
+                    : hasFrame ? simulation.FillMesh(callerX, callerY, callerZ, LeanVertices, Indices, radiusScale, frame)
+                    : simulation.FillMesh(callerX, callerY, callerZ, LeanVertices, Indices, radiusScale);
+            }
             FillCount++;
         }
     }

@@ -143,6 +143,54 @@ namespace HookeRope.Tests.Components
         }
 
         /// <summary>
+        /// Issue 18: without tangents the mesh is laid out as position, normal and uv (32 bytes, no tangent attribute) and
+        /// holds the positions and normals of the mesh with tangents bit for bit, intact and broken; a frame allocates
+        /// nothing once warm; with tangents again the 48-byte layout returns.
+        /// </summary>
+        [Test]
+        public void WithoutTangentsTheMeshIsThirtyTwoBytesAVertexAndTheSameSurface()
+        {
+            var (rope, renderer, grip) = Build();
+            for (int step = 0; step < 20; step++) rope.Simulate(0.01f);
+            for (int pass = 0; pass < 2; pass++)
+            {
+                Assert.That(renderer.Tangents, Is.True, "the default");
+                Assert.That(renderer.Render(0.5f), Is.True);
+                var mesh = renderer.Mesh;
+                Assert.That(mesh.GetVertexBufferStride(0), Is.EqualTo(TubeVertex.SizeInBytes));
+                var positions = MeshInUse.Vertices(mesh);
+                var normals = mesh.normals;
+
+                renderer.Tangents = false;
+                Assert.That(renderer.Render(0.5f), Is.True);
+                Assert.That(mesh.GetVertexBufferStride(0), Is.EqualTo(LeanTubeVertex.SizeInBytes));
+                Assert.That(mesh.vertexAttributeCount, Is.EqualTo(3));
+                Assert.That(mesh.HasVertexAttribute(UnityEngine.Rendering.VertexAttribute.Tangent), Is.False);
+                Assert.That(mesh.HasVertexAttribute(UnityEngine.Rendering.VertexAttribute.TexCoord0), Is.True);
+                var leanPositions = MeshInUse.Vertices(mesh);
+                var leanNormals = mesh.normals;
+                Assert.That(leanPositions.Length, Is.EqualTo(positions.Length));
+                int differing = 0;
+                for (int v = 0; v < positions.Length; v++)
+                    if (!SameBits(positions[v], leanPositions[v]) || !SameBits(normals[v], leanNormals[v])) differing++;
+                Assert.That(differing, Is.EqualTo(0), (pass == 0 ? "intact" : "broken") + ": vertices whose position or normal differ in a bit");
+                for (int frame = 0; frame < 3; frame++) renderer.Render(0.5f);
+                Assert.That(() => { renderer.Render(0.5f); }, Is.Not.AllocatingGCMemory(), "a frame without tangents");
+
+                renderer.Tangents = true;
+                Assert.That(renderer.Render(0.5f), Is.True);
+                Assert.That(mesh.GetVertexBufferStride(0), Is.EqualTo(TubeVertex.SizeInBytes), "tangents again");
+                Assert.That(mesh.HasVertexAttribute(UnityEngine.Rendering.VertexAttribute.Tangent), Is.True);
+                if (pass == 0) BreakIt(rope, grip);
+            }
+        }
+
+        static bool SameBits(Vector3 a, Vector3 b) =>
+            System.BitConverter.SingleToInt32Bits(a.x) == System.BitConverter.SingleToInt32Bits(b.x)
+            && System.BitConverter.SingleToInt32Bits(a.y) == System.BitConverter.SingleToInt32Bits(b.y)
+            && System.BitConverter.SingleToInt32Bits(a.z) == System.BitConverter.SingleToInt32Bits(b.z);
+
+        /// <summary>
         /// Issue 18, "0 bytes per update": the mesh's buffers hold the ring budget's most from the first frame, so while the
         /// swung rope's adaptive ring budget steps the vertex buffer keeps its size (the capacity) and only the sub-meshes'
         /// counts move, and no frame allocates.

@@ -26,7 +26,7 @@ namespace HookeRope.Tests.Lint
             "HookeRope.Radius.RadiusSettings", "HookeRope.Radius.RadiusModel", "HookeRope.Radius.NeckMode", "HookeRope.Radius.BreakReason",
             "HookeRope.Radius.PoissonRadius", "HookeRope.Radius.NeckHyperbola",
             // Mesh data; the burr texture every renderer of the strands needs (the lab's figures, a glTF export, a non-Unity host)
-            "HookeRope.Geometry.TubeMeshSettings", "HookeRope.Geometry.MeshFrame", "HookeRope.Fracture.BurrSettings", "HookeRope.Geometry.TubeVertex", "HookeRope.Geometry.TubeMeshUpdate",
+            "HookeRope.Geometry.TubeMeshSettings", "HookeRope.Geometry.MeshFrame", "HookeRope.Fracture.BurrSettings", "HookeRope.Geometry.TubeVertex", "HookeRope.Geometry.LeanTubeVertex", "HookeRope.Geometry.TubeMeshUpdate",
             "HookeRope.Fracture.BurrTextureGenerator",
             // the ring tolerance by view distance (issue 18): the component's rule, for any host that draws many ropes
             "HookeRope.Geometry.ViewDetail",
