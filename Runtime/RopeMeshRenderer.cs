@@ -372,9 +372,10 @@ namespace HookeRope
         void Upload<TVertex>(RopeSimulation simulation, TubeMeshUpdate update, TVertex[] vertices, int[] indices, bool tangents) where TVertex : struct
         {
             bool sameSimulation = ReferenceEquals(_uploaded, simulation);
-            if (tangents != _uploadedTangents) _vertexCapacity = -1;   // another vertex layout: the buffer is laid out again
+            // another vertex layout: the buffer is laid out again (at the capacity it would keep anyway)
+            bool relayout = tangents != _uploadedTangents || _vertexCapacity < 0;
             if (update.TopologyChanged || !sameSimulation || _uploadedTopology != simulation.MeshTopologyVersion ||
-                _vertexCount != update.VertexCount || _indexCount != update.IndexCount || _vertexCapacity < 0)
+                _vertexCount != update.VertexCount || _indexCount != update.IndexCount || relayout)
             {
                 _uploaded = simulation;
                 _uploadedTopology = simulation.MeshTopologyVersion;
@@ -390,7 +391,7 @@ namespace HookeRope
                     vertexCapacity = Math.Max(vertexCapacity, _vertexCapacity);
                     indexCapacity = Math.Max(indexCapacity, _indexCapacity);
                 }
-                if (vertexCapacity != _vertexCapacity)
+                if (vertexCapacity != _vertexCapacity || relayout)
                 {
                     _vertexCapacity = vertexCapacity;
                     _uploadedTangents = tangents;

@@ -6,7 +6,7 @@ namespace HookeRope.Geometry
     /// One interleaved mesh vertex without a tangent, 8 float32 (32 bytes) in the order Position (3), Normal (3),
     /// TexCoord0 (2): for materials without a normal map, which never read the tangent. A third less to write and upload
     /// than <see cref="TubeVertex"/>; every field holds the same bits as the <see cref="TubeVertex"/> field of the same
-    /// name in the same build. Uploads directly with Unity's Mesh.SetVertexBufferData.
+    /// name in a build of the same input. Uploads directly with Unity's Mesh.SetVertexBufferData.
     /// </summary>
     [StructLayout(LayoutKind.Sequential)]
     public struct LeanTubeVertex

@@ -13,14 +13,12 @@ namespace HookeRope.Geometry
     /// </summary>
     internal sealed partial class TubeMeshBuilder
     {
-        // per side (the seam too): (−0, −0, u, 0), the last lane of the 4-float kernel's second vector (see WriteLeanRings)
+        // per side (the seam too): (−0, −0, u, 0), the addend per side of the 4-float kernel's second vector (see WriteLeanRings)
         private Vector4[] leanSideU;
         // per side (the seam too), where Vector<float> has 8 lanes: cos in every lane but u's, which holds u; sin in every lane
         private LeanLanes[] leanLanes;
         // the wide kernel's coefficient vectors B, C, A, O of the ring in hand (no allocation per build)
         private readonly Vector<float>[] leanCoefficients = new Vector<float>[4];
-        // a ring in the full layout, for the rare rings whose normals come from their strips (WriteRingOnStripsAt)
-        private TubeVertex[] leanScratch;
 
         /// <summary>Ring <paramref name="k"/>'s radial + 1 vertices into the build's buffer from vertex <paramref name="at"/>.</summary>
         private void WriteRingAt(int k, int at) => WriteRingsAt(k, k, at);
@@ -41,10 +39,10 @@ namespace HookeRope.Geometry
                 WriteRingOnStrips(k, first, last, beforeFirst, afterLast, new Span<TubeVertex>(fullOut, at, radial + 1));
                 return;
             }
-            leanScratch ??= new TubeVertex[radial + 1];
-            WriteRingOnStrips(k, first, last, beforeFirst, afterLast, leanScratch);
+            // the ring in the full layout first, in the cap rims' scratch ring (WriteCap uses it only within itself)
+            WriteRingOnStrips(k, first, last, beforeFirst, afterLast, capRim);
             Span<LeanTubeVertex> ring = new Span<LeanTubeVertex>(leanOut, at, radial + 1);
-            ReadOnlySpan<TubeVertex> written = leanScratch;
+            ReadOnlySpan<TubeVertex> written = capRim;
             written = written.Slice(0, ring.Length);
             for (int i = 0; i < ring.Length; i++)
             {
@@ -89,9 +87,10 @@ namespace HookeRope.Geometry
             bool wide = Vector<float>.Count == 8 && VectorPath.Enabled;
             int stride = radial + 1;
             var o0 = new Vector4(frameOrigin.X, frameOrigin.Y, frameOrigin.Z, 0f);
-            // the scratch's views of constant length: their constant indices need no range check
+            // the scratch's views of constant length: their constant indices need no range check (the 8 halves only
+            // where the 4 vectors have 8 lanes: with 4 lanes they are 4 halves, and the 4-float kernel needs none)
             Span<Vector<float>> q = new Span<Vector<float>>(leanCoefficients, 0, 4);
-            Span<Vector4> half = MemoryMarshal.Cast<Vector<float>, Vector4>(q).Slice(0, 8);
+            Span<Vector4> half = wide ? MemoryMarshal.Cast<Vector<float>, Vector4>(q).Slice(0, 8) : default;
             bool sixteen = wide && leanSixteenSided;
             if (wide)
             {

@@ -69,6 +69,7 @@ namespace HookeRope.Geometry
         private readonly float[] lastX, lastY, lastZ, lastRest;
         private float[] lastRadii = Array.Empty<float>();
         private int[] lastIndices;
+        // the vertex buffer of the last full build: a TubeVertex[] or a LeanTubeVertex[] (another buffer, of either kind, is a full build)
         private object lastVertices;
         // the caller's vertex buffer of the build under way: one of the two, the other null
         private TubeVertex[] fullOut;
@@ -869,7 +870,7 @@ namespace HookeRope.Geometry
                 for (int i = 0; i < radial; i++)
                 {
                     ref readonly TubeVertex rim = ref capRim[i];
-                    SetVertexWritten(vertexBase + 1 + i, rim.PX, rim.PY, rim.PZ, outward, nrm, 0.5f + 0.5f * cos[i], 0.5f + 0.5f * sin[i]);
+                    SetVertexInFrame(vertexBase + 1 + i, rim.PX, rim.PY, rim.PZ, outward, nrm, 0.5f + 0.5f * cos[i], 0.5f + 0.5f * sin[i]);
                 }
             }
             // the rim lies on ring k, whose bounds the piece adds (AddRingBounds)
@@ -953,15 +954,16 @@ namespace HookeRope.Geometry
 
         /// <summary>Writes vertex <paramref name="index"/> at <paramref name="p"/> (relative to the first particle: the frame origin is added).</summary>
         private void SetVertex(int index, Float3 p, Float3 normal, Float3 tangent, float u, float v) =>
-            SetVertexWritten(index, p.X + frameOrigin.X, p.Y + frameOrigin.Y, p.Z + frameOrigin.Z, normal, tangent, u, v);
+            SetVertexInFrame(index, p.X + frameOrigin.X, p.Y + frameOrigin.Y, p.Z + frameOrigin.Z, normal, tangent, u, v);
 
         /// <summary>
         /// Writes vertex <paramref name="index"/> of the build's buffer at (<paramref name="px"/>, <paramref name="py"/>,
-        /// <paramref name="pz"/>), as written (the tangent only where the buffer has one). Inlined: a cap rim writes
+        /// <paramref name="pz"/>), a position in the frame of the input positions (the frame origin already added; the
+        /// tangent only where the buffer has one). Inlined: a cap rim writes
         /// 16 of them a ring, where a call with its Float3 arguments cost 37 instructions each.
         /// </summary>
         [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
-        private void SetVertexWritten(int index, float px, float py, float pz, Float3 normal, Float3 tangent, float u, float v)
+        private void SetVertexInFrame(int index, float px, float py, float pz, Float3 normal, Float3 tangent, float u, float v)
         {
             if (leanOut != null)
             {
