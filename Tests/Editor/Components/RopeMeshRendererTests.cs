@@ -408,11 +408,13 @@ namespace HookeRope.Tests.Components
             AssertMeshFollowsRope(rope, renderer.Mesh);
         }
 
-        [TestCase(false, TestName = "AViewPointThatMovesEveryFrameAllocatesNothing(the view point)")]
-        [TestCase(true, TestName = "AViewPointThatMovesEveryFrameAllocatesNothing(the main camera)")]
-        public void AViewPointThatMovesEveryFrameAllocatesNothing(bool mainCamera)
+        [TestCase(false, true, TestName = "AViewPointThatMovesEveryFrameAllocatesNothing(the view point)")]
+        [TestCase(true, true, TestName = "AViewPointThatMovesEveryFrameAllocatesNothing(the main camera)")]
+        [TestCase(false, false, TestName = "AViewPointThatMovesEveryFrameAllocatesNothing(the view point, without tangents)")]
+        public void AViewPointThatMovesEveryFrameAllocatesNothing(bool mainCamera, bool tangents)
         {
             var (rope, renderer, grip) = Build();
+            renderer.Tangents = tangents;
             var viewer = _scene.Point("Viewer", new Vector3(0f, 2f, 3f));
             if (mainCamera)
             {
@@ -443,6 +445,7 @@ namespace HookeRope.Tests.Components
             TestContext.WriteLine("over the walk: " + fewest + " … " + most + " sides, ring tolerance " + nearest + " … " + farthest);
             Assert.That(fewest, Is.EqualTo(6));
             Assert.That(most, Is.EqualTo(12));
+            Assert.That(renderer.Mesh.GetVertexBufferStride(0), Is.EqualTo(tangents ? TubeVertex.SizeInBytes : LeanTubeVertex.SizeInBytes));
             Assert.That(nearest, Is.LessThan(3.5f));
             Assert.That(farthest, Is.GreaterThan(3.5f));
             AssertMeshFollowsRope(rope, renderer.Mesh);
