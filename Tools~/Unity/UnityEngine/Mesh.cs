@@ -94,6 +94,25 @@ namespace UnityEngine
             set => throw StandInError.Unsupported("Mesh.normals (set)");
         }
 
+        /// <summary>Returns a copy of the texture coordinates of the first channel (decoded from the TexCoord0 attribute; empty when the Mesh has none).</summary>
+        public Vector2[] uv
+        {
+            get
+            {
+                EnsureAlive();
+                int a = _layout.IndexOf(VertexAttribute.TexCoord0);
+                if (a < 0) return new Vector2[0];
+                var attribute = _layout[a];
+                var stream = _streams[attribute.stream];
+                int stride = _layout.Stride(attribute.stream), offset = _layout.OffsetAt(a);
+                var result = new Vector2[_vertexCount];
+                for (int v = 0; v < _vertexCount; v++)
+                    result[v] = new Vector2(VertexDecoder.Read(stream, v * stride + offset, attribute, 0), VertexDecoder.Read(stream, v * stride + offset, attribute, 1));
+                return result;
+            }
+            set => throw StandInError.Unsupported("Mesh.uv (set)");
+        }
+
         /// <summary>An array containing all triangles in the Mesh (all sub-meshes, base vertex applied).</summary>
         public int[] triangles
         {
