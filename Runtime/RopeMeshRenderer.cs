@@ -266,18 +266,12 @@ namespace HookeRope
             // made once for the ring budget's most (constant until a break): the adaptive budgets step within it
             int vertexCapacity = simulation.GetVertexCapacity(), indexCapacity = simulation.GetIndexCapacity();
             if (_indices.Length < indexCapacity) _indices = new int[indexCapacity];
-            if (m_Tangents)
-            {
-                if (_vertices.Length < vertexCapacity) _vertices = new TubeVertex[vertexCapacity];
-                var update = simulation.FillMesh(_x, _y, _z, _vertices, _indices, RadiusScale(), LocalFrameInRope(origin));
-                Upload(simulation, update, _vertices, _indices, true);
-            }
-            else
-            {
-                if (_leanVertices.Length < vertexCapacity) _leanVertices = new LeanTubeVertex[vertexCapacity];
-                var update = simulation.FillMesh(_x, _y, _z, _leanVertices, _indices, RadiusScale(), LocalFrameInRope(origin));
-                Upload(simulation, update, _leanVertices, _indices, false);
-            }
+            if (m_Tangents && _vertices.Length < vertexCapacity) _vertices = new TubeVertex[vertexCapacity];
+            if (!m_Tangents && _leanVertices.Length < vertexCapacity) _leanVertices = new LeanTubeVertex[vertexCapacity];
+            TubeVertex[] full = m_Tangents ? _vertices : null;
+            LeanTubeVertex[] lean = m_Tangents ? null : _leanVertices;
+            var update = simulation.FillMesh(_x, _y, _z, full, lean, _indices, RadiusScale(), LocalFrameInRope(origin));
+            Upload(simulation, update, full, lean, _indices);
             return true;
         }
 
@@ -298,11 +292,8 @@ namespace HookeRope
         }
 
         /// <summary>Uploads what the world filled into <paramref name="slot"/> after <see cref="PrepareWorldFill"/>.</summary>
-        internal void UploadWorldFill(RopeMeshSlot slot)
-        {
-            if (slot.Tangents) Upload(_rope.Simulation, slot.Update, slot.Vertices, slot.Indices, true);
-            else Upload(_rope.Simulation, slot.Update, slot.LeanVertices, slot.Indices, false);
-        }
+        internal void UploadWorldFill(RopeMeshSlot slot) =>
+            Upload(_rope.Simulation, slot.Update, slot.Tangents ? slot.Vertices : null, slot.Tangents ? null : slot.LeanVertices, slot.Indices);
 
         /// <summary>
         /// Everything <see cref="Render"/> does before the fill: picks the simulation (the rope's, or the edit-mode
@@ -364,13 +355,14 @@ namespace HookeRope
         }
 
         /// <summary>
-        /// Uploads a filled tube (<paramref name="update"/> over <paramref name="vertices"/>, with or without
-        /// <paramref name="tangents"/>, and <paramref name="indices"/>, from this renderer's buffers or its world mesh
+        /// Uploads a filled tube (<paramref name="update"/> over <paramref name="vertices"/>, or, when it is null, over
+        /// <paramref name="leanVertices"/>, and <paramref name="indices"/>, from this renderer's buffers or its world mesh
         /// slot): the buffer sizes only when the capacity or the vertex layout changed, the indices and sub-meshes only
         /// when the topology or the source changed, then the bounds, then the vertices in use.
         /// </summary>
-        void Upload<TVertex>(RopeSimulation simulation, TubeMeshUpdate update, TVertex[] vertices, int[] indices, bool tangents) where TVertex : struct
+        void Upload(RopeSimulation simulation, TubeMeshUpdate update, TubeVertex[] vertices, LeanTubeVertex[] leanVertices, int[] indices)
         {
+            bool tangents = vertices != null;
             bool sameSimulation = ReferenceEquals(_uploaded, simulation);
             // another vertex layout: the buffer is laid out again (at the capacity it would keep anyway)
             bool relayout = tangents != _uploadedTangents || _vertexCapacity < 0;
@@ -410,7 +402,8 @@ namespace HookeRope
             // Bounds first, so the renderer notification of the vertex upload already sees this frame's bounds.
             Vector3 min = update.BoundsMin.ToVector3(), max = update.BoundsMax.ToVector3();
             _mesh.bounds = new Bounds((min + max) * 0.5f, max - min);
-            _mesh.SetVertexBufferData(vertices, 0, 0, update.VertexCount, 0, FrameFlags);
+            if (tangents) _mesh.SetVertexBufferData(vertices, 0, 0, update.VertexCount, 0, FrameFlags);
+            else _mesh.SetVertexBufferData(leanVertices, 0, 0, update.VertexCount, 0, FrameFlags);
         }
 
         /// <summary>A triangle sub-mesh of <paramref name="indexCount"/> indices from <paramref name="indexStart"/> over the first <paramref name="vertexCount"/> vertices (the rest of the buffer is spare capacity).</summary>

@@ -170,7 +170,7 @@ namespace HookeRope
         /// </summary>
         public TubeMeshUpdate FillMesh(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
             TubeVertex[] vertices, int[] indices, float radiusScale = 1f) =>
-            mesh.Fill(x, y, z, vertices, indices, CheckedRadiusScale(radiusScale), null);
+            FillMesh(x, y, z, vertices, null, indices, radiusScale, null);
 
         /// <summary>
         /// <see cref="FillMesh(ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{float}, TubeVertex[], int[], float)"/>
@@ -181,14 +181,13 @@ namespace HookeRope
         /// </summary>
         public TubeMeshUpdate FillMesh(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
             TubeVertex[] vertices, int[] indices, float radiusScale, MeshFrame frame) =>
-            mesh.Fill(x, y, z, vertices, indices, CheckedRadiusScale(radiusScale), frame);
+            FillMesh(x, y, z, vertices, null, indices, radiusScale, frame);
 
         /// <summary>
         /// <see cref="FillMesh(ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{float}, TubeVertex[], int[], float, MeshFrame)"/>
         /// through the rope's own positions: vertices in the rope-local frame (world = <see cref="Solver.Rope.Origin"/> + v).
         /// </summary>
-        public TubeMeshUpdate FillMesh(TubeVertex[] vertices, int[] indices) =>
-            mesh.Fill(Rope.PositionX, Rope.PositionY, Rope.PositionZ, vertices, indices, 1f, MeshFrame.Shifted(Rope.Origin));
+        public TubeMeshUpdate FillMesh(TubeVertex[] vertices, int[] indices) => FillMesh(vertices, null, indices);
 
         /// <summary>
         /// <see cref="FillMesh(ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{float}, TubeVertex[], int[], float)"/>
@@ -197,7 +196,7 @@ namespace HookeRope
         /// </summary>
         public TubeMeshUpdate FillMesh(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
             LeanTubeVertex[] vertices, int[] indices, float radiusScale = 1f) =>
-            mesh.Fill(x, y, z, vertices, indices, CheckedRadiusScale(radiusScale), null);
+            FillMesh(x, y, z, null, vertices, indices, radiusScale, null);
 
         /// <summary>
         /// <see cref="FillMesh(ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{float}, TubeVertex[], int[], float, MeshFrame)"/>
@@ -205,11 +204,23 @@ namespace HookeRope
         /// </summary>
         public TubeMeshUpdate FillMesh(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
             LeanTubeVertex[] vertices, int[] indices, float radiusScale, MeshFrame frame) =>
-            mesh.Fill(x, y, z, vertices, indices, CheckedRadiusScale(radiusScale), frame);
+            FillMesh(x, y, z, null, vertices, indices, radiusScale, frame);
 
         /// <summary><see cref="FillMesh(TubeVertex[], int[])"/> into vertices without tangents (<see cref="LeanTubeVertex"/>).</summary>
-        public TubeMeshUpdate FillMesh(LeanTubeVertex[] vertices, int[] indices) =>
-            mesh.Fill(Rope.PositionX, Rope.PositionY, Rope.PositionZ, vertices, indices, 1f, MeshFrame.Shifted(Rope.Origin));
+        public TubeMeshUpdate FillMesh(LeanTubeVertex[] vertices, int[] indices) => FillMesh(null, vertices, indices);
+
+        /// <summary>
+        /// The fill every overload above calls: into <paramref name="vertices"/> or, when it is null,
+        /// <paramref name="leanVertices"/> (the host's choice of layout, e.g. <see cref="World.RopeMeshSlot.Tangents"/>), from
+        /// caller positions with an optional <paramref name="frame"/>.
+        /// </summary>
+        internal TubeMeshUpdate FillMesh(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
+            TubeVertex[] vertices, LeanTubeVertex[] leanVertices, int[] indices, float radiusScale, MeshFrame? frame) =>
+            mesh.Fill(x, y, z, vertices, leanVertices, indices, CheckedRadiusScale(radiusScale), frame);
+
+        /// <summary>The fill through the rope's own positions (rope-local frame), into either kind of buffer.</summary>
+        internal TubeMeshUpdate FillMesh(TubeVertex[] vertices, LeanTubeVertex[] leanVertices, int[] indices) =>
+            mesh.Fill(Rope.PositionX, Rope.PositionY, Rope.PositionZ, vertices, leanVertices, indices, 1f, MeshFrame.Shifted(Rope.Origin));
 
         private static float CheckedRadiusScale(float radiusScale)
         {

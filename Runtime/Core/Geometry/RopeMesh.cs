@@ -81,33 +81,23 @@ namespace HookeRope.Geometry
         internal int GetIndexCapacity() => Ensure().GetIndexCapacity(simulation.Rope.BrokenSegments);
 
         /// <summary>
-        /// Fills the mesh from positions in the caller's frame; ring radii are multiplied by <paramref name="radiusScale"/>.
+        /// Fills the mesh into <paramref name="vertices"/> or, when it is null, <paramref name="leanVertices"/> from positions
+        /// in the caller's frame; ring radii are multiplied by <paramref name="radiusScale"/>.
         /// With <paramref name="frame"/> (where that frame sits in the rope's world) the ring centres are kept out of
         /// the rope's colliders; without it they are not checked.
         /// </summary>
         internal TubeMeshUpdate Fill(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
-            TubeVertex[] vertices, int[] indices, float radiusScale, MeshFrame? frame) =>
-            Fill(x, y, z, vertices, null, vertices?.Length ?? 0, indices, radiusScale, frame);
-
-        /// <summary><see cref="Fill(ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{float}, TubeVertex[], int[], float, MeshFrame?)"/> into vertices without tangents.</summary>
-        internal TubeMeshUpdate Fill(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
-            LeanTubeVertex[] vertices, int[] indices, float radiusScale, MeshFrame? frame) =>
-            Fill(x, y, z, null, vertices ?? throw new ArgumentNullException(nameof(vertices)), vertices.Length, indices, radiusScale, frame);
-
-        private TubeMeshUpdate Fill(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
-            TubeVertex[] vertices, LeanTubeVertex[] lean, int vertexLength, int[] indices, float radiusScale, MeshFrame? frame)
+            TubeVertex[] vertices, LeanTubeVertex[] leanVertices, int[] indices, float radiusScale, MeshFrame? frame)
         {
             TubeMeshBuilder b = Ensure();
             Rope rope = simulation.Rope;
             if (b.IsAdaptive)
                 b.PlanRings(x, y, z, rope.BrokenSegments, NeckActive(), simulation.RestRadius * radiusScale,
-                    vertexLength, indices?.Length ?? 0);
+                    vertices?.Length ?? leanVertices?.Length ?? 0, indices?.Length ?? 0);
             ComputeRingRadii(b.Layout, radiusScale);
             if (rope.BrokenSegmentCount > 0) ComputeDanglingEnds(rope, radiusScale);
             b.SetContactColliders(frame.HasValue ? rope : null, frame.GetValueOrDefault());
-            TubeMeshUpdate update = lean != null
-                ? b.BuildWithRingRadii(x, y, z, rope.RestLengths, RingRadii, rope.BrokenSegments, lean, indices)
-                : b.BuildWithRingRadii(x, y, z, rope.RestLengths, RingRadii, rope.BrokenSegments, vertices, indices);
+            TubeMeshUpdate update = b.BuildWithRingRadii(x, y, z, rope.RestLengths, RingRadii, rope.BrokenSegments, vertices, leanVertices, indices);
             // an adaptive budget that moved: the counts differ from the last fill's (re-query sizes, re-upload indices)
             if (filledVertices >= 0 && (update.VertexCount != filledVertices || update.IndexCount != filledIndices)) TopologyVersion++;
             filledVertices = update.VertexCount;

@@ -318,12 +318,6 @@ namespace HookeRope.Geometry
             TubeVertex[] vertices, int[] indices) =>
             BuildWithRingRadii(x, y, z, restLengths, RingRadiiOfSegments(segmentRadii, brokenSegments), brokenSegments, vertices, indices);
 
-        /// <summary><see cref="Build(ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{bool}, TubeVertex[], int[])"/> into vertices without tangents.</summary>
-        public TubeMeshUpdate Build(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
-            ReadOnlySpan<float> restLengths, ReadOnlySpan<float> segmentRadii, ReadOnlySpan<bool> brokenSegments,
-            LeanTubeVertex[] vertices, int[] indices) =>
-            BuildWithRingRadii(x, y, z, restLengths, RingRadiiOfSegments(segmentRadii, brokenSegments), brokenSegments, vertices, indices);
-
         /// <summary>Per-segment radii (m) smoothed to the particles and interpolated to the rings of <see cref="Layout"/>.</summary>
         private ReadOnlySpan<float> RingRadiiOfSegments(ReadOnlySpan<float> segmentRadii, ReadOnlySpan<bool> brokenSegments)
         {
@@ -362,30 +356,20 @@ namespace HookeRope.Geometry
         /// </summary>
         public TubeMeshUpdate BuildWithRingRadii(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
             ReadOnlySpan<float> restLengths, ReadOnlySpan<float> radii, ReadOnlySpan<bool> brokenSegments,
-            TubeVertex[] vertices, int[] indices)
-        {
-            if (vertices == null) throw new ArgumentNullException(nameof(vertices));
-            return BuildInto(x, y, z, restLengths, radii, brokenSegments, vertices, null, vertices.Length, indices);
-        }
+            TubeVertex[] vertices, int[] indices) =>
+            BuildWithRingRadii(x, y, z, restLengths, radii, brokenSegments, vertices, null, indices);
 
         /// <summary>
         /// <see cref="BuildWithRingRadii(ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{float}, ReadOnlySpan{bool}, TubeVertex[], int[])"/>
-        /// into vertices without tangents (<see cref="LeanTubeVertex"/>: each field the bits of the same field of a
-        /// <see cref="TubeVertex"/> build). A build into the other kind of buffer than the last one is a full build.
+        /// into <paramref name="fullVertices"/> or, when it is null, into <paramref name="leanVertices"/>: vertices without
+        /// tangents (<see cref="LeanTubeVertex"/>, each field the bits of the same field of a <see cref="TubeVertex"/>
+        /// build). A build into another buffer than the last one, of either kind, is a full build.
         /// </summary>
-        public TubeMeshUpdate BuildWithRingRadii(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
+        internal TubeMeshUpdate BuildWithRingRadii(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
             ReadOnlySpan<float> restLengths, ReadOnlySpan<float> radii, ReadOnlySpan<bool> brokenSegments,
-            LeanTubeVertex[] vertices, int[] indices)
+            TubeVertex[] fullVertices, LeanTubeVertex[] leanVertices, int[] indices)
         {
-            if (vertices == null) throw new ArgumentNullException(nameof(vertices));
-            return BuildInto(x, y, z, restLengths, radii, brokenSegments, null, vertices, vertices.Length, indices);
-        }
-
-        /// <summary>The build into <paramref name="fullVertices"/> or <paramref name="leanVertices"/> (the other null), of <paramref name="vertexLength"/> vertices.</summary>
-        private TubeMeshUpdate BuildInto(ReadOnlySpan<float> x, ReadOnlySpan<float> y, ReadOnlySpan<float> z,
-            ReadOnlySpan<float> restLengths, ReadOnlySpan<float> radii, ReadOnlySpan<bool> brokenSegments,
-            TubeVertex[] fullVertices, LeanTubeVertex[] leanVertices, int vertexLength, int[] indices)
-        {
+            if (fullVertices != null) leanVertices = null;
             object vertices = (object)fullVertices ?? leanVertices;
             int n = layout.SegmentCount;
             CheckPositions(x, y, z, brokenSegments);
@@ -394,8 +378,10 @@ namespace HookeRope.Geometry
             int rings = layout.RingCount;
             if (radii.Length != rings)
                 throw new ArgumentException("radii must hold RingCount = " + rings + " values.", nameof(radii));
+            if (vertices == null) throw new ArgumentNullException(nameof(vertices));
             if (indices == null) throw new ArgumentNullException(nameof(indices));
             Count(brokenSegments, Counted.Layout, out int vertexCount, out int tubeIndexCount, out int burrIndexCount);
+            int vertexLength = fullVertices?.Length ?? leanVertices.Length;
             if (vertexLength < vertexCount)
                 throw new ArgumentException("vertices must hold at least GetVertexCount = " + vertexCount + " vertices.", nameof(vertices));
             if (indices.Length < tubeIndexCount + burrIndexCount)

@@ -104,20 +104,12 @@ namespace HookeRope.World
             // made once for the ring budget's most (constant until a break): the adaptive budgets step within it
             int vertexCapacity = simulation.GetVertexCapacity(), indexCapacity = simulation.GetIndexCapacity();
             if (Indices.Length < indexCapacity) Indices = new int[indexCapacity];
-            if (Tangents)
-            {
-                if (Vertices.Length < vertexCapacity) Vertices = new TubeVertex[vertexCapacity];
-                Update = callerX == null ? simulation.FillMesh(Vertices, Indices)
-                    : hasFrame ? simulation.FillMesh(callerX, callerY, callerZ, Vertices, Indices, radiusScale, frame)
-                    : simulation.FillMesh(callerX, callerY, callerZ, Vertices, Indices, radiusScale);
-            }
-            else
-            {
-                if (LeanVertices.Length < vertexCapacity) LeanVertices = new LeanTubeVertex[vertexCapacity];
-                Update = callerX == null ? simulation.FillMesh(LeanVertices, Indices)
-                    : hasFrame ? simulation.FillMesh(callerX, callerY, callerZ, LeanVertices, Indices, radiusScale, frame)
-                    : simulation.FillMesh(callerX, callerY, callerZ, LeanVertices, Indices, radiusScale);
-            }
+            if (Tangents && Vertices.Length < vertexCapacity) Vertices = new TubeVertex[vertexCapacity];
+            if (!Tangents && LeanVertices.Length < vertexCapacity) LeanVertices = new LeanTubeVertex[vertexCapacity];
+            TubeVertex[] full = Tangents ? Vertices : null;
+            LeanTubeVertex[] lean = Tangents ? null : LeanVertices;
+            Update = callerX == null ? simulation.FillMesh(full, lean, Indices)
+                : simulation.FillMesh(callerX, callerY, callerZ, full, lean, Indices, radiusScale, hasFrame ? frame : (MeshFrame?)null);
             FillCount++;
         }
     }
